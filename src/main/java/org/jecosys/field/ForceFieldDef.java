@@ -1,0 +1,38 @@
+package org.jecosys.field;
+
+import java.util.List;
+import org.jecosys.math.Require;
+
+/**
+ * Settings of the LOD quadtree force field (paper §3.1). Immutable; any thread.
+ *
+ * @param enabled           when false, no flow is evaluated and plants receive no force
+ * @param maxObjectsPerNode a leaf splits into four when it would hold more plants than this, &gt;= 1
+ * @param maxDepth          the deepest level a node may have (root is depth 0), in [0, 16]
+ * @param lodDistances      ascending distances in metres: beyond the i-th (1-based) distance, i
+ *                          levels collapse into their ancestor; empty for no distance LOD
+ */
+public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
+    /** Largest allowed {@link #maxDepth()}. */
+    public static final int MAX_DEPTH = 16;
+
+    public ForceFieldDef {
+        Require.range("maxObjectsPerNode", maxObjectsPerNode, 1, 1_000_000);
+        Require.range("maxDepth", maxDepth, 0, MAX_DEPTH);
+        lodDistances = List.copyOf(Require.nonNull("lodDistances", lodDistances));
+        double prev = 0;
+        for (int i = 0; i < lodDistances.size(); i++) {
+            double d = Require.positive("lodDistances[" + i + "]", lodDistances.get(i));
+            if (d <= prev) {
+                throw new IllegalArgumentException("lodDistances must be strictly ascending, got "
+                        + lodDistances);
+            }
+            prev = d;
+        }
+    }
+
+    /** Enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m. */
+    public static ForceFieldDef defaults() {
+        return new ForceFieldDef(true, 8, 8, List.of(15.0, 30.0));
+    }
+}

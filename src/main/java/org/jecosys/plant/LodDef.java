@@ -1,0 +1,18 @@
+package org.jecosys.plant;
+
+import org.jecosys.math.Require;
+
+/**
+ * One level of detail of a species (paper §4.1, Table 3): it is used from the previous level's
+ * {@code maxDistance} up to its own, and draws with {@code primitive}. Which skeleton points it
+ * uses is set per component ({@link ComponentDef#lodSegments()}). Immutable; any thread.
+ *
+ * @param maxDistance farthest viewer distance of this level, metres, &gt; 0, or +Infinity for the last
+ * @param primitive   triangles or lines
+ */
+public record LodDef(double maxDistance, Primitive primitive) {
+    public LodDef {
+        Require.positiveOrInfinite("maxDistance", maxDistance);
+        Require.nonNull("primitive", primitive);
+    }
+}

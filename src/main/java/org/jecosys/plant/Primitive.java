@@ -1,0 +1,20 @@
+package org.jecosys.plant;
+
+/** The primitive a level of detail draws with (paper Table 3). */
+public enum Primitive {
+    /** Filled triangles. */
+    TRIANGLES("triangles"),
+    /** Line segments. */
+    LINES("lines");
+
+    private final String xmlName;
+
+    Primitive(String xmlName) {
+        this.xmlName = xmlName;
+    }
+
+    /** The attribute value used in scene files. */
+    public String xmlName() {
+        return xmlName;
+    }
+}

@@ -1,0 +1,51 @@
+package org.jecosys.terrain;
+
+import org.jecosys.math.Require;
+
+/**
+ * A resource map over the terrain (paper §4.3: irrigation and nutrients). Values are levels in
+ * [0, 1] per cell before plants consume them. Immutable; any thread.
+ *
+ * @param source     how the map is made
+ * @param resolution cells per side, in [2, 1024]
+ * @param amount     overall level multiplier, in [0, 1]
+ * @param scale      NOISE: feature size, metres, &gt; 0 (ignored otherwise)
+ * @param image      IMAGE: path of a greyscale PNG, relative to the scene file; otherwise null
+ */
+public record ResourceMapDef(Source source, int resolution, double amount, double scale, String image) {
+    /** How a map is made. */
+    public enum Source {
+        /** The same level everywhere. */
+        UNIFORM("uniform"),
+        /** Seeded value noise. */
+        NOISE("noise"),
+        /** Water gathering in low ground and valleys, from the heightfield. */
+        VALLEYS("valleys"),
+        /** Read from a greyscale image. */
+        IMAGE("image");
+
+        private final String xmlName;
+
+        Source(String xmlName) {
+            this.xmlName = xmlName;
+        }
+
+        /** The attribute value used in scene files. */
+        public String xmlName() {
+            return xmlName;
+        }
+    }
+
+    public ResourceMapDef {
+        Require.nonNull("source", source);
+        Require.range("resolution", resolution, 2, 1024);
+        Require.range("amount", amount, 0, 1);
+        Require.positive("scale", scale);
+        if ((source == Source.IMAGE) != (image != null)) {
+            throw new IllegalArgumentException("image must be given exactly when source is image");
+        }
+    }
+
+    /** Level 1 everywhere at 64 cells per side. */
+    public static final ResourceMapDef UNIFORM_FULL = new ResourceMapDef(Source.UNIFORM, 64, 1, 8, null);
+}

@@ -1,0 +1,35 @@
+package org.jecosys.terrain;
+
+import org.jecosys.math.Require;
+
+/**
+ * The terrain: a heightfield centred on the origin covering [-sizeX/2, sizeX/2] by
+ * [-sizeZ/2, sizeZ/2] (paper §4.3: "a simple terrain mesh generator"). Immutable; any thread.
+ *
+ * @param sizeX       extent along X, metres, in (0, 100000]
+ * @param sizeZ       extent along Z, metres, in (0, 100000]
+ * @param resolution  heightfield vertices per side, in [2, 2049]
+ * @param heightScale height of the highest point above the lowest, metres, in [0, 10000]
+ * @param roughness   fractal roughness of the generated relief, in [0, 1]
+ * @param seed        seed of the generated relief
+ * @param heightmap   path of a greyscale PNG heightmap relative to the scene file, or null to generate
+ * @param water       the water map
+ * @param nutrients   the nutrient map
+ */
+public record TerrainDef(double sizeX, double sizeZ, int resolution, double heightScale, double roughness,
+                         long seed, String heightmap, ResourceMapDef water, ResourceMapDef nutrients) {
+    public TerrainDef {
+        Require.range("sizeX", sizeX, 1e-3, 100_000);
+        Require.range("sizeZ", sizeZ, 1e-3, 100_000);
+        Require.range("resolution", resolution, 2, 2049);
+        Require.range("heightScale", heightScale, 0, 10_000);
+        Require.range("roughness", roughness, 0, 1);
+        Require.nonNull("water", water);
+        Require.nonNull("nutrients", nutrients);
+    }
+
+    /** A flat 40 m by 40 m terrain with full resources. */
+    public static TerrainDef flat() {
+        return new TerrainDef(40, 40, 65, 0, 0.5, 1, null, ResourceMapDef.UNIFORM_FULL, ResourceMapDef.UNIFORM_FULL);
+    }
+}
