@@ -1,0 +1,72 @@
+package org.jecosys.math;
+
+/**
+ * Seeded, smooth value noise in 2D and 3D, and fractal sums of it. Values lie in [-1, 1].
+ * Pure functions of (seed, coordinates): any thread, no allocation, identical on every JVM.
+ */
+public final class Noise {
+    private Noise() {
+    }
+
+    /** Smooth value noise at (x, y), period-free, in [-1, 1]. */
+    public static double value2(long seed, double x, double y) {
+        long xi = (long) Math.floor(x);
+        long yi = (long) Math.floor(y);
+        double fx = fade(x - xi);
+        double fy = fade(y - yi);
+        double v00 = lattice(seed, xi, yi, 0);
+        double v10 = lattice(seed, xi + 1, yi, 0);
+        double v01 = lattice(seed, xi, yi + 1, 0);
+        double v11 = lattice(seed, xi + 1, yi + 1, 0);
+        double a = v00 + (v10 - v00) * fx;
+        double b = v01 + (v11 - v01) * fx;
+        return a + (b - a) * fy;
+    }
+
+    /** Smooth value noise at (x, y, z), in [-1, 1]. */
+    public static double value3(long seed, double x, double y, double z) {
+        long xi = (long) Math.floor(x);
+        long yi = (long) Math.floor(y);
+        long zi = (long) Math.floor(z);
+        double fx = fade(x - xi);
+        double fy = fade(y - yi);
+        double fz = fade(z - zi);
+        double c00 = lerp(lattice(seed, xi, yi, zi), lattice(seed, xi + 1, yi, zi), fx);
+        double c10 = lerp(lattice(seed, xi, yi + 1, zi), lattice(seed, xi + 1, yi + 1, zi), fx);
+        double c01 = lerp(lattice(seed, xi, yi, zi + 1), lattice(seed, xi + 1, yi, zi + 1), fx);
+        double c11 = lerp(lattice(seed, xi, yi + 1, zi + 1), lattice(seed, xi + 1, yi + 1, zi + 1), fx);
+        return lerp(lerp(c00, c10, fy), lerp(c01, c11, fy), fz);
+    }
+
+    /**
+     * Fractal sum of {@code octaves} layers of 2D value noise, each at twice the frequency and
+     * {@code gain} times the amplitude of the last, normalised to [-1, 1].
+     */
+    public static double fractal2(long seed, double x, double y, int octaves, double gain) {
+        double sum = 0;
+        double amp = 1;
+        double norm = 0;
+        double f = 1;
+        for (int o = 0; o < octaves; o++) {
+            sum += amp * value2(seed + o * 0x9E3779B97F4A7C15L, x * f, y * f);
+            norm += amp;
+            amp *= gain;
+            f *= 2;
+        }
+        return norm == 0 ? 0 : sum / norm;
+    }
+
+    /** A hash of the lattice point, uniform in [-1, 1]. */
+    private static double lattice(long seed, long x, long y, long z) {
+        long h = Rng.mix(seed ^ Rng.mix(x * 0x9E3779B97F4A7C15L ^ Rng.mix(y * 0xC2B2AE3D27D4EB4FL ^ Rng.mix(z))));
+        return (h >>> 11) * 0x1.0p-52 - 1.0;
+    }
+
+    private static double fade(double t) {
+        return t * t * t * (t * (t * 6 - 15) + 10);
+    }
+
+    private static double lerp(double a, double b, double t) {
+        return a + (b - a) * t;
+    }
+}
