@@ -1,11 +1,65 @@
 package org.jecosys.app;
 
-/** Entry point placeholder (replaced by the CLI in this same change). */
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.util.Arrays;
+import picocli.CommandLine;
+
+/**
+ * The {@code jecosys} command line. Exit codes: 0 success, 1 a runtime failure, 2 bad input
+ * (flags or scene files), 3 a command whose part is not in this build yet. Errors print one clear
+ * message; a stack trace only with {@code --verbose}.
+ */
 public final class Main {
     private Main() {
     }
 
+    /** Runs the CLI and exits the JVM with its exit code. */
     public static void main(String[] args) {
-        System.out.println("jecosys");
+        System.exit(run(args, System.out, System.err));
+    }
+
+    /**
+     * Runs the CLI without exiting, for tests and embedding.
+     *
+     * @return the exit code
+     */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        CommandLine cl = commandLine(out, err);
+        return cl.execute(withDefaultCommand(cl, args));
+    }
+
+    static CommandLine commandLine(PrintStream out, PrintStream err) {
+        CommandLine cl = new CommandLine(new JecosysCommand());
+        cl.setCaseInsensitiveEnumValuesAllowed(true);
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        cl.setExecutionExceptionHandler((ex, line, parsed) -> {
+            boolean verbose = Arrays.asList(parsed.originalArgs()).contains("--verbose");
+            line.getErr().println("jecosys: error: " + (ex.getMessage() == null ? ex.toString() : ex.getMessage()));
+            if (verbose) {
+                ex.printStackTrace(line.getErr());
+            } else {
+                line.getErr().println("(run with --verbose for details)");
+            }
+            line.getErr().flush();
+            return ExitCodes.FAILURE;
+        });
+        return cl;
+    }
+
+    /** {@code view} is the default command: no arguments, or a first argument that is a scene file. */
+    static String[] withDefaultCommand(CommandLine cl, String[] args) {
+        if (args.length == 0) {
+            return new String[] {"view"};
+        }
+        String first = args[0];
+        if (!first.startsWith("-") && !cl.getSubcommands().containsKey(first)) {
+            String[] out = new String[args.length + 1];
+            out[0] = "view";
+            System.arraycopy(args, 0, out, 1, args.length);
+            return out;
+        }
+        return args;
     }
 }

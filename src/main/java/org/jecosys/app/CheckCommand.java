@@ -1,0 +1,51 @@
+package org.jecosys.app;
+
+import java.io.PrintWriter;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.jecosys.scene.SceneDef;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code jecosys check SCENE...}: validates scene files; exit 0 when all are valid, 2 otherwise. */
+@Command(name = "check", mixinStandardHelpOptions = true,
+        description = {"Validate scene files. Prints FILE: ok for each valid file and FILE:LINE:COL: message for "
+                + "each problem.", "Exit 0 when all are valid, 2 otherwise."})
+final class CheckCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+    @Mixin
+    Verbose verbose;
+    @Parameters(arity = "1..*", paramLabel = "SCENE", description = "Scene files to validate.")
+    List<String> scenes;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        int bad = 0;
+        for (String s : scenes) {
+            SceneDef scene = SceneArgs.load(SceneArgs.resolve(s), err);
+            if (scene == null) {
+                bad++;
+                continue;
+            }
+            int plants = scene.placements().size();
+            for (var d : scene.distributions()) {
+                plants += Math.max(d.count(), 0);
+            }
+            out.println(s + ": ok (" + scene.species().size() + " species, " + scene.distributions().size()
+                    + " distributions, " + plants + " plants by count, " + scene.flows().size() + " flows)");
+        }
+        out.flush();
+        if (bad > 0) {
+            err.println(bad + " of " + scenes.size() + " scene files are invalid");
+            err.flush();
+            return ExitCodes.BAD_INPUT;
+        }
+        return ExitCodes.OK;
+    }
+}

@@ -1,0 +1,45 @@
+package org.jecosys.app;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.jecosys.scene.SceneDef;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code jecosys render SCENE --frames N --out DIR}: headless rendering to PNG files. */
+@Command(name = "render", mixinStandardHelpOptions = true,
+        description = {"Render frames headless (no X server: GLFW's null platform with EGL, e.g. Mesa llvmpipe) "
+                + "and write PNG files."})
+final class RenderCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+    @Mixin
+    Verbose verbose;
+    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file.")
+    String scene;
+    @Option(names = "--frames", paramLabel = "N", required = true, description = "Frames to render, 1 to 100000.")
+    int frames;
+    @Option(names = "--out", paramLabel = "DIR", required = true, description = "Folder for the PNG files "
+            + "(created if missing).")
+    Path out;
+    @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,
+            description = "Image size in pixels, each side 16 to 8192 (default: the scene's render size).")
+    Size size;
+
+    @Override
+    public Integer call() {
+        if (frames < 1 || frames > 100_000) {
+            throw new ParameterException(spec.commandLine(), "--frames must be in [1, 100000], got " + frames);
+        }
+        SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
+        if (def == null) {
+            return ExitCodes.BAD_INPUT;
+        }
+        return Unavailable.say(spec.commandLine().getErr(), "render", "the OpenGL renderer");
+    }
+}

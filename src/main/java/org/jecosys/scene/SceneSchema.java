@@ -1,0 +1,425 @@
+package org.jecosys.scene;
+
+import static org.jecosys.scene.AttrType.ANGLE;
+import static org.jecosys.scene.AttrType.BOOL;
+import static org.jecosys.scene.AttrType.COLOUR;
+import static org.jecosys.scene.AttrType.DOUBLE;
+import static org.jecosys.scene.AttrType.DOUBLE_LIST;
+import static org.jecosys.scene.AttrType.ENUM;
+import static org.jecosys.scene.AttrType.ID;
+import static org.jecosys.scene.AttrType.INT;
+import static org.jecosys.scene.AttrType.INT_LIST;
+import static org.jecosys.scene.AttrType.LONG;
+import static org.jecosys.scene.AttrType.PATH;
+import static org.jecosys.scene.AttrType.TEXT;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Function;
+import org.jecosys.anim.AnimationDef;
+import org.jecosys.anim.AnimationMode;
+import org.jecosys.field.ForceFieldDef;
+import org.jecosys.math.CameraDef;
+import org.jecosys.math.Rgb;
+import org.jecosys.math.Waypoint;
+import org.jecosys.plant.ComponentDef;
+import org.jecosys.plant.ComponentShape;
+import org.jecosys.plant.ComponentType;
+import org.jecosys.plant.LodDef;
+import org.jecosys.plant.Primitive;
+import org.jecosys.plant.SpeciesDef;
+import org.jecosys.plant.VariationDef;
+import org.jecosys.terrain.DistributionDef;
+import org.jecosys.terrain.PlacementDef;
+import org.jecosys.terrain.ResourceMapDef;
+import org.jecosys.terrain.TerrainDef;
+import org.jecosys.wind.FlowDef;
+import org.jecosys.wind.FlowKind;
+import org.jecosys.wind.MotionDef;
+
+/**
+ * The scene format, version 1, as one table: every element and attribute with its type, range,
+ * default, units and documentation. The loader validates against it, the writer saves from it and
+ * {@link SchemaXsd} generates {@code scenes/jecosys-scene.xsd} from it, so the three cannot drift.
+ * Attribute names equal the Def record components they fill. Angles are degrees in files and
+ * radians in Defs. Immutable after class initialisation; any thread.
+ */
+final class SceneSchema {
+    /** Largest scene file accepted, bytes. */
+    static final long MAX_FILE_BYTES = 8L * 1024 * 1024;
+    static final int MAX_SPECIES = 64;
+    static final int MAX_COMPONENTS = 32;
+    static final int MAX_LODS = 8;
+    static final int MAX_DISTRIBUTIONS = 256;
+    static final int MAX_PLANTS = 10_000;
+    static final int MAX_FLOWS = 256;
+    static final int MAX_WAYPOINTS = 1024;
+    static final double INF = Double.POSITIVE_INFINITY;
+
+    static final ElementSpec ROOT;
+
+    private SceneSchema() {
+    }
+
+    private static AttrSpec num(String name, String units, String doc) {
+        return AttrSpec.of(name, DOUBLE, units, doc);
+    }
+
+    private static AttrSpec angle(String name, String doc) {
+        return AttrSpec.of(name, ANGLE, "degrees", doc);
+    }
+
+    private static AttrSpec integer(String name, String doc) {
+        return AttrSpec.of(name, INT, "", doc);
+    }
+
+    private static AttrSpec bool(String name, String doc) {
+        return AttrSpec.of(name, BOOL, "", doc);
+    }
+
+    private static AttrSpec seed(String doc, Function<Object, Object> g) {
+        return AttrSpec.of("seed", LONG, "", doc).def(1L).get(g);
+    }
+
+    private static <E extends Enum<E>> List<String> words(E[] constants, Function<E, String> xml) {
+        List<String> out = new ArrayList<>();
+        for (E e : constants) {
+            out.add(xml.apply(e));
+        }
+        return out;
+    }
+
+    private static AttrSpec enumeration(String name, List<String> words, String doc) {
+        return AttrSpec.of(name, ENUM, "", doc).values(words);
+    }
+
+    private static ElementSpec resourceMap(String name, String what) {
+        Function<Object, ResourceMapDef> pick = d -> (ResourceMapDef) d;
+        return new ElementSpec(name, "The " + what + " map over the terrain (paper section 4.3); levels in [0, 1].")
+                .attr(enumeration("source", words(ResourceMapDef.Source.values(), ResourceMapDef.Source::xmlName),
+                        "How the map is made: uniform level, seeded noise, valleys (water gathers in low ground), "
+                                + "or a greyscale image.").def("uniform")
+                        .get(d -> pick.apply(d).source().xmlName()))
+                .attr(integer("resolution", "Cells per side.").range(2, 1024).def(64)
+                        .get(d -> pick.apply(d).resolution()))
+                .attr(num("amount", "", "Overall level multiplier.").range(0, 1).def(1.0)
+                        .get(d -> pick.apply(d).amount()))
+                .attr(num("scale", "metres", "Feature size of noise maps.").rangeAbove(0, 100_000).def(8.0)
+                        .get(d -> pick.apply(d).scale()))
+                .attr(AttrSpec.of("image", PATH, "", "Greyscale PNG, relative to the scene file; required exactly "
+                        + "when source is image.").get(d -> pick.apply(d).image()));
+    }
+
+    private static ElementSpec path(String doc, double defaultSpeed, boolean defaultLoop, boolean withY,
+                                    Function<Object, List<Waypoint>> waypoints,
+                                    Function<Object, Object> speed, Function<Object, Object> loop) {
+        ElementSpec wp = new ElementSpec("waypoint", "A point of the path.")
+                .attr(num("x", "metres", "X.").range(-1e6, 1e6).required().get(d -> ((Waypoint) d).x()))
+                .attr(num("z", "metres", "Z.").range(-1e6, 1e6).required().get(d -> ((Waypoint) d).z()));
+        if (withY) {
+            wp.attr(num("y", "metres", "Eye height above the terrain.").range(-1e5, 1e5).def(1.7)
+                    .get(d -> ((Waypoint) d).y()));
+        }
+        return new ElementSpec("path", doc)
+                .attr(num("speed", "m/s", "Speed along the path.").rangeAbove(0, 10_000).def(defaultSpeed).get(speed))
+                .attr(bool("loop", "Start again at the first waypoint after the last.").def(defaultLoop).get(loop))
+                .child(wp, 2, MAX_WAYPOINTS, d -> waypoints.apply(d));
+    }
+
+    private static ElementSpec flow(FlowKind kind, String doc) {
+        ElementSpec e = new ElementSpec(kind.xmlName(), doc)
+                .attr(AttrSpec.of("id", ID, "", "Unique name of the flow.").required().get(d -> f(d).id()))
+                .attr(bool("enabled", "Whether the flow starts enabled.").def(true).get(d -> f(d).enabled()))
+                .attr(num("x", "metres", "Centre X.").range(-1e6, 1e6).def(0.0).get(d -> f(d).x()))
+                .attr(num("z", "metres", "Centre Z.").range(-1e6, 1e6).def(0.0).get(d -> f(d).z()));
+        String strengthDoc = switch (kind) {
+            case UNIFORM -> "Wind speed, m/s.";
+            case GUST -> "Mean wind speed, m/s.";
+            case SOURCE -> "Source strength a in u = (a / 2 pi) (p - c) / r^2, m^2/s.";
+            case SINK -> "Sink strength: a = -strength in u = (a / 2 pi) (p - c) / r^2, m^2/s.";
+            case VORTEX -> "Circulation Gamma in u = (Gamma / 2 pi) y x (p - c) / r^2, m^2/s; counter-clockwise "
+                    + "seen from above.";
+            case BLAST -> "Peak source strength of the pulse, m^2/s.";
+            case RAIN -> "Strength of each drop's radial burst, m^2/s.";
+        };
+        e.attr(num("strength", (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) ? "m/s" : "m^2/s", strengthDoc)
+                .range(0, 1e6).required().get(d -> f(d).strength()));
+        if (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) {
+            e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.").range(-360, 360).def(0.0)
+                    .get(d -> f(d).direction()));
+        }
+        e.attr(num("coreRadius", "metres", "Within this distance of the centre a singular flow tapers linearly to 0.")
+                .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_CORE_RADIUS).get(d -> f(d).coreRadius()));
+        AttrSpec influence = num("influenceRadius", "metres",
+                "Beyond this distance from the centre the flow is 0; absent means unbounded.")
+                .rangeAbove(0, 1e6).def(INF).get(d -> f(d).influenceRadius());
+        if (kind == FlowKind.RAIN) {
+            influence = num("influenceRadius", "metres", "Radius of the rain disc.").rangeAbove(0, 1e6).required()
+                    .get(d -> f(d).influenceRadius());
+        }
+        e.attr(influence);
+        e.attr(num("start", "seconds", "Simulation time the flow begins.").range(0, 1e9).def(0.0)
+                .get(d -> f(d).activation().start()));
+        double defaultDuration = kind == FlowKind.BLAST ? 0.5 : INF;
+        e.attr(num("duration", "seconds", kind == FlowKind.BLAST ? "Length of the pulse."
+                        : "How long the flow lasts; absent means forever.")
+                .rangeAbove(0, 1e9).def(defaultDuration).get(d -> f(d).activation().duration()));
+        e.attr(num("rampIn", "seconds", "Time to reach full strength.").range(0, 1e9).def(0.0)
+                .get(d -> f(d).activation().rampIn()));
+        e.attr(num("rampOut", "seconds", "Time to fade out before the end.").range(0, 1e9).def(0.0)
+                .get(d -> f(d).activation().rampOut()));
+        e.attr(bool("advected", "Whether the centre moves with the other active flows (paper section 3.2); "
+                + "not together with a path.").def(false).get(d -> f(d).motion().kind() == MotionDef.Kind.ADVECTED));
+        if (kind == FlowKind.GUST || kind == FlowKind.RAIN) {
+            e.attr(num("noiseScale", "metres", kind == FlowKind.GUST ? "Spatial size of gusts."
+                            : "Radius of one drop's burst.")
+                    .rangeAbove(0, 100_000).def(FlowDef.DEFAULT_NOISE_SCALE).get(d -> f(d).noiseScale()));
+            e.attr(num("noiseFrequency", kind == FlowKind.GUST ? "Hz" : "drops/(s m^2)",
+                            kind == FlowKind.GUST ? "How often gusts come." : "Drops per second per square metre.")
+                    .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_NOISE_FREQUENCY).get(d -> f(d).noiseFrequency()));
+            e.attr(AttrSpec.of("seed", LONG, "", "Seed of the noise or drops.").def(0L).get(d -> f(d).seed()));
+        }
+        e.child(path("A scripted path the centre walks along.", 1.0, false, false,
+                        d -> ((MotionDef) d).waypoints(), d -> ((MotionDef) d).speed(), d -> ((MotionDef) d).loop()),
+                0, 1, d -> f(d).motion().kind() == MotionDef.Kind.PATH ? List.of(f(d).motion()) : List.of());
+        return e;
+    }
+
+    private static FlowDef f(Object d) {
+        return (FlowDef) d;
+    }
+
+    private static ComponentDef c(Object d) {
+        return (ComponentDef) d;
+    }
+
+    private static DistributionDef dist(Object d) {
+        return (DistributionDef) d;
+    }
+
+    private static CameraDef cam(Object d) {
+        return (CameraDef) d;
+    }
+
+    private static SceneDef scene(Object d) {
+        return (SceneDef) d;
+    }
+
+    static {
+        ElementSpec terrain = new ElementSpec("terrain", "The terrain: a heightfield centred on the origin "
+                + "(paper section 4.3).")
+                .attr(num("sizeX", "metres", "Extent along X.").rangeAbove(0, 100_000).required()
+                        .get(d -> ((TerrainDef) d).sizeX()))
+                .attr(num("sizeZ", "metres", "Extent along Z.").rangeAbove(0, 100_000).required()
+                        .get(d -> ((TerrainDef) d).sizeZ()))
+                .attr(integer("resolution", "Heightfield vertices per side.").range(2, 2049).def(65)
+                        .get(d -> ((TerrainDef) d).resolution()))
+                .attr(num("heightScale", "metres", "Highest point above the lowest.").range(0, 10_000).def(0.0)
+                        .get(d -> ((TerrainDef) d).heightScale()))
+                .attr(num("roughness", "", "Fractal roughness of the generated relief.").range(0, 1).def(0.5)
+                        .get(d -> ((TerrainDef) d).roughness()))
+                .attr(seed("Seed of the generated relief.", d -> ((TerrainDef) d).seed()))
+                .attr(AttrSpec.of("heightmap", PATH, "", "Greyscale PNG heightmap relative to the scene file; "
+                        + "absent to generate the relief.").get(d -> ((TerrainDef) d).heightmap()))
+                .child(resourceMap("water", "water"), 0, 1,
+                        d -> List.of(((TerrainDef) d).water()))
+                .child(resourceMap("nutrients", "nutrient"), 0, 1,
+                        d -> List.of(((TerrainDef) d).nutrients()));
+
+        ElementSpec lod = new ElementSpec("lod", "A level of detail (paper section 4.1, Table 3), in ascending "
+                + "distance; the last has no maxDistance.")
+                .attr(num("maxDistance", "metres", "Farthest viewer distance of this level; absent for the last.")
+                        .rangeAbove(0, 1e6).def(INF).get(d -> ((LodDef) d).maxDistance()))
+                .attr(enumeration("primitive", words(Primitive.values(), Primitive::xmlName), "What it draws with.")
+                        .def("triangles").get(d -> ((LodDef) d).primitive().xmlName()));
+        ElementSpec variation = new ElementSpec("variation", "Per-instance variation (paper section 4.1); "
+                + "fractions are relative.")
+                .attr(integer("variants", "Pre-computed shape variants sharing pose tables.").range(1, 64).def(1)
+                        .get(d -> ((VariationDef) d).variants()))
+                .attr(num("length", "", "Relative length variation.").range(0, 0.9).def(0.0)
+                        .get(d -> ((VariationDef) d).length()))
+                .attr(num("width", "", "Relative width variation.").range(0, 0.9).def(0.0)
+                        .get(d -> ((VariationDef) d).width()))
+                .attr(num("curvature", "", "Relative curvature variation.").range(0, 0.9).def(0.0)
+                        .get(d -> ((VariationDef) d).curvature()))
+                .attr(angle("tilt", "Extra tilt from vertical.").range(0, 45).def(0.0)
+                        .get(d -> ((VariationDef) d).tilt()));
+        ElementSpec component = new ElementSpec("component", "A component type: skeleton shape (paper section 4.1) "
+                + "and dynamic-constraint spring (section 4.2, equations 4-5).")
+                .attr(AttrSpec.of("id", ID, "", "Unique within the species.").required().get(d -> c(d).id()))
+                .attr(enumeration("type", words(ComponentType.values(), ComponentType::xmlName), "What it is.")
+                        .required().get(d -> c(d).type().xmlName()))
+                .attr(enumeration("shape", words(ComponentShape.values(), ComponentShape::xmlName),
+                        "How primitives are generated from the skeleton.").def("strip")
+                        .get(d -> c(d).shape().xmlName()))
+                .attr(integer("count", "How many a plant has.").range(1, 256).def(1).get(d -> c(d).count()))
+                .attr(AttrSpec.of("attachTo", ID, "", "Id of the component at whose tip these sit; absent for the "
+                        + "ground.").get(d -> c(d).attachTo()))
+                .attr(integer("segments", "Skeleton segments (points = segments + 1).").range(1, 32).required()
+                        .get(d -> c(d).segments()))
+                .attr(num("length", "metres", "Skeleton length.").rangeAbove(0, 10).required()
+                        .get(d -> c(d).length()))
+                .attr(num("baseWidth", "metres", "Width at the base.").rangeAbove(0, 1).required()
+                        .get(d -> c(d).baseWidth()))
+                .attr(num("tipWidth", "metres", "Width at the tip.").range(0, 1).def(0.0).get(d -> c(d).tipWidth()))
+                .attr(angle("curvature", "Rest curvature over the whole length, before gravity.").range(-180, 180)
+                        .def(0.0).get(d -> c(d).curvature()))
+                .attr(angle("twist", "Twist around the skeleton over the whole length.").range(-360, 360).def(0.0)
+                        .get(d -> c(d).twist()))
+                .attr(angle("tilt", "Angle of the base from vertical.").range(0, 90).def(0.0).get(d -> c(d).tilt()))
+                .attr(num("mass", "kg", "Mass.").rangeAbove(0, 10).required().get(d -> c(d).mass()))
+                .attr(num("stiffness", "N/m", "Spring constant PC of equation 4.").rangeAbove(0, 1e6).required()
+                        .get(d -> c(d).stiffness()))
+                .attr(num("responseTime", "seconds", "Response time tau of the spring.").range(0.001, 10).def(0.3)
+                        .get(d -> c(d).responseTime()))
+                .attr(num("dragArea", "m^2", "Drag coefficient times area: force = 0.5 rho dragArea |u| u.")
+                        .range(0, 10).def(0.001).get(d -> c(d).dragArea()))
+                .attr(AttrSpec.of("colour", COLOUR, "", "Base colour.").def(Rgb.parseHex("#4a8a2a"))
+                        .get(d -> c(d).colour()))
+                .attr(AttrSpec.of("lodSegments", INT_LIST, "", "Per level of detail of the species, segments used "
+                        + "there (0 = not drawn); one value per lod, each at most segments.").range(0, 32)
+                        .items(1, MAX_LODS).required().get(d -> c(d).lodSegments()));
+        ElementSpec species = new ElementSpec("species", "A plant species (paper section 4.1, Tables 1-3).")
+                .attr(AttrSpec.of("id", ID, "", "Unique species id; distributions refer to it.").required()
+                        .get(d -> ((SpeciesDef) d).id()))
+                .attr(AttrSpec.of("name", TEXT, "", "Human-readable name.").def("")
+                        .get(d -> ((SpeciesDef) d).name()))
+                .attr(integer("poses", "Pose-table size K, from rest to maxBend.").range(2, 64)
+                        .def(SpeciesDef.DEFAULT_POSES).get(d -> ((SpeciesDef) d).poses()))
+                .attr(angle("maxBend", "Bend of the last pose beyond the rest shape.").rangeAbove(0, 90)
+                        .def(Math.toRadians(80)).get(d -> ((SpeciesDef) d).maxBend()))
+                .child(lod, 1, MAX_LODS, d -> ((SpeciesDef) d).lods())
+                .child(variation, 0, 1, d -> List.of(((SpeciesDef) d).variation()))
+                .child(component, 1, MAX_COMPONENTS, d -> ((SpeciesDef) d).components());
+
+        ElementSpec distribution = new ElementSpec("distribution", "A competitive distribution of one species "
+                + "(paper section 4.3).")
+                .attr(AttrSpec.of("species", ID, "", "Id of the species.").required().get(d -> dist(d).species()))
+                .attr(integer("count", "Exact number of plants, or -1 to use density.")
+                        .range(-1, DistributionDef.MAX_COUNT).def(-1).get(d -> dist(d).count()))
+                .attr(num("density", "plants/m^2", "Plants per square metre where conditions hold (count -1).")
+                        .range(0, 10_000).def(1.0).get(d -> dist(d).density()))
+                .attr(num("minWater", "", "Lowest water level accepted.").range(0, 1).def(0.0)
+                        .get(d -> dist(d).minWater()))
+                .attr(num("maxWater", "", "Highest water level accepted.").range(0, 1).def(1.0)
+                        .get(d -> dist(d).maxWater()))
+                .attr(num("minNutrients", "", "Lowest nutrient level accepted.").range(0, 1).def(0.0)
+                        .get(d -> dist(d).minNutrients()))
+                .attr(num("maxNutrients", "", "Highest nutrient level accepted.").range(0, 1).def(1.0)
+                        .get(d -> dist(d).maxNutrients()))
+                .attr(angle("maxSlope", "Steepest ground accepted.").range(0, 90).def(Math.PI / 2)
+                        .get(d -> dist(d).maxSlope()))
+                .attr(num("minAltitude", "metres", "Lowest terrain height accepted.").range(-1e5, 1e5).def(-1e5)
+                        .get(d -> dist(d).minAltitude()))
+                .attr(num("maxAltitude", "metres", "Highest terrain height accepted.").range(-1e5, 1e5).def(1e5)
+                        .get(d -> dist(d).maxAltitude()))
+                .attr(num("footprint", "metres", "Radius of ground a plant takes.").rangeAbove(0, 100).def(0.2)
+                        .get(d -> dist(d).footprint()))
+                .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1).def(0.5)
+                        .get(d -> dist(d).waterUse()))
+                .attr(num("nutrientUse", "", "Nutrient level a plant consumes in its footprint.").range(0, 1)
+                        .def(0.5).get(d -> dist(d).nutrientUse()));
+        ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
+                .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
+                        .get(d -> ((PlacementDef) d).species()))
+                .attr(num("x", "metres", "X.").range(-1e6, 1e6).required().get(d -> ((PlacementDef) d).x()))
+                .attr(num("z", "metres", "Z.").range(-1e6, 1e6).required().get(d -> ((PlacementDef) d).z()))
+                .attr(angle("azimuth", "Rest azimuth.").range(-360, 360).def(0.0)
+                        .get(d -> ((PlacementDef) d).azimuth()));
+
+        ElementSpec wind = new ElementSpec("wind", "The wind flows (paper section 3.2), in any order.");
+        wind.choice = true;
+        wind.maxChildren = MAX_FLOWS;
+        wind.choiceItems = d -> scene(d).flows();
+        for (FlowKind k : FlowKind.values()) {
+            String doc = switch (k) {
+                case UNIFORM -> "A uniform flow: constant velocity over the ground.";
+                case SOURCE -> "A source: flow away from its centre, falling off as 1/r.";
+                case SINK -> "A sink: flow toward its centre, falling off as 1/r.";
+                case VORTEX -> "A vortex: flow around its centre, falling off as 1/r.";
+                case GUST -> "Turbulent wind: a mean speed modulated by seeded noise in space and time.";
+                case BLAST -> "A short radial pulse, for explosions.";
+                case RAIN -> "Rain over a disc: short seeded radial impulses.";
+            };
+            wind.choiceChild(flow(k, doc), d -> f(d).kind() == k);
+        }
+
+        ElementSpec field = new ElementSpec("field", "The LOD quadtree force field (paper section 3.1).")
+                .attr(bool("enabled", "When false no flow is evaluated and plants get no force.").def(true)
+                        .get(d -> ((ForceFieldDef) d).enabled()))
+                .attr(integer("maxObjectsPerNode", "A leaf splits into four when it would hold more plants.")
+                        .range(1, 1_000_000).def(8).get(d -> ((ForceFieldDef) d).maxObjectsPerNode()))
+                .attr(integer("maxDepth", "Deepest node level (root is 0).").range(0, ForceFieldDef.MAX_DEPTH).def(8)
+                        .get(d -> ((ForceFieldDef) d).maxDepth()))
+                .attr(AttrSpec.of("lodDistances", DOUBLE_LIST, "metres", "Ascending distances: beyond the i-th, "
+                        + "i levels collapse into their ancestor; empty for no distance LOD.")
+                        .rangeAbove(0, 1e6).items(0, 16).def(List.of(15.0, 30.0))
+                        .get(d -> ((ForceFieldDef) d).lodDistances()));
+
+        ElementSpec camera = new ElementSpec("camera", "The viewer's start pose and optional path (paper section "
+                + "5.2).")
+                .attr(num("x", "metres", "Eye X.").range(-1e6, 1e6).def(0.0).get(d -> cam(d).x()))
+                .attr(num("y", "metres", "Eye height above the terrain.").range(-1e5, 1e5).def(1.7)
+                        .get(d -> cam(d).y()))
+                .attr(num("z", "metres", "Eye Z.").range(-1e6, 1e6).def(0.0).get(d -> cam(d).z()))
+                .attr(angle("yaw", "Heading: 0 looks along -Z, positive turns toward +X.").range(-360, 360)
+                        .def(0.0).get(d -> cam(d).yaw()))
+                .attr(angle("pitch", "Positive looks up.").range(-90, 90).def(0.0).get(d -> cam(d).pitch()))
+                .attr(angle("fovY", "Vertical field of view.").range(1, 179).def(Math.toRadians(60))
+                        .get(d -> cam(d).fovY()))
+                .attr(num("near", "metres", "Near clip distance.").rangeAbove(0, 10_000).def(0.1)
+                        .get(d -> cam(d).near()))
+                .attr(num("far", "metres", "Far clip distance, greater than near.").rangeAbove(0, 1e7).def(500.0)
+                        .get(d -> cam(d).far()))
+                .child(path("The path the viewer walks (key P in the viewer; benchmarks).", 1.4, true, true,
+                                d -> cam(d).path(), d -> cam(d).pathSpeed(), d -> cam(d).pathLoop()),
+                        0, 1, d -> cam(d).path().isEmpty() ? List.of() : List.of(d));
+
+        ElementSpec animation = new ElementSpec("animation", "Animation settings (paper section 4.2).")
+                .attr(enumeration("mode", words(AnimationMode.values(), AnimationMode::xmlName),
+                        "static, random or constraint (paper Table 7's S1, S2, S3).").def("constraint")
+                        .get(d -> ((AnimationDef) d).mode().xmlName()))
+                .attr(num("fixedStep", "seconds", "Fixed simulation step.").range(1e-5, 1).def(1.0 / 60)
+                        .get(d -> ((AnimationDef) d).fixedStep()))
+                .attr(integer("maxSubSteps", "Cap on fixed steps per step(dt) call.").range(1, 1000).def(8)
+                        .get(d -> ((AnimationDef) d).maxSubSteps()))
+                .attr(integer("subIntervals", "Sub-intervals of each step in the spring update (section 4.2.1).")
+                        .range(1, 64).def(4).get(d -> ((AnimationDef) d).subIntervals()))
+                .attr(integer("threads", "Animation workers; 0 means the available processors.").range(0, 256)
+                        .def(0).get(d -> ((AnimationDef) d).threads()))
+                .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
+
+        RenderDef rd = RenderDef.defaults();
+        ElementSpec render = new ElementSpec("render", "Presentation settings.")
+                .attr(integer("width", "Window or image width, pixels.").range(16, 8192).def(rd.width())
+                        .get(d -> ((RenderDef) d).width()))
+                .attr(integer("height", "Window or image height, pixels.").range(16, 8192).def(rd.height())
+                        .get(d -> ((RenderDef) d).height()))
+                .attr(AttrSpec.of("sky", COLOUR, "", "Background colour.").def(rd.sky())
+                        .get(d -> ((RenderDef) d).sky()))
+                .attr(num("lodTransition", "metres", "Band over which two levels of detail are dithered.")
+                        .range(0, 10).def(rd.lodTransition()).get(d -> ((RenderDef) d).lodTransition()))
+                .attr(enumeration("terrainTint", words(RenderDef.Tint.values(), RenderDef.Tint::xmlName),
+                        "Which resource map tints the terrain.").def("none")
+                        .get(d -> ((RenderDef) d).terrainTint().xmlName()))
+                .attr(bool("showField", "Force-field overlay visible at start (paper Figure 2).").def(false)
+                        .get(d -> ((RenderDef) d).showField()))
+                .attr(bool("showWind", "Wind-vector overlay visible at start (paper Figure 3).").def(false)
+                        .get(d -> ((RenderDef) d).showWind()));
+
+        ROOT = new ElementSpec("scene", "A JEcoSys scene, format version 1. Children appear in this order.")
+                .attr(integer("version", "Format version.").range(SceneDef.FORMAT_VERSION, SceneDef.FORMAT_VERSION)
+                        .required().get(d -> scene(d).version()))
+                .attr(AttrSpec.of("name", TEXT, "", "Human-readable name.").def("").get(d -> scene(d).name()))
+                .attr(seed("Master seed of the scene (distributions, variation).", d -> scene(d).seed()))
+                .child(terrain, 1, 1, d -> List.of(scene(d).terrain()))
+                .child(species, 0, MAX_SPECIES, d -> scene(d).species())
+                .child(distribution, 0, MAX_DISTRIBUTIONS, d -> scene(d).distributions())
+                .child(plant, 0, MAX_PLANTS, d -> scene(d).placements())
+                .child(wind, 0, 1, d -> scene(d).flows().isEmpty() ? List.of() : List.of(d))
+                .child(field, 0, 1, d -> List.of(scene(d).field()))
+                .child(camera, 0, 1, d -> List.of(scene(d).camera()))
+                .child(animation, 0, 1, d -> List.of(scene(d).animation()))
+                .child(render, 0, 1, d -> List.of(scene(d).render()));
+    }
+}
