@@ -28,7 +28,9 @@ import org.jecosys.math.Require;
  * STRIP vertices: {@code a = -1} (left) and {@code +1} (right) at each used point, {@code b = 0};
  * a pointed tip is one vertex {@code a = b = 0}. FAN: the base {@code a = b = 0}, rim vertex
  * {@code j} at {@code a = cos(2 pi j / n)}, {@code b = sin(2 pi j / n)}. Triangles are not
- * oriented consistently (draw both faces); lines are index pairs.
+ * oriented consistently (draw both faces); lines are index pairs. A FAN needs {@code n >= 3} to
+ * enclose an area; with 1 or 2 it yields the same count of degenerate (zero-area or zero-length)
+ * primitives.
  *
  * <p>Immutable after construction; any thread; accessors do not allocate.
  */

@@ -37,7 +37,7 @@ public final class GravityBend {
     /** Young's modulus of plant tissue used for every component, Pa (order of fresh grass blades). */
     public static final double MODULUS = 1.0e9;
     /** Effective flexural thickness of flat parts (leaves, petals, heads), metres. */
-    public static final double THICKNESS = 8.0e-4;
+    public static final double THICKNESS = 1.2e-3;
     /** Standard gravity, m/s^2: the default of the build step. */
     public static final double EARTH_GRAVITY = 9.81;
 

@@ -44,7 +44,7 @@ public final class SpeciesLibrary {
     /** Grass tuft A: 25 leaves; 250 / 150 triangles, 175 lines (Table 2). */
     public static SpeciesDef grassTuftA() {
         ComponentDef leaf = new ComponentDef("leaf", ComponentType.LEAF, ComponentShape.STRIP, 25, null,
-                5, 0.45, 0.006, 0.0015, 0.35, 0.4, 0.3, 8.0e-4, 0.2, 0.3, 0.002,
+                5, 0.45, 0.006, 0.0015, 0.35, 0.4, 0.3, 4.0e-4, 0.2, 0.3, 0.002,
                 Rgb.parseHex("#4f8a2b"), List.of(5, 3, 3));
         return new SpeciesDef("grassA", "grass tuft A", POSES, 1.2, List.of(leaf), table3Lods(),
                 new VariationDef(8, 0.2, 0.15, 0.3, 0.15));
