@@ -23,6 +23,8 @@ public final class LodChooser {
     private final double band;
 
     /**
+     * A chooser for explicit levels. Build time; allocates.
+     *
      * @param lods      the species' levels (ascending maxDistance, the last unbounded), at least one
      * @param bandWidth transition band width, metres, in [0, smallest gap between edges (from 0)]
      */
