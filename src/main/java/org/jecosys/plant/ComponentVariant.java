@@ -1,0 +1,41 @@
+package org.jecosys.plant;
+
+import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
+
+/**
+ * The seeded changes one shape variant applies to one component type (paper §4.1: "small changes
+ * in their skeletons can generate a great variety of components shapes"). Mass follows the area,
+ * {@code mass * lengthScale * widthScale}. Immutable; any thread.
+ *
+ * @param lengthScale    factor on the length, in [1 - v.length, 1 + v.length]
+ * @param widthScale     factor on both widths, in [1 - v.width, 1 + v.width]
+ * @param curvatureScale factor on the rest curvature, in [1 - v.curvature, 1 + v.curvature]
+ * @param extraTilt      added to the tilt (the sum clamped to [0, pi/2]), radians, in [0, v.tilt]
+ */
+public record ComponentVariant(double lengthScale, double widthScale, double curvatureScale, double extraTilt) {
+    /** The unchanged component. */
+    public static final ComponentVariant IDENTITY = new ComponentVariant(1, 1, 1, 0);
+
+    public ComponentVariant {
+        Require.range("lengthScale", lengthScale, 0.1, 1.9);
+        Require.range("widthScale", widthScale, 0.1, 1.9);
+        Require.range("curvatureScale", curvatureScale, 0.1, 1.9);
+        Require.range("extraTilt", extraTilt, 0, Math.PI / 4);
+    }
+
+    /**
+     * Draws the variant {@code variant} of component type {@code component} from {@code seed}:
+     * a pure function of its arguments (its own {@link Rng} sub-stream), so a species built twice
+     * with one seed is identical and different seeds give different shapes.
+     */
+    public static ComponentVariant sample(VariationDef v, long seed, int variant, int component) {
+        Require.nonNull("v", v);
+        Rng rng = Rng.forStream(seed, (long) variant * 1024 + component);
+        double len = 1 + v.length() * rng.nextDouble(-1, 1);
+        double wid = 1 + v.width() * rng.nextDouble(-1, 1);
+        double cur = 1 + v.curvature() * rng.nextDouble(-1, 1);
+        double tilt = v.tilt() * rng.nextDouble();
+        return new ComponentVariant(len, wid, cur, tilt);
+    }
+}
