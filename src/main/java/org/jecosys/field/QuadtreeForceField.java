@@ -133,12 +133,21 @@ public final class QuadtreeForceField implements ForceField {
 
     @Override
     public int addPlant(double x, double z) {
-        return tree.insert(x, z);
+        int p = tree.insert(x, z);
+        ensureNodeState();
+        return p;
     }
 
     @Override
     public void movePlant(int plant, double x, double z) {
         tree.move(plant, x, z);
+        ensureNodeState();
+    }
+
+    private void ensureNodeState() {
+        if (stamp.length < tree.nodeCapacity()) {
+            allocNodeState(tree.nodeCapacity());
+        }
     }
 
     @Override
@@ -149,9 +158,7 @@ public final class QuadtreeForceField implements ForceField {
     @Override
     public void update(ViewCamera camera) {
         Require.nonNull("camera", camera);
-        if (stamp.length < tree.nodeCapacity()) {
-            allocNodeState(tree.nodeCapacity());
-        }
+        ensureNodeState();
         if (current == Integer.MAX_VALUE) {
             Arrays.fill(stamp, 0);
             current = 0;

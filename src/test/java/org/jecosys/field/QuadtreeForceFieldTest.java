@@ -281,6 +281,8 @@ class QuadtreeForceFieldTest {
             f.addPlant(rng.nextDouble(0, SIZE), rng.nextDouble(0, SIZE));
         }
         f.movePlant(0, 100, 95);
+        assertFalse(f.isVisible(f.plantCount() - 1), "not visible before the next update");
+        assertEquals(-1, f.debugView().representative(f.debugView().nodeCount() - 1));
         f.update(cam);
         QuadtreeTest.checkInvariants(f.tree());
         assertTrue(f.isVisible(0));
