@@ -21,8 +21,8 @@ public interface ForceField {
 
     /**
      * Adds a plant at ground point (x, z), metres, inside the field's bounds; returns its id
-     * (0, 1, 2, ... in order). A plant added (or moved, or whose leaf split) since the last
-     * {@link #update} counts as not visible until the next one. Allocates only when arrays must grow.
+     * (0, 1, 2, ... in order). A plant added or moved into a leaf created since the last
+     * {@link #update} reads as not visible until the next one. Allocates only when arrays must grow.
      */
     int addPlant(double x, double z);
 
