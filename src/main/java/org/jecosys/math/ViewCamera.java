@@ -1,0 +1,177 @@
+package org.jecosys.math;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+
+/**
+ * A perspective viewer shared by the force field (frustum culling and distance LOD, paper §3.1.1),
+ * the simulation and the renderer. Conventions (same as {@link CameraDef}): metres and radians,
+ * Y is up and the ground is the XZ plane; {@code yaw = 0} looks along -Z, positive yaw turns toward
+ * +X; positive pitch looks up. The projection is OpenGL's (clip-space depth in [-1, 1]).
+ *
+ * <p>Mutable and not thread-safe: one owner thread sets it; others may read a copy made with
+ * {@link #set(ViewCamera)}. No method allocates except the constructors and {@link #of}.
+ */
+public final class ViewCamera {
+    private double x;
+    private double y;
+    private double z;
+    private double yaw;
+    private double pitch;
+    private double fovY = Math.toRadians(60);
+    private double aspect = 16.0 / 9.0;
+    private double near = 0.1;
+    private double far = 500;
+
+    /** A camera at the origin looking along -Z, 60 degree vertical field of view, aspect 16:9, 0.1-500 m. */
+    public ViewCamera() {
+    }
+
+    /**
+     * A camera from a scene's start pose.
+     *
+     * @param def     pose and lens; its y is a height above the ground
+     * @param groundY terrain height under (def.x, def.z), metres (finite)
+     * @param aspect  viewport width / height, &gt; 0
+     * @return a new camera (allocates)
+     */
+    public static ViewCamera of(CameraDef def, double groundY, double aspect) {
+        Require.nonNull("def", def);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(def.x(), Require.finite("groundY", groundY) + def.y(), def.z());
+        c.setOrientation(def.yaw(), def.pitch());
+        c.setLens(def.fovY(), aspect, def.near(), def.far());
+        return c;
+    }
+
+    /** Copies every setting of {@code other} into this camera. No allocation. */
+    public ViewCamera set(ViewCamera other) {
+        Require.nonNull("other", other);
+        x = other.x;
+        y = other.y;
+        z = other.z;
+        yaw = other.yaw;
+        pitch = other.pitch;
+        fovY = other.fovY;
+        aspect = other.aspect;
+        near = other.near;
+        far = other.far;
+        return this;
+    }
+
+    /** Sets the eye position, metres (absolute, not above terrain). No allocation. */
+    public ViewCamera setPosition(double x, double y, double z) {
+        this.x = Require.finite("x", x);
+        this.y = Require.finite("y", y);
+        this.z = Require.finite("z", z);
+        return this;
+    }
+
+    /**
+     * Sets the view direction. No allocation.
+     *
+     * @param yaw   radians, 0 looks along -Z, positive turns toward +X (any finite value)
+     * @param pitch radians in [-pi/2, pi/2], positive looks up
+     */
+    public ViewCamera setOrientation(double yaw, double pitch) {
+        this.yaw = Require.finite("yaw", yaw);
+        this.pitch = Require.range("pitch", pitch, -Math.PI / 2, Math.PI / 2);
+        return this;
+    }
+
+    /**
+     * Sets the lens. No allocation.
+     *
+     * @param fovY   vertical field of view, radians, in [1e-3, pi - 1e-3]
+     * @param aspect width / height, &gt; 0
+     * @param near   near clip distance, metres, &gt; 0
+     * @param far    far clip distance, metres, &gt; near
+     */
+    public ViewCamera setLens(double fovY, double aspect, double near, double far) {
+        Require.range("fovY", fovY, 1e-3, Math.PI - 1e-3);
+        Require.positive("aspect", aspect);
+        Require.positive("near", near);
+        Require.positive("far", far);
+        if (far <= near) {
+            throw new IllegalArgumentException("far must be > near, got far=" + far + " near=" + near);
+        }
+        this.fovY = fovY;
+        this.aspect = aspect;
+        this.near = near;
+        this.far = far;
+        return this;
+    }
+
+    /** Eye X, metres. */
+    public double x() {
+        return x;
+    }
+
+    /** Eye Y (absolute height), metres. */
+    public double y() {
+        return y;
+    }
+
+    /** Eye Z, metres. */
+    public double z() {
+        return z;
+    }
+
+    /** Heading, radians (0 looks along -Z, positive toward +X). */
+    public double yaw() {
+        return yaw;
+    }
+
+    /** Pitch, radians (positive looks up). */
+    public double pitch() {
+        return pitch;
+    }
+
+    /** Vertical field of view, radians. */
+    public double fovY() {
+        return fovY;
+    }
+
+    /** Viewport aspect ratio, width / height. */
+    public double aspect() {
+        return aspect;
+    }
+
+    /** Near clip distance, metres. */
+    public double near() {
+        return near;
+    }
+
+    /** Far clip distance, metres. */
+    public double far() {
+        return far;
+    }
+
+    /**
+     * The unit view direction in world space: (sin yaw cos pitch, sin pitch, -cos yaw cos pitch).
+     * No allocation.
+     */
+    public Vector3f forward(Vector3f dest) {
+        double cp = Math.cos(pitch);
+        return dest.set((float) (Math.sin(yaw) * cp), (float) Math.sin(pitch), (float) (-Math.cos(yaw) * cp));
+    }
+
+    /**
+     * Writes the world-to-view matrix: {@code Rx(-pitch) * Ry(yaw) * T(-eye)}, the inverse of the
+     * camera's world transform {@code T(eye) * Ry(-yaw) * Rx(pitch)}. No allocation.
+     */
+    public Matrix4f view(Matrix4f dest) {
+        return dest.rotationX((float) -pitch).rotateY((float) yaw).translate((float) -x, (float) -y, (float) -z);
+    }
+
+    /** Writes the OpenGL perspective projection (depth in [-1, 1]). No allocation. */
+    public Matrix4f projection(Matrix4f dest) {
+        return dest.setPerspective((float) fovY, (float) aspect, (float) near, (float) far);
+    }
+
+    /** Writes projection * view: world to clip space. No allocation. */
+    public Matrix4f viewProjection(Matrix4f dest) {
+        projection(dest);
+        return dest.rotateX((float) -pitch).rotateY((float) yaw).translate((float) -x, (float) -y, (float) -z);
+    }
+}

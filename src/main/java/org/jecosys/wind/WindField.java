@@ -1,0 +1,240 @@
+package org.jecosys.wind;
+
+import java.util.List;
+import org.jecosys.math.Require;
+import org.joml.Vector2d;
+
+/**
+ * The set of wind flows of a scene and the simulation clock that drives them (paper §3.2): sums
+ * every active flow's velocity at a ground point (flows superpose linearly), moves flow centres
+ * along their paths or with the other flows (advection), and manages runtime flows for games:
+ * agents (a flow attached to a moving entity), blasts and rain showers.
+ *
+ * <p>Threads: owned by one thread (the simulation's); not thread-safe. Flows and agents may be
+ * added or removed by that thread between updates. {@link #velocity} and {@link #advance} do not
+ * allocate; adding flows allocates (and may grow the internal array).
+ */
+public final class WindField {
+    private FlowBase[] flows;
+    private boolean[] oneShot;
+    private double[] advX;
+    private double[] advZ;
+    private int count;
+    private double time;
+    private final Vector2d tmp = new Vector2d();
+    private final Vector2d adv = new Vector2d();
+
+    /** An empty field at time 0. Allocates. */
+    public WindField() {
+        flows = new FlowBase[8];
+        oneShot = new boolean[8];
+        advX = new double[8];
+        advZ = new double[8];
+    }
+
+    /** A field holding one flow per def, in order, at time 0. Allocates. */
+    public static WindField of(List<FlowDef> defs) {
+        Require.nonNull("defs", defs);
+        WindField w = new WindField();
+        for (int i = 0; i < defs.size(); i++) {
+            w.add(defs.get(i));
+        }
+        return w;
+    }
+
+    /** Simulation time, seconds since the start. */
+    public double time() {
+        return time;
+    }
+
+    /** Number of flows held (enabled or not, active or not). */
+    public int size() {
+        return count;
+    }
+
+    /** The i-th flow, i in [0, size()). */
+    public WindSource get(int i) {
+        Require.range("i", i, 0, count - 1);
+        return flows[i];
+    }
+
+    /** Index of the flow with this id, or -1 when there is none. No allocation. */
+    public int indexOf(String id) {
+        for (int i = 0; i < count; i++) {
+            if (flows[i].id().equals(id)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** Builds a flow from {@code def} ({@link WindSource#of}) and adds it. Allocates. */
+    public WindSource add(FlowDef def) {
+        return add(WindSource.of(def));
+    }
+
+    /**
+     * Adds a flow. A PATH flow is placed on its path at the current time.
+     *
+     * @throws IllegalArgumentException when a flow with the same id is already held
+     */
+    public WindSource add(WindSource source) {
+        return add(source, false);
+    }
+
+    private WindSource add(WindSource source, boolean removeWhenExpired) {
+        Require.nonNull("source", source);
+        if (indexOf(source.id()) >= 0) {
+            throw new IllegalArgumentException("a flow with id '" + source.id() + "' is already in the wind field");
+        }
+        if (count == flows.length) {
+            int n = count * 2;
+            flows = java.util.Arrays.copyOf(flows, n);
+            oneShot = java.util.Arrays.copyOf(oneShot, n);
+            advX = java.util.Arrays.copyOf(advX, n);
+            advZ = java.util.Arrays.copyOf(advZ, n);
+        }
+        FlowBase f = (FlowBase) source; // every WindSource is a FlowBase: the interface is sealed
+        if (f.hasPath()) {
+            f.placeOnPath(time);
+        }
+        flows[count] = f;
+        oneShot[count] = removeWhenExpired;
+        count++;
+        return source;
+    }
+
+    /** Removes a flow; returns whether it was held. No allocation. */
+    public boolean remove(WindSource source) {
+        for (int i = 0; i < count; i++) {
+            if (flows[i] == source) {
+                removeAt(i);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void removeAt(int i) {
+        int tail = count - i - 1;
+        System.arraycopy(flows, i + 1, flows, i, tail);
+        System.arraycopy(oneShot, i + 1, oneShot, i, tail);
+        count--;
+        flows[count] = null;
+    }
+
+    /**
+     * Agents: attaches a flow to a moving entity (character, vehicle). The game calls
+     * {@link WindSource#setCentre(double, double)} every frame with the entity's position and
+     * {@link #remove(WindSource)} when it goes. {@code def.motion()} must be FIXED. Allocates.
+     */
+    public WindSource attachAgent(FlowDef def) {
+        Require.nonNull("def", def);
+        if (def.motion().kind() != MotionDef.Kind.FIXED) {
+            throw new IllegalArgumentException("an agent's motion must be FIXED (the game moves it), got "
+                    + def.motion().kind());
+        }
+        return add(def);
+    }
+
+    /**
+     * An explosion at (x, z) now: a {@link BlastFlow} of strength a (m^2/s, &gt; 0) lasting
+     * {@code duration} seconds (&gt; 0), removed automatically once over. Allocates.
+     */
+    public WindSource blast(String id, double x, double z, double strength, double duration) {
+        ActivationDef act = new ActivationDef(time, Require.positive("duration", duration), 0, 0);
+        FlowDef def = new FlowDef(id, FlowKind.BLAST, true, x, z, Require.positive("strength", strength), 0,
+                FlowDef.DEFAULT_CORE_RADIUS, Double.POSITIVE_INFINITY, act, MotionDef.FIXED,
+                FlowDef.DEFAULT_NOISE_SCALE, FlowDef.DEFAULT_NOISE_FREQUENCY, 0);
+        return add(WindSource.of(def), true);
+    }
+
+    /**
+     * A rain shower over the disc of centre (x, z) and {@code radius} metres starting now, as
+     * short seeded impulses ({@link RainFlow}), removed automatically after {@code duration}
+     * seconds (or never, for +Infinity). Allocates.
+     *
+     * @param strength   impulse strength, m^2/s, &gt; 0
+     * @param spacing    cell size between impulses, metres, &gt; 0
+     * @param rate       impulses per second per m^2, &gt; 0
+     */
+    public WindSource rain(String id, double x, double z, double radius, double strength, double spacing,
+                           double rate, double duration, long seed) {
+        ActivationDef act = new ActivationDef(time, duration, 0, 0);
+        FlowDef def = new FlowDef(id, FlowKind.RAIN, true, x, z, Require.positive("strength", strength), 0,
+                FlowDef.DEFAULT_CORE_RADIUS, Require.positive("radius", radius), act, MotionDef.FIXED,
+                spacing, rate, seed);
+        return add(WindSource.of(def), true);
+    }
+
+    /**
+     * Advances the clock by {@code dt} seconds (finite, &gt;= 0) and moves the centres: PATH flows
+     * to their scripted position at the new time; ADVECTED flows by Euler integration of the sum
+     * of the <i>other</i> flows' velocities at their centre at the old time (all advected flows
+     * read the same state, so the result does not depend on flow order). Blasts and showers made
+     * by {@link #blast} and {@link #rain} are removed once their window has ended. No allocation.
+     */
+    public void advance(double dt) {
+        Require.nonNegative("dt", dt);
+        for (int i = 0; i < count; i++) {
+            FlowBase f = flows[i];
+            if (f.def.motion().kind() == MotionDef.Kind.ADVECTED) {
+                velocityExcept(f.cx, f.cz, f, adv);
+                advX[i] = adv.x;
+                advZ[i] = adv.y;
+            }
+        }
+        time += dt;
+        for (int i = 0; i < count; i++) {
+            FlowBase f = flows[i];
+            MotionDef.Kind k = f.def.motion().kind();
+            if (k == MotionDef.Kind.ADVECTED) {
+                f.cx += advX[i] * dt;
+                f.cz += advZ[i] * dt;
+            } else if (k == MotionDef.Kind.PATH) {
+                f.placeOnPath(time);
+            }
+        }
+        for (int i = count - 1; i >= 0; i--) {
+            if (oneShot[i] && flows[i].expired(time)) {
+                removeAt(i);
+            }
+        }
+    }
+
+    /**
+     * Writes the sum of every enabled, active flow's velocity (m/s; x = X, y = Z) at ground point
+     * (x, z) at the current time into dest. Linear superposition. No allocation.
+     */
+    public Vector2d velocity(double x, double z, Vector2d dest) {
+        return velocityExcept(x, z, null, dest);
+    }
+
+    /** Like {@link #velocity} but leaves out {@code skip} (may be null). No allocation. */
+    public Vector2d velocityExcept(double x, double z, WindSource skip, Vector2d dest) {
+        double sx = 0;
+        double sz = 0;
+        Vector2d t = tmp;
+        for (int i = 0; i < count; i++) {
+            FlowBase f = flows[i];
+            if (f == skip) {
+                continue;
+            }
+            f.velocity(x, z, time, t);
+            sx += t.x;
+            sz += t.y;
+        }
+        return dest.set(sx, sz);
+    }
+
+    /** Number of flows enabled and inside their activation window now (weight &gt; 0). No allocation. */
+    public int activeCount() {
+        int n = 0;
+        for (int i = 0; i < count; i++) {
+            if (flows[i].weight(time) > 0) {
+                n++;
+            }
+        }
+        return n;
+    }
+}
