@@ -132,7 +132,8 @@ public final class Heightfield {
      * image's corner pixel centres sit on the terrain's corners. {@code def.heightmap()} is not read:
      * the caller resolves it to {@code image}.
      *
-     * @param image absolute path of the image
+     * @param image    absolute path of the image
+     * @param progress told "terrain" progress in rows; called on the calling thread
      * @throws IOException              when the file cannot be read
      * @throws IllegalArgumentException when def or image is null or the file is not an image
      */

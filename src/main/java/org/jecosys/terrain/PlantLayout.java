@@ -2,6 +2,7 @@ package org.jecosys.terrain;
 
 import java.util.Arrays;
 import java.util.List;
+import org.jecosys.math.Require;
 
 /**
  * Plants placed on a terrain by a {@link TerrainDistributor} (paper §4.3): flat arrays indexed by
@@ -170,8 +171,11 @@ public final class PlantLayout {
         return variantSeed.clone();
     }
 
-    /** Growable per-plant arrays filled by a distributor; one thread. */
-    static final class Builder {
+    /**
+     * Growable per-plant arrays a {@link TerrainDistributor} fills, plant by plant, in placement
+     * order. One thread; {@link #add} allocates only when it grows its arrays (doubling).
+     */
+    public static final class Builder {
         private int n;
         private float[] x = new float[16];
         private float[] y = new float[16];
@@ -184,11 +188,30 @@ public final class PlantLayout {
         private int[] distribution = new int[16];
         private long[] variantSeed = new long[16];
 
-        int size() {
+        /** An empty builder. */
+        public Builder() {
+        }
+
+        /** Plants added so far. */
+        public int size() {
             return n;
         }
 
-        void add(float px, float py, float pz, float az, float fp, double w, double nu, int sp, int dist, long seed) {
+        /**
+         * Adds one plant.
+         *
+         * @param px   X, metres
+         * @param py   Y (terrain height), metres
+         * @param pz   Z, metres
+         * @param az   rest azimuth, radians
+         * @param fp   footprint radius, metres
+         * @param w    footprint-mean water level it found, in [0, 1]
+         * @param nu   footprint-mean nutrient level it found, in [0, 1]
+         * @param sp   species index
+         * @param dist distribution index, or -1 for a hand placement
+         * @param seed variant seed
+         */
+        public void add(float px, float py, float pz, float az, float fp, double w, double nu, int sp, int dist, long seed) {
             if (n == x.length) {
                 int cap = n * 2;
                 x = Arrays.copyOf(x, cap);
@@ -215,7 +238,26 @@ public final class PlantLayout {
             n++;
         }
 
-        PlantLayout build(int[] placed, int[] target, List<String> warnings, ResourceMap w, ResourceMap nu) {
+        /**
+         * The layout of the plants added so far. Copies everything it is given (the maps as frozen
+         * copies), so the builder and the arguments may be reused.
+         *
+         * @param placed   plants placed per distribution
+         * @param target   plants asked for per distribution, same length as placed
+         * @param warnings human-readable warnings
+         * @param w        water left after all plants
+         * @param nu       nutrients left after all plants
+         */
+        public PlantLayout build(int[] placed, int[] target, List<String> warnings, ResourceMap w, ResourceMap nu) {
+            Require.nonNull("placed", placed);
+            Require.nonNull("target", target);
+            Require.nonNull("warnings", warnings);
+            Require.nonNull("w", w);
+            Require.nonNull("nu", nu);
+            if (placed.length != target.length) {
+                throw new IllegalArgumentException("placed and target must have the same length, got "
+                        + placed.length + " and " + target.length);
+            }
             return new PlantLayout(this, placed, target, warnings, w, nu);
         }
     }

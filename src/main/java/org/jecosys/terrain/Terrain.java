@@ -45,20 +45,24 @@ public final class Terrain {
      * @param baseDir  directory relative image paths are resolved against (the scene file's folder);
      *                 may be null when the def names no image
      * @param threads  worker threads, at least 1
-     * @param progress told "terrain" progress, on the calling thread
+     * @param progress told "terrain" progress (in thousandths), on the calling thread
      * @throws IOException              when an image cannot be read
      * @throws IllegalArgumentException on null arguments, a missing baseDir, or an unreadable image
      */
     public static Terrain build(TerrainDef def, Path baseDir, int threads, Progress progress) throws IOException {
         Require.nonNull("def", def);
         Require.nonNull("progress", progress);
+        // one "terrain" bar: the heightfield is the first 80 %, each map 10 %
+        Progress relief = (step, done, total) -> progress.report("terrain", done * 800 / total, 1000);
         Heightfield hf = def.heightmap() == null
-                ? Heightfield.generate(def, threads, progress)
-                : Heightfield.fromImage(def, resolve("heightmap", baseDir, def.heightmap()), progress);
+                ? Heightfield.generate(def, threads, relief)
+                : Heightfield.fromImage(def, resolve("heightmap", baseDir, def.heightmap()), relief);
         ResourceMap w = ResourceMap.build(def.water(), hf, Rng.mix(def.seed() ^ WATER_SALT),
                 def.water().image() == null ? null : resolve("water image", baseDir, def.water().image()));
+        progress.report("terrain", 900, 1000);
         ResourceMap n = ResourceMap.build(def.nutrients(), hf, Rng.mix(def.seed() ^ NUTRIENT_SALT),
                 def.nutrients().image() == null ? null : resolve("nutrients image", baseDir, def.nutrients().image()));
+        progress.report("terrain", 1000, 1000);
         return new Terrain(hf, w.freeze(), n.freeze());
     }
 
