@@ -1,0 +1,180 @@
+package org.jecosys.terrain;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.math.Progress;
+import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
+
+/**
+ * The paper's plant distribution (§4.3): "the algorithm creates plants concurrently for different
+ * plant distributions. One plant can occupy the area that other one could be occupying, removing the
+ * nutrient or water needed for the development of other distribution."
+ *
+ * <h2>Algorithm</h2>
+ * <ol>
+ * <li>Hand placements first, in order: each stands at its (x, z), takes its footprint and consumes.
+ * Its footprint and resource use are those of the first distribution of its species, or
+ * {@link #PLACEMENT_FOOTPRINT} and {@link #PLACEMENT_USE} when the species has none.</li>
+ * <li>Per distribution, a {@link SuitabilityMask} over the terrain: candidates are drawn only where
+ * the species could ever grow; the suitable area times the density gives the target when
+ * {@code count == -1}; otherwise the target is {@code count}. A distribution with no suitable ground
+ * gets no plants and a warning "matches nowhere".</li>
+ * <li>Rounds, until every distribution has its target or has spent its attempt budget
+ * ({@link #ATTEMPTS_BASE} + {@link #ATTEMPTS_PER_PLANT} x target candidates). In a round each
+ * unfinished distribution gets a batch of random candidates sized from its remaining need and its
+ * acceptance rate so far. Candidates are generated in fixed chunks of {@link #CHUNK} (each chunk
+ * from its own {@link Rng#forStream} stream, in parallel over the worker threads), which also
+ * evaluates the static conditions: altitude and slope at the exact point.</li>
+ * <li>Acceptance runs on the calling thread in one fixed order that interleaves the batches in
+ * proportion to their size (candidate i of a batch of b comes at (i + 0.5) / b; ties by
+ * distribution index), so the species compete for the same ground at the same time and none simply
+ * takes everything first. A candidate grows when its footprint is free (no disc of another plant
+ * overlaps it) and the <em>remaining</em> footprint-mean water and nutrient levels lie in its
+ * species' ranges; it then takes the ground and consumes {@code waterUse} / {@code nutrientUse}
+ * in its footprint ({@link ResourceMap#consume}), which can make the ground unsuitable for others.</li>
+ * </ol>
+ * Counts are exact when achievable: a distribution places exactly its target unless it runs out of
+ * attempts (the terrain has no free, suitable ground left); it then keeps what it placed and the
+ * layout carries a warning with the shortfall. Nothing here is an error except bad arguments.
+ *
+ * <p>Deterministic for a seed whatever {@code threads}: randomness comes only from per-chunk streams
+ * keyed by (round, distribution, chunk), batch sizes depend only on earlier rounds, and conflicts
+ * are resolved in the fixed acceptance order. Stateless: one instance may serve several threads.
+ * Allocates its working state per call.
+ */
+public final class CompetitiveDistributor implements TerrainDistributor {
+    /** Candidates per parallel chunk. */
+    public static final int CHUNK = 1024;
+    /** Smallest batch of candidates per distribution and round. */
+    public static final int BATCH_MIN = 64;
+    /** Largest batch of candidates per distribution and round. */
+    public static final int BATCH_MAX = 32768;
+    /** Batch = remaining need / acceptance rate x this slack. */
+    public static final double BATCH_SLACK = 1.25;
+    /** Candidates a distribution may examine per plant of its target before it gives up. */
+    public static final int ATTEMPTS_PER_PLANT = 40;
+    /** Candidates a distribution may examine in any case. */
+    public static final int ATTEMPTS_BASE = 5000;
+    /** Footprint radius, metres, of a hand-placed plant whose species has no distribution. */
+    public static final double PLACEMENT_FOOTPRINT = 0.25;
+    /** Water and nutrient use of a hand-placed plant whose species has no distribution. */
+    public static final double PLACEMENT_USE = 0.25;
+    /** Mask cells per side, at least. */
+    public static final int MASK_MIN_RESOLUTION = 64;
+    /** Mask cells per side, at most. */
+    public static final int MASK_MAX_RESOLUTION = 512;
+
+    /** A distributor; it holds no state. */
+    public CompetitiveDistributor() {
+    }
+
+    @Override
+    public PlantLayout distribute(Terrain terrain, List<String> speciesIds, List<DistributionDef> distributions,
+                                  List<PlacementDef> placements, long seed, int threads, Progress progress) {
+        Require.nonNull("terrain", terrain);
+        Require.nonNull("speciesIds", speciesIds);
+        Require.nonNull("distributions", distributions);
+        Require.nonNull("placements", placements);
+        Require.range("threads", threads, 1, 1024);
+        Require.nonNull("progress", progress);
+        int nd = distributions.size();
+        int[] speciesOf = new int[nd];
+        double maxRadius = PLACEMENT_FOOTPRINT;
+        for (int d = 0; d < nd; d++) {
+            DistributionDef def = Require.nonNull("distributions[" + d + "]", distributions.get(d));
+            speciesOf[d] = speciesIndex(speciesIds, def.species(), "distributions[" + d + "]");
+            maxRadius = Math.max(maxRadius, def.footprint());
+        }
+        Heightfield hf = terrain.heightfield();
+        ResourceMap water = terrain.water().copy();
+        ResourceMap nutrients = terrain.nutrients().copy();
+        OccupancyGrid grid = new OccupancyGrid(hf.minX(), hf.minZ(), hf.sizeX(), hf.sizeZ(), maxRadius);
+        PlantLayout.Builder out = new PlantLayout.Builder();
+        List<String> warnings = new ArrayList<>();
+
+        placeByHand(placements, speciesIds, distributions, seed, hf, water, nutrients, grid, out);
+
+        int[] target = new int[nd];
+        int[] placed = new int[nd];
+        try (Workers workers = new Workers(threads)) {
+            SuitabilityMask[] masks = new SuitabilityMask[nd];
+            int maskRes = Math.max(MASK_MIN_RESOLUTION, Math.min(MASK_MAX_RESOLUTION,
+                    Math.max(hf.resolution() - 1, Math.max(water.resolution(), nutrients.resolution()))));
+            for (int d = 0; d < nd; d++) {
+                DistributionDef def = distributions.get(d);
+                masks[d] = SuitabilityMask.build(def, hf, water, nutrients, maskRes, workers);
+                long want = def.count() >= 0 ? def.count() : Math.round(def.density() * masks[d].suitableArea());
+                if (want > DistributionDef.MAX_COUNT) {
+                    warnings.add("species '" + def.species() + "' (distribution " + d + "): density gives " + want
+                            + " plants; capped at " + DistributionDef.MAX_COUNT);
+                    want = DistributionDef.MAX_COUNT;
+                }
+                target[d] = (int) want;
+                if (masks[d].suitable == 0 && def.count() != 0) {
+                    warnings.add("species '" + def.species() + "' (distribution " + d
+                            + ") matches nowhere on the terrain: 0 plants");
+                }
+            }
+            Rounds rounds = new Rounds(distributions, speciesOf, masks, target, seed, hf, water, nutrients, grid, out);
+            rounds.run(workers, progress);
+            for (int d = 0; d < nd; d++) {
+                placed[d] = rounds.placed(d);
+                if (placed[d] < target[d] && masks[d].suitable > 0) {
+                    warnings.add("species '" + distributions.get(d).species() + "' (distribution " + d + "): placed "
+                            + placed[d] + " of " + target[d] + " plants, shortfall " + (target[d] - placed[d])
+                            + " (no free ground with the right conditions found in " + rounds.examined(d)
+                            + " candidates)");
+                }
+            }
+        }
+        return out.build(placed, target, warnings, water, nutrients);
+    }
+
+    private static void placeByHand(List<PlacementDef> placements, List<String> speciesIds,
+                                    List<DistributionDef> distributions, long seed, Heightfield hf,
+                                    ResourceMap water, ResourceMap nutrients, OccupancyGrid grid,
+                                    PlantLayout.Builder out) {
+        for (int p = 0; p < placements.size(); p++) {
+            PlacementDef pl = Require.nonNull("placements[" + p + "]", placements.get(p));
+            int sp = speciesIndex(speciesIds, pl.species(), "placements[" + p + "]");
+            float x = (float) pl.x();
+            float z = (float) pl.z();
+            if (!hf.contains(x, z)) {
+                throw new IllegalArgumentException("placements[" + p + "] at (" + pl.x() + ", " + pl.z()
+                        + ") lies outside the terrain [" + hf.minX() + ", " + hf.maxX() + "] x ["
+                        + hf.minZ() + ", " + hf.maxZ() + "]");
+            }
+            double r = PLACEMENT_FOOTPRINT;
+            double wUse = PLACEMENT_USE;
+            double nUse = PLACEMENT_USE;
+            for (DistributionDef d : distributions) {
+                if (d.species().equals(pl.species())) {
+                    r = d.footprint();
+                    wUse = d.waterUse();
+                    nUse = d.nutrientUse();
+                    break;
+                }
+            }
+            double w = water.footprintLevel(x, z, r);
+            double n = nutrients.footprintLevel(x, z, r);
+            double az = pl.azimuth() % (2 * Math.PI);
+            if (az < 0) {
+                az += 2 * Math.PI;
+            }
+            out.add(x, (float) hf.height(x, z), z, (float) az, (float) r, w, n, sp, -1, Rng.mix(seed ^ Rng.mix(p + 1L)));
+            grid.add(x, z, r);
+            water.consume(x, z, r, wUse);
+            nutrients.consume(x, z, r, nUse);
+        }
+    }
+
+    private static int speciesIndex(List<String> ids, String id, String where) {
+        int i = ids.indexOf(id);
+        if (i < 0) {
+            throw new IllegalArgumentException(where + " names species '" + id + "', which is not among speciesIds "
+                    + ids);
+        }
+        return i;
+    }
+}

@@ -1,0 +1,101 @@
+package org.jecosys.terrain;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import org.jecosys.math.Progress;
+import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
+
+/**
+ * A terrain ready for plants: its heightfield and its initial water and nutrient maps (paper §4.3).
+ * The maps are {@link ResourceMap#freeze() frozen}; a {@link TerrainDistributor} competes on copies.
+ * Immutable; any thread may read it.
+ */
+public final class Terrain {
+    /** Salt mixed into {@link TerrainDef#seed()} for the water map's noise. */
+    public static final long WATER_SALT = 0x5741_5445_52L;
+    /** Salt mixed into {@link TerrainDef#seed()} for the nutrient map's noise. */
+    public static final long NUTRIENT_SALT = 0x4E55_5452_49L;
+
+    private final Heightfield heightfield;
+    private final ResourceMap water;
+    private final ResourceMap nutrients;
+
+    /**
+     * A terrain from its parts. The maps are copied and frozen.
+     *
+     * @throws IllegalArgumentException on null parts or maps whose extent differs from the heightfield's
+     */
+    public Terrain(Heightfield heightfield, ResourceMap water, ResourceMap nutrients) {
+        this.heightfield = Require.nonNull("heightfield", heightfield);
+        Require.nonNull("water", water);
+        Require.nonNull("nutrients", nutrients);
+        checkExtent("water", water, heightfield);
+        checkExtent("nutrients", nutrients, heightfield);
+        this.water = water.copy().freeze();
+        this.nutrients = nutrients.copy().freeze();
+    }
+
+    /**
+     * Builds the terrain {@code def} describes: the heightfield (generated, or read from
+     * {@code def.heightmap()} resolved against {@code baseDir}) and both resource maps (IMAGE maps
+     * resolved against {@code baseDir}; NOISE maps seeded from {@code def.seed()} with
+     * {@link #WATER_SALT} / {@link #NUTRIENT_SALT}). Deterministic for a def whatever the thread count.
+     *
+     * @param baseDir  directory relative image paths are resolved against (the scene file's folder);
+     *                 may be null when the def names no image
+     * @param threads  worker threads, at least 1
+     * @param progress told "terrain" progress (in thousandths), on the calling thread
+     * @throws IOException              when an image cannot be read
+     * @throws IllegalArgumentException on null arguments, a missing baseDir, or an unreadable image
+     */
+    public static Terrain build(TerrainDef def, Path baseDir, int threads, Progress progress) throws IOException {
+        Require.nonNull("def", def);
+        Require.nonNull("progress", progress);
+        // one "terrain" bar: the heightfield is the first 80 %, each map 10 %
+        Progress relief = (step, done, total) -> progress.report("terrain", done * 800 / total, 1000);
+        Heightfield hf = def.heightmap() == null
+                ? Heightfield.generate(def, threads, relief)
+                : Heightfield.fromImage(def, resolve("heightmap", baseDir, def.heightmap()), relief);
+        ResourceMap w = ResourceMap.build(def.water(), hf, Rng.mix(def.seed() ^ WATER_SALT),
+                def.water().image() == null ? null : resolve("water image", baseDir, def.water().image()));
+        progress.report("terrain", 900, 1000);
+        ResourceMap n = ResourceMap.build(def.nutrients(), hf, Rng.mix(def.seed() ^ NUTRIENT_SALT),
+                def.nutrients().image() == null ? null : resolve("nutrients image", baseDir, def.nutrients().image()));
+        progress.report("terrain", 1000, 1000);
+        return new Terrain(hf, w.freeze(), n.freeze());
+    }
+
+    /** The heightfield. */
+    public Heightfield heightfield() {
+        return heightfield;
+    }
+
+    /** The initial water map (frozen). */
+    public ResourceMap water() {
+        return water;
+    }
+
+    /** The initial nutrient map (frozen). */
+    public ResourceMap nutrients() {
+        return nutrients;
+    }
+
+    private static Path resolve(String name, Path baseDir, String file) {
+        Path p = Path.of(file);
+        if (p.isAbsolute()) {
+            return p;
+        }
+        if (baseDir == null) {
+            throw new IllegalArgumentException(name + " '" + file + "' is relative but no baseDir was given");
+        }
+        return baseDir.resolve(p);
+    }
+
+    private static void checkExtent(String name, ResourceMap m, Heightfield hf) {
+        if (Math.abs(m.sizeX() - hf.sizeX()) > 1e-9 * hf.sizeX() || Math.abs(m.sizeZ() - hf.sizeZ()) > 1e-9 * hf.sizeZ()) {
+            throw new IllegalArgumentException(name + " covers " + m.sizeX() + " x " + m.sizeZ()
+                    + " m but the heightfield covers " + hf.sizeX() + " x " + hf.sizeZ() + " m");
+        }
+    }
+}
