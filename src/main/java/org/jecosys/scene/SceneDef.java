@@ -8,6 +8,7 @@ import org.jecosys.field.ForceFieldDef;
 import org.jecosys.math.CameraDef;
 import org.jecosys.math.Require;
 import org.jecosys.plant.SpeciesDef;
+import org.jecosys.sim.SimulationDef;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.terrain.PlacementDef;
 import org.jecosys.terrain.TerrainDef;
@@ -72,6 +73,11 @@ public record SceneDef(int version, String name, long seed, TerrainDef terrain, 
                 throw new IllegalArgumentException("duplicate flow id '" + f.id() + "'");
             }
         }
+    }
+
+    /** What a simulation of this scene is built from (everything but camera and render). */
+    public SimulationDef simulationDef() {
+        return new SimulationDef(terrain, species, distributions, placements, flows, field, animation, seed);
     }
 
     /** The species with this id, or throws IllegalArgumentException naming the known ids. */

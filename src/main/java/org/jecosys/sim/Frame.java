@@ -1,0 +1,113 @@
+package org.jecosys.sim;
+
+import java.nio.FloatBuffer;
+
+/**
+ * One complete, published frame of animation output (paper §4.2.2's "displacement angle" per
+ * component), read by the renderer or a game. Per component: the continuous pose coordinate
+ * {@code k + w} into its pose table (pose k blended toward k + 1 by w) and the bend azimuth, the
+ * world heading of the component's bending plane: the pose table's local +X axis maps to world
+ * (cos a, 0, sin a). With no wind a component shows pose 0 at its rest heading. Per plant: whether
+ * it was on a visible node and the level of detail it was animated at.
+ *
+ * <p>Frames are written by the simulation's threads and published whole by triple buffering
+ * ({@link FrameExchange}); a reader sees a frame only after it is complete, and the frame does not
+ * change until that reader asks for the next one. Accessors allocate nothing.
+ */
+public final class Frame {
+    final float[] poseCoord;
+    final float[] bendAzimuth;
+    final boolean[] plantVisible;
+    final byte[] plantLevel;
+    long number;
+    double time;
+    int componentsAnimated;
+    long fieldNanos;
+    long animationNanos;
+
+    /** An empty frame sized for a world. */
+    public Frame(int plants, int components) {
+        poseCoord = new float[components];
+        bendAzimuth = new float[components];
+        plantVisible = new boolean[plants];
+        plantLevel = new byte[plants];
+    }
+
+    /** Frame number, counting published frames from 1; 0 before the first step. */
+    public long number() {
+        return number;
+    }
+
+    /** Simulation time of the frame, seconds. */
+    public double time() {
+        return time;
+    }
+
+    /** Number of components. */
+    public int componentCount() {
+        return poseCoord.length;
+    }
+
+    /** Number of plants. */
+    public int plantCount() {
+        return plantVisible.length;
+    }
+
+    /** Continuous pose coordinate of component c, in [0, poses - 1]. */
+    public float poseCoord(int c) {
+        return poseCoord[c];
+    }
+
+    /** World heading of component c's bending plane, radians: local +X goes to (cos a, 0, sin a). */
+    public float bendAzimuth(int c) {
+        return bendAzimuth[c];
+    }
+
+    /** Whether plant p was on a visible force-field node in this frame. */
+    public boolean plantVisible(int p) {
+        return plantVisible[p];
+    }
+
+    /** The level of detail plant p was animated at (0 = nearest). */
+    public int plantLevel(int p) {
+        return plantLevel[p];
+    }
+
+    /** Components updated by the animation in the last step of this frame. */
+    public int componentsAnimated() {
+        return componentsAnimated;
+    }
+
+    /** Time the force-field update took in the last step, nanoseconds. */
+    public long fieldNanos() {
+        return fieldNanos;
+    }
+
+    /** Time the animation update took in the last step, nanoseconds. */
+    public long animationNanos() {
+        return animationNanos;
+    }
+
+    /**
+     * Writes (poseCoord, bendAzimuth) pairs of components {@code first .. first + count - 1} into
+     * {@code dest} at its position, advancing it: the upload format of the renderer. No allocation.
+     */
+    public void putPoseAzimuth(FloatBuffer dest, int first, int count) {
+        for (int i = first, end = first + count; i < end; i++) {
+            dest.put(poseCoord[i]).put(bendAzimuth[i]);
+        }
+    }
+
+    /** Copies everything from {@code src}, which must have the same sizes. No allocation. */
+    void copyFrom(Frame src) {
+        System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);
+        System.arraycopy(src.bendAzimuth, 0, bendAzimuth, 0, bendAzimuth.length);
+        System.arraycopy(src.plantVisible, 0, plantVisible, 0, plantVisible.length);
+        System.arraycopy(src.plantLevel, 0, plantLevel, 0, plantLevel.length);
+        number = src.number;
+        time = src.time;
+        componentsAnimated = src.componentsAnimated;
+        fieldNanos = src.fieldNanos;
+        animationNanos = src.animationNanos;
+    }
+}

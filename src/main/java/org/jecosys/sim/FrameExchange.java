@@ -1,0 +1,49 @@
+package org.jecosys.sim;
+
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * Triple buffering of {@link Frame}s between one writer (the simulation) and one reader (the
+ * renderer, or a game thread). The writer fills its back frame and {@link #publish()}es it; the
+ * reader's {@link #latest()} takes the newest published frame if there is one. Neither ever waits
+ * or sees a frame being written; frame numbers seen by the reader never go back. One packed atomic
+ * integer holds which buffer is "ready" and whether it is new (DESIGN.md, Threads). No allocation.
+ */
+public final class FrameExchange {
+    private static final int FRESH = 4;
+    private final Frame[] frames = new Frame[3];
+    /** The ready buffer's index (bits 0-1) and the FRESH flag (bit 2). */
+    private final AtomicInteger ready = new AtomicInteger(1);
+    private int back;
+    private int front = 2;
+
+    /** Three empty frames sized for a world. */
+    public FrameExchange(int plants, int components) {
+        for (int i = 0; i < 3; i++) {
+            frames[i] = new Frame(plants, components);
+        }
+    }
+
+    /** The writer's frame to fill. Writer thread only. */
+    public Frame back() {
+        return frames[back];
+    }
+
+    /** Publishes the back frame and gives the writer another to fill. Writer thread only. */
+    public void publish() {
+        int old = ready.getAndSet(back | FRESH);
+        back = old & 3;
+    }
+
+    /**
+     * The newest complete frame: a newly published one if any, else the one this reader already
+     * had. It stays unchanged until this reader calls again. Reader thread only.
+     */
+    public Frame latest() {
+        if ((ready.get() & FRESH) != 0) {
+            int old = ready.getAndSet(front);
+            front = old & 3;
+        }
+        return frames[front];
+    }
+}
