@@ -137,13 +137,13 @@ final class SceneSchema {
             case GUST -> "Mean wind speed, m/s.";
             case SOURCE -> "Source strength a in u = (a / 2 pi) (p - c) / r^2, m^2/s.";
             case SINK -> "Sink strength: a = -strength in u = (a / 2 pi) (p - c) / r^2, m^2/s.";
-            case VORTEX -> "Circulation Gamma in u = (Gamma / 2 pi) y x (p - c) / r^2, m^2/s; counter-clockwise "
-                    + "seen from above.";
+            case VORTEX -> "Circulation Gamma in u = (Gamma / 2 pi) y x (p - c) / r^2, m^2/s; positive turns "
+                    + "counter-clockwise seen from above, negative clockwise.";
             case BLAST -> "Peak source strength of the pulse, m^2/s.";
             case RAIN -> "Strength of each drop's radial burst, m^2/s.";
         };
         e.attr(num("strength", (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) ? "m/s" : "m^2/s", strengthDoc)
-                .range(0, 1e6).required().get(d -> f(d).strength()));
+                .range(kind == FlowKind.VORTEX ? -1e6 : 0, 1e6).required().get(d -> f(d).strength()));
         if (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) {
             e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.").range(-360, 360).def(0.0)
                     .get(d -> f(d).direction()));

@@ -12,7 +12,8 @@ import org.jecosys.math.Require;
  * @param enabled         whether it starts enabled (the viewer may toggle it)
  * @param x               centre X, metres (unused by UNIFORM and GUST)
  * @param z               centre Z, metres (unused by UNIFORM and GUST)
- * @param strength        speed in m/s (UNIFORM, GUST) or circulation/strength in m^2/s (others), &gt;= 0
+ * @param strength        speed in m/s (UNIFORM, GUST) or circulation/strength in m^2/s (others); &gt;= 0,
+ *                        except VORTEX, whose sign gives the sense of rotation (negative turns clockwise)
  * @param direction       heading of UNIFORM and GUST flows, radians; 0 is +X, pi/2 is +Z
  * @param coreRadius      radius within which a singular flow is tapered linearly to 0, metres, &gt; 0
  * @param influenceRadius beyond this distance from the centre the flow is 0, metres, or +Infinity
@@ -33,7 +34,11 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         Require.nonNull("kind", kind);
         Require.finite("x", x);
         Require.finite("z", z);
-        Require.nonNegative("strength", strength);
+        if (kind == FlowKind.VORTEX) {
+            Require.finite("strength", strength);
+        } else {
+            Require.nonNegative("strength", strength);
+        }
         Require.finite("direction", direction);
         Require.positive("coreRadius", coreRadius);
         Require.positiveOrInfinite("influenceRadius", influenceRadius);
@@ -41,6 +46,9 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         Require.nonNull("motion", motion);
         Require.positive("noiseScale", noiseScale);
         Require.positive("noiseFrequency", noiseFrequency);
+        if (kind == FlowKind.RAIN && influenceRadius == Double.POSITIVE_INFINITY) {
+            throw new IllegalArgumentException("a rain flow needs a finite influenceRadius (the radius of the rain disc)");
+        }
     }
 
     /** Default core radius, metres. */

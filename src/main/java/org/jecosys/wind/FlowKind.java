@@ -11,7 +11,7 @@ public enum FlowKind {
     SOURCE("source"),
     /** A source with a = -strength (strength &gt; 0, m^2/s): flow toward the centre. */
     SINK("sink"),
-    /** u = (Gamma / 2 pi) y x (p - c) / r^2 with Gamma = strength (m^2/s); positive turns counter-clockwise seen from above. */
+    /** u = (Gamma / 2 pi) y x (p - c) / r^2 with Gamma = strength (m^2/s); positive turns counter-clockwise seen from above, negative clockwise. */
     VORTEX("vortex"),
     /** Turbulent wind: a mean speed (strength, m/s) along direction, modulated by seeded noise in space and time. */
     GUST("gust"),

@@ -128,4 +128,17 @@ class SceneFilesTest {
                 + "XMLSchema-instance\" xsi:noNamespaceSchemaLocation=\"jecosys-scene.xsd\"\n    version=\"1\">\n"
                 + "  <terrain sizeX=\"10\" sizeZ=\"20\"/>\n</scene>\n", SceneFiles.toXml(d));
     }
+
+    @Test
+    void aVortexMayTurnClockwiseButASourceCannotBeNegative() throws Exception {
+        String ok = "<scene version=\"1\"><terrain sizeX=\"1\" sizeZ=\"1\"/><wind><vortex id=\"v\" strength=\"-4\"/>"
+                + "</wind></scene>";
+        SceneDef d = SceneFiles.parse(ok.getBytes(StandardCharsets.UTF_8), "v.xml", null);
+        assertEquals(-4, d.flows().get(0).strength());
+        String bad = ok.replace("vortex", "source");
+        SceneLoadException ex = org.junit.jupiter.api.Assertions.assertThrows(SceneLoadException.class,
+                () -> SceneFiles.parse(bad.getBytes(StandardCharsets.UTF_8), "s.xml", null));
+        assertTrue(ex.getMessage().contains("-4 is out of range; expected a finite number in [0, 1000000] m^2/s"),
+                ex.getMessage());
+    }
 }
