@@ -1,7 +1,11 @@
 package org.jecosys.app;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.jecosys.bench.BenchSuite;
+import org.jecosys.bench.Mode;
+import org.jecosys.bench.Report;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -24,7 +28,18 @@ final class BenchCommand implements Callable<Integer> {
     Path out;
 
     @Override
-    public Integer call() {
-        return Unavailable.say(spec.commandLine().getErr(), "bench", "the benchmark suite");
+    public Integer call() throws IOException {
+        Path scenes = SceneArgs.resolve("scenes");
+        Report report = BenchSuite.standard(scenes).run(quick ? Mode.QUICK : Mode.FULL, out, System.err);
+        var o = spec.commandLine().getOut();
+        o.println("wrote " + out.resolve("tables.md") + ", " + out.resolve("results.json") + " and "
+                + out.resolve("charts"));
+        o.flush();
+        if (!report.failures().isEmpty()) {
+            spec.commandLine().getErr().println("bench: " + report.failures().size() + " section(s) failed: "
+                    + report.failures());
+            return ExitCodes.FAILURE;
+        }
+        return ExitCodes.OK;
     }
 }

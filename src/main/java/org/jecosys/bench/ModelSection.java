@@ -1,0 +1,34 @@
+package org.jecosys.bench;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/** Tables 1-4: primitive counts, level-of-detail bands and scene contents, with a chart of Table 2. */
+final class ModelSection implements Section {
+    private final Path scenes;
+
+    ModelSection(Path scenes) {
+        this.scenes = scenes;
+    }
+
+    @Override
+    public String name() {
+        return "Tables 1-4 (models and scenes)";
+    }
+
+    @Override
+    public void run(Mode mode, Report report) throws Exception {
+        ModelTables m = new ModelTables(scenes);
+        Table t1 = m.table1();
+        Table t2 = m.table2();
+        report.add(t1);
+        report.add(t2);
+        report.add(m.table3());
+        report.add(m.table4());
+        Charts.bars(t2, 0, List.of("LOD1 paper", "LOD1 here", "LOD2 paper", "LOD2 here", "LOD3 paper", "LOD3 here"),
+                "primitives", report.chartDir().resolve("table2.png"));
+        report.chart("table2.png");
+        Charts.bars(t1, 0, List.of("paper", "here"), "primitives", report.chartDir().resolve("table1.png"));
+        report.chart("table1.png");
+    }
+}

@@ -1,0 +1,107 @@
+package org.jecosys.bench;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The benchmark report being built: tables (Markdown and JSON), raw series, charts and failures,
+ * written as {@code tables.md}, {@code results.json} and {@code charts/*.png} in one folder.
+ * Used by one thread.
+ */
+public final class Report {
+    private final Path dir;
+    private final Mode mode;
+    private final List<Table> tables = new ArrayList<>();
+    private final Map<String, Object> raw = new LinkedHashMap<>();
+    private final List<String> charts = new ArrayList<>();
+    private final List<String> failures = new ArrayList<>();
+    private String glRenderer;
+
+    public Report(Path dir, Mode mode) {
+        this.dir = dir;
+        this.mode = mode;
+    }
+
+    /** The folder charts go into (created on demand). */
+    public Path chartDir() throws IOException {
+        return Files.createDirectories(dir.resolve("charts"));
+    }
+
+    public void add(Table t) {
+        tables.add(t);
+    }
+
+    /** Raw numbers under a key in results.json. */
+    public void raw(String key, Object value) {
+        raw.put(key, value);
+    }
+
+    /** Records a chart written to {@code charts/name}. */
+    public void chart(String name) {
+        charts.add(name);
+    }
+
+    public void failure(String section, Throwable t) {
+        failures.add(section + ": " + (t.getMessage() == null ? t.toString() : t.getMessage()));
+    }
+
+    /** The GL_RENDERER of the rendering runs, for the machine description. */
+    public void glRenderer(String renderer) {
+        this.glRenderer = renderer;
+    }
+
+    public List<Table> tables() {
+        return tables;
+    }
+
+    public List<String> failures() {
+        return failures;
+    }
+
+    /** Writes tables.md and results.json. */
+    public void write(double seconds) throws IOException {
+        Files.createDirectories(dir);
+        MachineInfo machine = MachineInfo.current(glRenderer);
+        StringBuilder md = new StringBuilder("# JEcoSys benchmark report\n\n");
+        md.append("Paper: Endo, Morimoto, Fabris, CGI 2005, section 5.2 (Pentium III 900 MHz, Java 3D). ")
+                .append(mode == Mode.FULL ? "Full run" : mode == Mode.QUICK ? "Quick run (--quick)" : "Smoke run (structure only)").append(", ")
+                .append(String.format(java.util.Locale.ROOT, "%.0f", seconds)).append(" s.\n\n");
+        md.append("## Machine\n\n").append(machine.toMarkdown()).append('\n');
+        md.append("## Tables\n\n");
+        for (Table t : tables) {
+            md.append(t.toMarkdown());
+        }
+        if (!charts.isEmpty()) {
+            md.append("## Charts\n\n");
+            for (String c : charts) {
+                md.append("![").append(c).append("](charts/").append(c).append(")\n\n");
+            }
+        }
+        if (!failures.isEmpty()) {
+            md.append("## Sections that failed\n\n");
+            for (String f : failures) {
+                md.append("- ").append(f).append('\n');
+            }
+        }
+        Files.writeString(dir.resolve("tables.md"), md.toString(), StandardCharsets.UTF_8);
+        Map<String, Object> json = new LinkedHashMap<>();
+        json.put("mode", mode.name().toLowerCase(java.util.Locale.ROOT));
+        json.put("seconds", seconds);
+        json.put("machine", machine.toMap());
+        Map<String, Object> t = new LinkedHashMap<>();
+        for (Table table : tables) {
+            t.put(table.id(), table.toMap());
+        }
+        json.put("tables", t);
+        json.put("raw", raw);
+        json.put("charts", charts);
+        json.put("failures", failures);
+        Files.writeString(dir.resolve("results.json"), Json.write(json), StandardCharsets.UTF_8);
+    }
+}

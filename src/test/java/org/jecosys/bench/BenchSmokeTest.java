@@ -1,0 +1,71 @@
+package org.jecosys.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The benchmark suite at smoke size: every section runs and the report has its structure (tables
+ * with the paper's columns, results.json, charts). Speeds are never checked here.
+ */
+class BenchSmokeTest {
+    @TempDir
+    Path out;
+
+    @Test
+    void smokeRunWritesAllThreeOutputs() throws Exception {
+        ByteArrayOutputStream progress = new ByteArrayOutputStream();
+        Report r = BenchSuite.standard(Path.of("scenes")).run(Mode.SMOKE, out,
+                new PrintStream(progress, true, StandardCharsets.UTF_8));
+        assertEquals(List.of(), r.failures());
+        String md = Files.readString(out.resolve("tables.md"));
+        String json = Files.readString(out.resolve("results.json"));
+        for (String title : new String[] {"Table 1", "Table 2", "Table 3", "Table 4", "Pre-computation",
+                "Force-field update"}) {
+            assertTrue(md.contains("### " + title), title);
+        }
+        assertTrue(md.contains("## Machine") && md.contains("- CPU: "));
+        for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
+                "\"fieldScale\"", "\"precompute\""}) {
+            assertTrue(json.contains(key), key);
+        }
+        for (String chart : new String[] {"table1.png", "table2.png", "field-scale.png"}) {
+            Path png = out.resolve("charts").resolve(chart);
+            assertTrue(Files.size(png) > 1000, chart);
+            assertEquals(0x89, Files.readAllBytes(png)[0] & 0xff, chart + " is a PNG");
+        }
+        assertTrue(progress.toString(StandardCharsets.UTF_8).contains("bench: [1/"));
+    }
+
+    @Test
+    void modelTablesEqualThePaper() throws Exception {
+        ModelTables m = new ModelTables(Path.of("scenes"));
+        for (List<Object> row : m.table2().rows()) {
+            assertEquals(row.get(2), row.get(3), "LOD1 of " + row.get(0));
+            assertEquals(row.get(4), row.get(5), "LOD2 of " + row.get(0));
+            assertEquals(row.get(6), row.get(7), "LOD3 of " + row.get(0));
+        }
+        for (List<Object> row : m.table1().rows()) {
+            assertEquals(row.get(2), row.get(3), "rose level " + row.get(0));
+        }
+        for (List<Object> row : m.table4().rows()) {
+            assertEquals(row.get(1), row.get(2));
+            assertEquals(row.get(3), row.get(4));
+            assertEquals(row.get(5), row.get(6));
+        }
+    }
+
+    @Test
+    void jsonWriterEscapesAndNullsNonFiniteNumbers() {
+        String s = Json.write(java.util.Map.of("a\"b", List.of(1, 2.5, Double.NaN, "x\ny")));
+        assertEquals("{\n  \"a\\\"b\": [1, 2.5, null, \"x\\ny\"]\n}\n", s);
+    }
+}
