@@ -103,7 +103,7 @@ public final class FieldOverlay implements AutoCloseable {
             for (int n = 0; n < nodes; n++) {
                 if (view.isLeaf(n)) {
                     float g = grey(view.visible(n), view.lodLevel(n));
-                    quad(b, view.minX(n), view.minZ(n), view.maxX(n), view.maxZ(n), g, g, g, 0.85f);
+                    quad(b, view.minX(n), view.minZ(n), view.maxX(n), view.maxZ(n), g, g, g, 1f);
                     tris += 6;
                 }
             }

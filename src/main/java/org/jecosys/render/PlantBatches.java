@@ -246,6 +246,7 @@ public final class PlantBatches {
      * No allocation.
      */
     public void writeInstances(ByteBuffer dest) {
+        dest.clear();
         int o = 0;
         for (int li = 0, lists = listBase[species]; li < lists; li++) {
             for (int i = 0, n = listCount[li], st = listStart[li]; i < n; i++) {
