@@ -30,6 +30,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,
             description = "Image size in pixels, each side 16 to 8192 (default: the scene's render size).")
     Size size;
+    @Option(names = "--maps", description = "Also write the water, nutrient and species maps (water.png, "
+            + "nutrients.png, species.png) to DIR: why plants grow where they do.")
+    boolean maps;
 
     @Override
     public Integer call() {
@@ -40,6 +43,17 @@ final class RenderCommand implements Callable<Integer> {
         if (def == null) {
             return ExitCodes.BAD_INPUT;
         }
-        return Unavailable.say(spec.commandLine().getErr(), "render", "the OpenGL renderer");
+        Path file = SceneArgs.resolve(scene);
+        Path base = file.toAbsolutePath().getParent();
+        int w = size == null ? def.render().width() : size.width();
+        int h = size == null ? def.render().height() : size.height();
+        try {
+            HeadlessRender.run(def, base, frames, out, w, h, maps, spec.commandLine().getOut());
+        } catch (java.io.IOException e) {
+            spec.commandLine().getErr().println("jecosys render: " + e.getMessage());
+            spec.commandLine().getErr().flush();
+            return ExitCodes.FAILURE;
+        }
+        return ExitCodes.OK;
     }
 }

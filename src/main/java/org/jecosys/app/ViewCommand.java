@@ -1,6 +1,9 @@
 package org.jecosys.app;
 
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.jecosys.render.GlContext;
 import org.jecosys.scene.SceneDef;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -13,6 +16,11 @@ import picocli.CommandLine.Spec;
         description = {"Open the viewer on a scene (default " + SceneArgs.DEFAULT_SCENE + ").",
                 "With no display, renders the scene headless to PNG files instead and says where."})
 final class ViewCommand implements Callable<Integer> {
+    /** System property: folder of the no-display fallback's PNG files (default {@code jecosys-frames}). */
+    static final String FALLBACK_OUT = "jecosys.fallback.out";
+    /** System property: frames the no-display fallback renders (default 30, one second). */
+    static final String FALLBACK_FRAMES = "jecosys.fallback.frames";
+
     @Spec
     CommandSpec spec;
     @Mixin
@@ -29,6 +37,25 @@ final class ViewCommand implements Callable<Integer> {
         }
         spec.commandLine().getOut().println("Scene '" + def.name() + "' (" + scene + ") is valid.");
         spec.commandLine().getOut().flush();
-        return Unavailable.say(spec.commandLine().getErr(), "view", "the OpenGL viewer");
+        Path file = SceneArgs.resolve(scene);
+        Path base = file.toAbsolutePath().getParent();
+        try {
+            if (!GlContext.hasDisplay()) {
+                Path out = Path.of(System.getProperty(FALLBACK_OUT, "jecosys-frames"));
+                int frames = Integer.getInteger(FALLBACK_FRAMES, 30);
+                spec.commandLine().getOut().println("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering "
+                        + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
+                spec.commandLine().getOut().flush();
+                HeadlessRender.run(def, base, frames, out, def.render().width(), def.render().height(), true,
+                        spec.commandLine().getOut());
+                return ExitCodes.OK;
+            }
+            new Viewer(def, file, base).run();
+            return ExitCodes.OK;
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("jecosys view: " + e.getMessage());
+            spec.commandLine().getErr().flush();
+            return ExitCodes.FAILURE;
+        }
     }
 }

@@ -98,6 +98,21 @@ public final class Frame {
         }
     }
 
+    /**
+     * Sets component c's pose coordinate and bend azimuth. For tools and tests that build frames
+     * without the animation engine (for example a renderer preview); the simulation writes its frames
+     * itself. Only on a frame the caller owns (never one read through {@link FrameExchange}). No
+     * allocation.
+     *
+     * @param c          component index
+     * @param poseCoord  pose coordinate k + w, in [0, poses - 1] of the component's pose table
+     * @param azimuth    world heading of the bending plane, radians
+     */
+    public void set(int c, float poseCoord, float azimuth) {
+        this.poseCoord[c] = poseCoord;
+        this.bendAzimuth[c] = azimuth;
+    }
+
     /** Copies everything from {@code src}, which must have the same sizes. No allocation. */
     void copyFrom(Frame src) {
         System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);

@@ -102,10 +102,39 @@ class CliTest {
 
     @Test
     void theDefaultCommandIsViewOnTheDefaultScene() {
-        Result r = run();
-        assertTrue(r.out().contains("Scene 'Meadow' (scenes/meadow.xml) is valid."), r.out());
-        Result named = run("scenes/meadow.xml");
-        assertEquals(r.code(), named.code());
+        // no display in tests: view falls back to rendering headless and says where
+        System.setProperty(ViewCommand.FALLBACK_OUT, "target/cli-test/fallback");
+        System.setProperty(ViewCommand.FALLBACK_FRAMES, "1");
+        try {
+            Result r = run();
+            assertTrue(r.out().contains("Scene 'Meadow' (scenes/meadow.xml) is valid."), r.out());
+            if (!org.jecosys.render.GlContext.hasDisplay()) {
+                assertEquals(0, r.code(), r.err());
+                assertTrue(r.out().contains("No display"), r.out());
+                assertTrue(r.out().contains("target/cli-test/fallback"), r.out());
+                assertTrue(java.nio.file.Files.exists(java.nio.file.Path.of("target/cli-test/fallback/frame-00001.png")));
+                Result named = run("scenes/meadow.xml");
+                assertEquals(r.code(), named.code());
+            }
+        } finally {
+            System.clearProperty(ViewCommand.FALLBACK_OUT);
+            System.clearProperty(ViewCommand.FALLBACK_FRAMES);
+        }
+    }
+
+    @Test
+    void renderWritesPngFramesAndMaps() throws Exception {
+        java.nio.file.Path out = java.nio.file.Path.of("target/cli-test/render");
+        Result r = run("render", "scenes/c1.xml", "--frames", "2", "--out", out.toString(), "--size", "96x64", "--maps");
+        assertEquals(0, r.code(), r.err());
+        for (String f : new String[] {"frame-00001.png", "frame-00002.png", "water.png", "nutrients.png",
+                "species.png"}) {
+            assertTrue(java.nio.file.Files.size(out.resolve(f)) > 100, f);
+        }
+        java.awt.image.BufferedImage img = javax.imageio.ImageIO.read(out.resolve("frame-00002.png").toFile());
+        assertEquals(96, img.getWidth());
+        assertEquals(64, img.getHeight());
+        assertTrue(r.out().contains("Wrote 2 frame(s) of 96x64"), r.out());
     }
 
     @Test

@@ -1,0 +1,92 @@
+package org.jecosys.app;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.GlFramebuffer;
+import org.jecosys.render.Pixels;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.TerrainTint;
+import org.jecosys.scene.RenderDef;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.TerrainMaps;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * Renders a scene headless (GLFW null platform + EGL, e.g. Mesa llvmpipe; no X server) to numbered
+ * PNG files {@code frame-00001.png ...}, at 30 frames per second of scene time from the scene's
+ * start camera; optionally also the water, nutrient and species maps. Used by {@code jecosys render}
+ * and by {@code jecosys view} when there is no display.
+ */
+final class HeadlessRender {
+    /** Scene seconds between rendered frames. */
+    static final double FRAME_DT = 1.0 / 30;
+    /** Side of the map images, pixels. */
+    static final int MAP_SIDE = 512;
+
+    private HeadlessRender() {
+    }
+
+    /** The render settings a scene asks for. */
+    static RenderSettings settings(RenderDef def) {
+        TerrainTint tint = switch (def.terrainTint()) {
+            case WATER -> TerrainTint.WATER;
+            case NUTRIENTS -> TerrainTint.NUTRIENTS;
+            default -> TerrainTint.NONE;
+        };
+        return new RenderSettings().sky(def.sky()).lodTransition(def.lodTransition()).tint(tint)
+                .showField(def.showField()).showWind(def.showWind());
+    }
+
+    static void run(SceneDef def, Path baseDir, int frames, Path out, int width, int height, boolean maps,
+                    PrintWriter log) throws IOException {
+        Files.createDirectories(out);
+        log.println("Building '" + def.name() + "' ...");
+        log.flush();
+        World world = World.build(def.simulationDef(), baseDir, Math.max(1, Runtime.getRuntime().availableProcessors()),
+                Progress.NONE);
+        if (maps) {
+            TerrainMaps.writeWater(world.terrain().water(), MAP_SIDE, MAP_SIDE, out.resolve("water.png"));
+            TerrainMaps.writeNutrients(world.terrain().nutrients(), MAP_SIDE, MAP_SIDE, out.resolve("nutrients.png"));
+            int[] palette = {0x4F8A2B, 0xF2D21B, 0x7B3FB0, 0xD0402A, 0x2A7FD0, 0xE08A1E, 0x20A0A0, 0xA02080};
+            int[] pal = new int[Math.max(palette.length, world.plants().species().size())];
+            for (int i = 0; i < pal.length; i++) {
+                pal[i] = palette[i % palette.length];
+            }
+            TerrainMaps.writeSpecies(world.terrain().heightfield(), world.layout(), pal, MAP_SIDE, MAP_SIDE,
+                    out.resolve("species.png"));
+            log.println("Wrote water.png, nutrients.png and species.png to " + out);
+        }
+        PreviewAnimation anim = new PreviewAnimation(def, world);
+        Frame frame = new Frame(world.plantCount(), world.componentCount());
+        double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
+        ViewCamera camera = ViewCamera.of(def.camera(), ground, width / (double) height);
+        ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
+        try (GlContext gl = GlContext.headless(false)) {
+            log.println("OpenGL: " + gl.describe());
+            try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height);
+                 SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
+                renderer.setField(anim.fieldView());
+                for (int i = 1; i <= frames; i++) {
+                    anim.step(FRAME_DT, camera, frame);
+                    fb.bind();
+                    renderer.render(frame, camera, width, height);
+                    Pixels.read(width, height, px);
+                    Pixels.writePng(out.resolve(String.format("frame-%05d.png", i)), px, width, height);
+                }
+            }
+        } finally {
+            MemoryUtil.memFree(px);
+        }
+        log.println("Wrote " + frames + " frame(s) of " + width + "x" + height + " to " + out.toAbsolutePath());
+        log.flush();
+    }
+}

@@ -1,0 +1,112 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL20C.GL_COMPILE_STATUS;
+import static org.lwjgl.opengl.GL20C.GL_FRAGMENT_SHADER;
+import static org.lwjgl.opengl.GL20C.GL_LINK_STATUS;
+import static org.lwjgl.opengl.GL20C.GL_VERTEX_SHADER;
+import static org.lwjgl.opengl.GL20C.glAttachShader;
+import static org.lwjgl.opengl.GL20C.glCompileShader;
+import static org.lwjgl.opengl.GL20C.glCreateProgram;
+import static org.lwjgl.opengl.GL20C.glCreateShader;
+import static org.lwjgl.opengl.GL20C.glDeleteProgram;
+import static org.lwjgl.opengl.GL20C.glDeleteShader;
+import static org.lwjgl.opengl.GL20C.glDetachShader;
+import static org.lwjgl.opengl.GL20C.glGetProgramInfoLog;
+import static org.lwjgl.opengl.GL20C.glGetProgrami;
+import static org.lwjgl.opengl.GL20C.glGetShaderInfoLog;
+import static org.lwjgl.opengl.GL20C.glGetShaderi;
+import static org.lwjgl.opengl.GL20C.glGetUniformLocation;
+import static org.lwjgl.opengl.GL20C.glShaderSource;
+import static org.lwjgl.opengl.GL20C.glUseProgram;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * A linked shader program from {@code src/main/resources/org/jecosys/render/shaders/}. Compile and
+ * link errors fail fast with the driver's log. Render thread only; look uniform locations up once
+ * with {@link #uniform} at setup, not per frame.
+ */
+public final class GlProgram extends GlResource {
+    private final String name;
+
+    /**
+     * Compiles and links {@code shaders/<vertex>} and {@code shaders/<fragment>}.
+     *
+     * @param vertex   vertex shader resource name, e.g. {@code "plant.vert"}
+     * @param fragment fragment shader resource name
+     */
+    public GlProgram(GlTracker tracker, String vertex, String fragment) {
+        super(tracker, glCreateProgram());
+        this.name = vertex + "+" + fragment;
+        int vs = 0;
+        int fs = 0;
+        try {
+            vs = compile(GL_VERTEX_SHADER, vertex);
+            fs = compile(GL_FRAGMENT_SHADER, fragment);
+            glAttachShader(id(), vs);
+            glAttachShader(id(), fs);
+            org.lwjgl.opengl.GL20C.glLinkProgram(id());
+            if (glGetProgrami(id(), GL_LINK_STATUS) == 0) {
+                throw new IllegalStateException("linking " + name + " failed: " + glGetProgramInfoLog(id()));
+            }
+            glDetachShader(id(), vs);
+            glDetachShader(id(), fs);
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        } finally {
+            if (vs != 0) {
+                glDeleteShader(vs);
+            }
+            if (fs != 0) {
+                glDeleteShader(fs);
+            }
+        }
+    }
+
+    /** Reads a shader's source from the classpath. */
+    static String source(String resource) {
+        try (InputStream in = GlProgram.class.getResourceAsStream("shaders/" + resource)) {
+            if (in == null) {
+                throw new IllegalStateException("shader resource org/jecosys/render/shaders/" + resource + " is missing");
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException("reading shader " + resource, e);
+        }
+    }
+
+    private static int compile(int type, String resource) {
+        int s = glCreateShader(type);
+        glShaderSource(s, source(resource));
+        glCompileShader(s);
+        if (glGetShaderi(s, GL_COMPILE_STATUS) == 0) {
+            String log = glGetShaderInfoLog(s);
+            glDeleteShader(s);
+            throw new IllegalStateException("compiling shader " + resource + " failed: " + log);
+        }
+        return s;
+    }
+
+    /** Makes it the current program. */
+    public void use() {
+        glUseProgram(id());
+    }
+
+    /** Location of uniform {@code uniform}; fails if the program has no such active uniform. Setup time. */
+    public int uniform(String uniform) {
+        int loc = glGetUniformLocation(id(), uniform);
+        if (loc < 0) {
+            throw new IllegalStateException(name + " has no active uniform '" + uniform + "'");
+        }
+        return loc;
+    }
+
+    @Override
+    void delete(int name) {
+        glDeleteProgram(name);
+    }
+}

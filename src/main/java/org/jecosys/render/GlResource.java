@@ -1,0 +1,44 @@
+package org.jecosys.render;
+
+/**
+ * Base of every {@code Gl*} wrapper: one GL object name, owned by one renderer, created and deleted on
+ * the render thread. {@link #close()} is idempotent; there is no finalizer (DESIGN.md, style 4).
+ */
+abstract class GlResource implements AutoCloseable {
+    private final GlTracker tracker;
+    private int id;
+
+    GlResource(GlTracker tracker, int id) {
+        if (id == 0) {
+            throw new IllegalStateException(getClass().getSimpleName() + ": the GL driver returned no object name");
+        }
+        this.tracker = tracker;
+        this.id = id;
+        tracker.created();
+    }
+
+    /** The GL object name; fails after {@link #close()}. */
+    public final int id() {
+        if (id == 0) {
+            throw new IllegalStateException(getClass().getSimpleName() + " is closed");
+        }
+        return id;
+    }
+
+    /** Whether {@link #close()} was called. */
+    public final boolean closed() {
+        return id == 0;
+    }
+
+    /** Deletes the GL object. Render thread; idempotent. */
+    @Override
+    public final void close() {
+        if (id != 0) {
+            delete(id);
+            id = 0;
+            tracker.deleted();
+        }
+    }
+
+    abstract void delete(int name);
+}

@@ -1,0 +1,388 @@
+package org.jecosys.render;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.InstanceLayout;
+import org.jecosys.plant.LodChooser;
+import org.jecosys.plant.LodDef;
+import org.jecosys.plant.Primitive;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.joml.FrustumIntersection;
+import org.joml.Matrix4f;
+
+/**
+ * The GL-free half of plant rendering: per frame, which plants are drawn, at which level of detail,
+ * in which instanced draw (one <em>list</em> per species and level, paper §4.1 and Table 3), and how
+ * many primitives that submits. Pure functions of the world, the camera and the LOD settings, tested
+ * without a GL context.
+ *
+ * <ul>
+ * <li><b>Culling</b>: a plant is drawn when its bounding sphere (centre at its base, radius
+ * {@link #radius(int)} of its species: every pose and attachment fits) intersects the view
+ * frustum.</li>
+ * <li><b>Level of detail</b>: distance = |eye - plant base| (metres); level and fade from the
+ * species' {@link LodChooser}. A plant inside a transition band (fade &gt; 0) is put in both
+ * lists, level L and L + 1; the shader keeps complementary screen-door (dither) pixels of the two so
+ * the switch is gradual and never pops ({@code plant.frag}).</li>
+ * <li><b>Counters</b>: triangles and lines submitted = sum over lists of instances × that level's
+ * primitive count.</li>
+ * </ul>
+ *
+ * <p>Render thread (or any single thread); {@link #update}, {@link #writeInstances} and
+ * {@link #writeComponents} allocate nothing. Lists are stored in preallocated arrays sized for
+ * every plant at every level.
+ */
+public final class PlantBatches {
+    private final World world;
+    private final int species;
+    private final int[] listBase;      // first list of species s (lists = species x levels)
+    private final int[] levels;
+    private final int[] slots;
+    private final float[] radius;
+    private final double[][] edges;
+    private final LodChooser[] choosers;
+    private final int[] primitives;    // per list
+    private final boolean[] lines;     // per list
+    private final int[] listStart;     // per list: offset into plants[]
+    private final int[] listCount;
+    private final int[] plants;
+    private final int[] instanceOffset; // per list: first instance record in the packed stream
+    private final int[] componentOffset; // per list: first (poseCoord, azimuth) pair
+    private final ByteBuffer records;
+    private final FrustumIntersection frustum = new FrustumIntersection();
+    private final Matrix4f viewProj = new Matrix4f();
+    private double bandWidth;
+    private long triangles;
+    private long lineCount;
+    private int instances;
+    private int components;
+
+    /**
+     * Batches for a world. Build time; allocates the lists for every plant at every level and the
+     * plants' 16-byte {@link InstanceLayout} records.
+     *
+     * @param world     the plants
+     * @param bandWidth LOD transition band, metres, in [0, smallest gap between LOD edges]
+     */
+    public PlantBatches(World world, double bandWidth) {
+        this.world = world;
+        List<SpeciesModel> models = world.plants().species();
+        species = models.size();
+        listBase = new int[species + 1];
+        levels = new int[species];
+        slots = new int[species];
+        radius = new float[species];
+        edges = new double[species][];
+        choosers = new LodChooser[species];
+        int[] perSpecies = new int[species];
+        for (int p = 0; p < world.plantCount(); p++) {
+            perSpecies[world.plantSpecies(p)]++;
+        }
+        int lists = 0;
+        for (int s = 0; s < species; s++) {
+            SpeciesModel m = models.get(s);
+            listBase[s] = lists;
+            levels[s] = m.levels();
+            slots[s] = m.slotCount();
+            radius[s] = boundingRadius(m);
+            lists += m.levels();
+        }
+        listBase[species] = lists;
+        primitives = new int[lists];
+        lines = new boolean[lists];
+        listStart = new int[lists + 1];
+        listCount = new int[lists];
+        instanceOffset = new int[lists];
+        componentOffset = new int[lists];
+        int at = 0;
+        for (int s = 0; s < species; s++) {
+            SpeciesModel m = models.get(s);
+            for (int l = 0; l < m.levels(); l++) {
+                int li = listBase[s] + l;
+                primitives[li] = m.primitiveCount(l);
+                lines[li] = m.mesh(l).primitive() == Primitive.LINES;
+                listStart[li] = at;
+                at += perSpecies[s];
+            }
+        }
+        listStart[lists] = at;
+        plants = new int[at];
+        records = ByteBuffer.allocateDirect(Math.max(1, world.plantCount()) * InstanceLayout.BYTES)
+                .order(ByteOrder.LITTLE_ENDIAN);
+        for (int p = 0; p < world.plantCount(); p++) {
+            InstanceLayout.put(records, p, world.plantX(p), world.plantY(p), world.plantZ(p),
+                    world.plantRestAzimuth(p), world.plantSpecies(p), world.plantVariant(p));
+        }
+        this.bandWidth = bandWidth;
+        for (int s = 0; s < species; s++) {
+            List<LodDef> lods = models.get(s).def().lods();
+            double[] e = new double[lods.size() - 1];
+            for (int l = 0; l < e.length; l++) {
+                e[l] = lods.get(l).maxDistance();
+            }
+            setLodDistances(s, e);
+        }
+    }
+
+    /**
+     * A conservative bounding radius of a species' plant about its base, metres: the largest base
+     * offset plus the lengths of every component type (an upper bound of any attachment chain) plus
+     * the widths. Pure; build time.
+     */
+    static float boundingRadius(SpeciesModel m) {
+        double r = 0;
+        double base = 0;
+        for (int s = 0; s < m.slotCount(); s++) {
+            base = Math.max(base, Math.hypot(m.slotBaseX(s), m.slotBaseZ(s)));
+        }
+        for (int c = 0; c < m.componentCount(); c++) {
+            double longest = 0;
+            for (int v = 0; v < m.component(c).variants(); v++) {
+                longest = Math.max(longest, m.component(c).poseTable(v).length());
+            }
+            r += longest + Math.max(m.component(c).def().baseWidth(), m.component(c).def().tipWidth());
+        }
+        return (float) (r + base);
+    }
+
+    /**
+     * Sets the LOD edges of a species (the {@code maxDistance} of each level but the last, ascending,
+     * metres) — the viewer's "edit LOD distances". Allocates; not per frame.
+     */
+    public void setLodDistances(int species, double[] maxDistances) {
+        if (maxDistances.length != levels[species] - 1) {
+            throw new IllegalArgumentException("species " + species + " has " + levels[species] + " levels, so "
+                    + (levels[species] - 1) + " distances, got " + maxDistances.length);
+        }
+        List<LodDef> lods = new ArrayList<>();
+        for (int l = 0; l < maxDistances.length; l++) {
+            lods.add(new LodDef(maxDistances[l], Primitive.TRIANGLES));
+        }
+        lods.add(new LodDef(Double.POSITIVE_INFINITY, Primitive.LINES));
+        double gap = Double.POSITIVE_INFINITY;
+        double prev = 0;
+        for (double e : maxDistances) {
+            gap = Math.min(gap, e - prev);
+            prev = e;
+        }
+        choosers[species] = new LodChooser(lods, Math.min(bandWidth, gap));
+        edges[species] = maxDistances.clone();
+    }
+
+    /** Sets the transition band width of every species, metres (clamped to each species' smallest gap). */
+    public void setBandWidth(double bandWidth) {
+        this.bandWidth = bandWidth;
+        for (int s = 0; s < species; s++) {
+            setLodDistances(s, edges[s]);
+        }
+    }
+
+    /**
+     * Recomputes the lists for a camera: culling, level choice, dithering membership and counters.
+     * No allocation.
+     */
+    public void update(ViewCamera camera) {
+        camera.viewProjection(viewProj);
+        frustum.set(viewProj, false);
+        int lists = listBase[species];
+        for (int li = 0; li < lists; li++) {
+            listCount[li] = 0;
+        }
+        double ex = camera.x();
+        double ey = camera.y();
+        double ez = camera.z();
+        for (int p = 0, n = world.plantCount(); p < n; p++) {
+            int s = world.plantSpecies(p);
+            float x = world.plantX(p);
+            float y = world.plantY(p);
+            float z = world.plantZ(p);
+            if (!frustum.testSphere(x, y, z, radius[s])) {
+                continue;
+            }
+            double dx = x - ex;
+            double dy = y - ey;
+            double dz = z - ez;
+            double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            LodChooser ch = choosers[s];
+            int l = ch.level(d);
+            add(listBase[s] + l, p);
+            if (ch.fade(d) > 0) {
+                add(listBase[s] + l + 1, p);
+            }
+        }
+        triangles = 0;
+        lineCount = 0;
+        instances = 0;
+        components = 0;
+        for (int s = 0; s < species; s++) {
+            for (int li = listBase[s]; li < listBase[s + 1]; li++) {
+                instanceOffset[li] = instances;
+                componentOffset[li] = components;
+                int n = listCount[li];
+                instances += n;
+                components += n * slots[s];
+                if (lines[li]) {
+                    lineCount += (long) n * primitives[li];
+                } else {
+                    triangles += (long) n * primitives[li];
+                }
+            }
+        }
+    }
+
+    private void add(int list, int plant) {
+        plants[listStart[list] + listCount[list]++] = plant;
+    }
+
+    /**
+     * Writes the {@link InstanceLayout} records of every listed plant, list after list, at the
+     * buffer's absolute positions from 0 ({@link #instanceOffset} records per list); sets the limit.
+     * No allocation.
+     */
+    public void writeInstances(ByteBuffer dest) {
+        dest.clear();
+        int o = 0;
+        for (int li = 0, lists = listBase[species]; li < lists; li++) {
+            for (int i = 0, n = listCount[li], st = listStart[li]; i < n; i++) {
+                int src = plants[st + i] * InstanceLayout.BYTES;
+                dest.putLong(o, records.getLong(src));
+                dest.putLong(o + 8, records.getLong(src + 8));
+                o += InstanceLayout.BYTES;
+            }
+        }
+        dest.position(0).limit(o);
+    }
+
+    /**
+     * Writes the (pose coordinate, bend azimuth) pairs of every listed plant's components, list after
+     * list ({@link #componentOffset} pairs per list, {@code slots} per plant in slot order), with
+     * {@link Frame#putPoseAzimuth}; the buffer is rewound and flipped. No allocation.
+     */
+    public void writeComponents(Frame frame, FloatBuffer dest) {
+        dest.clear();
+        for (int li = 0, lists = listBase[species]; li < lists; li++) {
+            for (int i = 0, n = listCount[li], st = listStart[li]; i < n; i++) {
+                int p = plants[st + i];
+                frame.putPoseAzimuth(dest, world.firstComponent(p), world.componentsOf(p));
+            }
+        }
+        dest.flip();
+    }
+
+    /** Number of species. */
+    public int speciesCount() {
+        return species;
+    }
+
+    /** Levels of detail of species {@code s}. */
+    public int levels(int s) {
+        return levels[s];
+    }
+
+    /** Index of the list of (species, level). */
+    public int list(int s, int level) {
+        return listBase[s] + level;
+    }
+
+    /** Number of lists (sum of every species' levels). */
+    public int listCount() {
+        return listBase[species];
+    }
+
+    /** Plants in list {@code list} after the last {@link #update}. */
+    public int count(int list) {
+        return listCount[list];
+    }
+
+    /** The {@code i}-th plant of list {@code list}. */
+    public int plant(int list, int i) {
+        return plants[listStart[list] + i];
+    }
+
+    /** First instance record of the list in the {@link #writeInstances} stream. */
+    public int instanceOffset(int list) {
+        return instanceOffset[list];
+    }
+
+    /** First component pair of the list in the {@link #writeComponents} stream. */
+    public int componentOffset(int list) {
+        return componentOffset[list];
+    }
+
+    /** Whether the list draws lines (else triangles). */
+    public boolean lines(int list) {
+        return lines[list];
+    }
+
+    /** Primitives of one plant of the list. */
+    public int primitivesPerPlant(int list) {
+        return primitives[list];
+    }
+
+    /** Bounding radius of species {@code s}, metres. */
+    public float radius(int s) {
+        return radius[s];
+    }
+
+    /** LOD edge {@code l} of species {@code s} ({@code l < levels - 1}), metres. */
+    public double edge(int s, int l) {
+        return edges[s][l];
+    }
+
+    /** The level chooser of species {@code s}. */
+    public LodChooser chooser(int s) {
+        return choosers[s];
+    }
+
+    /** Transition band width of species {@code s}, metres. */
+    public double bandWidth(int s) {
+        return choosers[s].bandWidth();
+    }
+
+    /** Triangles submitted by the last {@link #update}. */
+    public long triangles() {
+        return triangles;
+    }
+
+    /** Lines submitted by the last {@link #update}. */
+    public long lineCount() {
+        return lineCount;
+    }
+
+    /** Instances (plant draws, a plant in a band counting twice) of the last {@link #update}. */
+    public int instances() {
+        return instances;
+    }
+
+    /** Component pairs of the last {@link #update}. */
+    public int components() {
+        return components;
+    }
+
+    /** Upper bound of {@link #instances()}: every plant at every level. */
+    public int maxInstances() {
+        return plants.length;
+    }
+
+    /** Upper bound of {@link #components()}. */
+    public long maxComponents() {
+        long n = 0;
+        for (int s = 0; s < species; s++) {
+            for (int li = listBase[s]; li < listBase[s + 1]; li++) {
+                n += (long) (listStart[li + 1] - listStart[li]) * slots[s];
+            }
+        }
+        return n;
+    }
+
+    /** Slots (components) per plant of species {@code s}. */
+    public int slots(int s) {
+        return slots[s];
+    }
+}

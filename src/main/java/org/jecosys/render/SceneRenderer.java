@@ -1,0 +1,138 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.GL_LEQUAL;
+import static org.lwjgl.opengl.GL11C.glClear;
+import static org.lwjgl.opengl.GL11C.glClearColor;
+import static org.lwjgl.opengl.GL11C.glDepthFunc;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL11C.glViewport;
+
+import org.jecosys.field.FieldDebugView;
+import org.jecosys.math.Rgb;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+
+/**
+ * Renders a whole frame of a {@link World}: sky, lit terrain, plants and the optional force-field
+ * overlays, into the currently bound framebuffer (a window's or a {@link GlFramebuffer}). Owns the
+ * terrain, plant and overlay renderers. Render thread only; {@link #render} allocates nothing in the
+ * steady state (changing the tint or LOD band re-uploads or rebuilds once).
+ */
+public final class SceneRenderer implements AutoCloseable {
+    /** Unit direction toward the sun: high in the south-west. */
+    private static final float LX = -0.45f;
+    private static final float LY = 0.80f;
+    private static final float LZ = 0.40f;
+
+    private final GlContext gl;
+    private final RenderSettings settings;
+    private final TerrainRenderer terrain;
+    private final PlantRenderer plants;
+    private final FieldOverlay overlay;
+    private double band;
+    private FieldDebugView field;
+    private boolean closed;
+
+    /**
+     * Uploads everything static of the world. Render thread; allocates.
+     *
+     * @param settings read every frame; the caller may change it between frames
+     */
+    public SceneRenderer(GlContext gl, World world, RenderSettings settings) {
+        gl.checkThread();
+        this.gl = gl;
+        this.settings = settings;
+        this.band = settings.lodTransition();
+        TerrainRenderer t = null;
+        PlantRenderer p = null;
+        try {
+            t = new TerrainRenderer(gl, world.terrain(), settings.tint());
+            p = new PlantRenderer(gl, world, band);
+            overlay = new FieldOverlay(gl, world.terrain().heightfield());
+        } catch (RuntimeException e) {
+            PlantRenderer.closeAll(p, t);
+            throw e;
+        }
+        terrain = t;
+        plants = p;
+    }
+
+    /** The settings this renderer reads. */
+    public RenderSettings settings() {
+        return settings;
+    }
+
+    /** Sets the force field whose quadtree and wind the overlays show (null for none). */
+    public void setField(FieldDebugView view) {
+        this.field = view;
+    }
+
+    /** The plant renderer (its batches hold the per-frame counters). */
+    public PlantRenderer plants() {
+        return plants;
+    }
+
+    /** The terrain renderer. */
+    public TerrainRenderer terrain() {
+        return terrain;
+    }
+
+    /** The overlay renderer. */
+    public FieldOverlay overlay() {
+        return overlay;
+    }
+
+    /**
+     * Draws one frame into the bound framebuffer over a {@code width x height} viewport. Render
+     * thread; no allocation in the steady state.
+     *
+     * @param frame  the animation frame to show
+     * @param camera the viewer (its aspect should be width / height)
+     */
+    public void render(Frame frame, ViewCamera camera, int width, int height) {
+        gl.checkThread();
+        if (settings.lodTransition() != band) {
+            band = settings.lodTransition();
+            plants.batches().setBandWidth(band);
+        }
+        terrain.setTint(settings.tint());
+        Rgb sky = settings.sky();
+        glViewport(0, 0, width, height);
+        glClearColor(sky.r(), sky.g(), sky.b(), 1f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glDisable(GL_CULL_FACE);
+        terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        plants.draw(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        glDisable(GL_DEPTH_TEST);
+        if (field != null && (settings.showField() || settings.showWind())) {
+            overlay.draw(field, camera, settings.showField(), settings.showWind(), width, height);
+        }
+    }
+
+    /** Triangles submitted by the last {@link #render}: plants plus terrain. */
+    public long triangles() {
+        return plants.batches().triangles() + terrain.triangles();
+    }
+
+    /** Lines submitted by the last {@link #render} (plants). */
+    public long lines() {
+        return plants.batches().lineCount();
+    }
+
+    /** Deletes every GL object of the three renderers. Render thread; idempotent. */
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            PlantRenderer.closeAll(overlay, plants, terrain);
+        }
+    }
+}

@@ -1,0 +1,194 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL11C.GL_FLOAT;
+import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
+import static org.lwjgl.opengl.GL11C.GL_UNSIGNED_INT;
+import static org.lwjgl.opengl.GL11C.glDrawElements;
+import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
+import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
+import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
+import static org.lwjgl.opengl.GL30C.glBindVertexArray;
+
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import org.jecosys.math.Rgb;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.terrain.Heightfield;
+import org.jecosys.terrain.ResourceMap;
+import org.jecosys.terrain.Terrain;
+import org.jecosys.terrain.TerrainMaps;
+import org.joml.Matrix4f;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The lit terrain: the heightfield as one indexed triangle mesh (vertex position, normal, colour),
+ * optionally tinted by the water or nutrient map (paper §4.3). Render thread only; {@link #draw}
+ * allocates nothing; {@link #setTint} re-uploads the colours (not per frame).
+ */
+public final class TerrainRenderer implements AutoCloseable {
+    private static final int FLOATS = 9;
+    private static final float SOIL_R = 0.36f;
+    private static final float SOIL_G = 0.40f;
+    private static final float SOIL_B = 0.21f;
+
+    private final Terrain terrain;
+    private final int res;
+    private final float[] heights;
+    private final float[] normals;
+    private final GlProgram program;
+    private final GlVertexArray vao;
+    private final GlBuffer vertices;
+    private final GlBuffer indices;
+    private final int indexCount;
+    private final FloatBuffer matrix;
+    private final Matrix4f viewProj = new Matrix4f();
+    private final int uViewProj;
+    private final int uEye;
+    private final int uLightDir;
+    private final int uFogColour;
+    private final int uFogStart;
+    private final int uFogEnd;
+    private TerrainTint tint;
+    private boolean closed;
+
+    /** Builds and uploads the mesh. Render thread; allocates. */
+    public TerrainRenderer(GlContext gl, Terrain terrain, TerrainTint tint) {
+        gl.checkThread();
+        this.terrain = terrain;
+        Heightfield h = terrain.heightfield();
+        res = h.resolution();
+        heights = h.copyHeights(new float[res * res]);
+        normals = h.copyNormals(new float[3 * res * res]);
+        GlTracker t = gl.tracker();
+        program = new GlProgram(t, "terrain.vert", "terrain.frag");
+        vao = new GlVertexArray(t);
+        vao.bind();
+        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
+        IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
+        try {
+            fill(v, tint);
+            for (int j = 0; j < res - 1; j++) {
+                for (int i = 0; i < res - 1; i++) {
+                    int a = j * res + i;
+                    idx.put(a).put(a + res).put(a + 1).put(a + 1).put(a + res).put(a + res + 1);
+                }
+            }
+            idx.flip();
+            vertices = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
+            indices = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(v);
+            MemoryUtil.memFree(idx);
+        }
+        indexCount = 6 * (res - 1) * (res - 1);
+        for (int a = 0; a < 3; a++) {
+            glEnableVertexAttribArray(a);
+            glVertexAttribPointer(a, 3, GL_FLOAT, false, FLOATS * 4, a * 12L);
+        }
+        glBindVertexArray(0);
+        this.tint = tint;
+        matrix = MemoryUtil.memAllocFloat(16);
+        uViewProj = program.uniform("uViewProj");
+        uEye = program.uniform("uEye");
+        uLightDir = program.uniform("uLightDir");
+        uFogColour = program.uniform("uFogColour");
+        uFogStart = program.uniform("uFogStart");
+        uFogEnd = program.uniform("uFogEnd");
+    }
+
+    private void fill(FloatBuffer v, TerrainTint tint) {
+        Heightfield h = terrain.heightfield();
+        ResourceMap water = terrain.water();
+        ResourceMap nutrients = terrain.nutrients();
+        float[] rgb = new float[3];
+        for (int j = 0; j < res; j++) {
+            for (int i = 0; i < res; i++) {
+                int k = j * res + i;
+                double x = h.minX() + i * h.cellX();
+                double z = h.minZ() + j * h.cellZ();
+                v.put((float) x).put(heights[k]).put((float) z);
+                v.put(normals[3 * k]).put(normals[3 * k + 1]).put(normals[3 * k + 2]);
+                colour(tint, water, nutrients, x, z, rgb);
+                v.put(rgb[0]).put(rgb[1]).put(rgb[2]);
+            }
+        }
+        v.flip();
+    }
+
+    /** The terrain colour at (x, z) for a tint, linear RGB in [0, 1], into {@code dest}. Pure. */
+    static void colour(TerrainTint tint, ResourceMap water, ResourceMap nutrients, double x, double z, float[] dest) {
+        switch (tint) {
+            case WATER -> lerp(TerrainMaps.WATER_LOW, TerrainMaps.WATER_HIGH, water.sample(x, z), dest);
+            case NUTRIENTS -> lerp(TerrainMaps.NUTRIENTS_LOW, TerrainMaps.NUTRIENTS_HIGH, nutrients.sample(x, z), dest);
+            default -> {
+                dest[0] = SOIL_R;
+                dest[1] = SOIL_G;
+                dest[2] = SOIL_B;
+            }
+        }
+    }
+
+    private static void lerp(int lo, int hi, double level, float[] dest) {
+        float w = (float) Math.max(0, Math.min(1, level));
+        for (int c = 0; c < 3; c++) {
+            int shift = 16 - 8 * c;
+            float a = ((lo >> shift) & 255) / 255f;
+            float b = ((hi >> shift) & 255) / 255f;
+            dest[c] = a + (b - a) * w;
+        }
+    }
+
+    /** The current tint. */
+    public TerrainTint tint() {
+        return tint;
+    }
+
+    /** Re-colours the mesh for another tint. Render thread; allocates a temporary buffer; not per frame. */
+    public void setTint(TerrainTint tint) {
+        if (tint == this.tint) {
+            return;
+        }
+        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
+        try {
+            fill(v, tint);
+            vertices.upload(0, v);
+        } finally {
+            MemoryUtil.memFree(v);
+        }
+        this.tint = tint;
+    }
+
+    /** Triangles of the terrain mesh. */
+    public int triangles() {
+        return indexCount / 3;
+    }
+
+    /** Draws the terrain. Render thread; no allocation. */
+    public void draw(ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart, float fogEnd) {
+        program.use();
+        glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
+        glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
+        glUniform3f(uLightDir, lx, ly, lz);
+        glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
+        glUniform1f(uFogStart, fogStart);
+        glUniform1f(uFogEnd, fogEnd);
+        vao.bind();
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
+        glBindVertexArray(0);
+    }
+
+    /** Deletes the GL objects. Render thread; idempotent. */
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            PlantRenderer.closeAll(vao, vertices, indices, program);
+            MemoryUtil.memFree(matrix);
+        }
+    }
+}

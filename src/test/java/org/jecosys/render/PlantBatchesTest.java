@@ -1,0 +1,179 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.FloatBuffer;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.InstanceLayout;
+import org.jecosys.plant.LodChooser;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInstance;
+
+/** Level-of-detail choice, culling, instance packing and counters: pure functions, no GL context. */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class PlantBatchesTest {
+    private World world;
+
+    @BeforeAll
+    void build() {
+        world = RenderScenes.build(RenderScenes.load("c1.xml"));
+    }
+
+    private static ViewCamera looking(double x, double y, double z, double yaw) {
+        ViewCamera c = new ViewCamera();
+        c.setPosition(x, y, z);
+        c.setOrientation(yaw, 0);
+        c.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
+        return c;
+    }
+
+    private static int levelsHolding(PlantBatches b, int s, int plant, boolean[] at) {
+        int n = 0;
+        for (int l = 0; l < b.levels(s); l++) {
+            int li = b.list(s, l);
+            at[l] = false;
+            for (int i = 0; i < b.count(li); i++) {
+                if (b.plant(li, i) == plant) {
+                    at[l] = true;
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+
+    @Test
+    void eachVisiblePlantIsInItsDistanceLevelAndInBothLevelsInsideABand() {
+        PlantBatches b = new PlantBatches(world, 1.0);
+        ViewCamera cam = looking(0, 40, 60, 0);
+        cam.setOrientation(0, -Math.atan2(40, 60));
+        b.update(cam);
+        boolean[] at = new boolean[8];
+        int checked = 0;
+        for (int p = 0; p < world.plantCount(); p++) {
+            int s = world.plantSpecies(p);
+            double d = Math.sqrt(Math.pow(world.plantX(p) - cam.x(), 2) + Math.pow(world.plantY(p) - cam.y(), 2)
+                    + Math.pow(world.plantZ(p) - cam.z(), 2));
+            LodChooser ch = b.chooser(s);
+            int n = levelsHolding(b, s, p, at);
+            if (n == 0) {
+                continue;
+            }
+            checked++;
+            assertTrue(at[ch.level(d)], "plant " + p + " at its level");
+            assertEquals(ch.fade(d) > 0 ? 2 : 1, n, "plant " + p + " in one list, or two inside a band");
+        }
+        assertEquals(world.plantCount(), checked, "all of C1 is in view from 72 m");
+    }
+
+    @Test
+    void nearPlantsAreTrianglesAndFarOnesLines() {
+        PlantBatches b = new PlantBatches(world, 0.0);
+        ViewCamera cam = looking(0, 1.7, 14, 0);
+        b.update(cam);
+        assertFalse(b.lines(b.list(0, 0)));
+        assertFalse(b.lines(b.list(0, 1)));
+        assertTrue(b.lines(b.list(0, 2)));
+        for (int s = 0; s < b.speciesCount(); s++) {
+            for (int l = 0; l < b.levels(s); l++) {
+                int li = b.list(s, l);
+                for (int i = 0; i < b.count(li); i++) {
+                    int p = b.plant(li, i);
+                    double d = Math.sqrt(Math.pow(world.plantX(p) - cam.x(), 2)
+                            + Math.pow(world.plantY(p) - cam.y(), 2) + Math.pow(world.plantZ(p) - cam.z(), 2));
+                    int expected = d < 10 ? 0 : d < 15 ? 1 : 2;
+                    assertEquals(expected, l, "plant " + p + " at " + d + " m");
+                }
+            }
+        }
+    }
+
+    @Test
+    void plantsOutsideTheFrustumAreCulled() {
+        PlantBatches b = new PlantBatches(world, 1.0);
+        b.update(looking(0, 1.7, 30, Math.PI)); // 18 m south of the terrain, looking south
+        assertEquals(0, b.instances());
+        assertEquals(0, b.triangles() + b.lineCount());
+        b.update(looking(0, 1.7, 30, 0));
+        assertTrue(b.instances() > 0);
+        // a plant straight behind the camera is never listed, one straight ahead is
+        ViewCamera side = looking(world.plantX(0), world.plantY(0) + 1, world.plantZ(0) + 3, 0);
+        b.update(side);
+        boolean[] at = new boolean[8];
+        assertTrue(levelsHolding(b, world.plantSpecies(0), 0, at) > 0);
+        side.setOrientation(Math.PI, 0);
+        b.update(side);
+        assertEquals(0, levelsHolding(b, world.plantSpecies(0), 0, at));
+    }
+
+    @Test
+    void countersAreInstancesTimesPrimitivesAndPackingFollowsTheLists() {
+        PlantBatches b = new PlantBatches(world, 1.0);
+        b.update(looking(0, 1.7, 14, 0));
+        long tri = 0;
+        long lines = 0;
+        int inst = 0;
+        for (int li = 0; li < b.listCount(); li++) {
+            assertEquals(inst, b.instanceOffset(li));
+            inst += b.count(li);
+            long n = (long) b.count(li) * b.primitivesPerPlant(li);
+            if (b.lines(li)) {
+                lines += n;
+            } else {
+                tri += n;
+            }
+        }
+        assertEquals(tri, b.triangles());
+        assertEquals(lines, b.lineCount());
+        assertEquals(inst, b.instances());
+
+        ByteBuffer records = ByteBuffer.allocateDirect(b.maxInstances() * InstanceLayout.BYTES)
+                .order(ByteOrder.LITTLE_ENDIAN);
+        b.writeInstances(records);
+        b.writeInstances(records); // twice: a second frame must fit too
+        assertEquals(inst * InstanceLayout.BYTES, records.limit());
+        Frame frame = TestFrames.wind(world, 0.7);
+        FloatBuffer pairs = FloatBuffer.allocate((int) (2 * b.maxComponents()));
+        b.writeComponents(frame, pairs);
+        assertEquals(2 * b.components(), pairs.limit());
+        for (int li = 0; li < b.listCount(); li++) {
+            for (int i = 0; i < b.count(li); i++) {
+                int p = b.plant(li, i);
+                int o = (b.instanceOffset(li) + i) * InstanceLayout.BYTES;
+                assertEquals(world.plantX(p), records.getFloat(o + InstanceLayout.X));
+                assertEquals(world.plantZ(p), records.getFloat(o + InstanceLayout.Z));
+                int kind = records.getShort(o + InstanceLayout.KIND) & 0xFFFF;
+                assertEquals(world.plantSpecies(p), InstanceLayout.species(kind));
+                assertEquals(world.plantVariant(p), InstanceLayout.variant(kind));
+                int s = world.plantSpecies(p);
+                for (int slot = 0; slot < b.slots(s); slot++) {
+                    int pair = b.componentOffset(li) + i * b.slots(s) + slot;
+                    int c = world.firstComponent(p) + slot;
+                    assertEquals(frame.poseCoord(c), pairs.get(2 * pair));
+                    assertEquals(frame.bendAzimuth(c), pairs.get(2 * pair + 1));
+                }
+            }
+        }
+    }
+
+    @Test
+    void editedLodDistancesMoveTheBands() {
+        PlantBatches b = new PlantBatches(world, 0.0);
+        ViewCamera cam = looking(0, 1.7, 14, 0);
+        b.update(cam);
+        long linesBefore = b.lineCount();
+        for (int s = 0; s < b.speciesCount(); s++) {
+            b.setLodDistances(s, new double[] {2, 3});
+        }
+        b.update(cam);
+        assertTrue(b.lineCount() > linesBefore);
+        assertEquals(2.0, b.edge(0, 0));
+    }
+}
