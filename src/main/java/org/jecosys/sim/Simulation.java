@@ -107,7 +107,7 @@ public final class Simulation implements AutoCloseable {
     private Frame stepFrame;
     private int stepBuffer;
 
-    private Simulation(World world, SimulationDef def, int threads) {
+    private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
         this.world = world;
         this.def = def;
         AnimationDef ad = def.animation();
@@ -165,7 +165,7 @@ public final class Simulation implements AutoCloseable {
         }
         first[plants] = comps;
         state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading);
-        chunkFirstPlant = chunks(first, plants);
+        chunkFirstPlant = chunks(first, plants, chunkComponents);
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
@@ -187,13 +187,13 @@ public final class Simulation implements AutoCloseable {
         workerIds = pool.threadIds();
     }
 
-    private static int[] chunks(int[] first, int plants) {
+    private static int[] chunks(int[] first, int plants, int chunkComponents) {
         int n = 0;
         int[] tmp = new int[plants + 2];
         tmp[n++] = 0;
         int start = 0;
         for (int p = 0; p < plants; p++) {
-            if (first[p + 1] - first[start] >= CHUNK_COMPONENTS) {
+            if (first[p + 1] - first[start] >= chunkComponents) {
                 tmp[n++] = p + 1;
                 start = p + 1;
             }
@@ -225,14 +225,20 @@ public final class Simulation implements AutoCloseable {
         Require.nonNull("def", def);
         int t = workers(def, threads);
         World world = World.build(def, Require.nonNull("baseDir", baseDir), t, Require.nonNull("progress", progress));
-        return new Simulation(world, def, t);
+        return new Simulation(world, def, t, CHUNK_COMPONENTS);
     }
 
     /** A simulation of an already built world (which must come from {@code def}). Allocates; any thread. */
     public static Simulation of(World world, SimulationDef def, int threads) {
         Require.nonNull("world", world);
         Require.nonNull("def", def);
-        return new Simulation(world, def, workers(def, threads));
+        return new Simulation(world, def, workers(def, threads), CHUNK_COMPONENTS);
+    }
+
+    /** Like {@link #of} with another chunk size (components), for tests of the chunking itself. */
+    static Simulation of(World world, SimulationDef def, int threads, int chunkComponents) {
+        Require.range("chunkComponents", chunkComponents, 1, Integer.MAX_VALUE);
+        return new Simulation(world, def, workers(def, threads), chunkComponents);
     }
 
     private static int workers(SimulationDef def, int threads) {
