@@ -155,8 +155,9 @@ final class SimulateCommand implements Callable<Integer> {
         long totalNanos = 0;
         long updates = 0;
         long alloc0 = 0;
+        int warm = Math.max(1, steps / 2); // allocation is measured over the second half (after warm-up)
         for (int i = 0; i < steps; i++) {
-            if (i == 1) {
+            if (i == warm) {
                 alloc0 = sim.allocatedBytes();
             }
             ViewCamera cam = walk.at(sim.time());
@@ -170,7 +171,7 @@ final class SimulateCommand implements Callable<Integer> {
             }
         }
         long alloc1 = sim.allocatedBytes();
-        double allocPerStep = steps > 1 && alloc0 >= 0 ? (double) (alloc1 - alloc0) / (steps - 1) : 0;
+        double allocPerStep = steps > 1 && alloc0 >= 0 ? (double) (alloc1 - alloc0) / (steps - warm) : 0;
         Arrays.sort(samples, 0, n);
         double median = n % 2 == 1 ? samples[n / 2] : (samples[n / 2 - 1] + samples[n / 2]) / 2.0;
         return new Run(median / 1e6, totalNanos > 0 ? updates / (totalNanos / 1e9) : 0, allocPerStep,
