@@ -212,6 +212,10 @@ public final class AnimationState {
         int updated = 0;
         final float[] co = kinds.coef;
         final int[] masks = kinds.lodMask;
+        final float[] lean = kinds.leanMag;
+        final float[] poseMax = kinds.poseMax;
+        final float[] invLen = kinds.invLength;
+        final float[] poseScale = kinds.poseScale;
         for (int p = first; p < end; p++) {
             double dx = plantX[p] - eyeX;
             double dy = plantY[p] - eyeY;
@@ -259,25 +263,37 @@ public final class AnimationState {
                     continue;
                 }
                 int o = k * SpringKinds.STRIDE;
-                float aDD = co[o];
-                float aDv = co[o + 1];
-                float bD = co[o + 2];
-                float cD = co[o + 3];
-                float aVD = co[o + 4];
-                float aVv = co[o + 5];
-                float bV = co[o + 6];
-                float cV = co[o + 7];
                 float x = devX[c];
                 float z = devZ[c];
                 float vx = velX[c];
                 float vz = velZ[c];
+                float aDD = co[o];
+                float aDv = co[o + 1];
+                float bD = co[o + 2];
+                float cD = co[o + 3];
                 float nx = aDD * x + aDv * vx + bD * p0x + cD * p1x;
                 float nz = aDD * z + aDv * vz + bD * p0z + cD * p1z;
+                float aVD = co[o + 4];
+                float aVv = co[o + 5];
+                float bV = co[o + 6];
+                float cV = co[o + 7];
                 velX[c] = aVD * x + aVv * vx + bV * p0x + cV * p1x;
                 velZ[c] = aVD * z + aVv * vz + bV * p0z + cV * p1z;
                 devX[c] = nx;
                 devZ[c] = nz;
-                output(c, k);
+                // output (see output(int, int)), inlined with the kind arrays in locals
+                float lx = leanX[c];
+                float lz = leanZ[c];
+                float tx = lx + nx;
+                float tz = lz + nz;
+                float t = (float) Math.sqrt(tx * tx + tz * tz);
+                float extra = (2 * (lx * nx + lz * nz) + nx * nx + nz * nz) / (t + lean[k]);
+                float pc = 0;
+                if (extra > 0) {
+                    pc = Math.min(poseMax[k], Trig.atanPositive(extra * invLen[k]) * poseScale[k]);
+                }
+                pose[c] = pc;
+                azimuth[c] = Trig.atan2(tz, tx);
                 updated++;
             }
             pressX[p] = p1x;

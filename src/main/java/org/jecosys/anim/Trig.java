@@ -30,19 +30,20 @@ final class Trig {
         return x <= 1f ? atanUnit(x) : HALF_PI - atanUnit(1f / x);
     }
 
-    /** atan2(y, x) in [-pi, pi]; 0 for (0, 0). */
+    /**
+     * atan2(y, x) in [-pi, pi]; 0 for (0, 0). Branch-free (octant selection by sign bits, min/max
+     * and copySign), so random headings cost no branch mispredictions.
+     */
     static float atan2(float y, float x) {
         float ax = Math.abs(x);
         float ay = Math.abs(y);
-        float a;
-        if (ax >= ay) {
-            a = ax == 0f ? 0f : atanUnit(ay / ax);
-        } else {
-            a = HALF_PI - atanUnit(ax / ay);
-        }
-        if (x < 0f) {
-            a = PI - a;
-        }
-        return y < 0f ? -a : a;
+        float lo = Math.min(ax, ay);
+        float hi = Math.max(Math.max(ax, ay), 1e-30f);
+        float a = atanUnit(lo / hi);
+        float swap = (float) (Float.floatToRawIntBits(ax - ay) >>> 31); // 1 when ay > ax
+        a += swap * (HALF_PI - 2 * a);
+        float neg = (float) (Float.floatToRawIntBits(x) >>> 31); // 1 when x < 0 (or -0)
+        a += neg * (PI - 2 * a);
+        return Math.copySign(a, y);
     }
 }
