@@ -1,9 +1,26 @@
 package org.jecosys.app;
 
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
+import org.jecosys.anim.AnimationState;
+import org.jecosys.field.FieldCounters;
+import org.jecosys.field.ForceFieldDef;
+import org.jecosys.field.QuadtreeForceField;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.Scenes;
+import org.jecosys.sim.Simulation;
+import org.jecosys.sim.SimulationDef;
+import org.jecosys.sim.World;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -60,6 +77,161 @@ final class SimulateCommand implements Callable<Integer> {
         if (def == null) {
             return ExitCodes.BAD_INPUT;
         }
-        return Unavailable.say(spec.commandLine().getErr(), "simulate", "the animation engine");
+        Path file = SceneArgs.resolve(scene);
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        SimulationDef sd = overridden(def);
+        Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
+        Run run;
+        try (Simulation sim = Simulation.create(sd, Scenes.baseDir(file), progress, threads == null ? 0 : threads)) {
+            CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
+                    (double) def.render().width() / def.render().height());
+            run = run(sim, walk);
+            out.printf(Locale.ROOT, "scene                 %s%n", file);
+            out.printf(Locale.ROOT, "components            %d%n", sim.componentCount());
+            out.printf(Locale.ROOT, "plants                %d%n", sim.plantCount());
+            out.printf(Locale.ROOT, "steps                 %d (dt %s s, mode %s, field %s, %d workers)%n", steps,
+                    sd.animation().fixedStep(), sd.animation().mode().xmlName(), sd.field().enabled() ? "on" : "off",
+                    sim.workers());
+            out.printf(Locale.ROOT, "median ms per step    %.4f%n", run.medianMs);
+            out.printf(Locale.ROOT, "component updates/s   %.4g%n", run.updatesPerSecond);
+            out.printf(Locale.ROOT, "allocated bytes/step  %.1f%n", run.allocatedPerStep);
+            out.printf(Locale.ROOT, "state hash            %016x%n", run.hash);
+            out.flush();
+            if (json != null) {
+                write(json, json(file, sim, sd, run));
+            }
+            if (dump != null) {
+                write(dump, dump(sim));
+            }
+        } catch (IOException e) {
+            return fail(err, e);
+        }
+        return ExitCodes.OK;
+    }
+
+    private int fail(PrintWriter err, IOException e) {
+        err.println("jecosys simulate: " + e.getMessage());
+        if (verbose.verbose) {
+            e.printStackTrace(err);
+        }
+        err.flush();
+        return ExitCodes.FAILURE;
+    }
+
+    private static void write(Path file, String text) throws IOException {
+        try {
+            Files.writeString(file, text, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            String why = e instanceof java.nio.file.NoSuchFileException ? "no such folder"
+                    : e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+                    : e instanceof java.nio.file.FileSystemException fse && fse.getReason() != null ? fse.getReason()
+                    : e.getMessage();
+            throw new IOException("cannot write " + file + ": " + why, e);
+        }
+    }
+
+    private SimulationDef overridden(SceneDef def) {
+        SimulationDef sd = def.simulationDef();
+        AnimationDef a = sd.animation();
+        AnimationDef anim = new AnimationDef(mode != null ? mode : a.mode(), dt != null ? dt : a.fixedStep(),
+                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.threads(), a.seed());
+        ForceFieldDef f = sd.field();
+        ForceFieldDef fd = field == null ? f
+                : new ForceFieldDef(field == OnOff.on, f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
+        return new SimulationDef(sd.terrain(), sd.species(), sd.distributions(), sd.placements(), sd.flows(), fd,
+                anim, sd.seed());
+    }
+
+    /** What a run measured. */
+    record Run(double medianMs, double updatesPerSecond, double allocatedPerStep, long hash, long updates) {
+    }
+
+    private Run run(Simulation sim, CameraWalk walk) {
+        int cap = 1 << 20;
+        int every = (steps + cap - 1) / cap;
+        long[] samples = new long[(steps + every - 1) / every];
+        int n = 0;
+        long totalNanos = 0;
+        long updates = 0;
+        long alloc0 = 0;
+        int warm = Math.max(1, steps / 2); // allocation is measured over the second half (after warm-up)
+        for (int i = 0; i < steps; i++) {
+            if (i == warm) {
+                alloc0 = sim.allocatedBytes();
+            }
+            ViewCamera cam = walk.at(sim.time());
+            long t0 = System.nanoTime();
+            sim.stepFixed(cam);
+            long t = System.nanoTime() - t0;
+            totalNanos += t;
+            updates += sim.latestFrame().componentsAnimated();
+            if (i % every == 0) {
+                samples[n++] = t;
+            }
+        }
+        long alloc1 = sim.allocatedBytes();
+        double allocPerStep = steps > 1 && alloc0 >= 0 ? (double) (alloc1 - alloc0) / (steps - warm) : 0;
+        Arrays.sort(samples, 0, n);
+        double median = n % 2 == 1 ? samples[n / 2] : (samples[n / 2 - 1] + samples[n / 2]) / 2.0;
+        return new Run(median / 1e6, totalNanos > 0 ? updates / (totalNanos / 1e9) : 0, allocPerStep,
+                sim.stateHash(), updates);
+    }
+
+    private String json(Path file, Simulation sim, SimulationDef sd, Run run) {
+        FieldCounters fc = sim.fieldCounters();
+        JsonWriter w = new JsonWriter().begin()
+                .put("scene", file.toString())
+                .put("components", sim.componentCount())
+                .put("plants", sim.plantCount())
+                .put("steps", steps)
+                .put("dt", sd.animation().fixedStep())
+                .put("threads", sim.workers())
+                .put("mode", sd.animation().mode().xmlName())
+                .put("field", sd.field().enabled())
+                .put("medianMsPerStep", run.medianMs)
+                .put("componentUpdatesPerSecond", run.updatesPerSecond)
+                .put("allocatedBytesPerStep", run.allocatedPerStep)
+                .put("stateHash", String.format(Locale.ROOT, "%016x", run.hash))
+                .beginObject("fieldCounters")
+                .put("nodes", fc.nodes())
+                .put("leaves", fc.leaves())
+                .put("visibleNodes", fc.visibleNodes())
+                .put("visibleLeaves", fc.visibleLeaves())
+                .put("effectiveNodes", fc.effectiveNodes())
+                .put("flowEvaluations", fc.flowEvaluations())
+                .end()
+                .end();
+        return w.toString();
+    }
+
+    /** The CSV header of --dump. */
+    static final String DUMP_HEADER = "plant,component,species,x,z,windX,windZ,forceX,forceZ,devX,devZ,velX,velZ,"
+            + "bend,azimuth,node,nodeDepth";
+
+    private static String dump(Simulation sim) {
+        World w = sim.world();
+        AnimationState s = sim.state();
+        QuadtreeForceField f = sim.forceField();
+        StringBuilder sb = new StringBuilder(DUMP_HEADER).append('\n');
+        for (int p = 0; p < w.plantCount(); p++) {
+            String species = w.plants().species().get(w.plantSpecies(p)).def().id();
+            int node = sim.fieldEnabled() ? f.effectiveNode(p) : -1;
+            if (node < 0) {
+                node = f.leafNode(p);
+            }
+            int depth = f.tree().depth(node);
+            for (int c = w.firstComponent(p), e = c + w.componentsOf(p); c < e; c++) {
+                sb.append(p).append(',').append(c).append(',').append(species).append(',')
+                        .append(w.plantX(p)).append(',').append(w.plantZ(p)).append(',')
+                        .append(sim.windX(p)).append(',').append(sim.windZ(p)).append(',')
+                        .append((float) s.forceX(c)).append(',').append((float) s.forceZ(c)).append(',')
+                        .append(s.deviationX(c)).append(',').append(s.deviationZ(c)).append(',')
+                        .append(s.velocityX(c)).append(',').append(s.velocityZ(c)).append(',')
+                        .append(s.bend(c)).append(',').append(s.azimuth(c)).append(',')
+                        .append(node).append(',').append(depth).append('\n');
+            }
+        }
+        return sb.toString();
     }
 }

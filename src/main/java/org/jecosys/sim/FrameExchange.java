@@ -24,6 +24,11 @@ public final class FrameExchange {
         }
     }
 
+    /** Frame i of the three (0-2), for initialising all of them before the first publish. Writer thread, before any reader. */
+    Frame frame(int i) {
+        return frames[i];
+    }
+
     /** The writer's frame to fill. Writer thread only. */
     public Frame back() {
         return frames[back];

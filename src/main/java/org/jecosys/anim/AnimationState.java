@@ -1,0 +1,433 @@
+package org.jecosys.anim;
+
+import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
+
+/**
+ * The animated state of every plant component in flat arrays indexed by component (paper §4.2;
+ * DESIGN.md style 2), and its updater. Per component: deviation D and velocity v (2D, ground plane,
+ * x = X, z = Z), and the outputs: the continuous pose coordinate and the bend azimuth. Per plant:
+ * the force input of the last update and the level of detail. Sized at construction; nothing grows.
+ *
+ * <h2>Bend</h2>
+ * A component's rest shape (pose 0) leans toward its rest heading h (plant rest azimuth + slot
+ * azimuth) by its rest lean {@code l} (the horizontal tip offset of pose 0): the lean vector is
+ * {@code L = l (cos h, sin h)} in (X, Z), the heading convention of {@code Frame}: the pose table's
+ * local +X goes to world {@code (cos a, 0, sin a)}, i.e. angles turn from +X toward +Z. The deviation
+ * moves the tip's horizontal position to {@code T = L + D}:
+ * <ul>
+ * <li>azimuth = direction of T ({@code atan2(Tz, Tx)}): at D = 0 it is the rest heading, so a
+ * component at rest keeps its heading and never flips at zero wind;</li>
+ * <li>the extra bend is {@code max(0, |T| - l)} metres, computed as {@code (2 L.D + |D|^2) / (|T| + l)}
+ * (exactly 0 at D = 0), mapped to the pose coordinate as {@code PoseMapping.poseCoordinate} does:
+ * {@code min(K - 1, atan(extra / length) (K - 1) / maxBend)}. A wind against the lean first turns
+ * the component (azimuth) and then bends it the other way: its tip follows D to first order.</li>
+ * </ul>
+ * Arc tangents use a polynomial with error below 1e-5 rad.
+ *
+ * <h2>Threads</h2>
+ * {@link #animate} touches only the plants of its range and their components, so disjoint ranges
+ * may run on different threads at once; the results do not depend on which thread runs a range
+ * (no reductions, no shared random state). Everything else: one thread while no range runs.
+ * Nothing here allocates after construction.
+ */
+public final class AnimationState {
+    private final SpringKinds kinds;
+    private final int plants;
+    private final int components;
+    private final int[] plantSpecies;
+    private final int[] firstComponent;
+    private final float[] plantX;
+    private final float[] plantY;
+    private final float[] plantZ;
+    private final double[][] lodEdges;
+    private final double[][] lodEdges2;
+    private double lodScale = 1;
+
+    private final short[] kind;
+    private final float[] leanX;
+    private final float[] leanZ;
+    final float[] devX;
+    final float[] devZ;
+    final float[] velX;
+    final float[] velZ;
+    final float[] pose;
+    final float[] azimuth;
+    final float[] pressX;
+    final float[] pressZ;
+    final byte[] level;
+
+    /**
+     * State at rest for a set of plants. Build time; allocates. Arrays are copied.
+     *
+     * @param kinds          the component kinds
+     * @param lodEdges       per species, the ascending distances (metres) where its levels of detail end,
+     *                       the last (unbounded) level left out
+     * @param plantSpecies   per plant, its species index into {@code lodEdges}
+     * @param firstComponent per plant its first component, plus the total at the end (length plants + 1)
+     * @param plantX         per plant X, metres
+     * @param plantY         per plant base height, metres
+     * @param plantZ         per plant Z, metres
+     * @param componentKind  per component its kind
+     * @param restHeading    per component its rest heading h, radians (plant rest azimuth + slot azimuth)
+     */
+    public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
+                          float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, float[] restHeading) {
+        this.kinds = Require.nonNull("kinds", kinds);
+        Require.nonNull("lodEdges", lodEdges);
+        plants = Require.nonNull("plantSpecies", plantSpecies).length;
+        if (firstComponent.length != plants + 1 || plantX.length != plants || plantY.length != plants
+                || plantZ.length != plants) {
+            throw new IllegalArgumentException("firstComponent must hold plants + 1 = " + (plants + 1)
+                    + " values and plantX/Y/Z plants = " + plants);
+        }
+        components = componentKind.length;
+        if (restHeading.length != components || firstComponent[plants] != components) {
+            throw new IllegalArgumentException("restHeading and firstComponent[plants] must match the "
+                    + components + " components");
+        }
+        this.plantSpecies = plantSpecies.clone();
+        this.firstComponent = firstComponent.clone();
+        this.plantX = plantX.clone();
+        this.plantY = plantY.clone();
+        this.plantZ = plantZ.clone();
+        this.lodEdges = new double[lodEdges.length][];
+        this.lodEdges2 = new double[lodEdges.length][];
+        for (int s = 0; s < lodEdges.length; s++) {
+            this.lodEdges[s] = lodEdges[s].clone();
+            this.lodEdges2[s] = new double[lodEdges[s].length];
+        }
+        for (int p = 0; p < plants; p++) {
+            Require.range("plantSpecies[" + p + "]", plantSpecies[p], 0, lodEdges.length - 1);
+            if (firstComponent[p + 1] < firstComponent[p]) {
+                throw new IllegalArgumentException("firstComponent must not decrease, at plant " + p);
+            }
+        }
+        kind = new short[components];
+        leanX = new float[components];
+        leanZ = new float[components];
+        for (int c = 0; c < components; c++) {
+            int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
+            kind[c] = (short) k;
+            double h = restHeading[c];
+            leanX[c] = (float) (kinds.leanMag[k] * Math.cos(h));
+            leanZ[c] = (float) (kinds.leanMag[k] * Math.sin(h));
+        }
+        devX = new float[components];
+        devZ = new float[components];
+        velX = new float[components];
+        velZ = new float[components];
+        pose = new float[components];
+        azimuth = new float[components];
+        pressX = new float[plants];
+        pressZ = new float[plants];
+        level = new byte[plants];
+        setLodScale(1);
+        resetToRest(0, plants);
+    }
+
+    /** The kinds. */
+    public SpringKinds kinds() {
+        return kinds;
+    }
+
+    /** Number of plants. */
+    public int plantCount() {
+        return plants;
+    }
+
+    /** Number of components. */
+    public int componentCount() {
+        return components;
+    }
+
+    /** First component of plant p; {@code firstComponent(plantCount())} is the component count. */
+    public int firstComponent(int p) {
+        return firstComponent[p];
+    }
+
+    /**
+     * Scales every species' level-of-detail distances (a LOD bias: 2 keeps detail twice as far).
+     * Between updates only. No allocation.
+     *
+     * @param scale in [0.01, 100]
+     */
+    public void setLodScale(double scale) {
+        Require.range("scale", scale, 0.01, 100);
+        lodScale = scale;
+        for (int s = 0; s < lodEdges.length; s++) {
+            for (int i = 0; i < lodEdges[s].length; i++) {
+                double d = lodEdges[s][i] * scale;
+                lodEdges2[s][i] = d * d;
+            }
+        }
+    }
+
+    /** The level-of-detail distance scale. */
+    public double lodScale() {
+        return lodScale;
+    }
+
+    /**
+     * Puts plants {@code first .. end-1} and their components back at rest: D = v = 0, pose 0, rest
+     * heading, no remembered force. No allocation.
+     */
+    public void resetToRest(int first, int end) {
+        for (int p = first; p < end; p++) {
+            pressX[p] = 0;
+            pressZ[p] = 0;
+        }
+        for (int c = firstComponent[first], e = firstComponent[end]; c < e; c++) {
+            devX[c] = 0;
+            devZ[c] = 0;
+            velX[c] = 0;
+            velZ[c] = 0;
+            pose[c] = 0;
+            azimuth[c] = Trig.atan2(leanZ[c], leanX[c]);
+        }
+    }
+
+    /**
+     * Advances plants {@code first .. end-1} by one step of the length last given to
+     * {@link SpringKinds#prepare} (paper §4.2.2). Only plants with {@code visible[p]} are updated
+     * (the others keep their last state), and of those only the components that their level of
+     * detail draws. The level of every plant in the range is recomputed from the eye.
+     *
+     * <ul>
+     * <li>CONSTRAINT: the spring of {@link SpringKinds}, driven from the force at the previous update
+     * to the force of wind {@code (windX[p], windZ[p])} (m/s) now;</li>
+     * <li>RANDOM: each updated component takes a random deviation in a disc of radius 0.3 length
+     * (paper Table 7's S2), from {@code rng};</li>
+     * <li>STATIC: nothing moves (see {@link #resetToRest}).</li>
+     * </ul>
+     *
+     * @param windX   per plant wind X at its node, m/s (indexed by plant)
+     * @param windZ   per plant wind Z, m/s
+     * @param visible per plant, whether it is on a visible node
+     * @param rng     random source of this range (RANDOM mode only; may be null otherwise)
+     * @return components updated
+     */
+    public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
+                       double eyeX, double eyeY, double eyeZ, Rng rng) {
+        int updated = 0;
+        final float[] co = kinds.coef;
+        final int[] masks = kinds.lodMask;
+        final float[] lean = kinds.leanMag;
+        final float[] poseMax = kinds.poseMax;
+        final float[] invLen = kinds.invLength;
+        final float[] poseScale = kinds.poseScale;
+        for (int p = first; p < end; p++) {
+            double dx = plantX[p] - eyeX;
+            double dy = plantY[p] - eyeY;
+            double dz = plantZ[p] - eyeZ;
+            double d2 = dx * dx + dy * dy + dz * dz;
+            double[] edges = lodEdges2[plantSpecies[p]];
+            int l = 0;
+            while (l < edges.length && d2 >= edges[l]) {
+                l++;
+            }
+            level[p] = (byte) l;
+            if (!visible[p] || mode == AnimationMode.STATIC) {
+                continue;
+            }
+            int bit = 1 << l;
+            int c0 = firstComponent[p];
+            int c1 = firstComponent[p + 1];
+            if (mode == AnimationMode.RANDOM) {
+                for (int c = c0; c < c1; c++) {
+                    int k = kind[c];
+                    if ((masks[k] & bit) != 0) {
+                        float r = 0.3f * kinds.length[k] * (float) Math.sqrt(rng.nextDouble());
+                        float a = (float) (rng.nextDouble() * 2 * Math.PI);
+                        float ca = (float) StrictMath.cos(a);
+                        devX[c] = r * ca;
+                        devZ[c] = r * (float) StrictMath.sin(a);
+                        velX[c] = 0;
+                        velZ[c] = 0;
+                        output(c, k);
+                        updated++;
+                    }
+                }
+                continue;
+            }
+            float ux = windX[p];
+            float uz = windZ[p];
+            float speed = (float) Math.sqrt(ux * ux + uz * uz);
+            float p1x = speed * ux;
+            float p1z = speed * uz;
+            float p0x = pressX[p];
+            float p0z = pressZ[p];
+            for (int c = c0; c < c1; c++) {
+                int k = kind[c];
+                if ((masks[k] & bit) == 0) {
+                    continue;
+                }
+                int o = k * SpringKinds.STRIDE;
+                float x = devX[c];
+                float z = devZ[c];
+                float vx = velX[c];
+                float vz = velZ[c];
+                float aDD = co[o];
+                float aDv = co[o + 1];
+                float bD = co[o + 2];
+                float cD = co[o + 3];
+                float nx = aDD * x + aDv * vx + bD * p0x + cD * p1x;
+                float nz = aDD * z + aDv * vz + bD * p0z + cD * p1z;
+                float aVD = co[o + 4];
+                float aVv = co[o + 5];
+                float bV = co[o + 6];
+                float cV = co[o + 7];
+                velX[c] = aVD * x + aVv * vx + bV * p0x + cV * p1x;
+                velZ[c] = aVD * z + aVv * vz + bV * p0z + cV * p1z;
+                devX[c] = nx;
+                devZ[c] = nz;
+                // output (see output(int, int)), inlined with the kind arrays in locals
+                float lx = leanX[c];
+                float lz = leanZ[c];
+                float tx = lx + nx;
+                float tz = lz + nz;
+                float t = (float) Math.sqrt(tx * tx + tz * tz);
+                float extra = (2 * (lx * nx + lz * nz) + nx * nx + nz * nz) / (t + lean[k]);
+                float pc = 0;
+                if (extra > 0) {
+                    pc = Math.min(poseMax[k], Trig.atanPositive(extra * invLen[k]) * poseScale[k]);
+                }
+                pose[c] = pc;
+                azimuth[c] = Trig.atan2(tz, tx);
+                updated++;
+            }
+            pressX[p] = p1x;
+            pressZ[p] = p1z;
+        }
+        return updated;
+    }
+
+    /** Pose coordinate and azimuth of component c (kind k) from its deviation. */
+    private void output(int c, int k) {
+        float x = devX[c];
+        float z = devZ[c];
+        float lx = leanX[c];
+        float lz = leanZ[c];
+        float tx = lx + x;
+        float tz = lz + z;
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        float extra = (2 * (lx * x + lz * z) + x * x + z * z) / (t + kinds.leanMag[k]);
+        float pc = 0;
+        if (extra > 0) {
+            pc = Math.min(kinds.poseMax[k], Trig.atanPositive(extra * kinds.invLength[k]) * kinds.poseScale[k]);
+        }
+        pose[c] = pc;
+        azimuth[c] = Trig.atan2(tz, tx);
+    }
+
+    /** Copies the pose coordinates and azimuths of components {@code first .. end-1} into dest arrays (same indices). */
+    public void copyOutputs(int first, int end, float[] poseDest, float[] azimuthDest) {
+        System.arraycopy(pose, first, poseDest, first, end - first);
+        System.arraycopy(azimuth, first, azimuthDest, first, end - first);
+    }
+
+    /** Copies the levels of plants {@code first .. end-1} into dest (same indices). */
+    public void copyLevels(int first, int end, byte[] dest) {
+        System.arraycopy(level, first, dest, first, end - first);
+    }
+
+    /** Deviation X of component c, metres. */
+    public float deviationX(int c) {
+        return devX[c];
+    }
+
+    /** Deviation Z of component c, metres. */
+    public float deviationZ(int c) {
+        return devZ[c];
+    }
+
+    /** Velocity X of component c, m/s. */
+    public float velocityX(int c) {
+        return velX[c];
+    }
+
+    /** Velocity Z of component c, m/s. */
+    public float velocityZ(int c) {
+        return velZ[c];
+    }
+
+    /** Pose coordinate of component c, in [0, K - 1]. */
+    public float poseCoordinate(int c) {
+        return pose[c];
+    }
+
+    /** Bend azimuth of component c, radians in [-pi, pi] (local +X to (cos a, 0, sin a)). */
+    public float azimuth(int c) {
+        return azimuth[c];
+    }
+
+    /** Kind of component c. */
+    public int kind(int c) {
+        return kind[c];
+    }
+
+    /** Bend of component c beyond its rest shape, radians: pose coordinate x maxBend / (K - 1). */
+    public float bend(int c) {
+        int k = kind[c];
+        return pose[c] / kinds.poseScale[k];
+    }
+
+    /**
+     * Force on component c at the plant's last update, N, X part: {@code 0.5 rho dragArea |u| u_x}.
+     */
+    public double forceX(int c) {
+        return 0.5 * org.jecosys.field.DragLaw.AIR_DENSITY * kinds.dragArea(kind[c])
+                * pressX[plantOf(c)];
+    }
+
+    /** Force on component c at the plant's last update, N, Z part. */
+    public double forceZ(int c) {
+        return 0.5 * org.jecosys.field.DragLaw.AIR_DENSITY * kinds.dragArea(kind[c])
+                * pressZ[plantOf(c)];
+    }
+
+    /** The plant of component c (binary search; not for per-frame use on every component). */
+    public int plantOf(int c) {
+        int lo = 0;
+        int hi = plants - 1;
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (firstComponent[mid] <= c) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo;
+    }
+
+    /** Level of detail plant p was last animated at. */
+    public int level(int p) {
+        return level[p];
+    }
+
+    /**
+     * A 64-bit FNV-1a hash of the raw float bits of D, v, pose and azimuth of every component, in
+     * component order: equal states give equal hashes. One thread, no range running. No allocation.
+     */
+    public long stateHash() {
+        long h = 0xcbf29ce484222325L;
+        for (int c = 0; c < components; c++) {
+            h = mix(h, Float.floatToRawIntBits(devX[c]));
+            h = mix(h, Float.floatToRawIntBits(devZ[c]));
+            h = mix(h, Float.floatToRawIntBits(velX[c]));
+            h = mix(h, Float.floatToRawIntBits(velZ[c]));
+            h = mix(h, Float.floatToRawIntBits(pose[c]));
+            h = mix(h, Float.floatToRawIntBits(azimuth[c]));
+        }
+        return h;
+    }
+
+    private static long mix(long h, int bits) {
+        for (int i = 0; i < 4; i++) {
+            h ^= (bits >>> (8 * i)) & 0xff;
+            h *= 0x100000001b3L;
+        }
+        return h;
+    }
+}

@@ -1,0 +1,149 @@
+package org.jecosys.sim;
+
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
+import org.jecosys.math.Require;
+
+/**
+ * A fixed set of worker threads that run the chunks of one step (paper §5.1). Per step the owner
+ * calls {@link #start()}, may do other work (the force-field update), then {@link #await()}.
+ * Workers claim chunk indices 0 .. chunks-1 from an atomic counter and call
+ * {@link ChunkTask#runChunk(int)}; which worker runs a chunk changes nothing in the result, because
+ * chunks are fixed and disjoint. Hand-off by a volatile generation counter and
+ * {@link LockSupport#park()}/{@code unpark}: no task objects, lambdas or collections per step, no
+ * allocation after the threads started. Owner: one thread at a time calls start/await/close.
+ */
+final class WorkerPool implements AutoCloseable {
+    /** The work of one chunk; implemented once, never allocated per step. */
+    interface ChunkTask {
+        void runChunk(int chunk);
+    }
+
+    private static final int SPINS = 200;
+
+    private final Thread[] threads;
+    private final ChunkTask task;
+    private final int chunks;
+    private final AtomicInteger next = new AtomicInteger();
+    private final AtomicInteger pending = new AtomicInteger();
+    private volatile int generation;
+    private volatile boolean stopped;
+    private volatile Thread owner;
+    private volatile Throwable failure;
+
+    WorkerPool(String name, int workers, int chunks, ChunkTask task) {
+        Require.range("workers", workers, 1, 256);
+        this.chunks = Require.range("chunks", chunks, 0, Integer.MAX_VALUE);
+        this.task = Require.nonNull("task", task);
+        threads = new Thread[workers];
+        for (int i = 0; i < workers; i++) {
+            Thread t = new Thread(this::loop, name + "-" + i);
+            t.setDaemon(true);
+            threads[i] = t;
+        }
+        for (Thread t : threads) {
+            t.start();
+        }
+    }
+
+    /** Number of worker threads. */
+    int workers() {
+        return threads.length;
+    }
+
+    /** The worker threads' ids (allocates). */
+    long[] threadIds() {
+        long[] ids = new long[threads.length];
+        for (int i = 0; i < ids.length; i++) {
+            ids[i] = threads[i].getId();
+        }
+        return ids;
+    }
+
+    /** Releases the workers on a new step. Owner thread. No allocation. */
+    void start() {
+        if (stopped) {
+            throw new IllegalStateException("the worker pool is closed");
+        }
+        owner = Thread.currentThread();
+        next.set(0);
+        pending.set(threads.length);
+        generation++;
+        for (Thread t : threads) {
+            LockSupport.unpark(t);
+        }
+    }
+
+    /** Waits until every worker finished the step started last. Owner thread. No allocation. */
+    void await() {
+        int spins = 0;
+        while (pending.get() != 0) {
+            if (spins < SPINS) {
+                spins++;
+                Thread.onSpinWait();
+            } else {
+                LockSupport.park(this);
+            }
+        }
+        Throwable f = failure;
+        if (f != null) {
+            failure = null;
+            throw new IllegalStateException("an animation worker failed: " + f, f);
+        }
+    }
+
+    private void loop() {
+        int seen = 0;
+        while (true) {
+            int spins = 0;
+            while (generation == seen && !stopped) {
+                if (spins < SPINS) {
+                    spins++;
+                    Thread.onSpinWait();
+                } else {
+                    LockSupport.park(this);
+                }
+            }
+            if (stopped) {
+                return;
+            }
+            seen = generation;
+            try {
+                for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
+                    task.runChunk(c);
+                }
+            } catch (Throwable t) {
+                failure = t;
+                next.set(chunks);
+            }
+            if (pending.decrementAndGet() == 0) {
+                LockSupport.unpark(owner);
+            }
+        }
+    }
+
+    /** Stops and joins the workers; idempotent. */
+    @Override
+    public void close() {
+        if (stopped) {
+            return;
+        }
+        stopped = true;
+        for (Thread t : threads) {
+            LockSupport.unpark(t);
+        }
+        boolean interrupted = false;
+        for (Thread t : threads) {
+            while (t.isAlive()) {
+                try {
+                    t.join();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,86 @@
+package org.jecosys.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** jecosys simulate: output, exit codes, --json keys and the --dump header. */
+class SimulateCliTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void printsTheReportAndWritesJsonAndCsv() throws Exception {
+        Path json = dir.resolve("r.json");
+        Path csv = dir.resolve("s.csv");
+        CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--steps", "120", "--threads", "2",
+                "--json", json.toString(), "--dump", csv.toString());
+        assertEquals(0, r.code(), r.err());
+        for (String k : new String[] {"components            1460", "plants                80", "steps                 120",
+                "median ms per step", "component updates/s", "allocated bytes/step", "state hash"}) {
+            assertTrue(r.out().contains(k), k + " in " + r.out());
+        }
+        Matcher m = Pattern.compile("state hash +([0-9a-f]{16})").matcher(r.out());
+        assertTrue(m.find());
+        String text = Files.readString(json, StandardCharsets.UTF_8);
+        for (String k : new String[] {"scene", "components", "plants", "steps", "medianMsPerStep",
+                "componentUpdatesPerSecond", "allocatedBytesPerStep", "stateHash", "fieldCounters", "nodes", "leaves",
+                "visibleNodes", "visibleLeaves", "effectiveNodes", "flowEvaluations"}) {
+            assertTrue(text.contains("\"" + k + "\": "), k + " in " + text);
+        }
+        assertTrue(text.contains("\"stateHash\": \"" + m.group(1) + "\""));
+        List<String> rows = Files.readAllLines(csv, StandardCharsets.UTF_8);
+        assertEquals("plant,component,species,x,z,windX,windZ,forceX,forceZ,devX,devZ,velX,velZ,bend,azimuth,node,"
+                + "nodeDepth", rows.get(0));
+        assertEquals(1461, rows.size());
+        assertEquals(17, rows.get(1).split(",").length);
+    }
+
+    @Test
+    void theHashDoesNotDependOnThreadsAndTheModeAndFieldFlagsWork() {
+        String one = hash(CliTest.run("simulate", "scenes/c1.xml", "--steps", "60", "--threads", "1"));
+        String three = hash(CliTest.run("simulate", "scenes/c1.xml", "--steps", "60", "--threads", "3"));
+        assertEquals(one, three);
+        CliTest.Result st = CliTest.run("simulate", "scenes/c1.xml", "--steps", "10", "--mode", "static",
+                "--field", "off", "--dt", "0.02");
+        assertEquals(0, st.code(), st.err());
+        assertTrue(st.out().contains("mode static, field off"), st.out());
+    }
+
+    private static String hash(CliTest.Result r) {
+        assertEquals(0, r.code(), r.err());
+        Matcher m = Pattern.compile("state hash +([0-9a-f]{16})").matcher(r.out());
+        assertTrue(m.find(), r.out());
+        return m.group(1);
+    }
+
+    @Test
+    void anUnwritableOutputFileExits1WithAClearMessageAndNoStackTrace() {
+        Path bad = dir.resolve("no/such/folder/x.csv");
+        CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--dump", bad.toString());
+        assertEquals(1, r.code());
+        assertTrue(r.err().contains("cannot write " + bad), r.err());
+        assertFalse(r.err().contains("\tat "), r.err());
+        CliTest.Result v = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--json", dir.toString(),
+                "--verbose");
+        assertEquals(1, v.code());
+        assertTrue(v.err().contains("cannot write " + dir), v.err());
+        assertTrue(v.err().contains("\tat "), "stack trace with --verbose: " + v.err());
+    }
+
+    @Test
+    void aBadThreadCountIsBadInput() {
+        CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--threads", "0");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("--threads must be in [1, 256]"), r.err());
+    }
+}

@@ -1,0 +1,88 @@
+package org.jecosys.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import org.jecosys.math.ViewCamera;
+import org.junit.jupiter.api.Test;
+
+/** No torn frames: a reader never sees a frame being written, and frame numbers never go back. */
+class FramesTest {
+    @Test
+    void aConcurrentReaderSeesOnlyCompleteFramesInOrder() throws Exception {
+        try (Simulation sim = SimFixtures.c1(2)) {
+            sim.stampFrames = true; // every component of frame n carries n (pose) and -n (azimuth)
+            AtomicBoolean done = new AtomicBoolean();
+            AtomicReference<String> problem = new AtomicReference<>();
+            AtomicLong checked = new AtomicLong();
+            Thread reader = new Thread(() -> {
+                long last = 0;
+                while (!done.get() && problem.get() == null) {
+                    Frame f = sim.latestFrame();
+                    long n = f.number();
+                    if (n < last) {
+                        problem.set("frame " + n + " after " + last);
+                    }
+                    last = n;
+                    if (n == 0) {
+                        continue;
+                    }
+                    float s = (float) (n % 1_000_000);
+                    for (int c = 0; c < f.componentCount(); c++) {
+                        if (f.poseCoord(c) != s || f.bendAzimuth(c) != -s) {
+                            problem.set("frame " + n + " component " + c + " holds " + f.poseCoord(c) + ", "
+                                    + f.bendAzimuth(c));
+                            break;
+                        }
+                    }
+                    if (f.number() != n) {
+                        problem.set("frame " + n + " changed while read");
+                    }
+                    checked.incrementAndGet();
+                }
+            }, "frame-reader");
+            reader.start();
+            ViewCamera cam = SimFixtures.camera();
+            for (int i = 0; i < 4000 && problem.get() == null; i++) {
+                sim.stepFixed(cam);
+            }
+            done.set(true);
+            reader.join();
+            assertEquals(null, problem.get());
+            assertTrue(checked.get() > 10, "frames checked: " + checked.get());
+        }
+    }
+
+    @Test
+    void framesStartAtRestAndCarryTheStepStatistics() throws Exception {
+        try (Simulation sim = SimFixtures.c1(2)) {
+            Frame f0 = sim.latestFrame();
+            assertEquals(0, f0.number());
+            for (int c = 0; c < f0.componentCount(); c++) {
+                assertEquals(0, f0.poseCoord(c));
+                assertEquals(sim.state().azimuth(c), f0.bendAzimuth(c));
+            }
+            ViewCamera cam = SimFixtures.camera();
+            for (int i = 0; i < 120; i++) {
+                sim.stepFixed(cam);
+            }
+            Frame f = sim.latestFrame();
+            assertEquals(120, f.number());
+            assertEquals(2.0, f.time(), 1e-9);
+            assertTrue(f.componentsAnimated() > 0);
+            assertTrue(f.animationNanos() > 0);
+            int visible = 0;
+            for (int p = 0; p < f.plantCount(); p++) {
+                visible += f.plantVisible(p) ? 1 : 0;
+                assertEquals(sim.state().level(p), f.plantLevel(p));
+            }
+            assertTrue(visible > 0 && visible < f.plantCount(), "visible " + visible);
+            for (int c = 0; c < f.componentCount(); c++) {
+                assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c));
+            }
+        }
+    }
+}
