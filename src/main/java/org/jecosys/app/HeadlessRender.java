@@ -16,6 +16,7 @@ import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
+import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
 import org.jecosys.terrain.TerrainMaps;
 import org.lwjgl.system.MemoryUtil;
@@ -47,12 +48,18 @@ final class HeadlessRender {
     }
 
     static void run(SceneDef def, Path baseDir, int frames, Path out, int width, int height, boolean maps,
-                    PrintWriter log) throws IOException {
+                    PrintWriter log, Progress progress) throws IOException {
         Files.createDirectories(out);
         log.println("Building '" + def.name() + "' ...");
         log.flush();
-        World world = World.build(def.simulationDef(), baseDir, Math.max(1, Runtime.getRuntime().availableProcessors()),
-                Progress.NONE);
+        try (Simulation sim = Simulation.create(def.simulationDef(), baseDir, progress)) {
+            render(def, sim, frames, out, width, height, maps, log);
+        }
+    }
+
+    private static void render(SceneDef def, Simulation sim, int frames, Path out, int width, int height,
+                               boolean maps, PrintWriter log) throws IOException {
+        World world = sim.world();
         if (maps) {
             TerrainMaps.writeWater(world.terrain().water(), MAP_SIDE, MAP_SIDE, out.resolve("water.png"));
             TerrainMaps.writeNutrients(world.terrain().nutrients(), MAP_SIDE, MAP_SIDE, out.resolve("nutrients.png"));
@@ -65,8 +72,6 @@ final class HeadlessRender {
                     out.resolve("species.png"));
             log.println("Wrote water.png, nutrients.png and species.png to " + out);
         }
-        PreviewAnimation anim = new PreviewAnimation(def, world);
-        Frame frame = new Frame(world.plantCount(), world.componentCount());
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
         ViewCamera camera = ViewCamera.of(def.camera(), ground, width / (double) height);
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
@@ -74,9 +79,10 @@ final class HeadlessRender {
             log.println("OpenGL: " + gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height);
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
-                renderer.setField(anim.fieldView());
+                renderer.setField(sim.forceField().debugView());
                 for (int i = 1; i <= frames; i++) {
-                    anim.step(FRAME_DT, camera, frame);
+                    sim.step(FRAME_DT, camera);
+                    Frame frame = sim.latestFrame();
                     fb.bind();
                     renderer.render(frame, camera, width, height);
                     Pixels.read(width, height, px);

@@ -48,7 +48,8 @@ final class RenderCommand implements Callable<Integer> {
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {
-            HeadlessRender.run(def, base, frames, out, w, h, maps, spec.commandLine().getOut());
+            HeadlessRender.run(def, base, frames, out, w, h, maps, spec.commandLine().getOut(),
+                    new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
         } catch (java.io.IOException e) {
             spec.commandLine().getErr().println("jecosys render: " + e.getMessage());
             spec.commandLine().getErr().flush();

@@ -47,10 +47,12 @@ final class ViewCommand implements Callable<Integer> {
                         + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
                 spec.commandLine().getOut().flush();
                 HeadlessRender.run(def, base, frames, out, def.render().width(), def.render().height(), true,
-                        spec.commandLine().getOut());
+                        spec.commandLine().getOut(),
+                        new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
                 return ExitCodes.OK;
             }
-            new Viewer(def, file, base).run();
+            new Viewer(def, file, base).run(new ConsoleProgress(spec.commandLine().getErr(),
+                    ConsoleProgress.stderrIsTerminal()));
             return ExitCodes.OK;
         } catch (IOException e) {
             spec.commandLine().getErr().println("jecosys view: " + e.getMessage());

@@ -39,6 +39,7 @@ import org.jecosys.render.Pixels;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
+import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.ActivationDef;
@@ -53,7 +54,7 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * {@code jecosys view}: the desktop viewer. One thread (the caller's) is the render thread and also
- * steps the {@link PreviewAnimation} stand-in; the window closes with Escape or its close button.
+ * steps the {@link Simulation}; the window closes with Escape or its close button.
  */
 final class Viewer {
     static final String AGENT_ID = "cursor-agent";
@@ -78,12 +79,15 @@ final class Viewer {
         this.base = base;
     }
 
-    void run() throws IOException {
+    void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
-        World world = World.build(def.simulationDef(), base, Math.max(1, Runtime.getRuntime().availableProcessors()),
-                Progress.NONE);
-        PreviewAnimation anim = new PreviewAnimation(def, world);
-        Frame frame = new Frame(world.plantCount(), world.componentCount());
+        try (Simulation sim = Simulation.create(def.simulationDef(), base, progress)) {
+            run(sim);
+        }
+    }
+
+    private void run(Simulation sim) throws IOException {
+        World world = sim.world();
         Heightfield ground = world.terrain().heightfield();
         int width = def.render().width();
         int height = def.render().height();
@@ -97,15 +101,15 @@ final class Viewer {
             glfwShowWindow(window);
             try (SceneRenderer renderer = new SceneRenderer(gl, world, HeadlessRender.settings(def.render()));
                  ImGuiLayer ui = new ImGuiLayer(gl, window)) {
-                renderer.setField(anim.fieldView());
-                ViewerPanel panel = new ViewerPanel(def, file, anim, renderer);
-                loop(window, renderer, ui, panel, anim, frame, fly, times, ground);
+                renderer.setField(sim.forceField().debugView());
+                ViewerPanel panel = new ViewerPanel(def, file, sim, renderer);
+                loop(window, renderer, ui, panel, sim, fly, times, ground);
             }
         }
     }
 
-    private void loop(long window, SceneRenderer renderer, ImGuiLayer ui, ViewerPanel panel, PreviewAnimation anim,
-                      Frame frame, FlyCamera fly, FrameTimes times, Heightfield ground) throws IOException {
+    private void loop(long window, SceneRenderer renderer, ImGuiLayer ui, ViewerPanel panel, Simulation sim,
+                      FlyCamera fly, FrameTimes times, Heightfield ground) throws IOException {
         double last = glfwGetTime();
         double lastX = 0;
         double lastY = 0;
@@ -160,20 +164,21 @@ final class Viewer {
             // dragging on the terrain: an agent (a repelling source) follows the cursor and pushes plants
             boolean drag = mouseFree && onGround && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
             if (drag && agent == null) {
-                agent = anim.wind().attachAgent(new FlowDef(AGENT_ID, FlowKind.SOURCE, true, hit[0], hit[1], 6, 0,
+                agent = sim.attachAgent(new FlowDef(AGENT_ID, FlowKind.SOURCE, true, hit[0], hit[1], 6, 0,
                         0.3, 2.0, ActivationDef.ALWAYS, MotionDef.FIXED, FlowDef.DEFAULT_NOISE_SCALE,
                         FlowDef.DEFAULT_NOISE_FREQUENCY, 0));
             } else if (drag) {
-                agent.setCentre(hit[0], hit[1]);
+                sim.moveAgent(agent, hit[0], hit[1]);
             } else if (agent != null) {
-                anim.wind().remove(agent);
+                sim.removeFlow(agent);
                 agent = null;
             }
-            anim.step(dt, camera, frame);
+            sim.step(dt, camera);
+            Frame frame = sim.latestFrame();
             GL11C.glViewport(0, 0, w, h);
             renderer.render(frame, camera, w, h);
             ui.begin(w, h, (float) dt);
-            panel.hud(times, fly.playing());
+            panel.hud(times, fly.playing(), frame);
             panel.panel();
             ui.end();
             boolean f12 = down(window, GLFW_KEY_F12);

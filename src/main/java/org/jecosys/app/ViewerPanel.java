@@ -19,6 +19,8 @@ import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.Simulation;
 import org.jecosys.wind.ActivationDef;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.FlowKind;
@@ -40,7 +42,7 @@ final class ViewerPanel {
 
     private final SceneDef def;
     private final Path file;
-    private final PreviewAnimation anim;
+    private final Simulation sim;
     private final SceneRenderer renderer;
     private final ImInt kind = new ImInt(1);
     private final ImInt mode = new ImInt();
@@ -54,16 +56,16 @@ final class ViewerPanel {
     private String message = "";
     private int added;
 
-    ViewerPanel(SceneDef def, Path file, PreviewAnimation anim, SceneRenderer renderer) {
+    ViewerPanel(SceneDef def, Path file, Simulation sim, SceneRenderer renderer) {
         this.def = def;
         this.file = file;
-        this.anim = anim;
+        this.sim = sim;
         this.renderer = renderer;
-        mode.set(anim.mode().ordinal());
+        mode.set(sim.mode().ordinal());
         tint.set(renderer.settings().tint().ordinal());
     }
 
-    void hud(FrameTimes times, boolean playing) {
+    void hud(FrameTimes times, boolean playing, Frame frame) {
         times.fps(fps);
         ImGui.setNextWindowPos(8, 8, ImGuiCond.Always);
         ImGui.setNextWindowBgAlpha(0.45f);
@@ -71,8 +73,9 @@ final class ViewerPanel {
                 | ImGuiWindowFlags.NoInputs);
         ImGui.text(String.format("%.1f fps (sd %.1f)", fps[0], fps[1]));
         ImGui.text("triangles " + renderer.triangles() + "  lines " + renderer.lines());
-        ImGui.text("components animated " + anim.componentsAnimated());
-        ImGui.text(String.format("field %.2f ms  simulation %.2f ms", anim.fieldMillis(), anim.animationMillis()));
+        ImGui.text("components animated " + frame.componentsAnimated());
+        ImGui.text(String.format("field %.2f ms  simulation %.2f ms", frame.fieldNanos() / 1e6,
+                frame.animationNanos() / 1e6));
         ImGui.text(playing ? "camera path playing (P stops)" : "WASD QE Shift, right-drag look, P path, F12 shot");
         ImGui.end();
     }
@@ -82,23 +85,22 @@ final class ViewerPanel {
         ImGui.setNextWindowPos(8, 150, ImGuiCond.FirstUseEver);
         ImGui.setNextWindowSize(330, 520, ImGuiCond.FirstUseEver);
         ImGui.begin("JEcoSys");
-        WindField wind = anim.wind();
+        WindField wind = sim.windField();
         if (ImGui.collapsingHeader("Flows")) {
             for (int i = 0; i < wind.size(); i++) {
                 WindSource w = wind.get(i);
                 ImGui.pushID(i);
                 if (ImGui.checkbox(w.id() + " (" + w.kind().xmlName() + ")", w.isEnabled())) {
-                    w.setEnabled(!w.isEnabled());
+                    sim.setFlowEnabled(w, !w.isEnabled());
                 }
                 edit[0] = (float) w.def().strength();
                 if (ImGui.sliderFloat("strength", edit, 0, 20)) {
-                    replace(wind, w, edit[0], w.def().influenceRadius());
+                    replace(w, edit[0], w.def().influenceRadius());
                 }
                 double r = w.def().influenceRadius();
                 edit[0] = Double.isInfinite(r) ? 0 : (float) r;
                 if (ImGui.sliderFloat("radius (0 = unbounded)", edit, 0, 30)) {
-                    replace(wind, wind.get(i), wind.get(i).def().strength(),
-                            edit[0] <= 0 ? Double.POSITIVE_INFINITY : edit[0]);
+                    replace(w, w.def().strength(), edit[0] <= 0 ? Double.POSITIVE_INFINITY : edit[0]);
                 }
                 ImGui.popID();
             }
@@ -110,10 +112,10 @@ final class ViewerPanel {
         }
         if (ImGui.collapsingHeader("Animation")) {
             if (ImGui.combo("mode", mode, MODES)) {
-                anim.mode(AnimationMode.values()[mode.get()]);
+                sim.setMode(AnimationMode.values()[mode.get()]);
             }
-            if (ImGui.checkbox("force field", anim.fieldOn())) {
-                anim.fieldOn(!anim.fieldOn());
+            if (ImGui.checkbox("force field", sim.fieldEnabled())) {
+                sim.setFieldEnabled(!sim.fieldEnabled());
             }
         }
         RenderSettings s = renderer.settings();
@@ -156,26 +158,26 @@ final class ViewerPanel {
         ImGui.end();
     }
 
-    private static void replace(WindField wind, WindSource w, double strength, double radius) {
+    /** Replaces a flow by one with a new strength and radius (applied at the next step). */
+    private void replace(WindSource w, double strength, double radius) {
         FlowDef d = w.def();
         FlowDef n = new FlowDef(d.id(), d.kind(), w.isEnabled(), w.centreX(), w.centreZ(), strength, d.direction(),
                 d.coreRadius(), radius, d.activation(), d.motion(), d.noiseScale(), d.noiseFrequency(), d.seed());
-        wind.remove(w);
-        wind.add(n);
+        sim.removeFlow(w);
+        sim.addFlow(n);
     }
 
     /** Adds the selected kind of flow at (x, z) metres; the uniform and gust blow along {@code heading}. */
     void addFlow(double x, double z, double heading) {
         FlowKind k = KIND_VALUES[kind.get()];
         String id = k.xmlName() + "-" + (++added);
-        WindField wind = anim.wind();
         try {
             if (k == FlowKind.BLAST) {
-                wind.blast(id, x, z, strength[0] * 4, 1.5);
+                sim.blast(id, x, z, strength[0] * 4, 1.5);
             } else {
                 // heading: yaw 0 looks along -Z; FlowDef direction is radians from +X toward +Z
                 double dir = Math.atan2(-Math.cos(heading), Math.sin(heading));
-                wind.add(new FlowDef(id, k, true, x, z, strength[0], dir, FlowDef.DEFAULT_CORE_RADIUS, radius[0],
+                sim.addFlow(new FlowDef(id, k, true, x, z, strength[0], dir, FlowDef.DEFAULT_CORE_RADIUS, radius[0],
                         ActivationDef.ALWAYS, MotionDef.FIXED, FlowDef.DEFAULT_NOISE_SCALE,
                         FlowDef.DEFAULT_NOISE_FREQUENCY, added));
             }
@@ -186,7 +188,7 @@ final class ViewerPanel {
     }
 
     private void save() {
-        WindField wind = anim.wind();
+        WindField wind = sim.windField();
         List<FlowDef> flows = new ArrayList<>();
         for (int i = 0; i < wind.size(); i++) {
             WindSource w = wind.get(i);
@@ -215,10 +217,10 @@ final class ViewerPanel {
         RenderDef nr = new RenderDef(r.width(), r.height(), s.sky(), s.lodTransition(),
                 RenderDef.Tint.values()[s.tint().ordinal()], s.showField(), s.showWind());
         AnimationDef a = def.animation();
-        AnimationDef na = new AnimationDef(anim.mode(), a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
+        AnimationDef na = new AnimationDef(sim.mode(), a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
                 a.seed());
         ForceFieldDef f = def.field();
-        ForceFieldDef nf = new ForceFieldDef(anim.fieldOn(), f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
+        ForceFieldDef nf = new ForceFieldDef(sim.fieldEnabled(), f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
         SceneDef out = new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),
                 def.placements(), flows, nf, def.camera(), na, nr);
         try {

@@ -410,6 +410,19 @@ public final class Simulation implements AutoCloseable {
         commands.add(() -> agent.setCentre(x, z));
     }
 
+    /**
+     * Queues a blast: a short radial pulse at (x, z) metres of peak strength {@code strength} m^2/s
+     * lasting {@code duration} s, removed once over ({@link WindField#blast}). Any thread; allocates.
+     */
+    public void blast(String id, double x, double z, double strength, double duration) {
+        Require.nonNull("id", id);
+        Require.finite("x", x);
+        Require.finite("z", z);
+        Require.positive("strength", strength);
+        Require.positive("duration", duration);
+        commands.add(() -> wind.blast(id, x, z, strength, duration));
+    }
+
     /** Queues switching a flow on or off. Any thread; allocates a command. */
     public void setFlowEnabled(WindSource source, boolean enabled) {
         Require.nonNull("source", source);
