@@ -161,17 +161,57 @@ public final class ViewCamera {
      * camera's world transform {@code T(eye) * Ry(-yaw) * Rx(pitch)}. No allocation.
      */
     public Matrix4f view(Matrix4f dest) {
-        return dest.rotationX((float) -pitch).rotateY((float) yaw).translate((float) -x, (float) -y, (float) -z);
+        return write(dest, 1, 1, 0, 0, false);
     }
 
     /** Writes the OpenGL perspective projection (depth in [-1, 1]). No allocation. */
     public Matrix4f projection(Matrix4f dest) {
-        return dest.setPerspective((float) fovY, (float) aspect, (float) near, (float) far);
+        double h = Math.tan(fovY * 0.5);
+        double p22 = (far + near) / (near - far);
+        double p23 = 2 * far * near / (near - far);
+        return dest.set((float) (1 / (h * aspect)), 0, 0, 0, 0, (float) (1 / h), 0, 0, 0, 0, (float) p22, -1, 0, 0,
+                (float) p23, 0);
     }
 
     /** Writes projection * view: world to clip space. No allocation. */
     public Matrix4f viewProjection(Matrix4f dest) {
-        projection(dest);
-        return dest.rotateX((float) -pitch).rotateY((float) yaw).translate((float) -x, (float) -y, (float) -z);
+        double h = Math.tan(fovY * 0.5);
+        return write(dest, 1 / (h * aspect), 1 / h, (far + near) / (near - far), 2 * far * near / (near - far), true);
+    }
+
+    /**
+     * Writes diag(sx, sy, P) * [R | -R eye] with R = Rx(-pitch) Ry(yaw), where P is the perspective's
+     * depth rows (p22, p23, and row 3 = -R row 2) when {@code perspective}, else the identity. Plain
+     * arithmetic on the matrix fields: the per-frame path calls no JOML helper that might allocate
+     * after a deoptimisation. Column-major arguments as {@link Matrix4f#set(float, float, float, float,
+     * float, float, float, float, float, float, float, float, float, float, float, float)} takes them.
+     */
+    private Matrix4f write(Matrix4f dest, double sx, double sy, double p22, double p23, boolean perspective) {
+        double cy = Math.cos(yaw);
+        double sny = Math.sin(yaw);
+        double ca = Math.cos(-pitch);
+        double sa = Math.sin(-pitch);
+        // rows of R
+        double r00 = cy;
+        double r01 = 0;
+        double r02 = sny;
+        double r10 = sa * sny;
+        double r11 = ca;
+        double r12 = -sa * cy;
+        double r20 = -ca * sny;
+        double r21 = sa;
+        double r22 = ca * cy;
+        double t0 = -(r00 * x + r01 * y + r02 * z);
+        double t1 = -(r10 * x + r11 * y + r12 * z);
+        double t2 = -(r20 * x + r21 * y + r22 * z);
+        if (!perspective) {
+            return dest.set((float) r00, (float) r10, (float) r20, 0, (float) r01, (float) r11, (float) r21, 0,
+                    (float) r02, (float) r12, (float) r22, 0, (float) t0, (float) t1, (float) t2, 1);
+        }
+        return dest.set(
+                (float) (sx * r00), (float) (sy * r10), (float) (p22 * r20), (float) -r20,
+                (float) (sx * r01), (float) (sy * r11), (float) (p22 * r21), (float) -r21,
+                (float) (sx * r02), (float) (sy * r12), (float) (p22 * r22), (float) -r22,
+                (float) (sx * t0), (float) (sy * t1), (float) (p22 * t2 + p23), (float) -t2);
     }
 }

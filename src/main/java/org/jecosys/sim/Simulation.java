@@ -65,6 +65,18 @@ import org.jecosys.wind.WindSource;
  * </ul>
  */
 public final class Simulation implements AutoCloseable {
+    /**
+     * The JVM's per-thread allocation counter, looked up once: {@code ManagementFactory.getThreadMXBean()}
+     * itself allocates on every call, which would pollute the very measurement. Null when unsupported.
+     */
+    private static final com.sun.management.ThreadMXBean THREADS = threadBean();
+
+    private static com.sun.management.ThreadMXBean threadBean() {
+        java.lang.management.ThreadMXBean mx = ManagementFactory.getThreadMXBean();
+        return mx instanceof com.sun.management.ThreadMXBean smx && smx.isThreadAllocatedMemorySupported() ? smx
+                : null;
+    }
+
     /** Target components per fixed chunk of plants. */
     public static final int CHUNK_COMPONENTS = 8192;
 
@@ -560,8 +572,8 @@ public final class Simulation implements AutoCloseable {
      * Any thread; allocates nothing itself.
      */
     public long allocatedBytes() {
-        java.lang.management.ThreadMXBean mx = ManagementFactory.getThreadMXBean();
-        if (!(mx instanceof com.sun.management.ThreadMXBean smx) || !smx.isThreadAllocatedMemorySupported()) {
+        com.sun.management.ThreadMXBean smx = THREADS;
+        if (smx == null) {
             return -1;
         }
         long sum = 0;

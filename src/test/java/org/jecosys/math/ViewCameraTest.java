@@ -69,4 +69,26 @@ class ViewCameraTest {
         assertTrue(e.getMessage().contains("far"));
         assertThrows(IllegalArgumentException.class, () -> c.setOrientation(0, 2));
     }
+
+    @org.junit.jupiter.api.Test
+    void matricesEqualJomlsOwnChainForManyPoses() {
+        Rng rng = new Rng(11);
+        org.joml.Matrix4f mine = new org.joml.Matrix4f();
+        org.joml.Matrix4f joml = new org.joml.Matrix4f();
+        for (int i = 0; i < 200; i++) {
+            ViewCamera c = new ViewCamera().setPosition(rng.nextDouble(-50, 50), rng.nextDouble(0, 10),
+                    rng.nextDouble(-50, 50)).setOrientation(rng.nextDouble(-7, 7), rng.nextDouble(-1.5, 1.5))
+                    .setLens(rng.nextDouble(0.3, 2.5), rng.nextDouble(0.5, 3), rng.nextDouble(0.01, 1),
+                            rng.nextDouble(10, 1000));
+            float p = (float) -c.pitch();
+            float y = (float) c.yaw();
+            joml.setPerspective((float) c.fovY(), (float) c.aspect(), (float) c.near(), (float) c.far())
+                    .rotateX(p).rotateY(y).translate((float) -c.x(), (float) -c.y(), (float) -c.z());
+            org.junit.jupiter.api.Assertions.assertTrue(c.viewProjection(mine).equals(joml, 1e-3f), "pose " + i);
+            joml.rotationX(p).rotateY(y).translate((float) -c.x(), (float) -c.y(), (float) -c.z());
+            org.junit.jupiter.api.Assertions.assertTrue(c.view(mine).equals(joml, 1e-3f), "view " + i);
+            joml.setPerspective((float) c.fovY(), (float) c.aspect(), (float) c.near(), (float) c.far());
+            org.junit.jupiter.api.Assertions.assertTrue(c.projection(mine).equals(joml, 1e-4f), "projection " + i);
+        }
+    }
 }
