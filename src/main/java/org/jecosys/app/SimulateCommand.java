@@ -18,6 +18,7 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.Scenes;
+import org.jecosys.sim.CameraWalk;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.SimulationDef;
 import org.jecosys.sim.World;

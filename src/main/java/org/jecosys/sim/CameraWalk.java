@@ -1,4 +1,4 @@
-package org.jecosys.app;
+package org.jecosys.sim;
 
 import java.util.List;
 import org.jecosys.math.CameraDef;
@@ -11,16 +11,22 @@ import org.jecosys.terrain.Heightfield;
  * more waypoints) at {@code pathSpeed} m/s, looping if the path loops, else stopping at its end.
  * While walking it looks along the current segment (yaw from the direction of travel, the start
  * pitch); its eye is a waypoint's height above the terrain, interpolated along the segment, or the
- * start height where a waypoint's y is 0 (unset). No allocation per call.
+ * start height where a waypoint's y is 0 (unset). The paper's tests walked the viewer through each
+ * scene this way (section 5.2). One owner thread; no allocation per call.
  */
-final class CameraWalk {
+public final class CameraWalk {
     private final CameraDef def;
     private final Heightfield ground;
     private final List<Waypoint> path;
     private final double[] cumulative;
     private final ViewCamera camera;
 
-    CameraWalk(CameraDef def, Heightfield ground, double aspect) {
+    /**
+     * A walk of {@code def}'s path over {@code ground}.
+     *
+     * @param aspect viewport width over height
+     */
+    public CameraWalk(CameraDef def, Heightfield ground, double aspect) {
         this.def = def;
         this.ground = ground;
         this.path = def.path();
@@ -38,7 +44,7 @@ final class CameraWalk {
     }
 
     /** The camera at {@code time} seconds after the start (the same instance, updated). */
-    ViewCamera at(double time) {
+    public ViewCamera at(double time) {
         int n = path.size();
         double total = n < 2 ? 0 : cumulative[n - 1];
         if (total <= 0) {
