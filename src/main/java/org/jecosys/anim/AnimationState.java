@@ -23,7 +23,16 @@ import org.jecosys.math.Rng;
  * {@code min(K - 1, atan(extra / length) (K - 1) / maxBend)}. A wind against the lean first turns
  * the component (azimuth) and then bends it the other way: its tip follows D to first order.</li>
  * </ul>
- * Arc tangents use a polynomial with error below 1e-5 rad.
+ * Arc tangents use a polynomial with error below 5e-7 rad, in the branch-free forms of
+ * {@code Trig.poseAngle} and {@code Trig.azimuth} (the arc tangent of the extra bend is taken as
+ * {@code atan2(num, (|T| + l) length)} with {@code num = max(0, 2 L.D + |D|^2)}, one division).
+ *
+ * <h2>Update order</h2>
+ * The outputs are a pure function of D and the component's constants, so {@link #animate} first
+ * advances D and v plant by plant (scalar, per-kind coefficients), then computes the outputs in a
+ * second, branch-free loop over contiguous component ranges that C2 vectorises. A range may also
+ * cover components that were not advanced (a short gap of invisible plants, components outside the
+ * level of detail): their outputs are recomputed from their unchanged D and come out bit-identical.
  *
  * <h2>Threads</h2>
  * {@link #animate} touches only the plants of its range and their components, so disjoint ranges
@@ -44,9 +53,17 @@ public final class AnimationState {
     private final double[][] lodEdges2;
     private double lodScale = 1;
 
+    /** Output ranges closer than this many components are merged (recomputing the gap is idempotent). */
+    private static final int MERGE_GAP = 64;
+
     private final short[] kind;
     private final float[] leanX;
     private final float[] leanZ;
+    // per-component copies of the kind constants the output loop needs (no gather there)
+    private final float[] compLean;
+    private final float[] compLength;
+    private final float[] compScale;
+    private final float[] compPoseMax;
     final float[] devX;
     final float[] devZ;
     final float[] velX;
@@ -106,12 +123,20 @@ public final class AnimationState {
         kind = new short[components];
         leanX = new float[components];
         leanZ = new float[components];
+        compLean = new float[components];
+        compLength = new float[components];
+        compScale = new float[components];
+        compPoseMax = new float[components];
         for (int c = 0; c < components; c++) {
             int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
             kind[c] = (short) k;
             double h = restHeading[c];
             leanX[c] = (float) (kinds.leanMag[k] * Math.cos(h));
             leanZ[c] = (float) (kinds.leanMag[k] * Math.sin(h));
+            compLean[c] = kinds.leanMag[k];
+            compLength[c] = kinds.length[k];
+            compScale[c] = kinds.poseScale[k];
+            compPoseMax[c] = kinds.poseMax[k];
         }
         devX = new float[components];
         devZ = new float[components];
@@ -182,9 +207,8 @@ public final class AnimationState {
             devZ[c] = 0;
             velX[c] = 0;
             velZ[c] = 0;
-            pose[c] = 0;
-            azimuth[c] = Trig.atan2(leanZ[c], leanX[c]);
         }
+        outputs(firstComponent[first], firstComponent[end]);
     }
 
     /**
@@ -212,10 +236,13 @@ public final class AnimationState {
         int updated = 0;
         final float[] co = kinds.coef;
         final int[] masks = kinds.lodMask;
-        final float[] lean = kinds.leanMag;
-        final float[] poseMax = kinds.poseMax;
-        final float[] invLen = kinds.invLength;
-        final float[] poseScale = kinds.poseScale;
+        final short[] kind = this.kind;
+        final float[] devX = this.devX;
+        final float[] devZ = this.devZ;
+        final float[] velX = this.velX;
+        final float[] velZ = this.velZ;
+        int runStart = -1; // pending output range [runStart, runEnd) of components
+        int runEnd = -1;
         for (int p = first; p < end; p++) {
             double dx = plantX[p] - eyeX;
             double dy = plantY[p] - eyeY;
@@ -244,80 +271,118 @@ public final class AnimationState {
                         devZ[c] = r * (float) StrictMath.sin(a);
                         velX[c] = 0;
                         velZ[c] = 0;
-                        output(c, k);
                         updated++;
                     }
                 }
-                continue;
-            }
-            float ux = windX[p];
-            float uz = windZ[p];
-            float speed = (float) Math.sqrt(ux * ux + uz * uz);
-            float p1x = speed * ux;
-            float p1z = speed * uz;
-            float p0x = pressX[p];
-            float p0z = pressZ[p];
-            for (int c = c0; c < c1; c++) {
-                int k = kind[c];
-                if ((masks[k] & bit) == 0) {
-                    continue;
+            } else {
+                float ux = windX[p];
+                float uz = windZ[p];
+                float speed = (float) Math.sqrt(ux * ux + uz * uz);
+                float p1x = speed * ux;
+                float p1z = speed * uz;
+                float p0x = pressX[p];
+                float p0z = pressZ[p];
+                for (int c = c0; c < c1; c++) {
+                    int k = kind[c];
+                    if ((masks[k] & bit) == 0) {
+                        continue;
+                    }
+                    int o = k * SpringKinds.STRIDE;
+                    float x = devX[c];
+                    float z = devZ[c];
+                    float vx = velX[c];
+                    float vz = velZ[c];
+                    float aDD = co[o];
+                    float aDv = co[o + 1];
+                    float bD = co[o + 2];
+                    float cD = co[o + 3];
+                    float aVD = co[o + 4];
+                    float aVv = co[o + 5];
+                    float bV = co[o + 6];
+                    float cV = co[o + 7];
+                    devX[c] = aDD * x + aDv * vx + bD * p0x + cD * p1x;
+                    devZ[c] = aDD * z + aDv * vz + bD * p0z + cD * p1z;
+                    velX[c] = aVD * x + aVv * vx + bV * p0x + cV * p1x;
+                    velZ[c] = aVD * z + aVv * vz + bV * p0z + cV * p1z;
+                    updated++;
                 }
-                int o = k * SpringKinds.STRIDE;
-                float x = devX[c];
-                float z = devZ[c];
-                float vx = velX[c];
-                float vz = velZ[c];
-                float aDD = co[o];
-                float aDv = co[o + 1];
-                float bD = co[o + 2];
-                float cD = co[o + 3];
-                float nx = aDD * x + aDv * vx + bD * p0x + cD * p1x;
-                float nz = aDD * z + aDv * vz + bD * p0z + cD * p1z;
-                float aVD = co[o + 4];
-                float aVv = co[o + 5];
-                float bV = co[o + 6];
-                float cV = co[o + 7];
-                velX[c] = aVD * x + aVv * vx + bV * p0x + cV * p1x;
-                velZ[c] = aVD * z + aVv * vz + bV * p0z + cV * p1z;
-                devX[c] = nx;
-                devZ[c] = nz;
-                // output (see output(int, int)), inlined with the kind arrays in locals
-                float lx = leanX[c];
-                float lz = leanZ[c];
-                float tx = lx + nx;
-                float tz = lz + nz;
-                float t = (float) Math.sqrt(tx * tx + tz * tz);
-                float extra = (2 * (lx * nx + lz * nz) + nx * nx + nz * nz) / (t + lean[k]);
-                float pc = 0;
-                if (extra > 0) {
-                    pc = Math.min(poseMax[k], Trig.atanPositive(extra * invLen[k]) * poseScale[k]);
-                }
-                pose[c] = pc;
-                azimuth[c] = Trig.atan2(tz, tx);
-                updated++;
+                pressX[p] = p1x;
+                pressZ[p] = p1z;
             }
-            pressX[p] = p1x;
-            pressZ[p] = p1z;
+            if (runStart < 0) {
+                runStart = c0;
+            } else if (c0 - runEnd > MERGE_GAP) {
+                outputs(runStart, runEnd);
+                runStart = c0;
+            }
+            runEnd = c1;
+        }
+        if (runStart >= 0) {
+            outputs(runStart, runEnd);
         }
         return updated;
     }
 
-    /** Pose coordinate and azimuth of component c (kind k) from its deviation. */
-    private void output(int c, int k) {
-        float x = devX[c];
-        float z = devZ[c];
-        float lx = leanX[c];
-        float lz = leanZ[c];
-        float tx = lx + x;
-        float tz = lz + z;
-        float t = (float) Math.sqrt(tx * tx + tz * tz);
-        float extra = (2 * (lx * x + lz * z) + x * x + z * z) / (t + kinds.leanMag[k]);
-        float pc = 0;
-        if (extra > 0) {
-            pc = Math.min(kinds.poseMax[k], Trig.atanPositive(extra * kinds.invLength[k]) * kinds.poseScale[k]);
+    /**
+     * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations (see the
+     * class comment), in blocks of {@value #BLOCK}. Each block runs five short branch-free loops over
+     * arrays indexed by c only (C2 unrolls and vectorises loops only below a body size, which one
+     * fused loop exceeds); intermediates live in {@code pose} and {@code azimuth}. The same
+     * arithmetic on every path, so a component's outputs depend on its D alone.
+     */
+    void outputs(int c0, int c1) {
+        for (int b = c0; b < c1; b += BLOCK) {
+            int e = Math.min(c1, b + BLOCK);
+            outputArguments(b, e);
+            poses(b, e);
+            azimuths(b, e);
         }
-        pose[c] = pc;
-        azimuth[c] = Trig.atan2(tz, tx);
+    }
+
+    private static final int BLOCK = 1024;
+
+    /** pose[c] := atan argument of the extra bend; azimuth[c] := atan argument of the half-angle azimuth. */
+    private void outputArguments(int c0, int c1) {
+        final float[] devX = this.devX;
+        final float[] devZ = this.devZ;
+        final float[] leanX = this.leanX;
+        final float[] leanZ = this.leanZ;
+        final float[] lean = compLean;
+        final float[] len = compLength;
+        final float[] pose = this.pose;
+        final float[] azimuth = this.azimuth;
+        for (int c = c0; c < c1; c++) { // |T|
+            float tx = leanX[c] + devX[c];
+            float tz = leanZ[c] + devZ[c];
+            azimuth[c] = (float) Math.sqrt(tx * tx + tz * tz);
+        }
+        for (int c = c0; c < c1; c++) { // extra bend: atan2(num, (|T| + l) length)
+            float x = devX[c];
+            float z = devZ[c];
+            float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+            pose[c] = Trig.poseArgument(num, (azimuth[c] + lean[c]) * len[c]);
+        }
+        for (int c = c0; c < c1; c++) { // azimuth: half angle about the z axis
+            azimuth[c] = Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], azimuth[c]);
+        }
+    }
+
+    private void poses(int c0, int c1) {
+        final float[] scale = compScale;
+        final float[] max = compPoseMax;
+        final float[] pose = this.pose;
+        for (int c = c0; c < c1; c++) {
+            pose[c] = Math.max(0f, Math.min(max[c], Trig.poseAngle(pose[c]) * scale[c]));
+        }
+    }
+
+    private void azimuths(int c0, int c1) {
+        final float[] devZ = this.devZ;
+        final float[] leanZ = this.leanZ;
+        final float[] azimuth = this.azimuth;
+        for (int c = c0; c < c1; c++) {
+            azimuth[c] = Trig.azimuth(leanZ[c] + devZ[c], azimuth[c]);
+        }
     }
 
     /** Copies the pose coordinates and azimuths of components {@code first .. end-1} into dest arrays (same indices). */
