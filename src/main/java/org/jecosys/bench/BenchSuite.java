@@ -19,6 +19,8 @@ public final class BenchSuite {
         s.add(new ModelSection(scenes));
         s.add(new PrecomputeSection(scenes));
         s.add(new FieldScaleSection());
+        s.add(new PaperScenesSection(scenes));
+        s.add(new ScaleSection(scenes));
         return s;
     }
 

@@ -171,6 +171,12 @@ public final class GlContext implements AutoCloseable {
         return glGetString(GL_RENDERER) + " / " + glGetString(GL_VERSION);
     }
 
+    /** Waits until the GL has finished every command issued so far (for frame timing). Render thread. */
+    public void finish() {
+        checkThread();
+        org.lwjgl.opengl.GL11C.glFinish();
+    }
+
     /** The last GLFW error message, or null. */
     public String lastGlfwError() {
         return lastGlfwError[0];

@@ -29,20 +29,29 @@ class BenchSmokeTest {
         String md = Files.readString(out.resolve("tables.md"));
         String json = Files.readString(out.resolve("results.json"));
         for (String title : new String[] {"Table 1", "Table 2", "Table 3", "Table 4", "Pre-computation",
-                "Force-field update"}) {
+                "Force-field update", "Table 5", "Table 6: force-field performance (simulation only",
+                "Table 6: force-field performance (rendered at 1280x720", "Table 7: animation algorithm performance "
+                + "(simulation only", "Table 7: animation algorithm performance (rendered", "Scale curve"}) {
             assertTrue(md.contains("### " + title), title);
         }
         assertTrue(md.contains("## Machine") && md.contains("- CPU: "));
         for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
-                "\"fieldScale\"", "\"precompute\""}) {
+                "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
+                "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
             assertTrue(json.contains(key), key);
         }
-        for (String chart : new String[] {"table1.png", "table2.png", "field-scale.png"}) {
+        for (String chart : new String[] {"table1.png", "table2.png", "field-scale.png", "table7.png",
+                "scale-updates.png", "scale-step.png"}) {
             Path png = out.resolve("charts").resolve(chart);
             assertTrue(Files.size(png) > 1000, chart);
             assertEquals(0x89, Files.readAllBytes(png)[0] & 0xff, chart + " is a PNG");
         }
         assertTrue(progress.toString(StandardCharsets.UTF_8).contains("bench: [1/"));
+        for (Table t : r.tables()) {
+            for (List<Object> row : t.rows()) {
+                assertEquals(t.headers().size(), row.size(), t.id());
+            }
+        }
     }
 
     @Test

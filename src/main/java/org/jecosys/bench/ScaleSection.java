@@ -1,0 +1,137 @@
+package org.jecosys.bench;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.jecosys.anim.AnimationDef;
+import org.jecosys.anim.AnimationMode;
+import org.jecosys.field.ForceFieldDef;
+import org.jecosys.math.CameraDef;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.SpeciesDef;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.SceneFiles;
+import org.jecosys.sim.Simulation;
+import org.jecosys.sim.SimulationDef;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.DistributionDef;
+import org.jecosys.terrain.ResourceMapDef;
+import org.jecosys.terrain.TerrainDef;
+
+/**
+ * The scale curve: component updates per second and step time against component count (1k to
+ * 4M components: grass tufts A of 25 leaves at 4 tufts per m^2 on a flat square), with 1 and 2
+ * workers. The camera looks straight down from above the middle, so every plant is visible and
+ * every component is animated; the scene's wind and field settings apply (paper sections 3-4).
+ */
+final class ScaleSection implements Section {
+    private final Path scenes;
+
+    ScaleSection(Path scenes) {
+        this.scenes = scenes;
+    }
+
+    @Override
+    public String name() {
+        return "scale curve (components 1k to 4M, 1 and 2 workers)";
+    }
+
+    static SimulationDef world(SceneDef base, int components) {
+        SpeciesDef grass = base.speciesById("grassA");
+        int tufts = Math.max(1, components / grass.componentsPerPlant());
+        double side = Math.max(4, Math.sqrt(tufts / 4.0) * 1.2);
+        TerrainDef terrain = new TerrainDef(side, side, 33, 0, 0.5, 1, null, ResourceMapDef.UNIFORM_FULL,
+                ResourceMapDef.UNIFORM_FULL);
+        DistributionDef d = new DistributionDef(grass.id(), tufts, 1, 0, 1, 0, 1, Math.PI / 2, -1e5, 1e5, 0.12, 0, 0);
+        AnimationDef a = base.animation();
+        return new SimulationDef(terrain, List.of(grass), List.of(d), List.of(), base.flows(), ForceFieldDef.defaults(),
+                new AnimationDef(AnimationMode.CONSTRAINT, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), 0,
+                        a.seed()), base.seed());
+    }
+
+    @Override
+    public void run(Mode mode, Report report) throws Exception {
+        int[] sizes = switch (mode) {
+            case SMOKE -> new int[] {1_000, 10_000};
+            case QUICK -> new int[] {1_000, 10_000, 100_000, 1_000_000};
+            case FULL -> new int[] {1_000, 10_000, 100_000, 1_000_000, 4_000_000};
+        };
+        int warm = mode == Mode.SMOKE ? 3 : mode == Mode.QUICK ? 40 : 100;
+        int steps = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 80 : 300;
+        SceneDef base = SceneFiles.load(scenes.resolve("meadow.xml"));
+        Table t = new Table("scale", "Scale curve: component updates per second against component count",
+                List.of("components", "plants", "workers", "animated per step", "median step ms", "updates/s",
+                        "2 workers / 1"));
+        int cpus = Runtime.getRuntime().availableProcessors();
+        List<String> names = new ArrayList<>();
+        List<double[]> xs = new ArrayList<>();
+        List<double[]> ups = new ArrayList<>();
+        List<double[]> ms = new ArrayList<>();
+        List<Object> raw = new ArrayList<>();
+        int[] workers = cpus >= 2 ? new int[] {1, 2} : new int[] {1};
+        double[][] upsByWorkers = new double[workers.length][sizes.length];
+        for (int s = 0; s < sizes.length; s++) {
+            SimulationDef def = world(base, sizes[s]);
+            World world = World.build(def, scenes, 2, Progress.NONE);
+            for (int w = 0; w < workers.length; w++) {
+                try (Simulation sim = Simulation.of(world, def, workers[w])) {
+                    double side = def.terrain().sizeX();
+                    ViewCamera cam = ViewCamera.of(new CameraDef(0, side * 0.6 + 5, 0, 0, -Math.PI / 2 + 1e-3,
+                            Math.toRadians(100), 0.5, side * 4 + 100, List.of(), 1, false), 0, 16.0 / 9);
+                    double[] stepMs = new double[steps];
+                    double animated = 0;
+                    for (int k = 0; k < warm + steps; k++) {
+                        long t0 = System.nanoTime();
+                        sim.stepFixed(cam);
+                        long t1 = System.nanoTime();
+                        if (k >= warm) {
+                            stepMs[k - warm] = (t1 - t0) / 1e6;
+                            animated += sim.latestFrame().componentsAnimated() / (double) steps;
+                        }
+                    }
+                    double median = Stats.median(stepMs);
+                    double perSecond = animated / (median / 1e3);
+                    upsByWorkers[w][s] = perSecond;
+                    t.row(world.componentCount(), world.plantCount(), workers[w], animated, median, perSecond,
+                            w == 0 ? "-" : String.format(java.util.Locale.ROOT, "%.2fx", perSecond
+                                    / upsByWorkers[0][s]));
+                    Map<String, Object> r = new LinkedHashMap<>();
+                    r.put("components", world.componentCount());
+                    r.put("workers", workers[w]);
+                    r.put("medianStepMs", median);
+                    r.put("updatesPerSecond", perSecond);
+                    raw.add(r);
+                }
+            }
+        }
+        for (int w = 0; w < workers.length; w++) {
+            names.add(workers[w] + (workers[w] == 1 ? " worker" : " workers"));
+            double[] x = new double[sizes.length];
+            double[] y = new double[sizes.length];
+            double[] m = new double[sizes.length];
+            for (int s = 0; s < sizes.length; s++) {
+                x[s] = sizes[s];
+                y[s] = upsByWorkers[w][s];
+                m[s] = sizes[s] / Math.max(1, upsByWorkers[w][s]) * 1e3;
+            }
+            xs.add(x);
+            ups.add(y);
+            ms.add(m);
+        }
+        t.note("Whole fixed steps (wind, force-field update concurrently with the workers, dynamic-constraint "
+                + "animation, frame publication), camera above the middle looking down so every plant is visible. "
+                + "Targets for the updater: at least 2e8 component updates per second with 2 workers, and 2 workers "
+                + "at least 1.8x one.");
+        report.add(t);
+        report.raw("scale", raw);
+        Charts.lines("Component updates per second", "components", "updates per second", names, xs, ups, true, true,
+                report.chartDir().resolve("scale-updates.png"));
+        report.chart("scale-updates.png");
+        Charts.lines("Step time", "components", "ms per step", names, xs, ms, true, true,
+                report.chartDir().resolve("scale-step.png"));
+        report.chart("scale-step.png");
+    }
+}
