@@ -65,12 +65,16 @@ public final class TerrainRenderer implements AutoCloseable {
         heights = h.copyHeights(new float[res * res]);
         normals = h.copyNormals(new float[3 * res * res]);
         GlTracker t = gl.tracker();
-        program = new GlProgram(t, "terrain.vert", "terrain.frag");
-        vao = new GlVertexArray(t);
-        vao.bind();
+        GlProgram prog = null;
+        GlVertexArray va = null;
+        GlBuffer vb = null;
+        GlBuffer ib = null;
         FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
         IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
         try {
+            prog = new GlProgram(t, "terrain.vert", "terrain.frag");
+            va = new GlVertexArray(t);
+            va.bind();
             fill(v, tint);
             for (int j = 0; j < res - 1; j++) {
                 for (int i = 0; i < res - 1; i++) {
@@ -79,12 +83,20 @@ public final class TerrainRenderer implements AutoCloseable {
                 }
             }
             idx.flip();
-            vertices = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
-            indices = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+            vb = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
+            ib = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+        } catch (RuntimeException e) {
+            glBindVertexArray(0);
+            PlantRenderer.closeAll(vb, va, prog);
+            throw e;
         } finally {
             MemoryUtil.memFree(v);
             MemoryUtil.memFree(idx);
         }
+        program = prog;
+        vao = va;
+        vertices = vb;
+        indices = ib;
         indexCount = 6 * (res - 1) * (res - 1);
         for (int a = 0; a < 3; a++) {
             glEnableVertexAttribArray(a);
