@@ -32,9 +32,12 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class TerrainRenderer implements AutoCloseable {
     private static final int FLOATS = 9;
-    private static final float SOIL_R = 0.36f;
-    private static final float SOIL_G = 0.40f;
-    private static final float SOIL_B = 0.21f;
+    private static final float SOIL_R = 0.34f;
+    private static final float SOIL_G = 0.27f;
+    private static final float SOIL_B = 0.17f;
+    private static final float MOSS_R = 0.21f;
+    private static final float MOSS_G = 0.24f;
+    private static final float MOSS_B = 0.12f;
 
     private final Terrain terrain;
     private final int res;
@@ -138,9 +141,11 @@ public final class TerrainRenderer implements AutoCloseable {
             case WATER -> lerp(TerrainMaps.WATER_LOW, TerrainMaps.WATER_HIGH, water.sample(x, z), dest);
             case NUTRIENTS -> lerp(TerrainMaps.NUTRIENTS_LOW, TerrainMaps.NUTRIENTS_HIGH, nutrients.sample(x, z), dest);
             default -> {
-                dest[0] = SOIL_R;
-                dest[1] = SOIL_G;
-                dest[2] = SOIL_B;
+                // earthy: dry ground a warm brown, wetter ground a darker mossy green-brown
+                float w = (float) Math.max(0, Math.min(1, water.sample(x, z)));
+                dest[0] = SOIL_R + (MOSS_R - SOIL_R) * w;
+                dest[1] = SOIL_G + (MOSS_G - SOIL_G) * w;
+                dest[2] = SOIL_B + (MOSS_B - SOIL_B) * w;
             }
         }
     }
