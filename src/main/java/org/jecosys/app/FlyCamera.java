@@ -1,15 +1,17 @@
 package org.jecosys.app;
 
-import java.util.List;
 import org.jecosys.math.CameraDef;
 import org.jecosys.math.ViewCamera;
-import org.jecosys.math.Waypoint;
+import org.jecosys.sim.CameraWalk;
 import org.jecosys.terrain.Heightfield;
 
 /**
  * The viewer's first-person camera: WASD moves in the view's heading, Q/E down/up, Shift four times
  * faster, mouse look; and playback of the scene's camera path (paper §5.2: the tests walked a path)
- * at its walking speed, eye at each waypoint's height above the terrain. Render thread; no allocation.
+ * through {@link CameraWalk}, the same walk {@code jecosys simulate} and the benchmarks use, so the
+ * viewer and those runs see the path identically (time since P was pressed, the walk's pose copied
+ * into this camera; at the end of a path that does not loop the camera stays there until P is
+ * pressed again). Render thread; no allocation.
  */
 final class FlyCamera {
     static final double SPEED = 3.0;
@@ -17,18 +19,16 @@ final class FlyCamera {
 
     private final ViewCamera camera;
     private final Heightfield ground;
-    private final List<Waypoint> path;
-    private final double pathSpeed;
-    private final boolean loop;
+    private final CameraWalk walk;
+    private final boolean hasPath;
     private boolean playing;
-    private double travelled;
+    private double pathTime;
 
     FlyCamera(ViewCamera camera, CameraDef def, Heightfield ground) {
         this.camera = camera;
         this.ground = ground;
-        this.path = def.path();
-        this.pathSpeed = def.pathSpeed();
-        this.loop = def.pathLoop();
+        this.walk = new CameraWalk(def, ground, camera.aspect());
+        this.hasPath = def.path().size() >= 2;
     }
 
     ViewCamera camera() {
@@ -39,10 +39,13 @@ final class FlyCamera {
         return playing;
     }
 
-    /** Starts or stops the path (P); a no-op without a path. */
+    /** Starts (from the path's start) or stops the path (P); a no-op without a path. */
     void togglePath() {
-        playing = !playing && path.size() >= 2;
-        travelled = 0;
+        playing = !playing && hasPath;
+        pathTime = 0;
+        if (playing) {
+            follow(walk.at(0));
+        }
     }
 
     /** Mouse look by a cursor delta in pixels. */
@@ -52,13 +55,15 @@ final class FlyCamera {
     }
 
     /**
-     * Moves by the keys held: forward/right/up in [-1, 1] each.
+     * Moves by the keys held: forward/right/up in [-1, 1] each; while the path plays, advances it
+     * instead.
      *
      * @param dt seconds
      */
     void move(double dt, double forward, double right, double up, boolean fast) {
         if (playing) {
-            followPath(dt);
+            pathTime += dt;
+            follow(walk.at(pathTime));
             return;
         }
         double v = SPEED * (fast ? 4 : 1) * dt;
@@ -71,39 +76,8 @@ final class FlyCamera {
         camera.setPosition(x, y, z);
     }
 
-    private void followPath(double dt) {
-        travelled += pathSpeed * dt;
-        double total = 0;
-        for (int i = 0; i + 1 < path.size(); i++) {
-            total += segment(i);
-        }
-        if (travelled >= total) {
-            if (!loop) {
-                playing = false;
-                return;
-            }
-            travelled -= total;
-        }
-        double d = travelled;
-        int i = 0;
-        while (i + 2 < path.size() && d > segment(i)) {
-            d -= segment(i);
-            i++;
-        }
-        Waypoint a = path.get(i);
-        Waypoint b = path.get(i + 1);
-        double t = segment(i) > 0 ? Math.min(1, d / segment(i)) : 1;
-        double x = a.x() + (b.x() - a.x()) * t;
-        double z = a.z() + (b.z() - a.z()) * t;
-        double h = a.y() + (b.y() - a.y()) * t;
-        camera.setPosition(x, ground.height(x, z) + h, z);
-        double yaw = Math.atan2(b.x() - a.x(), -(b.z() - a.z()));
-        camera.setOrientation(yaw, camera.pitch());
-    }
-
-    private double segment(int i) {
-        Waypoint a = path.get(i);
-        Waypoint b = path.get(i + 1);
-        return Math.hypot(b.x() - a.x(), b.z() - a.z());
+    private void follow(ViewCamera walked) {
+        camera.setPosition(walked.x(), walked.y(), walked.z());
+        camera.setOrientation(walked.yaw(), walked.pitch());
     }
 }

@@ -55,6 +55,11 @@ import org.lwjgl.system.MemoryUtil;
 /**
  * {@code jecosys view}: the desktop viewer. One thread (the caller's) is the render thread and also
  * steps the {@link Simulation}; the window closes with Escape or its close button.
+ *
+ * <p>Allocation: {@link org.jecosys.render.SceneRenderer#render} and its per-frame uploads allocate
+ * nothing after warm-up (RenderResourcesTest measures it), but the interactive viewer does: the HUD
+ * formats its strings (fps, counters, milliseconds) every frame and the ImGui panel builds its
+ * widgets' labels, a few kilobytes of short-lived garbage per frame. Headless rendering has no HUD.
  */
 final class Viewer {
     static final String AGENT_ID = "cursor-agent";

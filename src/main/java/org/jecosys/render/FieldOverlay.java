@@ -54,8 +54,16 @@ public final class FieldOverlay implements AutoCloseable {
         this.terrain = terrain;
         program = new GlProgram(tracker, "overlay.vert", "overlay.frag");
         uRect = program.uniform("uRect");
-        vao = new GlVertexArray(tracker);
-        reserve(1024);
+        GlVertexArray va = null;
+        try {
+            va = new GlVertexArray(tracker);
+            vao = va;
+            reserve(1024);
+        } catch (RuntimeException e) {
+            MemoryUtil.memFree(staging);
+            PlantRenderer.closeAll(va, program);
+            throw e;
+        }
     }
 
     private void reserve(int nodes) {

@@ -32,9 +32,24 @@ public final class GlFramebuffer extends GlResource {
     /** A framebuffer of {@code width x height} pixels (each in [1, 16384]). */
     public GlFramebuffer(GlTracker tracker, int width, int height) {
         super(tracker, glGenFramebuffers());
-        colour = new Renderbuffer(tracker);
-        depth = new Renderbuffer(tracker);
-        resize(width, height);
+        Renderbuffer c = null;
+        Renderbuffer d = null;
+        try {
+            c = new Renderbuffer(tracker);
+            d = new Renderbuffer(tracker);
+        } catch (RuntimeException e) {
+            PlantRenderer.closeAll(c);
+            close();
+            throw e;
+        }
+        colour = c;
+        depth = d;
+        try {
+            resize(width, height);
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
     }
 
     /** Reallocates the storage for a new size (contents undefined). Not per frame. */
@@ -78,8 +93,7 @@ public final class GlFramebuffer extends GlResource {
     @Override
     void delete(int name) {
         glDeleteFramebuffers(name);
-        colour.close();
-        depth.close();
+        PlantRenderer.closeAll(colour, depth);
     }
 
     private static final class Renderbuffer extends GlResource {

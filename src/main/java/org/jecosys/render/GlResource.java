@@ -12,6 +12,10 @@ abstract class GlResource implements AutoCloseable {
         if (id == 0) {
             throw new IllegalStateException(getClass().getSimpleName() + ": the GL driver returned no object name");
         }
+        if (tracker.mustFail()) {
+            delete(id);
+            throw new IllegalStateException(getClass().getSimpleName() + ": injected failure (GlTracker.failAfter)");
+        }
         this.tracker = tracker;
         this.id = id;
         tracker.created();

@@ -9,6 +9,7 @@ package org.jecosys.render;
 public final class GlTracker {
     private int live;
     private long created;
+    private long failAt = -1;
 
     GlTracker() {
     }
@@ -16,6 +17,24 @@ public final class GlTracker {
     void created() {
         live++;
         created++;
+    }
+
+    /**
+     * Test hook: the {@code n}-th GL object created from now on (0 = the next) fails as if the driver
+     * had refused it, so a test can check that a constructor failing part way releases what it made;
+     * negative turns it off.
+     */
+    void failAfter(int n) {
+        failAt = n < 0 ? -1 : created + n;
+    }
+
+    /** Whether the object about to be counted must fail ({@link #failAfter}). */
+    boolean mustFail() {
+        if (failAt >= 0 && created == failAt) {
+            failAt = -1;
+            return true;
+        }
+        return false;
     }
 
     void deleted() {

@@ -14,8 +14,8 @@ public final class RenderSettings {
     private TerrainTint tint = TerrainTint.NONE;
     private boolean showField;
     private boolean showWind;
-    private float fogStart = 60;
-    private float fogEnd = 400;
+    private float fogStart = 25;
+    private float fogEnd = 160;
 
     /** Sky (clear and fog) colour. */
     public Rgb sky() {

@@ -32,9 +32,12 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class TerrainRenderer implements AutoCloseable {
     private static final int FLOATS = 9;
-    private static final float SOIL_R = 0.36f;
-    private static final float SOIL_G = 0.40f;
-    private static final float SOIL_B = 0.21f;
+    private static final float SOIL_R = 0.34f;
+    private static final float SOIL_G = 0.27f;
+    private static final float SOIL_B = 0.17f;
+    private static final float MOSS_R = 0.21f;
+    private static final float MOSS_G = 0.24f;
+    private static final float MOSS_B = 0.12f;
 
     private final Terrain terrain;
     private final int res;
@@ -65,12 +68,16 @@ public final class TerrainRenderer implements AutoCloseable {
         heights = h.copyHeights(new float[res * res]);
         normals = h.copyNormals(new float[3 * res * res]);
         GlTracker t = gl.tracker();
-        program = new GlProgram(t, "terrain.vert", "terrain.frag");
-        vao = new GlVertexArray(t);
-        vao.bind();
+        GlProgram prog = null;
+        GlVertexArray va = null;
+        GlBuffer vb = null;
+        GlBuffer ib = null;
         FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
         IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
         try {
+            prog = new GlProgram(t, "terrain.vert", "terrain.frag");
+            va = new GlVertexArray(t);
+            va.bind();
             fill(v, tint);
             for (int j = 0; j < res - 1; j++) {
                 for (int i = 0; i < res - 1; i++) {
@@ -79,12 +86,20 @@ public final class TerrainRenderer implements AutoCloseable {
                 }
             }
             idx.flip();
-            vertices = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
-            indices = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+            vb = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
+            ib = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+        } catch (RuntimeException e) {
+            glBindVertexArray(0);
+            PlantRenderer.closeAll(vb, va, prog);
+            throw e;
         } finally {
             MemoryUtil.memFree(v);
             MemoryUtil.memFree(idx);
         }
+        program = prog;
+        vao = va;
+        vertices = vb;
+        indices = ib;
         indexCount = 6 * (res - 1) * (res - 1);
         for (int a = 0; a < 3; a++) {
             glEnableVertexAttribArray(a);
@@ -126,9 +141,11 @@ public final class TerrainRenderer implements AutoCloseable {
             case WATER -> lerp(TerrainMaps.WATER_LOW, TerrainMaps.WATER_HIGH, water.sample(x, z), dest);
             case NUTRIENTS -> lerp(TerrainMaps.NUTRIENTS_LOW, TerrainMaps.NUTRIENTS_HIGH, nutrients.sample(x, z), dest);
             default -> {
-                dest[0] = SOIL_R;
-                dest[1] = SOIL_G;
-                dest[2] = SOIL_B;
+                // earthy: dry ground a warm brown, wetter ground a darker mossy green-brown
+                float w = (float) Math.max(0, Math.min(1, water.sample(x, z)));
+                dest[0] = SOIL_R + (MOSS_R - SOIL_R) * w;
+                dest[1] = SOIL_G + (MOSS_G - SOIL_G) * w;
+                dest[2] = SOIL_B + (MOSS_B - SOIL_B) * w;
             }
         }
     }

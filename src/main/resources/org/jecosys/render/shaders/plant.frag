@@ -1,6 +1,7 @@
 #version 330 core
-// Screen-door dither across a level-of-detail band: level L keeps pixels with bayer >= fade, level
-// L + 1 keeps bayer < fade, so the two levels of one plant cover complementary pixels.
+// Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
+// L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
+// fragment is tested.
 in vec3 vColour;
 in float vDistance;
 flat in vec2 vKeep;
@@ -9,17 +10,20 @@ uniform float uFogStart;
 uniform float uFogEnd;
 out vec4 fragColour;
 
+// 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
 float bayer4(vec2 p) {
-    ivec2 q = ivec2(mod(p, 4.0));
-    int i = q.x + q.y * 4;
-    int m[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-    return (float(m[i]) + 0.5) / 16.0;
+    ivec2 q = ivec2(p) & 3;
+    int a = q.x ^ q.y;
+    int m = ((a & 1) << 3) | ((q.y & 1) << 2) | (a & 2) | ((q.y & 2) >> 1);
+    return (float(m) + 0.5) / 16.0;
 }
 
 void main() {
-    float b = bayer4(gl_FragCoord.xy);
-    if (b < vKeep.x || b >= vKeep.y) {
-        discard;
+    if (vKeep.x > 0.0 || vKeep.y < 1.0) {
+        float b = bayer4(gl_FragCoord.xy);
+        if (b < vKeep.x || b >= vKeep.y) {
+            discard;
+        }
     }
     float fog = clamp((vDistance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
     fragColour = vec4(mix(vColour, uFogColour, fog * fog), 1.0);

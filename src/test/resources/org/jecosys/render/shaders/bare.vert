@@ -1,9 +1,8 @@
 #version 330 core
-// Benchmark reference: the cheapest instanced draw of the same triangle count.
+// Benchmark reference: the cheapest instanced draw of the same primitives, each instance at a plant.
 layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aOffset;            // per instance (divisor 1): a plant's base
 uniform mat4 uViewProj;
 void main() {
-    float i = float(gl_InstanceID);
-    vec3 offset = vec3(mod(i, 100.0) * 0.2 - 10.0, 0.0, floor(i / 100.0) * 0.2 - 10.0);
-    gl_Position = uViewProj * vec4(aPos + offset, 1.0);
+    gl_Position = uViewProj * vec4(aPos + aOffset, 1.0);
 }

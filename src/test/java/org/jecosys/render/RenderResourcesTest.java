@@ -1,0 +1,118 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.sun.management.ThreadMXBean;
+import java.lang.management.ManagementFactory;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInstance;
+
+/**
+ * Scene C1, headless: a renderer whose construction fails part way releases the GL objects it had
+ * already made (every possible failure point, counted with {@link GlTracker}), and rendering
+ * allocates nothing on the render thread after warm-up.
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class RenderResourcesTest {
+    private static final int W = 160;
+    private static final int H = 100;
+    /** Cached once: ManagementFactory.getThreadMXBean() itself allocates. */
+    private static final ThreadMXBean THREADS = (ThreadMXBean) ManagementFactory.getThreadMXBean();
+
+    private World world;
+    private ViewCamera camera;
+    private GlContext gl;
+    private GlFramebuffer fb;
+
+    @BeforeAll
+    void setUp() {
+        SceneDef def = RenderScenes.load("c1.xml");
+        world = RenderScenes.build(def);
+        camera = RenderScenes.camera(def, world, W, H);
+        gl = GlContext.headless(true);
+        fb = new GlFramebuffer(gl.tracker(), W, H);
+    }
+
+    @AfterEach
+    void noGlErrors() {
+        gl.debug().check("the test");
+    }
+
+    @AfterAll
+    void tearDown() {
+        if (fb != null) {
+            fb.close();
+        }
+        if (gl != null) {
+            assertEquals(0, gl.tracker().live(), "every GL object released");
+            gl.close();
+        }
+    }
+
+    @Test
+    void aConstructorFailingPartWayReleasesWhatItMade() {
+        int before = gl.tracker().live();
+        long created = gl.tracker().createdTotal();
+        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+            assertTrue(r.triangles() >= 0);
+        }
+        int objects = (int) (gl.tracker().createdTotal() - created);
+        assertTrue(objects > 10, "a scene renderer makes " + objects + " GL objects");
+        for (int n = 0; n < objects; n++) {
+            gl.tracker().failAfter(n);
+            int failAt = n;
+            IllegalStateException e = assertThrows(IllegalStateException.class,
+                    () -> new SceneRenderer(gl, world, new RenderSettings()), "failure at object " + n);
+            assertTrue(e.getMessage().contains("injected"), e.getMessage());
+            assertEquals(before, gl.tracker().live(), "GL objects left after a failure at object " + failAt);
+        }
+        gl.tracker().failAfter(-1);
+        for (int n = 0; n < 3; n++) {
+            gl.tracker().failAfter(n);
+            assertThrows(IllegalStateException.class, () -> new GlFramebuffer(gl.tracker(), 8, 8));
+            assertEquals(before, gl.tracker().live(), "framebuffer failing at object " + n);
+        }
+        gl.tracker().failAfter(-1);
+    }
+
+    @Test
+    void renderingAllocatesNothingAfterWarmUp() {
+        Frame[] frames = new Frame[4];
+        for (int i = 0; i < frames.length; i++) {
+            frames[i] = TestFrames.wind(world, 0.25 * i);
+        }
+        long thread = Thread.currentThread().getId();
+        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+            fb.bind();
+            for (int i = 0; i < 200; i++) {
+                r.render(frames[i % frames.length], camera, W, H);
+            }
+            THREADS.getThreadAllocatedBytes(thread); // prime the counter's own first-call allocation
+            // Warm-up ends when the JIT has settled: a few hundred bytes can appear once while code
+            // moves between interpreter, C1 and C2 (objects that escape analysis had removed are
+            // materialised on deoptimisation). A per-frame allocation would never give a zero window.
+            long[] windows = new long[12];
+            int zeroRun = 0;
+            int w = 0;
+            for (; w < windows.length && zeroRun < 2; w++) {
+                long start = THREADS.getThreadAllocatedBytes(thread);
+                for (int i = 0; i < 300; i++) {
+                    r.render(frames[i % frames.length], camera, W, H);
+                }
+                windows[w] = THREADS.getThreadAllocatedBytes(thread) - start;
+                zeroRun = windows[w] == 0 ? zeroRun + 1 : 0;
+            }
+            assertEquals(2, zeroRun, "two consecutive windows of 300 frames of C1 allocating 0 bytes on the render "
+                    + "thread; bytes per window: " + java.util.Arrays.toString(java.util.Arrays.copyOf(windows, w)));
+        }
+    }
+}
