@@ -97,9 +97,10 @@ class RenderResourcesTest {
                 r.render(frames[i % frames.length], camera, W, H);
             }
             THREADS.getThreadAllocatedBytes(thread); // prime the counter's own first-call allocation
-            // Warm-up ends when the JIT has settled: a few hundred bytes can appear once while code
-            // moves between interpreter, C1 and C2 (objects that escape analysis had removed are
-            // materialised on deoptimisation). A per-frame allocation would never give a zero window.
+            // Warm-up ends when the JIT has settled: a few hundred bytes can appear on this thread once
+            // while code moves between the interpreter and the C1/C2 compilers (the JVM allocates a
+            // little around deoptimisation and call-site linking; seen with JFR, never steady). A
+            // per-frame allocation of even one byte would never give a zero window.
             long[] windows = new long[12];
             int zeroRun = 0;
             int w = 0;
