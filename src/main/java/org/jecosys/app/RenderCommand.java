@@ -33,6 +33,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--maps", description = "Also write the water, nutrient and species maps (water.png, "
             + "nutrients.png, species.png) to DIR: why plants grow where they do.")
     boolean maps;
+    @Option(names = "--gif", paramLabel = "FILE", description = "Also assemble the frames into a looping animated "
+            + "GIF (30 frames per second).")
+    Path gif;
 
     @Override
     public Integer call() {
@@ -50,6 +53,15 @@ final class RenderCommand implements Callable<Integer> {
         try {
             HeadlessRender.run(def, base, frames, out, w, h, maps, spec.commandLine().getOut(),
                     new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
+            if (gif != null) {
+                java.util.List<Path> pngs = new java.util.ArrayList<>();
+                for (int i = 1; i <= frames; i++) {
+                    pngs.add(out.resolve(String.format("frame-%05d.png", i)));
+                }
+                GifWriter.write(pngs, gif, 3);
+                spec.commandLine().getOut().println("Wrote " + gif.toAbsolutePath());
+                spec.commandLine().getOut().flush();
+            }
         } catch (java.io.IOException e) {
             spec.commandLine().getErr().println("jecosys render: " + e.getMessage());
             spec.commandLine().getErr().flush();

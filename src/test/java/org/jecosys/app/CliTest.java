@@ -125,7 +125,9 @@ class CliTest {
     @Test
     void renderWritesPngFramesAndMaps() throws Exception {
         java.nio.file.Path out = java.nio.file.Path.of("target/cli-test/render");
-        Result r = run("render", "scenes/c1.xml", "--frames", "2", "--out", out.toString(), "--size", "96x64", "--maps");
+        java.nio.file.Path gif = out.resolve("strip.gif");
+        Result r = run("render", "scenes/c1.xml", "--frames", "2", "--out", out.toString(), "--size", "96x64", "--maps",
+                "--gif", gif.toString());
         assertEquals(0, r.code(), r.err());
         for (String f : new String[] {"frame-00001.png", "frame-00002.png", "water.png", "nutrients.png",
                 "species.png"}) {
@@ -135,6 +137,12 @@ class CliTest {
         assertEquals(96, img.getWidth());
         assertEquals(64, img.getHeight());
         assertTrue(r.out().contains("Wrote 2 frame(s) of 96x64"), r.out());
+        try (javax.imageio.stream.ImageInputStream in = javax.imageio.ImageIO.createImageInputStream(gif.toFile())) {
+            javax.imageio.ImageReader reader = javax.imageio.ImageIO.getImageReadersBySuffix("gif").next();
+            reader.setInput(in);
+            assertEquals(2, reader.getNumImages(true), "one GIF frame per rendered frame");
+            assertEquals(96, reader.read(1).getWidth());
+        }
     }
 
     @Test
