@@ -6,7 +6,11 @@ import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
 
-/** Shared small scene (paper C1) for the simulation tests; built once per JVM. */
+/**
+ * Shared small scene for the simulation tests, built once per JVM: a frozen copy of the paper's C1
+ * (src/test/resources/org/jecosys/sim/c1-fixture.xml), so that tuning scenes/c1.xml never changes
+ * the golden state hashes.
+ */
 final class SimFixtures {
     /** Small chunks, so that C1's 1460 components make several. */
     static final int CHUNK = 200;
@@ -18,7 +22,7 @@ final class SimFixtures {
 
     static synchronized SceneDef scene() throws Exception {
         if (scene == null) {
-            scene = SceneFiles.load(Path.of("scenes/c1.xml"));
+            scene = SceneFiles.load(Path.of("src/test/resources/org/jecosys/sim/c1-fixture.xml"));
         }
         return scene;
     }
