@@ -60,6 +60,7 @@ final class HeadlessRender {
     private static void render(SceneDef def, Simulation sim, int frames, Path out, int width, int height,
                                boolean maps, PrintWriter log) throws IOException {
         World world = sim.world();
+        BuildReport.print(world, log, log);
         if (maps) {
             TerrainMaps.writeWater(world.terrain().water(), MAP_SIDE, MAP_SIDE, out.resolve("water.png"));
             TerrainMaps.writeNutrients(world.terrain().nutrients(), MAP_SIDE, MAP_SIDE, out.resolve("nutrients.png"));

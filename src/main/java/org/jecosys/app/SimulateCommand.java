@@ -85,6 +85,7 @@ final class SimulateCommand implements Callable<Integer> {
         Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
         Run run;
         try (Simulation sim = Simulation.create(sd, Scenes.baseDir(file), progress, threads == null ? 0 : threads)) {
+            BuildReport.print(sim.world(), err, err); // stdout stays the results only, for scripts
             CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                     (double) def.render().width() / def.render().height());
             run = run(sim, walk);

@@ -29,6 +29,7 @@ import static org.lwjgl.glfw.GLFW.glfwSwapInterval;
 import static org.lwjgl.glfw.GLFW.glfwWindowShouldClose;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import org.jecosys.math.Progress;
@@ -93,6 +94,8 @@ final class Viewer {
 
     private void run(Simulation sim) throws IOException {
         World world = sim.world();
+        PrintWriter console = new PrintWriter(System.out, true);
+        BuildReport.print(world, console, new PrintWriter(System.err, true));
         Heightfield ground = world.terrain().heightfield();
         int width = def.render().width();
         int height = def.render().height();

@@ -38,6 +38,9 @@ public final class World {
     private final short[] componentSlot;
     private final int[] componentParent;
 
+    private long terrainNanos;
+    private long distributionNanos;
+
     private World(Terrain terrain, PlantModel plants, PlantLayout layout) {
         this.terrain = terrain;
         this.plants = plants;
@@ -97,16 +100,33 @@ public final class World {
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be >= 1, got " + threads);
         }
+        long t0 = System.nanoTime();
         Terrain terrain = Terrain.build(def.terrain(), baseDir, threads, progress);
+        long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
                 progress);
         List<String> ids = new ArrayList<>();
         for (SpeciesDef s : def.species()) {
             ids.add(s.id());
         }
+        long t2 = System.nanoTime();
         PlantLayout layout = distributor.distribute(terrain, ids, def.distributions(), def.placements(), def.seed(),
                 threads, progress);
-        return new World(terrain, plants, layout);
+        long t3 = System.nanoTime();
+        World w = new World(terrain, plants, layout);
+        w.terrainNanos = t1 - t0;
+        w.distributionNanos = t3 - t2;
+        return w;
+    }
+
+    /**
+     * One line on what building took (paper §4.1: pose tables are pre-computed at load), e.g.
+     * "terrain 12 ms, pose tables of 3 species 2.5 ms, distribution of 80 plants 9 ms".
+     */
+    public String buildSummary() {
+        return String.format(java.util.Locale.ROOT, "terrain %.0f ms, pose tables of %d species %.1f ms, "
+                        + "distribution of %d plants %.0f ms", terrainNanos / 1e6, plants.species().size(),
+                plants.buildMillis(), layout.count(), distributionNanos / 1e6);
     }
 
     /** The terrain and its resource maps (after nothing was consumed). */
