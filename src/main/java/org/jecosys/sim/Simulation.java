@@ -117,6 +117,7 @@ public final class Simulation implements AutoCloseable {
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
     private Frame stepFrame;
+    private Frame stepBefore;
     private int stepBuffer;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
@@ -301,6 +302,7 @@ public final class Simulation implements AutoCloseable {
         stepMode = mode;
         stepBuffer = current;
         stepFrame = exchange.back();
+        stepBefore = exchange.lastPublished();
         long t0 = System.nanoTime();
         pool.start();
         updateField(camera, 1 - current);
@@ -353,27 +355,37 @@ public final class Simulation implements AutoCloseable {
             int p0 = chunkFirstPlant[chunk];
             int p1 = chunkFirstPlant[chunk + 1];
             AnimationMode m = stepMode;
+            boolean reset = false;
             if (m == AnimationMode.STATIC) {
                 if (!chunkAtRest[chunk]) {
                     state.resetToRest(p0, p1);
                     chunkAtRest[chunk] = true;
+                    reset = true;
                 }
             } else {
                 chunkAtRest[chunk] = false;
             }
             int b = stepBuffer;
             double[] e = eye[b];
-            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                    chunkRng[chunk]);
             Frame f = stepFrame;
             int c0 = state.firstComponent(p0);
             int c1 = state.firstComponent(p1);
             if (stampFrames) {
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk]);
                 float s = (float) ((steps + 1) % 1_000_000);
                 java.util.Arrays.fill(f.poseCoord, c0, c1, s);
                 java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
-            } else {
+            } else if (reset) {
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk]);
                 state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
+            } else {
+                // outputs straight into the back frame; components not updated copy theirs from the
+                // frame published last, which holds the outputs of the current state
+                Frame before = stepBefore;
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth);
             }
             System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
             state.copyLevels(p0, p1, f.plantLevel);

@@ -138,8 +138,8 @@ class AnimBenchmarkTest {
                 }
                 return;
             }
-            state.animate(p0, p1, AnimationMode.CONSTRAINT, wx, wz, vis, 0, 0, 0, null);
-            state.copyOutputs(c0, c1, poseOut, azOut);
+            state.animate(p0, p1, AnimationMode.CONSTRAINT, wx, wz, vis, 0, 0, 0, null, poseOut, azOut, poseOut,
+                    azOut);
         }
     }
 
@@ -162,7 +162,7 @@ class AnimBenchmarkTest {
                 .append("Constraint mode, 4 sub-intervals, 3/4 grass tufts of ").append(TUFT)
                 .append(" leaves (8 variants) and 1/4 flowers of ").append(FLOWER)
                 .append(" components (3 types), all visible, fixed chunks of ").append(Simulation.CHUNK_COMPONENTS)
-                .append(" components; step = update + copy of pose/azimuth into a frame. Copy = the six state ")
+                .append(" components; step = update + pose/azimuth written into a frame. Copy = the six state ")
                 .append("arrays copied by the same workers. Medians; ")
                 .append(Runtime.getRuntime().availableProcessors()).append(" processors.\n\n")
                 .append("| components | workers | step ms | updates/s | copy ms | step/copy | speed-up |\n")
