@@ -284,7 +284,8 @@ public final class AnimationState {
      * bit. They are computed for the updated plants (and short gaps between them); the other
      * components' D did not change, so their outputs are copied from {@code poseBefore} and
      * {@code azimuthBefore}, which must hold the outputs of the state before this call (for example
-     * the frame published last). All four null: no output is written.
+     * the frame published last); they may be {@code poseOut} and {@code azimuthOut} themselves when
+     * those already hold them (nothing is copied then). All four null: no output is written.
      *
      * @param windX   per plant wind X at its node, m/s (indexed by plant)
      * @param windZ   per plant wind Z, m/s
@@ -412,9 +413,7 @@ public final class AnimationState {
             if (outStart >= 0) {
                 done = writeOutputs(done, outStart, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore);
             }
-            int e = firstComponent[end];
-            System.arraycopy(poseBefore, done, poseOut, done, e - done);
-            System.arraycopy(azimuthBefore, done, azimuthOut, done, e - done);
+            copyBefore(done, firstComponent[end], poseOut, azimuthOut, poseBefore, azimuthBefore);
         }
         return updated;
     }
@@ -473,10 +472,20 @@ public final class AnimationState {
     /** Copies [done, c0) from before, computes [c0, c1); returns c1. */
     private int writeOutputs(int done, int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
                              float[] azimuthBefore) {
-        System.arraycopy(poseBefore, done, poseOut, done, c0 - done);
-        System.arraycopy(azimuthBefore, done, azimuthOut, done, c0 - done);
+        copyBefore(done, c0, poseOut, azimuthOut, poseBefore, azimuthBefore);
         outputs(c0, c1, poseOut, azimuthOut);
         return c1;
+    }
+
+    /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */
+    private static void copyBefore(int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                                   float[] azimuthBefore) {
+        if (poseBefore != poseOut) {
+            System.arraycopy(poseBefore, c0, poseOut, c0, c1 - c0);
+        }
+        if (azimuthBefore != azimuthOut) {
+            System.arraycopy(azimuthBefore, c0, azimuthOut, c0, c1 - c0);
+        }
     }
 
     /**

@@ -45,6 +45,11 @@ public final class FrameExchange {
         return frames[published];
     }
 
+    /** Index (0-2) of {@link #back()}, for bookkeeping per buffer. Writer thread only. */
+    int backIndex() {
+        return back;
+    }
+
     /** Publishes the back frame and gives the writer another to fill. Writer thread only. */
     public void publish() {
         published = back;

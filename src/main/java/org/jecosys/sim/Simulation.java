@@ -92,6 +92,15 @@ public final class Simulation implements AutoCloseable {
     private final int[] chunkFirstPlant;
     private final int[] chunkCount;
     private final boolean[] chunkAtRest;
+    /*
+     * Output versions: chunkVersion[c] counts the steps that changed chunk c's deviations;
+     * frameVersion[i][c] is the version whose outputs frame i holds for chunk c (-1: unknown). A
+     * chunk unchanged since the back frame last received it is not written at all, and a back frame
+     * already current for a chunk needs only the updated ranges written. Each entry is touched only
+     * by the worker running that chunk in a step (the pool's hand-off orders the steps).
+     */
+    private final long[] chunkVersion;
+    private final long[][] frameVersion;
     private final Rng[] chunkRng;
     private final float[][] windX = new float[2][];
     private final float[][] windZ = new float[2][];
@@ -118,6 +127,7 @@ public final class Simulation implements AutoCloseable {
     private AnimationMode stepMode;
     private Frame stepFrame;
     private Frame stepBefore;
+    private int stepFrameIndex;
     private int stepBuffer;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
@@ -182,6 +192,8 @@ public final class Simulation implements AutoCloseable {
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
+        chunkVersion = new long[chunks];
+        frameVersion = new long[3][chunks];
         chunkRng = new Rng[chunks];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(ad.seed(), c);
@@ -302,6 +314,7 @@ public final class Simulation implements AutoCloseable {
         stepMode = mode;
         stepBuffer = current;
         stepFrame = exchange.back();
+        stepFrameIndex = exchange.backIndex();
         stepBefore = exchange.lastPublished();
         long t0 = System.nanoTime();
         pool.start();
@@ -370,22 +383,33 @@ public final class Simulation implements AutoCloseable {
             Frame f = stepFrame;
             int c0 = state.firstComponent(p0);
             int c1 = state.firstComponent(p1);
+            long[] written = frameVersion[stepFrameIndex];
             if (stampFrames) {
                 chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
                         chunkRng[chunk]);
                 float s = (float) ((steps + 1) % 1_000_000);
                 java.util.Arrays.fill(f.poseCoord, c0, c1, s);
                 java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
+                chunkVersion[chunk]++;
+                written[chunk] = -1;
             } else if (reset) {
                 chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
                         chunkRng[chunk]);
                 state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
+                written[chunk] = ++chunkVersion[chunk];
             } else {
-                // outputs straight into the back frame; components not updated copy theirs from the
-                // frame published last, which holds the outputs of the current state
-                Frame before = stepBefore;
-                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                // outputs straight into the back frame, for the updated ranges; the other components
+                // keep theirs: already there when the back frame holds this chunk's current version,
+                // else copied from the frame published last (always complete and current)
+                boolean current = written[chunk] == chunkVersion[chunk];
+                Frame before = current ? f : stepBefore;
+                int n = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
                         chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth);
+                chunkCount[chunk] = n;
+                if (n > 0) {
+                    chunkVersion[chunk]++;
+                }
+                written[chunk] = chunkVersion[chunk];
             }
             System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
             state.copyLevels(p0, p1, f.plantLevel);
