@@ -90,6 +90,8 @@ public final class AnimationState {
     final float[] pressX;
     final float[] pressZ;
     final byte[] level;
+    /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
+    private final long[] plantVersion;
 
     /**
      * State at rest for a set of plants. Build time; allocates. Arrays are copied.
@@ -186,6 +188,7 @@ public final class AnimationState {
         pressX = new float[plants];
         pressZ = new float[plants];
         level = new byte[plants];
+        plantVersion = new long[plants];
         setLodScale(1);
         resetToRest(0, plants);
     }
@@ -241,6 +244,7 @@ public final class AnimationState {
         for (int p = first; p < end; p++) {
             pressX[p] = 0;
             pressZ[p] = 0;
+            plantVersion[p]++;
         }
         for (int c = firstComponent[first], e = firstComponent[end]; c < e; c++) {
             devX[c] = 0;
@@ -255,13 +259,13 @@ public final class AnimationState {
      * {@link SpringKinds#prepare} (paper §4.2.2), without writing any output: the outputs are a
      * function of D (see {@link #poseCoordinate}, {@link #copyOutputs}). Otherwise as
      * {@link #animate(int, int, AnimationMode, float[], float[], boolean[], double, double, double, Rng,
-     * float[], float[], float[], float[])}.
+     * float[], float[], float[], float[], long[])}.
      *
      * @return components updated
      */
     public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
                        double eyeX, double eyeY, double eyeZ, Rng rng) {
-        return animate(first, end, mode, windX, windZ, visible, eyeX, eyeY, eyeZ, rng, null, null, null, null);
+        return animate(first, end, mode, windX, windZ, visible, eyeX, eyeY, eyeZ, rng, null, null, null, null, null);
     }
 
     /**
@@ -284,8 +288,9 @@ public final class AnimationState {
      * bit. They are computed for the updated plants (and short gaps between them); the other
      * components' D did not change, so their outputs are copied from {@code poseBefore} and
      * {@code azimuthBefore}, which must hold the outputs of the state before this call (for example
-     * the frame published last); they may be {@code poseOut} and {@code azimuthOut} themselves when
-     * those already hold them (nothing is copied then). All four null: no output is written.
+     * the frame published last), but only for plants whose outputs in {@code poseOut} are stale:
+     * {@code outVersion[p]} says which {@link #version} of plant p the output arrays hold, and is
+     * brought up to date here. All five null: no output is written.
      *
      * @param windX   per plant wind X at its node, m/s (indexed by plant)
      * @param windZ   per plant wind Z, m/s
@@ -295,14 +300,16 @@ public final class AnimationState {
      * @param azimuthOut per component, receives the azimuth, or null
      * @param poseBefore per component, the pose coordinates before this call (read only), or null
      * @param azimuthBefore per component, the azimuths before this call (read only), or null
+     * @param outVersion per plant, the version of its outputs in poseOut/azimuthOut (updated), or null
      * @return components updated
      */
     public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
                        double eyeX, double eyeY, double eyeZ, Rng rng, float[] poseOut, float[] azimuthOut,
-                       float[] poseBefore, float[] azimuthBefore) {
+                       float[] poseBefore, float[] azimuthBefore, long[] outVersion) {
         final boolean out = poseOut != null;
-        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)) {
-            throw new IllegalArgumentException("give all four output arrays or none");
+        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)
+                || out != (outVersion != null)) {
+            throw new IllegalArgumentException("give all five output arrays or none");
         }
         int updated = 0;
         final float[] co = kinds.coef;
@@ -317,7 +324,8 @@ public final class AnimationState {
         int segClass = -1;
         int outStart = -1; // pending output range [outStart, outEnd) of components
         int outEnd = -1;
-        int done = firstComponent[first]; // outputs written below this component
+        int outStartPlant = -1;
+        int done = first; // outputs up to date below this plant
         for (int p = first; p < end; p++) {
             double dx = plantX[p] - eyeX;
             double dy = plantY[p] - eyeY;
@@ -333,6 +341,7 @@ public final class AnimationState {
                 continue;
             }
             int bit = 1 << l;
+            plantVersion[p]++;
             int c0 = firstComponent[p];
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
@@ -396,13 +405,16 @@ public final class AnimationState {
             }
             if (outStart < 0) {
                 outStart = c0;
+                outStartPlant = p;
             } else if (c0 - outEnd > MERGE_GAP) {
                 if (segRun >= 0) { // the outputs read D: advance the pending segment first
                     spring(segRun, segRunEnd, segClass);
                     segRun = -1;
                 }
-                done = writeOutputs(done, outStart, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore);
+                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
+                        outVersion);
                 outStart = c0;
+                outStartPlant = p;
             }
             outEnd = c1;
         }
@@ -411,9 +423,10 @@ public final class AnimationState {
         }
         if (out) {
             if (outStart >= 0) {
-                done = writeOutputs(done, outStart, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore);
+                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
+                        outVersion);
             }
-            copyBefore(done, firstComponent[end], poseOut, azimuthOut, poseBefore, azimuthBefore);
+            copyStale(done, end, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
         }
         return updated;
     }
@@ -469,12 +482,46 @@ public final class AnimationState {
         }
     }
 
-    /** Copies [done, c0) from before, computes [c0, c1); returns c1. */
-    private int writeOutputs(int done, int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
-                             float[] azimuthBefore) {
-        copyBefore(done, c0, poseOut, azimuthOut, poseBefore, azimuthBefore);
-        outputs(c0, c1, poseOut, azimuthOut);
-        return c1;
+    /**
+     * Brings the stale outputs of plants [done, p0) up to date from before, computes the outputs of
+     * plant p0's first component to component c1 (a plant boundary); returns the plant that starts at c1.
+     */
+    private int writeOutputs(int done, int p0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                             float[] azimuthBefore, long[] outVersion) {
+        copyStale(done, p0, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
+        outputs(firstComponent[p0], c1, poseOut, azimuthOut);
+        int p = p0;
+        for (; p < plants && firstComponent[p] < c1; p++) {
+            outVersion[p] = plantVersion[p];
+        }
+        return p;
+    }
+
+    /** Copies the outputs of plants [p0, p1) whose outVersion is stale from before (runs of them at once). */
+    private void copyStale(int p0, int p1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                           float[] azimuthBefore, long[] outVersion) {
+        final long[] version = plantVersion;
+        int q = p0;
+        while (q < p1) {
+            if (outVersion[q] == version[q]) {
+                q++;
+                continue;
+            }
+            int s = q;
+            while (q < p1 && outVersion[q] != version[q]) {
+                outVersion[q] = version[q];
+                q++;
+            }
+            copyBefore(firstComponent[s], firstComponent[q], poseOut, azimuthOut, poseBefore, azimuthBefore);
+        }
+    }
+
+    /**
+     * The version of plant p's state: it changes whenever the plant's deviations may have changed
+     * (an update by {@link #animate}, {@link #resetToRest}), so equal versions mean equal outputs.
+     */
+    public long version(int p) {
+        return plantVersion[p];
     }
 
     /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */

@@ -93,14 +93,12 @@ public final class Simulation implements AutoCloseable {
     private final int[] chunkCount;
     private final boolean[] chunkAtRest;
     /*
-     * Output versions: chunkVersion[c] counts the steps that changed chunk c's deviations;
-     * frameVersion[i][c] is the version whose outputs frame i holds for chunk c (-1: unknown). A
-     * chunk unchanged since the back frame last received it is not written at all, and a back frame
-     * already current for a chunk needs only the updated ranges written. Each entry is touched only
-     * by the worker running that chunk in a step (the pool's hand-off orders the steps).
+     * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
+     * none). A plant whose outputs in the back frame are current is not written at all; stale ones
+     * are copied from the frame published last (always complete and current) unless updated now.
+     * Each entry is touched only by the worker running that plant's chunk in a step.
      */
-    private final long[] chunkVersion;
-    private final long[][] frameVersion;
+    private final long[][] framePlantVersion;
     private final Rng[] chunkRng;
     private final float[][] windX = new float[2][];
     private final float[][] windZ = new float[2][];
@@ -192,8 +190,7 @@ public final class Simulation implements AutoCloseable {
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
-        chunkVersion = new long[chunks];
-        frameVersion = new long[3][chunks];
+        framePlantVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(ad.seed(), c);
@@ -383,33 +380,27 @@ public final class Simulation implements AutoCloseable {
             Frame f = stepFrame;
             int c0 = state.firstComponent(p0);
             int c1 = state.firstComponent(p1);
-            long[] written = frameVersion[stepFrameIndex];
+            long[] written = framePlantVersion[stepFrameIndex];
             if (stampFrames) {
                 chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
                         chunkRng[chunk]);
                 float s = (float) ((steps + 1) % 1_000_000);
                 java.util.Arrays.fill(f.poseCoord, c0, c1, s);
                 java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
-                chunkVersion[chunk]++;
-                written[chunk] = -1;
+                java.util.Arrays.fill(written, p0, p1, -1L);
             } else if (reset) {
                 chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
                         chunkRng[chunk]);
                 state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
-                written[chunk] = ++chunkVersion[chunk];
-            } else {
-                // outputs straight into the back frame, for the updated ranges; the other components
-                // keep theirs: already there when the back frame holds this chunk's current version,
-                // else copied from the frame published last (always complete and current)
-                boolean current = written[chunk] == chunkVersion[chunk];
-                Frame before = current ? f : stepBefore;
-                int n = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                        chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth);
-                chunkCount[chunk] = n;
-                if (n > 0) {
-                    chunkVersion[chunk]++;
+                for (int p = p0; p < p1; p++) {
+                    written[p] = state.version(p);
                 }
-                written[chunk] = chunkVersion[chunk];
+            } else {
+                // outputs straight into the back frame for the updated plants; of the others only
+                // those whose outputs there are stale, copied from the frame published last
+                Frame before = stepBefore;
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written);
             }
             System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
             state.copyLevels(p0, p1, f.plantLevel);

@@ -46,6 +46,7 @@ class AnimBenchmarkTest {
         final boolean[] vis;
         final float[] poseOut;
         final float[] azOut;
+        final long[] outVersion;
         final float[][] src = new float[6][];
         final float[][] dst = new float[6][];
         boolean copyOnly;
@@ -105,6 +106,7 @@ class AnimBenchmarkTest {
             }
             poseOut = new float[n];
             azOut = new float[n];
+            outVersion = new long[plants];
             int[] chunks = new int[plants + 2]; // the chunking rule of Simulation
             int m = 0;
             chunks[m++] = 0;
@@ -139,7 +141,7 @@ class AnimBenchmarkTest {
                 return;
             }
             state.animate(p0, p1, AnimationMode.CONSTRAINT, wx, wz, vis, 0, 0, 0, null, poseOut, azOut, poseOut,
-                    azOut);
+                    azOut, outVersion);
         }
     }
 
