@@ -62,7 +62,7 @@ public final class AnimationState {
     private double lodScale = 1;
 
     /** Output ranges closer than this many components are merged (recomputing the gap is idempotent). */
-    private static final int MERGE_GAP = 64;
+    private static final int MERGE_GAP = 256;
 
     private final short[] kind;
     /*
