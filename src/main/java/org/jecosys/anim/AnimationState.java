@@ -6,8 +6,10 @@ import org.jecosys.math.Rng;
 /**
  * The animated state of every plant component in flat arrays indexed by component (paper §4.2;
  * DESIGN.md style 2), and its updater. Per component: deviation D and velocity v (2D, ground plane,
- * x = X, z = Z), and the outputs: the continuous pose coordinate and the bend azimuth. Per plant:
- * the force input of the last update and the level of detail. Sized at construction; nothing grows.
+ * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
+ * function of D and the component's constants, written by {@link #animate} into the caller's arrays
+ * (the simulation's back frame) and computed on demand by the accessors. Per plant: the force input
+ * of the last update and the level of detail. Sized at construction; nothing grows.
  *
  * <h2>Bend</h2>
  * A component's rest shape (pose 0) leans toward its rest heading h (plant rest azimuth + slot
@@ -28,11 +30,17 @@ import org.jecosys.math.Rng;
  * {@code atan2(num, (|T| + l) length)} with {@code num = max(0, 2 L.D + |D|^2)}, one division).
  *
  * <h2>Update order</h2>
- * The outputs are a pure function of D and the component's constants, so {@link #animate} first
- * advances D and v plant by plant (scalar, per-kind coefficients), then computes the outputs in a
- * second, branch-free loop over contiguous component ranges that C2 vectorises. A range may also
- * cover components that were not advanced (a short gap of invisible plants, components outside the
- * level of detail): their outputs are recomputed from their unchanged D and come out bit-identical.
+ * At construction the components of each plant are cut into <em>spring runs</em>: maximal runs of
+ * consecutive components with the same spring coefficients ({@link SpringKinds#springClass}: the
+ * shape variants of one component type share them, so a 25-leaf tuft is one run) and the same
+ * level-of-detail mask. {@link #animate} first advances D and v over segments of contiguous runs of
+ * one class, across plants: the homogeneous part of eq. 5's map in one loop that C2 vectorises, then
+ * each run's force terms (computed once per run from the plant's force), added in the same order as
+ * the fused formula, so the bits do not depend on how runs are grouped. It then computes the outputs
+ * in a second, branch-free loop over contiguous component ranges, also vectorised. A range may
+ * also cover components that were not advanced (a short gap of invisible plants, components outside
+ * the level of detail): their outputs are recomputed from their unchanged D and come out
+ * bit-identical; components outside every range copy their outputs from the caller's previous ones.
  *
  * <h2>Threads</h2>
  * {@link #animate} touches only the plants of its range and their components, so disjoint ranges
@@ -54,9 +62,20 @@ public final class AnimationState {
     private double lodScale = 1;
 
     /** Output ranges closer than this many components are merged (recomputing the gap is idempotent). */
-    private static final int MERGE_GAP = 64;
+    private static final int MERGE_GAP = 256;
 
     private final short[] kind;
+    /*
+     * Spring runs: maximal runs of consecutive components of one plant that share their spring
+     * coefficients (SpringKinds.springClass) and their level-of-detail mask. Run r covers components
+     * runStart[r] .. runStart[r + 1] - 1 (no run is empty); plant p owns runs plantRun[p] ..
+     * plantRun[p + 1] - 1; runForce holds, per run, the force terms of its last update.
+     */
+    private final int[] runStart;
+    private final int[] runClass;
+    private final int[] runMask;
+    private final int[] plantRun;
+    private final float[] runForce;
     private final float[] leanX;
     private final float[] leanZ;
     // per-component copies of the kind constants the output loop needs (no gather there)
@@ -68,11 +87,11 @@ public final class AnimationState {
     final float[] devZ;
     final float[] velX;
     final float[] velZ;
-    final float[] pose;
-    final float[] azimuth;
     final float[] pressX;
     final float[] pressZ;
     final byte[] level;
+    /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
+    private final long[] plantVersion;
 
     /**
      * State at rest for a set of plants. Build time; allocates. Arrays are copied.
@@ -138,15 +157,38 @@ public final class AnimationState {
             compScale[c] = kinds.poseScale[k];
             compPoseMax[c] = kinds.poseMax[k];
         }
+        int[] rs = new int[components + 1];
+        int[] rc = new int[components];
+        int[] rm = new int[components];
+        plantRun = new int[plants + 1];
+        int runs = 0;
+        for (int p = 0; p < plants; p++) {
+            plantRun[p] = runs;
+            for (int c = firstComponent[p]; c < firstComponent[p + 1]; c++) {
+                int cls = kinds.springClass(kind[c]);
+                int mask = kinds.lodMask[kind[c]];
+                if (c == firstComponent[p] || cls != rc[runs - 1] || mask != rm[runs - 1]) {
+                    rs[runs] = c;
+                    rc[runs] = cls;
+                    rm[runs] = mask;
+                    runs++;
+                }
+            }
+        }
+        plantRun[plants] = runs;
+        rs[runs] = components;
+        runStart = java.util.Arrays.copyOf(rs, runs + 1);
+        runClass = java.util.Arrays.copyOf(rc, runs);
+        runMask = java.util.Arrays.copyOf(rm, runs);
+        runForce = new float[runs * FORCE_STRIDE];
         devX = new float[components];
         devZ = new float[components];
         velX = new float[components];
         velZ = new float[components];
-        pose = new float[components];
-        azimuth = new float[components];
         pressX = new float[plants];
         pressZ = new float[plants];
         level = new byte[plants];
+        plantVersion = new long[plants];
         setLodScale(1);
         resetToRest(0, plants);
     }
@@ -194,13 +236,15 @@ public final class AnimationState {
     }
 
     /**
-     * Puts plants {@code first .. end-1} and their components back at rest: D = v = 0, pose 0, rest
-     * heading, no remembered force. No allocation.
+     * Puts plants {@code first .. end-1} and their components back at rest: D = v = 0 (hence pose 0
+     * and the rest heading), no remembered force. Outputs already written elsewhere (a frame) are not
+     * touched: write them again with {@link #copyOutputs}. No allocation.
      */
     public void resetToRest(int first, int end) {
         for (int p = first; p < end; p++) {
             pressX[p] = 0;
             pressZ[p] = 0;
+            plantVersion[p]++;
         }
         for (int c = firstComponent[first], e = firstComponent[end]; c < e; c++) {
             devX[c] = 0;
@@ -208,14 +252,28 @@ public final class AnimationState {
             velX[c] = 0;
             velZ[c] = 0;
         }
-        outputs(firstComponent[first], firstComponent[end]);
     }
 
     /**
      * Advances plants {@code first .. end-1} by one step of the length last given to
-     * {@link SpringKinds#prepare} (paper §4.2.2). Only plants with {@code visible[p]} are updated
-     * (the others keep their last state), and of those only the components that their level of
-     * detail draws. The level of every plant in the range is recomputed from the eye.
+     * {@link SpringKinds#prepare} (paper §4.2.2), without writing any output: the outputs are a
+     * function of D (see {@link #poseCoordinate}, {@link #copyOutputs}). Otherwise as
+     * {@link #animate(int, int, AnimationMode, float[], float[], boolean[], double, double, double, Rng,
+     * float[], float[], float[], float[], long[])}.
+     *
+     * @return components updated
+     */
+    public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
+                       double eyeX, double eyeY, double eyeZ, Rng rng) {
+        return animate(first, end, mode, windX, windZ, visible, eyeX, eyeY, eyeZ, rng, null, null, null, null, null);
+    }
+
+    /**
+     * Advances plants {@code first .. end-1} by one step of the length last given to
+     * {@link SpringKinds#prepare} (paper §4.2.2) and writes the outputs of all their components.
+     * Only plants with {@code visible[p]} are updated (the others keep their last state), and of
+     * those only the components that their level of detail draws. The level of every plant in the
+     * range is recomputed from the eye.
      *
      * <ul>
      * <li>CONSTRAINT: the spring of {@link SpringKinds}, driven from the force at the previous update
@@ -225,24 +283,49 @@ public final class AnimationState {
      * <li>STATIC: nothing moves (see {@link #resetToRest}).</li>
      * </ul>
      *
+     * <p>Outputs: for every component c of the range, {@code poseOut[c]} and {@code azimuthOut[c]}
+     * receive its pose coordinate and azimuth ({@link #poseCoordinate}, {@link #azimuth}), bit for
+     * bit. They are computed for the updated plants (and short gaps between them); the other
+     * components' D did not change, so their outputs are copied from {@code poseBefore} and
+     * {@code azimuthBefore}, which must hold the outputs of the state before this call (for example
+     * the frame published last), but only for plants whose outputs in {@code poseOut} are stale:
+     * {@code outVersion[p]} says which {@link #version} of plant p the output arrays hold, and is
+     * brought up to date here. All five null: no output is written.
+     *
      * @param windX   per plant wind X at its node, m/s (indexed by plant)
      * @param windZ   per plant wind Z, m/s
      * @param visible per plant, whether it is on a visible node
      * @param rng     random source of this range (RANDOM mode only; may be null otherwise)
+     * @param poseOut per component, receives the pose coordinate (indexed by component), or null
+     * @param azimuthOut per component, receives the azimuth, or null
+     * @param poseBefore per component, the pose coordinates before this call (read only), or null
+     * @param azimuthBefore per component, the azimuths before this call (read only), or null
+     * @param outVersion per plant, the version of its outputs in poseOut/azimuthOut (updated), or null
      * @return components updated
      */
     public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
-                       double eyeX, double eyeY, double eyeZ, Rng rng) {
+                       double eyeX, double eyeY, double eyeZ, Rng rng, float[] poseOut, float[] azimuthOut,
+                       float[] poseBefore, float[] azimuthBefore, long[] outVersion) {
+        final boolean out = poseOut != null;
+        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)
+                || out != (outVersion != null)) {
+            throw new IllegalArgumentException("give all five output arrays or none");
+        }
         int updated = 0;
         final float[] co = kinds.coef;
         final int[] masks = kinds.lodMask;
         final short[] kind = this.kind;
-        final float[] devX = this.devX;
-        final float[] devZ = this.devZ;
-        final float[] velX = this.velX;
-        final float[] velZ = this.velZ;
-        int runStart = -1; // pending output range [runStart, runEnd) of components
-        int runEnd = -1;
+        final int[] runStart = this.runStart;
+        final int[] runClass = this.runClass;
+        final int[] runMask = this.runMask;
+        final float[] runForce = this.runForce;
+        int segRun = -1; // pending spring segment: runs segRun .. segRunEnd - 1, one class, contiguous
+        int segRunEnd = -1;
+        int segClass = -1;
+        int outStart = -1; // pending output range [outStart, outEnd) of components
+        int outEnd = -1;
+        int outStartPlant = -1;
+        int done = first; // outputs up to date below this plant
         for (int p = first; p < end; p++) {
             double dx = plantX[p] - eyeX;
             double dy = plantY[p] - eyeY;
@@ -258,6 +341,7 @@ public final class AnimationState {
                 continue;
             }
             int bit = 1 << l;
+            plantVersion[p]++;
             int c0 = firstComponent[p];
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
@@ -282,75 +366,202 @@ public final class AnimationState {
                 float p1z = speed * uz;
                 float p0x = pressX[p];
                 float p0z = pressZ[p];
-                for (int c = c0; c < c1; c++) {
-                    int k = kind[c];
-                    if ((masks[k] & bit) == 0) {
+                for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
+                    if ((runMask[r] & bit) == 0) {
                         continue;
                     }
-                    int o = k * SpringKinds.STRIDE;
-                    float x = devX[c];
-                    float z = devZ[c];
-                    float vx = velX[c];
-                    float vz = velZ[c];
-                    float aDD = co[o];
-                    float aDv = co[o + 1];
+                    int cls = runClass[r];
+                    int o = cls * SpringKinds.STRIDE;
                     float bD = co[o + 2];
                     float cD = co[o + 3];
-                    float aVD = co[o + 4];
-                    float aVv = co[o + 5];
                     float bV = co[o + 6];
                     float cV = co[o + 7];
-                    devX[c] = aDD * x + aDv * vx + bD * p0x + cD * p1x;
-                    devZ[c] = aDD * z + aDv * vz + bD * p0z + cD * p1z;
-                    velX[c] = aVD * x + aVv * vx + bV * p0x + cV * p1x;
-                    velZ[c] = aVD * z + aVv * vz + bV * p0z + cV * p1z;
-                    updated++;
+                    int f = r * FORCE_STRIDE;
+                    runForce[f] = bD * p0x;
+                    runForce[f + 1] = cD * p1x;
+                    runForce[f + 2] = bD * p0z;
+                    runForce[f + 3] = cD * p1z;
+                    runForce[f + 4] = bV * p0x;
+                    runForce[f + 5] = cV * p1x;
+                    runForce[f + 6] = bV * p0z;
+                    runForce[f + 7] = cV * p1z;
+                    updated += runStart[r + 1] - runStart[r];
+                    if (segRun >= 0 && cls == segClass && runStart[r] == runStart[segRunEnd]) {
+                        segRunEnd = r + 1;
+                    } else {
+                        if (segRun >= 0) {
+                            spring(segRun, segRunEnd, segClass);
+                        }
+                        segRun = r;
+                        segRunEnd = r + 1;
+                        segClass = cls;
+                    }
                 }
                 pressX[p] = p1x;
                 pressZ[p] = p1z;
             }
-            if (runStart < 0) {
-                runStart = c0;
-            } else if (c0 - runEnd > MERGE_GAP) {
-                outputs(runStart, runEnd);
-                runStart = c0;
+            if (!out) {
+                continue;
             }
-            runEnd = c1;
+            if (outStart < 0) {
+                outStart = c0;
+                outStartPlant = p;
+            } else if (c0 - outEnd > MERGE_GAP) {
+                if (segRun >= 0) { // the outputs read D: advance the pending segment first
+                    spring(segRun, segRunEnd, segClass);
+                    segRun = -1;
+                }
+                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
+                        outVersion);
+                outStart = c0;
+                outStartPlant = p;
+            }
+            outEnd = c1;
         }
-        if (runStart >= 0) {
-            outputs(runStart, runEnd);
+        if (segRun >= 0) {
+            spring(segRun, segRunEnd, segClass);
+        }
+        if (out) {
+            if (outStart >= 0) {
+                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
+                        outVersion);
+            }
+            copyStale(done, end, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
         }
         return updated;
     }
 
+    /** Force terms per run in {@code runForce}: bD P0x, cD P1x, bD P0z, cD P1z, bV P0x, cV P1x, bV P0z, cV P1z. */
+    private static final int FORCE_STRIDE = 8;
+
+    /**
+     * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of spring class cls) by
+     * eq. 5's affine map: first the part common to the class ({@code aDD D + aDv v},
+     * {@code aVD D + aVv v}) in one loop over the whole segment that C2 vectorises, then each run's
+     * force terms, added in the order {@code (aDD D + aDv v) + bD P0 + cD P1}.
+     */
+    private void spring(int r0, int r1, int cls) {
+        final float[] devX = this.devX;
+        final float[] devZ = this.devZ;
+        final float[] velX = this.velX;
+        final float[] velZ = this.velZ;
+        final float[] co = kinds.coef;
+        final int o = cls * SpringKinds.STRIDE;
+        final float aDD = co[o];
+        final float aDv = co[o + 1];
+        final float aVD = co[o + 4];
+        final float aVv = co[o + 5];
+        final int[] runStart = this.runStart;
+        final float[] runForce = this.runForce;
+        for (int c = runStart[r0], e = runStart[r1]; c < e; c++) {
+            float x = devX[c];
+            float z = devZ[c];
+            float vx = velX[c];
+            float vz = velZ[c];
+            devX[c] = aDD * x + aDv * vx;
+            devZ[c] = aDD * z + aDv * vz;
+            velX[c] = aVD * x + aVv * vx;
+            velZ[c] = aVD * z + aVv * vz;
+        }
+        for (int r = r0; r < r1; r++) {
+            int f = r * FORCE_STRIDE;
+            float dx0 = runForce[f];
+            float dx1 = runForce[f + 1];
+            float dz0 = runForce[f + 2];
+            float dz1 = runForce[f + 3];
+            float vx0 = runForce[f + 4];
+            float vx1 = runForce[f + 5];
+            float vz0 = runForce[f + 6];
+            float vz1 = runForce[f + 7];
+            for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
+                devX[c] = devX[c] + dx0 + dx1;
+                devZ[c] = devZ[c] + dz0 + dz1;
+                velX[c] = velX[c] + vx0 + vx1;
+                velZ[c] = velZ[c] + vz0 + vz1;
+            }
+        }
+    }
+
+    /**
+     * Brings the stale outputs of plants [done, p0) up to date from before, computes the outputs of
+     * plant p0's first component to component c1 (a plant boundary); returns the plant that starts at c1.
+     */
+    private int writeOutputs(int done, int p0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                             float[] azimuthBefore, long[] outVersion) {
+        copyStale(done, p0, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
+        outputs(firstComponent[p0], c1, poseOut, azimuthOut);
+        int p = p0;
+        for (; p < plants && firstComponent[p] < c1; p++) {
+            outVersion[p] = plantVersion[p];
+        }
+        return p;
+    }
+
+    /** Copies the outputs of plants [p0, p1) whose outVersion is stale from before (runs of them at once). */
+    private void copyStale(int p0, int p1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                           float[] azimuthBefore, long[] outVersion) {
+        final long[] version = plantVersion;
+        int q = p0;
+        while (q < p1) {
+            if (outVersion[q] == version[q]) {
+                q++;
+                continue;
+            }
+            int s = q;
+            while (q < p1 && outVersion[q] != version[q]) {
+                outVersion[q] = version[q];
+                q++;
+            }
+            copyBefore(firstComponent[s], firstComponent[q], poseOut, azimuthOut, poseBefore, azimuthBefore);
+        }
+    }
+
+    /**
+     * The version of plant p's state: it changes whenever the plant's deviations may have changed
+     * (an update by {@link #animate}, {@link #resetToRest}), so equal versions mean equal outputs.
+     */
+    public long version(int p) {
+        return plantVersion[p];
+    }
+
+    /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */
+    private static void copyBefore(int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                                   float[] azimuthBefore) {
+        if (poseBefore != poseOut) {
+            System.arraycopy(poseBefore, c0, poseOut, c0, c1 - c0);
+        }
+        if (azimuthBefore != azimuthOut) {
+            System.arraycopy(azimuthBefore, c0, azimuthOut, c0, c1 - c0);
+        }
+    }
+
     /**
      * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations (see the
-     * class comment), in blocks of {@value #BLOCK}. Each block runs five short branch-free loops over
-     * arrays indexed by c only (C2 unrolls and vectorises loops only below a body size, which one
-     * fused loop exceeds); intermediates live in {@code pose} and {@code azimuth}. The same
-     * arithmetic on every path, so a component's outputs depend on its D alone.
+     * class comment) into {@code pose} and {@code azimuth} (indexed by component), in blocks of
+     * {@value #BLOCK}. Each block runs five short branch-free loops over arrays indexed by c only
+     * (C2 unrolls and vectorises loops only below a body size, which one fused loop exceeds);
+     * intermediates live in the destination arrays. The same arithmetic as {@link #poseCoordinate}
+     * and {@link #azimuth}, so a component's outputs depend on its D alone.
      */
-    void outputs(int c0, int c1) {
+    private void outputs(int c0, int c1, float[] pose, float[] azimuth) {
         for (int b = c0; b < c1; b += BLOCK) {
             int e = Math.min(c1, b + BLOCK);
-            outputArguments(b, e);
-            poses(b, e);
-            azimuths(b, e);
+            outputArguments(b, e, pose, azimuth);
+            poses(b, e, pose);
+            azimuths(b, e, azimuth);
         }
     }
 
     private static final int BLOCK = 1024;
 
     /** pose[c] := atan argument of the extra bend; azimuth[c] := atan argument of the half-angle azimuth. */
-    private void outputArguments(int c0, int c1) {
+    private void outputArguments(int c0, int c1, float[] pose, float[] azimuth) {
         final float[] devX = this.devX;
         final float[] devZ = this.devZ;
         final float[] leanX = this.leanX;
         final float[] leanZ = this.leanZ;
         final float[] lean = compLean;
         final float[] len = compLength;
-        final float[] pose = this.pose;
-        final float[] azimuth = this.azimuth;
         for (int c = c0; c < c1; c++) { // |T|
             float tx = leanX[c] + devX[c];
             float tz = leanZ[c] + devZ[c];
@@ -367,28 +578,29 @@ public final class AnimationState {
         }
     }
 
-    private void poses(int c0, int c1) {
+    private void poses(int c0, int c1, float[] pose) {
         final float[] scale = compScale;
         final float[] max = compPoseMax;
-        final float[] pose = this.pose;
         for (int c = c0; c < c1; c++) {
             pose[c] = Math.max(0f, Math.min(max[c], Trig.poseAngle(pose[c]) * scale[c]));
         }
     }
 
-    private void azimuths(int c0, int c1) {
+    private void azimuths(int c0, int c1, float[] azimuth) {
         final float[] devZ = this.devZ;
         final float[] leanZ = this.leanZ;
-        final float[] azimuth = this.azimuth;
         for (int c = c0; c < c1; c++) {
             azimuth[c] = Trig.azimuth(leanZ[c] + devZ[c], azimuth[c]);
         }
     }
 
-    /** Copies the pose coordinates and azimuths of components {@code first .. end-1} into dest arrays (same indices). */
+    /**
+     * Writes the pose coordinates and azimuths of components {@code first .. end-1}, computed from
+     * their current deviations, into the dest arrays (same indices). Any thread that owns the range
+     * (as {@link #animate}). No allocation.
+     */
     public void copyOutputs(int first, int end, float[] poseDest, float[] azimuthDest) {
-        System.arraycopy(pose, first, poseDest, first, end - first);
-        System.arraycopy(azimuth, first, azimuthDest, first, end - first);
+        outputs(first, end, poseDest, azimuthDest);
     }
 
     /** Copies the levels of plants {@code first .. end-1} into dest (same indices). */
@@ -416,14 +628,30 @@ public final class AnimationState {
         return velZ[c];
     }
 
-    /** Pose coordinate of component c, in [0, K - 1]. */
+    /**
+     * Pose coordinate of component c, in [0, K - 1], computed from its deviation (scalar, the same
+     * operations as the output loops of {@link #animate}, hence the same bits). No allocation.
+     */
     public float poseCoordinate(int c) {
-        return pose[c];
+        float x = devX[c];
+        float z = devZ[c];
+        float tx = leanX[c] + x;
+        float tz = leanZ[c] + z;
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+        float u = Trig.poseArgument(num, (t + compLean[c]) * compLength[c]);
+        return Math.max(0f, Math.min(compPoseMax[c], Trig.poseAngle(u) * compScale[c]));
     }
 
-    /** Bend azimuth of component c, radians in [-pi, pi] (local +X to (cos a, 0, sin a)). */
+    /**
+     * Bend azimuth of component c, radians in [-pi, pi] (local +X to (cos a, 0, sin a)), computed from
+     * its deviation (as {@link #poseCoordinate}). No allocation.
+     */
     public float azimuth(int c) {
-        return azimuth[c];
+        float tx = leanX[c] + devX[c];
+        float tz = leanZ[c] + devZ[c];
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        return Trig.azimuth(leanZ[c] + devZ[c], Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], t));
     }
 
     /** Kind of component c. */
@@ -434,7 +662,7 @@ public final class AnimationState {
     /** Bend of component c beyond its rest shape, radians: pose coordinate x maxBend / (K - 1). */
     public float bend(int c) {
         int k = kind[c];
-        return pose[c] / kinds.poseScale[k];
+        return poseCoordinate(c) / kinds.poseScale[k];
     }
 
     /**
@@ -482,8 +710,8 @@ public final class AnimationState {
             h = mix(h, Float.floatToRawIntBits(devZ[c]));
             h = mix(h, Float.floatToRawIntBits(velX[c]));
             h = mix(h, Float.floatToRawIntBits(velZ[c]));
-            h = mix(h, Float.floatToRawIntBits(pose[c]));
-            h = mix(h, Float.floatToRawIntBits(azimuth[c]));
+            h = mix(h, Float.floatToRawIntBits(poseCoordinate(c)));
+            h = mix(h, Float.floatToRawIntBits(azimuth(c)));
         }
         return h;
     }

@@ -80,6 +80,7 @@ public final class SpringKinds {
     final float[] length;
     final int[] lodMask;
     final float[] coef;
+    private final int[] springClass;
     private final int[] speciesBase;
     private final int[] speciesVariants;
     private double preparedStep = Double.NaN;
@@ -109,6 +110,12 @@ public final class SpringKinds {
             maxBend[k] = (float) b.maxBend[k];
             poseMax[k] = b.poses[k] - 1;
             poseScale[k] = (float) ((b.poses[k] - 1) / b.maxBend[k]);
+        }
+        springClass = new int[count];
+        java.util.Map<java.util.List<Double>, Integer> classes = new java.util.HashMap<>();
+        for (int k = 0; k < count; k++) {
+            Integer prev = classes.putIfAbsent(java.util.List.of(responseTime[k], gain[k]), k);
+            springClass[k] = prev != null ? prev : k;
         }
         this.speciesBase = speciesBase;
         this.speciesVariants = speciesVariants;
@@ -200,6 +207,15 @@ public final class SpringKinds {
     /** Last pose coordinate (K - 1) of kind k. */
     public float poseMax(int k) {
         return poseMax[k];
+    }
+
+    /**
+     * The spring class of kind k: the first kind with the same response time and gain (the only
+     * constants the step coefficients depend on), so kinds of one class always have bit-identical
+     * coefficients. The shape variants of one component type share their class.
+     */
+    public int springClass(int k) {
+        return springClass[k];
     }
 
     /** Bit l set when kind k is drawn (lodSegments &gt; 0) at level of detail l. */

@@ -92,6 +92,13 @@ public final class Simulation implements AutoCloseable {
     private final int[] chunkFirstPlant;
     private final int[] chunkCount;
     private final boolean[] chunkAtRest;
+    /*
+     * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
+     * none). A plant whose outputs in the back frame are current is not written at all; stale ones
+     * are copied from the frame published last (always complete and current) unless updated now.
+     * Each entry is touched only by the worker running that plant's chunk in a step.
+     */
+    private final long[][] framePlantVersion;
     private final Rng[] chunkRng;
     private final float[][] windX = new float[2][];
     private final float[][] windZ = new float[2][];
@@ -117,6 +124,8 @@ public final class Simulation implements AutoCloseable {
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
     private Frame stepFrame;
+    private Frame stepBefore;
+    private int stepFrameIndex;
     private int stepBuffer;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
@@ -181,6 +190,7 @@ public final class Simulation implements AutoCloseable {
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
+        framePlantVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(ad.seed(), c);
@@ -301,6 +311,8 @@ public final class Simulation implements AutoCloseable {
         stepMode = mode;
         stepBuffer = current;
         stepFrame = exchange.back();
+        stepFrameIndex = exchange.backIndex();
+        stepBefore = exchange.lastPublished();
         long t0 = System.nanoTime();
         pool.start();
         updateField(camera, 1 - current);
@@ -353,27 +365,42 @@ public final class Simulation implements AutoCloseable {
             int p0 = chunkFirstPlant[chunk];
             int p1 = chunkFirstPlant[chunk + 1];
             AnimationMode m = stepMode;
+            boolean reset = false;
             if (m == AnimationMode.STATIC) {
                 if (!chunkAtRest[chunk]) {
                     state.resetToRest(p0, p1);
                     chunkAtRest[chunk] = true;
+                    reset = true;
                 }
             } else {
                 chunkAtRest[chunk] = false;
             }
             int b = stepBuffer;
             double[] e = eye[b];
-            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                    chunkRng[chunk]);
             Frame f = stepFrame;
             int c0 = state.firstComponent(p0);
             int c1 = state.firstComponent(p1);
+            long[] written = framePlantVersion[stepFrameIndex];
             if (stampFrames) {
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk]);
                 float s = (float) ((steps + 1) % 1_000_000);
                 java.util.Arrays.fill(f.poseCoord, c0, c1, s);
                 java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
-            } else {
+                java.util.Arrays.fill(written, p0, p1, -1L);
+            } else if (reset) {
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk]);
                 state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
+                for (int p = p0; p < p1; p++) {
+                    written[p] = state.version(p);
+                }
+            } else {
+                // outputs straight into the back frame for the updated plants; of the others only
+                // those whose outputs there are stale, copied from the frame published last
+                Frame before = stepBefore;
+                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                        chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written);
             }
             System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
             state.copyLevels(p0, p1, f.plantLevel);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
+import org.jecosys.anim.AnimationMode;
 import org.jecosys.math.ViewCamera;
 import org.junit.jupiter.api.Test;
 
@@ -83,6 +84,42 @@ class FramesTest {
             for (int c = 0; c < f.componentCount(); c++) {
                 assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c));
             }
+        }
+    }
+    /**
+     * Every published frame holds the outputs of the state for every component, also for plants that
+     * were not updated (culled, outside their level of detail) and across mode changes: the frames are
+     * written only where the state changed and copied or kept elsewhere.
+     */
+    @Test
+    void everyPublishedFrameCarriesTheOutputsOfTheWholeState() throws Exception {
+        try (Simulation sim = SimFixtures.c1(2)) {
+            ViewCamera cam = SimFixtures.camera();
+            double yaw = cam.yaw();
+            int culledChecked = 0;
+            for (int i = 0; i < 240; i++) {
+                if (i == 60) {
+                    sim.setMode(AnimationMode.STATIC);
+                } else if (i == 90) {
+                    sim.setMode(AnimationMode.CONSTRAINT);
+                } else if (i == 150) {
+                    sim.setMode(AnimationMode.RANDOM);
+                } else if (i == 170) {
+                    sim.setMode(AnimationMode.CONSTRAINT);
+                }
+                cam.setOrientation(yaw + 0.03 * i, cam.pitch());
+                sim.stepFixed(cam);
+                Frame f = sim.latestFrame();
+                assertEquals(i + 1, f.number());
+                for (int p = 0; p < f.plantCount(); p++) {
+                    culledChecked += f.plantVisible(p) ? 0 : 1;
+                    for (int c = sim.state().firstComponent(p); c < sim.state().firstComponent(p + 1); c++) {
+                        assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c), "step " + i + " component " + c);
+                        assertEquals(sim.state().azimuth(c), f.bendAzimuth(c), "step " + i + " component " + c);
+                    }
+                }
+            }
+            assertTrue(culledChecked > 0);
         }
     }
 }
