@@ -38,6 +38,8 @@ public final class World {
     private final short[] componentSlot;
     private final int[] componentParent;
 
+    /** World plant p is plant order[p] of the layout. */
+    private final int[] order;
     private long terrainNanos;
     private long distributionNanos;
 
@@ -46,17 +48,26 @@ public final class World {
         this.plants = plants;
         this.layout = layout;
         int n = layout.count();
-        x = layout.copyX();
-        y = layout.copyY();
-        z = layout.copyZ();
-        restAzimuth = layout.copyAzimuths();
-        species = layout.copySpecies();
+        order = spatialOrder(layout, terrain);
+        x = new float[n];
+        y = new float[n];
+        z = new float[n];
+        restAzimuth = new float[n];
+        species = new int[n];
+        for (int p = 0; p < n; p++) {
+            int l = order[p];
+            x[p] = layout.x(l);
+            y[p] = layout.y(l);
+            z[p] = layout.z(l);
+            restAzimuth[p] = layout.azimuth(l);
+            species[p] = layout.species(l);
+        }
         variant = new int[n];
         firstComponent = new int[n + 1];
         long total = 0;
         for (int p = 0; p < n; p++) {
             SpeciesModel sm = plants.species().get(species[p]);
-            variant[p] = sm.variantFor(layout.variantSeed(p));
+            variant[p] = sm.variantFor(layout.variantSeed(order[p]));
             firstComponent[p] = (int) total;
             total += sm.slotCount();
             if (total > Integer.MAX_VALUE - 8) {
@@ -139,9 +150,52 @@ public final class World {
         return plants;
     }
 
-    /** Where the plants stand, with the distribution's warnings and counts. */
+    /**
+     * Where the plants stand, in placement order, with the distribution's warnings and counts; world
+     * plant p is layout plant {@link #layoutIndex(int) layoutIndex(p)}.
+     */
     public PlantLayout layout() {
         return layout;
+    }
+
+    /**
+     * The plants in Morton (Z-order) order of their position over the terrain, ties by layout index:
+     * plants near each other are near each other in every per-plant and per-component array, so the
+     * plants of a visible region form long contiguous runs for the animation workers and the
+     * renderer. Deterministic for a layout.
+     */
+    private static int[] spatialOrder(PlantLayout layout, Terrain terrain) {
+        int n = layout.count();
+        org.jecosys.terrain.Heightfield h = terrain.heightfield();
+        double sx = 65535 / Math.max(1e-9, h.maxX() - h.minX());
+        double sz = 65535 / Math.max(1e-9, h.maxZ() - h.minZ());
+        long[] keys = new long[n];
+        for (int i = 0; i < n; i++) {
+            int qx = (int) Math.max(0, Math.min(65535, (layout.x(i) - h.minX()) * sx));
+            int qz = (int) Math.max(0, Math.min(65535, (layout.z(i) - h.minZ()) * sz));
+            keys[i] = (interleave(qx) | interleave(qz) << 1) << 32 | i;
+        }
+        java.util.Arrays.sort(keys);
+        int[] order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = (int) keys[i];
+        }
+        return order;
+    }
+
+    /** Spreads the low 16 bits of v to the even bits of the result. */
+    private static long interleave(int v) {
+        long x = v & 0xFFFFL;
+        x = (x | x << 8) & 0x00FF00FFL;
+        x = (x | x << 4) & 0x0F0F0F0FL;
+        x = (x | x << 2) & 0x33333333L;
+        x = (x | x << 1) & 0x55555555L;
+        return x;
+    }
+
+    /** The index in {@link #layout()} of world plant p (world plants are in spatial order). */
+    public int layoutIndex(int p) {
+        return order[p];
     }
 
     /** Number of plants. */
