@@ -46,10 +46,10 @@ final class PaperScenesSection implements Section {
     @Override
     public void run(Mode mode, Report report) throws Exception {
         int count = mode == Mode.FULL ? 4 : mode == Mode.SMOKE ? 1 : 3;
-        int simWarm = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 120 : 300;
-        int simFrames = mode == Mode.SMOKE ? 10 : mode == Mode.QUICK ? 600 : 2400;
-        int renderWarm = mode == Mode.SMOKE ? 2 : mode == Mode.QUICK ? 20 : 60;
-        int renderFrames = mode == Mode.SMOKE ? 4 : mode == Mode.QUICK ? 90 : 360;
+        int simWarm = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 600 : 2000;
+        int simFrames = mode == Mode.SMOKE ? 10 : mode == Mode.QUICK ? 3000 : 12000;
+        int renderWarm = mode == Mode.SMOKE ? 2 : mode == Mode.QUICK ? 40 : 120;
+        int renderFrames = mode == Mode.SMOKE ? 4 : mode == Mode.QUICK ? 240 : 900;
         List<Runs> sim = new ArrayList<>();
         List<Runs> rendered = new ArrayList<>();
         List<SceneDef> defs = new ArrayList<>();

@@ -59,8 +59,8 @@ final class ScaleSection implements Section {
             case QUICK -> new int[] {1_000, 10_000, 100_000, 1_000_000};
             case FULL -> new int[] {1_000, 10_000, 100_000, 1_000_000, 4_000_000};
         };
-        int warm = mode == Mode.SMOKE ? 3 : mode == Mode.QUICK ? 40 : 100;
-        int steps = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 80 : 300;
+        int warm = mode == Mode.SMOKE ? 3 : mode == Mode.QUICK ? 100 : 300;
+        int steps = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 250 : 600;
         SceneDef base = SceneFiles.load(scenes.resolve("meadow.xml"));
         Table t = new Table("scale", "Scale curve: component updates per second against component count",
                 List.of("components", "plants", "workers", "animated per step", "median step ms", "updates/s",

@@ -38,8 +38,9 @@ import org.jecosys.wind.WindSource;
  * step, writing the back frame;</li>
  * <li>at the same time the stepping thread advances the wind clock and updates the force field for
  * the end of the <em>next</em> step (visibility and LOD from the camera given now), so the field and
- * the animation run concurrently (§5.1) without either waiting for the other's data. Visibility
- * thus follows the camera one fixed step late;</li>
+ * the animation run concurrently (§5.1) without either waiting for the other's data, then helps with
+ * the chunks left. Visibility thus follows the camera one fixed step late. With N workers, N - 1
+ * pool threads and the stepping thread animate; with 1, the stepping thread does everything;</li>
  * <li>the frame is published (triple buffering, {@link FrameExchange}).</li>
  * </ol>
  * With the field off ({@link #setFieldEnabled}) no flow is evaluated and no culling is done: every
@@ -518,7 +519,7 @@ public final class Simulation implements AutoCloseable {
         return world.componentCount();
     }
 
-    /** Animation worker threads. Any thread. */
+    /** Threads that animate: the pool's threads and the stepping thread, which helps. Any thread. */
     public int workers() {
         return pool.workers();
     }
@@ -588,7 +589,7 @@ public final class Simulation implements AutoCloseable {
         return state.stateHash();
     }
 
-    /** Ids of the worker threads (allocates). Any thread. */
+    /** Ids of the pool's worker threads, {@link #workers()} - 1 of them (allocates). Any thread. */
     public long[] workerThreadIds() {
         return workerIds.clone();
     }

@@ -9,7 +9,10 @@ import org.jecosys.math.Require;
  * calls {@link #start()}, may do other work (the force-field update), then {@link #await()}.
  * Workers claim chunk indices 0 .. chunks-1 from an atomic counter and call
  * {@link ChunkTask#runChunk(int)}; which worker runs a chunk changes nothing in the result, because
- * chunks are fixed and disjoint. Hand-off by a volatile generation counter and
+ * chunks are fixed and disjoint. The owner is one of the workers: a pool of N workers has N - 1
+ * threads, and {@link #await()} runs the chunks no thread has claimed yet; a step of one chunk wakes
+ * no thread at all (waking costs more than such a chunk), and N = 1 runs everything on the owner.
+ * Hand-off by a volatile generation counter and
  * {@link LockSupport#park()}/{@code unpark}: no task objects, lambdas or collections per step, no
  * allocation after the threads started. Owner: one thread at a time calls start/await/close.
  */
@@ -35,8 +38,8 @@ final class WorkerPool implements AutoCloseable {
         Require.range("workers", workers, 1, 256);
         this.chunks = Require.range("chunks", chunks, 0, Integer.MAX_VALUE);
         this.task = Require.nonNull("task", task);
-        threads = new Thread[workers];
-        for (int i = 0; i < workers; i++) {
+        threads = new Thread[workers - 1]; // the owner is the last worker: it helps in await()
+        for (int i = 0; i < threads.length; i++) {
             Thread t = new Thread(this::loop, name + "-" + i);
             t.setDaemon(true);
             threads[i] = t;
@@ -47,8 +50,9 @@ final class WorkerPool implements AutoCloseable {
     }
 
     /** Number of worker threads. */
+    /** Threads that animate: the pool's threads and the owner, which helps in {@link #await()}. */
     int workers() {
-        return threads.length;
+        return threads.length + 1;
     }
 
     /** The worker threads' ids (allocates). */
@@ -67,6 +71,11 @@ final class WorkerPool implements AutoCloseable {
         }
         owner = Thread.currentThread();
         next.set(0);
+        if (chunks <= 1 || threads.length == 0) {
+            // one chunk (waking a worker costs more) or no pool threads: the owner runs them in await()
+            pending.set(0);
+            return;
+        }
         pending.set(threads.length);
         generation++;
         for (Thread t : threads) {
@@ -74,8 +83,16 @@ final class WorkerPool implements AutoCloseable {
         }
     }
 
-    /** Waits until every worker finished the step started last. Owner thread. No allocation. */
+    /**
+     * Runs the chunks no worker has claimed yet on the calling thread, then waits until every worker
+     * finished the step started last. Owner thread. No allocation.
+     */
     void await() {
+        // the caller helps: it runs every chunk no worker has claimed yet (each chunk is claimed once,
+        // whoever runs it, so results do not depend on which thread did the work)
+        for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
+            task.runChunk(c);
+        }
         int spins = 0;
         while (pending.get() != 0) {
             if (spins < SPINS) {
