@@ -6,11 +6,14 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
+import org.jecosys.bench.Json;
 import org.jecosys.field.FieldCounters;
 import org.jecosys.field.ForceFieldDef;
 import org.jecosys.field.QuadtreeForceField;
@@ -184,29 +187,28 @@ final class SimulateCommand implements Callable<Integer> {
 
     private String json(Path file, Simulation sim, SimulationDef sd, Run run) {
         FieldCounters fc = sim.fieldCounters();
-        JsonWriter w = new JsonWriter().begin()
-                .put("scene", file.toString())
-                .put("components", sim.componentCount())
-                .put("plants", sim.plantCount())
-                .put("steps", steps)
-                .put("dt", sd.animation().fixedStep())
-                .put("threads", sim.workers())
-                .put("mode", sd.animation().mode().xmlName())
-                .put("field", sd.field().enabled())
-                .put("medianMsPerStep", run.medianMs)
-                .put("componentUpdatesPerSecond", run.updatesPerSecond)
-                .put("allocatedBytesPerStep", run.allocatedPerStep)
-                .put("stateHash", String.format(Locale.ROOT, "%016x", run.hash))
-                .beginObject("fieldCounters")
-                .put("nodes", fc.nodes())
-                .put("leaves", fc.leaves())
-                .put("visibleNodes", fc.visibleNodes())
-                .put("visibleLeaves", fc.visibleLeaves())
-                .put("effectiveNodes", fc.effectiveNodes())
-                .put("flowEvaluations", fc.flowEvaluations())
-                .end()
-                .end();
-        return w.toString();
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("scene", file.toString());
+        m.put("components", sim.componentCount());
+        m.put("plants", sim.plantCount());
+        m.put("steps", steps);
+        m.put("dt", sd.animation().fixedStep());
+        m.put("threads", sim.workers());
+        m.put("mode", sd.animation().mode().xmlName());
+        m.put("field", sd.field().enabled());
+        m.put("medianMsPerStep", run.medianMs);
+        m.put("componentUpdatesPerSecond", run.updatesPerSecond);
+        m.put("allocatedBytesPerStep", run.allocatedPerStep);
+        m.put("stateHash", String.format(Locale.ROOT, "%016x", run.hash));
+        Map<String, Object> c = new LinkedHashMap<>();
+        c.put("nodes", fc.nodes());
+        c.put("leaves", fc.leaves());
+        c.put("visibleNodes", fc.visibleNodes());
+        c.put("visibleLeaves", fc.visibleLeaves());
+        c.put("effectiveNodes", fc.effectiveNodes());
+        c.put("flowEvaluations", fc.flowEvaluations());
+        m.put("fieldCounters", c);
+        return Json.write(m);
     }
 
     /** The CSV header of --dump. */
