@@ -38,6 +38,9 @@ public final class SceneRenderer implements AutoCloseable {
     private double band;
     private FieldDebugView field;
     private boolean closed;
+    /** Benchmark breakdown only (package-private): skip the terrain or the plants. */
+    boolean drawTerrain = true;
+    boolean drawPlants = true;
 
     /**
      * Uploads everything static of the world. Render thread; allocates.
@@ -109,8 +112,12 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
-        terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
-        plants.draw(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        if (drawTerrain) {
+            terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        }
+        if (drawPlants) {
+            plants.draw(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        }
         glDisable(GL_DEPTH_TEST);
         if (field != null && (settings.showField() || settings.showWind())) {
             overlay.draw(field, camera, settings.showField(), settings.showWind(), width, height);
