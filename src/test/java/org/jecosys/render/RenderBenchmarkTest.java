@@ -74,7 +74,7 @@ class RenderBenchmarkTest {
     private static final int W = 1280;
     private static final int H = 720;
     private static final int WARM = 4;
-    private static final int FRAMES = 16;
+    private static final int FRAMES = 32;
     private static final double DT = 1.0 / 30;
 
     private double cpuMs;
