@@ -72,6 +72,8 @@ public final class PlantRenderer implements AutoCloseable {
     private final int uFogStart;
     private final int uFogEnd;
     private int draws;
+    /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
+    int levelMask = ~0;
     private boolean closed;
 
     /**
@@ -269,7 +271,7 @@ public final class PlantRenderer implements AutoCloseable {
             for (int l = 0, levels = batches.levels(s); l < levels; l++) {
                 int li = batches.list(s, l);
                 int n = batches.count(li);
-                if (n == 0 || indexCount[li] == 0) {
+                if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0) {
                     continue;
                 }
                 glUniform1i(uComponentBase, batches.componentOffset(li));

@@ -2,12 +2,9 @@
 // Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
 // L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
 // fragment is tested.
+// Colour arrives lit and fogged from the vertex shader.
 in vec3 vColour;
-in float vDistance;
 flat in vec2 vKeep;
-uniform vec3 uFogColour;
-uniform float uFogStart;
-uniform float uFogEnd;
 out vec4 fragColour;
 
 // 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
@@ -25,6 +22,5 @@ void main() {
             discard;
         }
     }
-    float fog = clamp((vDistance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    fragColour = vec4(mix(vColour, uFogColour, fog * fog), 1.0);
+    fragColour = vec4(vColour, 1.0);
 }

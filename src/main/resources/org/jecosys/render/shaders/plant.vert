@@ -17,9 +17,11 @@ uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point 
 uniform samplerBuffer uComponents;               // RGBA32F: 2 texels per drawn component
 uniform int uSlotCount;
 uniform int uComponentBase;
+uniform vec3 uFogColour;
+uniform float uFogStart;
+uniform float uFogEnd;
 
-out vec3 vColour;
-out float vDistance;
+out vec3 vColour;                                // lit and fogged per vertex
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
 
 vec3 rotY(vec3 v, float c, float s) {
@@ -46,7 +48,7 @@ void main() {
 
     // two-sided lighting: the face toward the viewer is lit by the sun, the back lets some through
     vec3 toEye = uEye - world;
-    vDistance = length(toEye);
+    float distance = length(toEye);
     vec3 n = rotY(normal, ca, sa);
     float len = length(n);
     float lit = 0.65;
@@ -59,7 +61,8 @@ void main() {
     float along = aColour.w;
     vec3 colour = aColour.rgb * (0.50 + 0.55 * along);            // darker at the base: cheap occlusion
     colour = mix(colour, colour * vec3(1.10, 1.18, 0.80) + vec3(0.05, 0.06, 0.0), along * along); // sunlit tips
-    vColour = colour * (0.45 + 0.75 * lit);
+    float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
+    vColour = mix(colour * (0.45 + 0.75 * lit), uFogColour, fog * fog);
 
     int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
