@@ -8,8 +8,6 @@ final class ExitCodes {
     static final int FAILURE = 1;
     /** Bad input: a flag or a scene file (picocli's usage-error code too). */
     static final int BAD_INPUT = 2;
-    /** The command's part is not in this build yet. */
-    static final int UNAVAILABLE = 3;
 
     private ExitCodes() {
     }

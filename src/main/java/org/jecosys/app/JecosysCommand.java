@@ -11,7 +11,7 @@ import picocli.CommandLine.Command;
                 "A port of Endo, Morimoto, Fabris, CGI 2005. With no command, runs 'view' on scenes/meadow.xml."},
         subcommands = {ViewCommand.class, CheckCommand.class, SimulateCommand.class, RenderCommand.class,
                 BenchCommand.class},
-        footer = {"", "Exit codes: 0 ok, 1 runtime failure, 2 bad input, 3 not in this build yet."})
+        footer = {"", "Exit codes: 0 ok, 1 runtime failure, 2 bad input."})
 final class JecosysCommand implements Runnable {
     @Override
     public void run() {

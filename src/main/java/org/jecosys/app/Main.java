@@ -7,7 +7,7 @@ import picocli.CommandLine;
 
 /**
  * The {@code jecosys} command line. Exit codes: 0 success, 1 a runtime failure, 2 bad input
- * (flags or scene files), 3 a command whose part is not in this build yet. Errors print one clear
+ * (flags or scene files). Errors print one clear
  * message; a stack trace only with {@code --verbose}.
  */
 public final class Main {
