@@ -28,6 +28,8 @@ import org.jecosys.math.Rng;
  * Arc tangents use a polynomial with error below 5e-7 rad, in the branch-free forms of
  * {@code Trig.poseAngle} and {@code Trig.azimuth} (the arc tangent of the extra bend is taken as
  * {@code atan2(num, (|T| + l) length)} with {@code num = max(0, 2 L.D + |D|^2)}, one division).
+ * The output loops and the scalar forms live in {@code BendOutputs}; the spring runs and their step
+ * in {@code SpringRuns}.
  *
  * <h2>Update order</h2>
  * At construction the components of each plant are cut into <em>spring runs</em>: maximal runs of
@@ -66,10 +68,8 @@ public final class AnimationState {
 
     private final short[] kind;
     /*
-     * Spring runs: maximal runs of consecutive components of one plant that share their spring
-     * coefficients (SpringKinds.springClass) and their level-of-detail mask. Run r covers components
-     * runStart[r] .. runStart[r + 1] - 1 (no run is empty); plant p owns runs plantRun[p] ..
-     * plantRun[p + 1] - 1; runForce holds, per run, the force terms of its last update.
+     * Spring runs (see SpringRuns; the arrays are its own, held here to be read in place). runForce
+     * holds, per run, the force terms of its last update.
      */
     private final int[] runStart;
     private final int[] runClass;
@@ -157,30 +157,12 @@ public final class AnimationState {
             compScale[c] = kinds.poseScale[k];
             compPoseMax[c] = kinds.poseMax[k];
         }
-        int[] rs = new int[components + 1];
-        int[] rc = new int[components];
-        int[] rm = new int[components];
-        plantRun = new int[plants + 1];
-        int runs = 0;
-        for (int p = 0; p < plants; p++) {
-            plantRun[p] = runs;
-            for (int c = firstComponent[p]; c < firstComponent[p + 1]; c++) {
-                int cls = kinds.springClass(kind[c]);
-                int mask = kinds.lodMask[kind[c]];
-                if (c == firstComponent[p] || cls != rc[runs - 1] || mask != rm[runs - 1]) {
-                    rs[runs] = c;
-                    rc[runs] = cls;
-                    rm[runs] = mask;
-                    runs++;
-                }
-            }
-        }
-        plantRun[plants] = runs;
-        rs[runs] = components;
-        runStart = java.util.Arrays.copyOf(rs, runs + 1);
-        runClass = java.util.Arrays.copyOf(rc, runs);
-        runMask = java.util.Arrays.copyOf(rm, runs);
-        runForce = new float[runs * FORCE_STRIDE];
+        SpringRuns springRuns = new SpringRuns(kinds, kind, this.firstComponent);
+        runStart = springRuns.start;
+        runClass = springRuns.springClass;
+        runMask = springRuns.mask;
+        plantRun = springRuns.plantRun;
+        runForce = new float[springRuns.count() * SpringRuns.FORCE_STRIDE];
         devX = new float[components];
         devZ = new float[components];
         velX = new float[components];
@@ -345,19 +327,7 @@ public final class AnimationState {
             int c0 = firstComponent[p];
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
-                for (int c = c0; c < c1; c++) {
-                    int k = kind[c];
-                    if ((masks[k] & bit) != 0) {
-                        float r = 0.3f * kinds.length[k] * (float) Math.sqrt(rng.nextDouble());
-                        float a = (float) (rng.nextDouble() * 2 * Math.PI);
-                        float ca = (float) StrictMath.cos(a);
-                        devX[c] = r * ca;
-                        devZ[c] = r * (float) StrictMath.sin(a);
-                        velX[c] = 0;
-                        velZ[c] = 0;
-                        updated++;
-                    }
-                }
+                updated += SpringRuns.randomise(c0, c1, bit, kind, masks, kinds.length, rng, devX, devZ, velX, velZ);
             } else {
                 float ux = windX[p];
                 float uz = windZ[p];
@@ -371,20 +341,7 @@ public final class AnimationState {
                         continue;
                     }
                     int cls = runClass[r];
-                    int o = cls * SpringKinds.STRIDE;
-                    float bD = co[o + 2];
-                    float cD = co[o + 3];
-                    float bV = co[o + 6];
-                    float cV = co[o + 7];
-                    int f = r * FORCE_STRIDE;
-                    runForce[f] = bD * p0x;
-                    runForce[f + 1] = cD * p1x;
-                    runForce[f + 2] = bD * p0z;
-                    runForce[f + 3] = cD * p1z;
-                    runForce[f + 4] = bV * p0x;
-                    runForce[f + 5] = cV * p1x;
-                    runForce[f + 6] = bV * p0z;
-                    runForce[f + 7] = cV * p1z;
+                    SpringRuns.setForce(r, cls, co, runForce, p0x, p0z, p1x, p1z);
                     updated += runStart[r + 1] - runStart[r];
                     if (segRun >= 0 && cls == segClass && runStart[r] == runStart[segRunEnd]) {
                         segRunEnd = r + 1;
@@ -431,55 +388,9 @@ public final class AnimationState {
         return updated;
     }
 
-    /** Force terms per run in {@code runForce}: bD P0x, cD P1x, bD P0z, cD P1z, bV P0x, cV P1x, bV P0z, cV P1z. */
-    private static final int FORCE_STRIDE = 8;
-
-    /**
-     * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of spring class cls) by
-     * eq. 5's affine map: first the part common to the class ({@code aDD D + aDv v},
-     * {@code aVD D + aVv v}) in one loop over the whole segment that C2 vectorises, then each run's
-     * force terms, added in the order {@code (aDD D + aDv v) + bD P0 + cD P1}.
-     */
+    /** Advances runs {@code r0 .. r1-1} (contiguous, all of spring class cls): {@link SpringRuns#spring}. */
     private void spring(int r0, int r1, int cls) {
-        final float[] devX = this.devX;
-        final float[] devZ = this.devZ;
-        final float[] velX = this.velX;
-        final float[] velZ = this.velZ;
-        final float[] co = kinds.coef;
-        final int o = cls * SpringKinds.STRIDE;
-        final float aDD = co[o];
-        final float aDv = co[o + 1];
-        final float aVD = co[o + 4];
-        final float aVv = co[o + 5];
-        final int[] runStart = this.runStart;
-        final float[] runForce = this.runForce;
-        for (int c = runStart[r0], e = runStart[r1]; c < e; c++) {
-            float x = devX[c];
-            float z = devZ[c];
-            float vx = velX[c];
-            float vz = velZ[c];
-            devX[c] = aDD * x + aDv * vx;
-            devZ[c] = aDD * z + aDv * vz;
-            velX[c] = aVD * x + aVv * vx;
-            velZ[c] = aVD * z + aVv * vz;
-        }
-        for (int r = r0; r < r1; r++) {
-            int f = r * FORCE_STRIDE;
-            float dx0 = runForce[f];
-            float dx1 = runForce[f + 1];
-            float dz0 = runForce[f + 2];
-            float dz1 = runForce[f + 3];
-            float vx0 = runForce[f + 4];
-            float vx1 = runForce[f + 5];
-            float vz0 = runForce[f + 6];
-            float vz1 = runForce[f + 7];
-            for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
-                devX[c] = devX[c] + dx0 + dx1;
-                devZ[c] = devZ[c] + dz0 + dz1;
-                velX[c] = velX[c] + vx0 + vx1;
-                velZ[c] = velZ[c] + vz0 + vz1;
-            }
-        }
+        SpringRuns.spring(r0, r1, cls, kinds.coef, runStart, runForce, devX, devZ, velX, velZ);
     }
 
     /**
@@ -500,20 +411,8 @@ public final class AnimationState {
     /** Copies the outputs of plants [p0, p1) whose outVersion is stale from before (runs of them at once). */
     private void copyStale(int p0, int p1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
                            float[] azimuthBefore, long[] outVersion) {
-        final long[] version = plantVersion;
-        int q = p0;
-        while (q < p1) {
-            if (outVersion[q] == version[q]) {
-                q++;
-                continue;
-            }
-            int s = q;
-            while (q < p1 && outVersion[q] != version[q]) {
-                outVersion[q] = version[q];
-                q++;
-            }
-            copyBefore(firstComponent[s], firstComponent[q], poseOut, azimuthOut, poseBefore, azimuthBefore);
-        }
+        BendOutputs.copyStale(p0, p1, firstComponent, plantVersion, poseOut, azimuthOut, poseBefore, azimuthBefore,
+                outVersion);
     }
 
     /**
@@ -524,74 +423,14 @@ public final class AnimationState {
         return plantVersion[p];
     }
 
-    /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */
-    private static void copyBefore(int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
-                                   float[] azimuthBefore) {
-        if (poseBefore != poseOut) {
-            System.arraycopy(poseBefore, c0, poseOut, c0, c1 - c0);
-        }
-        if (azimuthBefore != azimuthOut) {
-            System.arraycopy(azimuthBefore, c0, azimuthOut, c0, c1 - c0);
-        }
-    }
-
     /**
      * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations (see the
-     * class comment) into {@code pose} and {@code azimuth} (indexed by component), in blocks of
-     * {@value #BLOCK}. Each block runs five short branch-free loops over arrays indexed by c only
-     * (C2 unrolls and vectorises loops only below a body size, which one fused loop exceeds);
-     * intermediates live in the destination arrays. The same arithmetic as {@link #poseCoordinate}
-     * and {@link #azimuth}, so a component's outputs depend on its D alone.
+     * class comment) into {@code pose} and {@code azimuth} (indexed by component):
+     * {@link BendOutputs#outputs}, the same arithmetic as {@link #poseCoordinate} and {@link #azimuth}.
      */
     private void outputs(int c0, int c1, float[] pose, float[] azimuth) {
-        for (int b = c0; b < c1; b += BLOCK) {
-            int e = Math.min(c1, b + BLOCK);
-            outputArguments(b, e, pose, azimuth);
-            poses(b, e, pose);
-            azimuths(b, e, azimuth);
-        }
-    }
-
-    private static final int BLOCK = 1024;
-
-    /** pose[c] := atan argument of the extra bend; azimuth[c] := atan argument of the half-angle azimuth. */
-    private void outputArguments(int c0, int c1, float[] pose, float[] azimuth) {
-        final float[] devX = this.devX;
-        final float[] devZ = this.devZ;
-        final float[] leanX = this.leanX;
-        final float[] leanZ = this.leanZ;
-        final float[] lean = compLean;
-        final float[] len = compLength;
-        for (int c = c0; c < c1; c++) { // |T|
-            float tx = leanX[c] + devX[c];
-            float tz = leanZ[c] + devZ[c];
-            azimuth[c] = (float) Math.sqrt(tx * tx + tz * tz);
-        }
-        for (int c = c0; c < c1; c++) { // extra bend: atan2(num, (|T| + l) length)
-            float x = devX[c];
-            float z = devZ[c];
-            float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
-            pose[c] = Trig.poseArgument(num, (azimuth[c] + lean[c]) * len[c]);
-        }
-        for (int c = c0; c < c1; c++) { // azimuth: half angle about the z axis
-            azimuth[c] = Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], azimuth[c]);
-        }
-    }
-
-    private void poses(int c0, int c1, float[] pose) {
-        final float[] scale = compScale;
-        final float[] max = compPoseMax;
-        for (int c = c0; c < c1; c++) {
-            pose[c] = Math.max(0f, Math.min(max[c], Trig.poseAngle(pose[c]) * scale[c]));
-        }
-    }
-
-    private void azimuths(int c0, int c1, float[] azimuth) {
-        final float[] devZ = this.devZ;
-        final float[] leanZ = this.leanZ;
-        for (int c = c0; c < c1; c++) {
-            azimuth[c] = Trig.azimuth(leanZ[c] + devZ[c], azimuth[c]);
-        }
+        BendOutputs.outputs(c0, c1, devX, devZ, leanX, leanZ, compLean, compLength, compScale, compPoseMax, pose,
+                azimuth);
     }
 
     /**
@@ -633,14 +472,7 @@ public final class AnimationState {
      * operations as the output loops of {@link #animate}, hence the same bits). No allocation.
      */
     public float poseCoordinate(int c) {
-        float x = devX[c];
-        float z = devZ[c];
-        float tx = leanX[c] + x;
-        float tz = leanZ[c] + z;
-        float t = (float) Math.sqrt(tx * tx + tz * tz);
-        float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
-        float u = Trig.poseArgument(num, (t + compLean[c]) * compLength[c]);
-        return Math.max(0f, Math.min(compPoseMax[c], Trig.poseAngle(u) * compScale[c]));
+        return BendOutputs.poseCoordinate(c, devX, devZ, leanX, leanZ, compLean, compLength, compScale, compPoseMax);
     }
 
     /**
@@ -648,10 +480,7 @@ public final class AnimationState {
      * its deviation (as {@link #poseCoordinate}). No allocation.
      */
     public float azimuth(int c) {
-        float tx = leanX[c] + devX[c];
-        float tz = leanZ[c] + devZ[c];
-        float t = (float) Math.sqrt(tx * tx + tz * tz);
-        return Trig.azimuth(leanZ[c] + devZ[c], Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], t));
+        return BendOutputs.azimuth(c, devX, devZ, leanX, leanZ);
     }
 
     /** Kind of component c. */

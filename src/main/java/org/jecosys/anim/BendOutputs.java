@@ -1,0 +1,138 @@
+package org.jecosys.anim;
+
+/**
+ * The bend outputs of {@link AnimationState}: a component's pose coordinate and bend azimuth as a
+ * pure function of its deviation D and its constants (see "Bend" in {@link AnimationState}), in the
+ * vectorisable output loops and in the scalar form of the accessors, plus the copying of stale output
+ * ranges from the previous outputs. Static methods over the caller's flat arrays, all indexed by
+ * component (or by plant where named so), so the hot loops read the arrays directly with no extra
+ * indirection. Any thread that owns the range written; no allocation.
+ */
+final class BendOutputs {
+    /** Components per block of the output loops. */
+    private static final int BLOCK = 1024;
+
+    private BendOutputs() {
+    }
+
+    /**
+     * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations into
+     * {@code pose} and {@code azimuth} (indexed by component), in blocks of {@value #BLOCK}. Each block
+     * runs five short branch-free loops over arrays indexed by c only (C2 unrolls and vectorises loops
+     * only below a body size, which one fused loop exceeds); intermediates live in the destination
+     * arrays. The same arithmetic as {@link #poseCoordinate} and {@link #azimuth}, so a component's
+     * outputs depend on its D alone.
+     *
+     * @param devX    deviation X per component, metres
+     * @param devZ    deviation Z per component, metres
+     * @param leanX   rest lean X per component, metres
+     * @param leanZ   rest lean Z per component, metres
+     * @param lean    rest lean magnitude per component, metres
+     * @param len     length per component, metres
+     * @param scale   pose scale per component ((K - 1) / maxBend)
+     * @param poseMax largest pose coordinate per component (K - 1)
+     */
+    static void outputs(int c0, int c1, float[] devX, float[] devZ, float[] leanX, float[] leanZ, float[] lean,
+                        float[] len, float[] scale, float[] poseMax, float[] pose, float[] azimuth) {
+        for (int b = c0; b < c1; b += BLOCK) {
+            int e = Math.min(c1, b + BLOCK);
+            outputArguments(b, e, devX, devZ, leanX, leanZ, lean, len, pose, azimuth);
+            poses(b, e, scale, poseMax, pose);
+            azimuths(b, e, devZ, leanZ, azimuth);
+        }
+    }
+
+    /** pose[c] := atan argument of the extra bend; azimuth[c] := atan argument of the half-angle azimuth. */
+    private static void outputArguments(int c0, int c1, float[] devX, float[] devZ, float[] leanX, float[] leanZ,
+                                        float[] lean, float[] len, float[] pose, float[] azimuth) {
+        for (int c = c0; c < c1; c++) { // |T|
+            float tx = leanX[c] + devX[c];
+            float tz = leanZ[c] + devZ[c];
+            azimuth[c] = (float) Math.sqrt(tx * tx + tz * tz);
+        }
+        for (int c = c0; c < c1; c++) { // extra bend: atan2(num, (|T| + l) length)
+            float x = devX[c];
+            float z = devZ[c];
+            float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+            pose[c] = Trig.poseArgument(num, (azimuth[c] + lean[c]) * len[c]);
+        }
+        for (int c = c0; c < c1; c++) { // azimuth: half angle about the z axis
+            azimuth[c] = Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], azimuth[c]);
+        }
+    }
+
+    private static void poses(int c0, int c1, float[] scale, float[] max, float[] pose) {
+        for (int c = c0; c < c1; c++) {
+            pose[c] = Math.max(0f, Math.min(max[c], Trig.poseAngle(pose[c]) * scale[c]));
+        }
+    }
+
+    private static void azimuths(int c0, int c1, float[] devZ, float[] leanZ, float[] azimuth) {
+        for (int c = c0; c < c1; c++) {
+            azimuth[c] = Trig.azimuth(leanZ[c] + devZ[c], azimuth[c]);
+        }
+    }
+
+    /**
+     * Pose coordinate of component c, in [0, K - 1] (scalar, the same operations as {@link #outputs},
+     * hence the same bits). Arrays as {@link #outputs}.
+     */
+    static float poseCoordinate(int c, float[] devX, float[] devZ, float[] leanX, float[] leanZ, float[] lean,
+                                float[] len, float[] scale, float[] poseMax) {
+        float x = devX[c];
+        float z = devZ[c];
+        float tx = leanX[c] + x;
+        float tz = leanZ[c] + z;
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+        float u = Trig.poseArgument(num, (t + lean[c]) * len[c]);
+        return Math.max(0f, Math.min(poseMax[c], Trig.poseAngle(u) * scale[c]));
+    }
+
+    /**
+     * Bend azimuth of component c, radians in [-pi, pi] (scalar, the same operations as
+     * {@link #outputs}). Arrays as {@link #outputs}.
+     */
+    static float azimuth(int c, float[] devX, float[] devZ, float[] leanX, float[] leanZ) {
+        float tx = leanX[c] + devX[c];
+        float tz = leanZ[c] + devZ[c];
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        return Trig.azimuth(leanZ[c] + devZ[c], Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], t));
+    }
+
+    /**
+     * Copies the outputs of plants [p0, p1) whose {@code outVersion} differs from {@code version}
+     * from before (runs of such plants at once), and brings their {@code outVersion} up to date.
+     *
+     * @param firstComponent per plant its first component, plus the total at the end
+     * @param version        per plant, the version of its current state
+     * @param outVersion     per plant, the version its outputs in poseOut/azimuthOut hold (updated)
+     */
+    static void copyStale(int p0, int p1, int[] firstComponent, long[] version, float[] poseOut,
+                          float[] azimuthOut, float[] poseBefore, float[] azimuthBefore, long[] outVersion) {
+        int q = p0;
+        while (q < p1) {
+            if (outVersion[q] == version[q]) {
+                q++;
+                continue;
+            }
+            int s = q;
+            while (q < p1 && outVersion[q] != version[q]) {
+                outVersion[q] = version[q];
+                q++;
+            }
+            copyBefore(firstComponent[s], firstComponent[q], poseOut, azimuthOut, poseBefore, azimuthBefore);
+        }
+    }
+
+    /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */
+    private static void copyBefore(int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
+                                   float[] azimuthBefore) {
+        if (poseBefore != poseOut) {
+            System.arraycopy(poseBefore, c0, poseOut, c0, c1 - c0);
+        }
+        if (azimuthBefore != azimuthOut) {
+            System.arraycopy(azimuthBefore, c0, azimuthOut, c0, c1 - c0);
+        }
+    }
+}
