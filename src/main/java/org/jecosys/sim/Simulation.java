@@ -34,8 +34,8 @@ import org.jecosys.wind.WindSource;
  * backlog beyond that is dropped (the meadow slows down rather than spiral). One fixed step:
  * <ol>
  * <li>the queued commands (flows, agents, mode, field, LOD) are applied;</li>
- * <li>the workers animate fixed chunks of plants from the force field's result for the end of this
- * step, writing the back frame;</li>
+ * <li>the workers animate fixed chunks of plants ({@code ChunkAnimator}) from the force field's result
+ * for the end of this step, writing the back frame;</li>
  * <li>at the same time the stepping thread advances the wind clock and updates the force field for
  * the end of the <em>next</em> step (visibility and LOD from the camera given now), so the field and
  * the animation run concurrently (§5.1) without either waiting for the other's data, then helps with
@@ -90,17 +90,7 @@ public final class Simulation implements AutoCloseable {
     private final FrameExchange exchange;
     private final WorkerPool pool;
     private final long[] workerIds;
-    private final int[] chunkFirstPlant;
-    private final int[] chunkCount;
-    private final boolean[] chunkAtRest;
-    /*
-     * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
-     * none). A plant whose outputs in the back frame are current is not written at all; stale ones
-     * are copied from the frame published last (always complete and current) unless updated now.
-     * Each entry is touched only by the worker running that plant's chunk in a step.
-     */
-    private final long[][] framePlantVersion;
-    private final Rng[] chunkRng;
+    private final ChunkAnimator chunkAnimator;
     private final float[][] windX = new float[2][];
     private final float[][] windZ = new float[2][];
     private final boolean[][] visible = new boolean[2][];
@@ -121,13 +111,6 @@ public final class Simulation implements AutoCloseable {
     private volatile long steppingThread = -1;
     private boolean closed;
     boolean stampFrames;
-
-    // read by the workers during a step (published by the pool's volatile generation)
-    private AnimationMode stepMode;
-    private Frame stepFrame;
-    private Frame stepBefore;
-    private int stepFrameIndex;
-    private int stepBuffer;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
         this.world = world;
@@ -187,15 +170,6 @@ public final class Simulation implements AutoCloseable {
         }
         first[plants] = comps;
         state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading);
-        chunkFirstPlant = chunks(first, plants, chunkComponents);
-        int chunks = chunkFirstPlant.length - 1;
-        chunkCount = new int[chunks];
-        chunkAtRest = new boolean[chunks];
-        framePlantVersion = new long[3][plants];
-        chunkRng = new Rng[chunks];
-        for (int c = 0; c < chunks; c++) {
-            chunkRng[c] = Rng.forStream(ad.seed(), c);
-        }
         for (int b = 0; b < 2; b++) {
             windX[b] = new float[plants];
             windZ[b] = new float[plants];
@@ -206,25 +180,10 @@ public final class Simulation implements AutoCloseable {
             Frame f = exchange.frame(i);
             state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
         }
-        pool = new WorkerPool("jecosys-anim", threads, chunks, new Chunks());
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, windX, windZ, visible, eye,
+                ad.seed());
+        pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
         workerIds = pool.threadIds();
-    }
-
-    private static int[] chunks(int[] first, int plants, int chunkComponents) {
-        int n = 0;
-        int[] tmp = new int[plants + 2];
-        tmp[n++] = 0;
-        int start = 0;
-        for (int p = 0; p < plants; p++) {
-            if (first[p + 1] - first[start] >= chunkComponents) {
-                tmp[n++] = p + 1;
-                start = p + 1;
-            }
-        }
-        if (tmp[n - 1] != plants) {
-            tmp[n++] = plants;
-        }
-        return java.util.Arrays.copyOf(tmp, n);
     }
 
     /**
@@ -309,11 +268,8 @@ public final class Simulation implements AutoCloseable {
             updateField(camera, current);
             primed = true;
         }
-        stepMode = mode;
-        stepBuffer = current;
-        stepFrame = exchange.back();
-        stepFrameIndex = exchange.backIndex();
-        stepBefore = exchange.lastPublished();
+        Frame f = exchange.back();
+        chunkAnimator.prepare(mode, current, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
         long t0 = System.nanoTime();
         pool.start();
         updateField(camera, 1 - current);
@@ -323,14 +279,9 @@ public final class Simulation implements AutoCloseable {
         current = 1 - current;
         steps++;
         time += fixedStep;
-        int animated = 0;
-        for (int c = 0; c < chunkCount.length; c++) {
-            animated += chunkCount[c];
-        }
-        Frame f = stepFrame;
         f.number = steps;
         f.time = time;
-        f.componentsAnimated = animated;
+        f.componentsAnimated = chunkAnimator.animated();
         f.fieldNanos = fieldNanos;
         f.animationNanos = animNanos;
         exchange.publish();
@@ -356,55 +307,6 @@ public final class Simulation implements AutoCloseable {
     private void drainCommands() {
         for (Runnable r = commands.poll(); r != null; r = commands.poll()) {
             r.run();
-        }
-    }
-
-    /** The work of one chunk, run by a worker. */
-    private final class Chunks implements WorkerPool.ChunkTask {
-        @Override
-        public void runChunk(int chunk) {
-            int p0 = chunkFirstPlant[chunk];
-            int p1 = chunkFirstPlant[chunk + 1];
-            AnimationMode m = stepMode;
-            boolean reset = false;
-            if (m == AnimationMode.STATIC) {
-                if (!chunkAtRest[chunk]) {
-                    state.resetToRest(p0, p1);
-                    chunkAtRest[chunk] = true;
-                    reset = true;
-                }
-            } else {
-                chunkAtRest[chunk] = false;
-            }
-            int b = stepBuffer;
-            double[] e = eye[b];
-            Frame f = stepFrame;
-            int c0 = state.firstComponent(p0);
-            int c1 = state.firstComponent(p1);
-            long[] written = framePlantVersion[stepFrameIndex];
-            if (stampFrames) {
-                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                        chunkRng[chunk]);
-                float s = (float) ((steps + 1) % 1_000_000);
-                java.util.Arrays.fill(f.poseCoord, c0, c1, s);
-                java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
-                java.util.Arrays.fill(written, p0, p1, -1L);
-            } else if (reset) {
-                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                        chunkRng[chunk]);
-                state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
-                for (int p = p0; p < p1; p++) {
-                    written[p] = state.version(p);
-                }
-            } else {
-                // outputs straight into the back frame for the updated plants; of the others only
-                // those whose outputs there are stale, copied from the frame published last
-                Frame before = stepBefore;
-                chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                        chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written);
-            }
-            System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
-            state.copyLevels(p0, p1, f.plantLevel);
         }
     }
 
@@ -526,7 +428,7 @@ public final class Simulation implements AutoCloseable {
 
     /** Fixed chunks of plants. Any thread. */
     public int chunks() {
-        return chunkCount.length;
+        return chunkAnimator.chunks();
     }
 
     /** The fixed step, seconds. Any thread. */

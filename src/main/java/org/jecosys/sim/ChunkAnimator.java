@@ -1,0 +1,164 @@
+package org.jecosys.sim;
+
+import org.jecosys.anim.AnimationMode;
+import org.jecosys.anim.AnimationState;
+import org.jecosys.math.Rng;
+
+/**
+ * The per-chunk work of {@link Simulation}'s fixed step, run by the workers: the fixed chunks of
+ * plants (about {@code chunkComponents} components each), one random stream per chunk, and the
+ * animation of a chunk into the back frame. {@link #prepare} sets one step's inputs on the stepping
+ * thread before the pool starts (the workers see them through the pool's volatile generation);
+ * {@link #runChunk} touches only its chunk's plants and components. Build time allocates; nothing
+ * after.
+ */
+final class ChunkAnimator implements WorkerPool.ChunkTask {
+    private final AnimationState state;
+    private final float[][] windX;
+    private final float[][] windZ;
+    private final boolean[][] visible;
+    private final double[][] eye;
+    private final int[] chunkFirstPlant;
+    private final int[] chunkCount;
+    private final boolean[] chunkAtRest;
+    /*
+     * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
+     * none). A plant whose outputs in the back frame are current is not written at all; stale ones
+     * are copied from the frame published last (always complete and current) unless updated now.
+     * Each entry is touched only by the worker running that plant's chunk in a step.
+     */
+    private final long[][] framePlantVersion;
+    private final Rng[] chunkRng;
+
+    // read by the workers during a step (published by the pool's volatile generation)
+    private AnimationMode stepMode;
+    private Frame stepFrame;
+    private Frame stepBefore;
+    private int stepFrameIndex;
+    private int stepBuffer;
+    private long stepNumber;
+    private boolean stamp;
+
+    /**
+     * Cuts the plants into chunks. Build time; allocates.
+     *
+     * @param first   per plant its first component, plus the total at the end
+     * @param windX   per buffer, per plant wind X (shared with the simulation, read here)
+     * @param windZ   per buffer, per plant wind Z
+     * @param visible per buffer, per plant visibility
+     * @param eye     per buffer, the eye (x, y, z)
+     * @param seed    the animation seed of the chunks' random streams
+     */
+    ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, float[][] windX,
+                  float[][] windZ, boolean[][] visible, double[][] eye, long seed) {
+        this.state = state;
+        this.windX = windX;
+        this.windZ = windZ;
+        this.visible = visible;
+        this.eye = eye;
+        chunkFirstPlant = chunks(first, plants, chunkComponents);
+        int chunks = chunkFirstPlant.length - 1;
+        chunkCount = new int[chunks];
+        chunkAtRest = new boolean[chunks];
+        framePlantVersion = new long[3][plants];
+        chunkRng = new Rng[chunks];
+        for (int c = 0; c < chunks; c++) {
+            chunkRng[c] = Rng.forStream(seed, c);
+        }
+    }
+
+    private static int[] chunks(int[] first, int plants, int chunkComponents) {
+        int n = 0;
+        int[] tmp = new int[plants + 2];
+        tmp[n++] = 0;
+        int start = 0;
+        for (int p = 0; p < plants; p++) {
+            if (first[p + 1] - first[start] >= chunkComponents) {
+                tmp[n++] = p + 1;
+                start = p + 1;
+            }
+        }
+        if (tmp[n - 1] != plants) {
+            tmp[n++] = plants;
+        }
+        return java.util.Arrays.copyOf(tmp, n);
+    }
+
+    /** Number of chunks. */
+    int chunks() {
+        return chunkCount.length;
+    }
+
+    /** Components animated in the last step, over all chunks. Stepping thread, after the pool's await. */
+    int animated() {
+        int animated = 0;
+        for (int c = 0; c < chunkCount.length; c++) {
+            animated += chunkCount[c];
+        }
+        return animated;
+    }
+
+    /**
+     * Sets the inputs of the next step; stepping thread, before the pool starts. No allocation.
+     *
+     * @param steps fixed steps run before this one
+     * @param stamp whether to stamp every component of the frame with its number (tests)
+     */
+    void prepare(AnimationMode mode, int buffer, Frame frame, int frameIndex, Frame before, long steps,
+                 boolean stamp) {
+        stepMode = mode;
+        stepBuffer = buffer;
+        stepFrame = frame;
+        stepFrameIndex = frameIndex;
+        stepBefore = before;
+        stepNumber = steps;
+        this.stamp = stamp;
+    }
+
+    /** The work of one chunk, run by a worker. */
+    @Override
+    public void runChunk(int chunk) {
+        int p0 = chunkFirstPlant[chunk];
+        int p1 = chunkFirstPlant[chunk + 1];
+        AnimationMode m = stepMode;
+        boolean reset = false;
+        if (m == AnimationMode.STATIC) {
+            if (!chunkAtRest[chunk]) {
+                state.resetToRest(p0, p1);
+                chunkAtRest[chunk] = true;
+                reset = true;
+            }
+        } else {
+            chunkAtRest[chunk] = false;
+        }
+        int b = stepBuffer;
+        double[] e = eye[b];
+        Frame f = stepFrame;
+        int c0 = state.firstComponent(p0);
+        int c1 = state.firstComponent(p1);
+        long[] written = framePlantVersion[stepFrameIndex];
+        if (stamp) {
+            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                    chunkRng[chunk]);
+            float s = (float) ((stepNumber + 1) % 1_000_000);
+            java.util.Arrays.fill(f.poseCoord, c0, c1, s);
+            java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
+            java.util.Arrays.fill(written, p0, p1, -1L);
+        } else if (reset) {
+            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                    chunkRng[chunk]);
+            state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
+            for (int p = p0; p < p1; p++) {
+                written[p] = state.version(p);
+            }
+        } else {
+            // outputs straight into the back frame for the updated plants; of the others only
+            // those whose outputs there are stale, copied from the frame published last
+            Frame before = stepBefore;
+            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
+                    chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written);
+        }
+        System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
+        state.copyLevels(p0, p1, f.plantLevel);
+    }
+}
