@@ -256,16 +256,9 @@ public final class Heightfield {
 
     /** Bilinear height at (x, z), metres; (x, z) clamped to the terrain. */
     public double height(double x, double z) {
-        double u = clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = clamp((z + sizeZ / 2) / cellZ, res - 1);
-        int i = Math.min((int) u, res - 2);
-        int j = Math.min((int) v, res - 2);
-        double fu = u - i;
-        double fv = v - j;
-        int k = j * res + i;
-        double a = heights[k] + (heights[k + 1] - heights[k]) * fu;
-        double b = heights[k + res] + (heights[k + res + 1] - heights[k + res]) * fu;
-        return a + (b - a) * fv;
+        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
+        return Grid.bilinear(heights, res, u, v);
     }
 
     /**
@@ -274,8 +267,8 @@ public final class Heightfield {
      * normals). (x, z) is clamped to the terrain.
      */
     public double slope(double x, double z) {
-        double u = clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = clamp((z + sizeZ / 2) / cellZ, res - 1);
+        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
         int i = Math.min((int) u, res - 2);
         int j = Math.min((int) v, res - 2);
         double fu = u - i;
@@ -293,8 +286,8 @@ public final class Heightfield {
 
     /** Writes the unit normal at (x, z) (bilinear blend of vertex normals) into dest; returns dest. */
     public Vector3f normal(double x, double z, Vector3f dest) {
-        double u = clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = clamp((z + sizeZ / 2) / cellZ, res - 1);
+        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
         int i = Math.min((int) u, res - 2);
         int j = Math.min((int) v, res - 2);
         double fu = u - i;
@@ -324,9 +317,5 @@ public final class Heightfield {
         int j0 = Math.max(0, j - 1);
         int j1 = Math.min(res - 1, j + 1);
         return (heights[j1 * res + i] - heights[j0 * res + i]) / ((j1 - j0) * cellZ);
-    }
-
-    private static double clamp(double u, double max) {
-        return u < 0 ? 0 : (u > max ? max : u);
     }
 }

@@ -185,16 +185,9 @@ public final class ResourceMap {
 
     /** Bilinear level at (x, z) between cell centres, clamped to the terrain. No allocation. */
     public double sample(double x, double z) {
-        double u = clampTo((x + sizeX / 2) / cellX - 0.5, res - 1);
-        double v = clampTo((z + sizeZ / 2) / cellZ - 0.5, res - 1);
-        int i = Math.min((int) u, res - 2);
-        int j = Math.min((int) v, res - 2);
-        double fu = u - i;
-        double fv = v - j;
-        int k = j * res + i;
-        double a = levels[k] + (levels[k + 1] - levels[k]) * fu;
-        double b = levels[k + res] + (levels[k + res + 1] - levels[k + res]) * fu;
-        return a + (b - a) * fv;
+        double u = Grid.clamp((x + sizeX / 2) / cellX - 0.5, res - 1);
+        double v = Grid.clamp((z + sizeZ / 2) / cellZ - 0.5, res - 1);
+        return Grid.bilinear(levels, res, u, v);
     }
 
     /**
@@ -274,10 +267,6 @@ public final class ResourceMap {
     private int cellIndex(double coord, double size, double cell) {
         int i = (int) Math.floor((coord + size / 2) / cell);
         return i < 0 ? 0 : (i >= res ? res - 1 : i);
-    }
-
-    private static double clampTo(double u, double max) {
-        return u < 0 ? 0 : (u > max ? max : u);
     }
 
     /** Linearly maps v's range onto [0, 1]; a constant array becomes all 1. */
