@@ -11,8 +11,10 @@ import org.joml.Vector3f;
 /**
  * The GL-free per-frame component pass of plant rendering: once per drawn component (not once per
  * vertex, as the vertex shader used to) it resolves everything the vertex shader needs into two
- * RGBA32F texels, so the shader does 2 + 6 texel fetches per vertex instead of walking the attachment
- * chain (up to 4 parents, each with slot, bend and two pose fetches) for every vertex.
+ * RGBA32F texels, so the shader does 2 + 6 texel fetches per vertex and no
+ * trigonometry, instead of walking the attachment chain (up to 4 parents, each with slot, bend and
+ * two pose fetches) for every vertex. The texel stride between poses (3 x points) is per slot and
+ * is baked into the mesh vertices instead.
  *
  * <p>Record of one component, 8 floats, in {@link PlantBatches#componentOffset} order (list after
  * list, plant after plant, slot after slot):
@@ -21,11 +23,11 @@ import org.joml.Vector3f;
  * ground offset, or the animated tip of its parent (which follows its own parent, ...), blended
  * between poses k and k + 1 and rotated by the parent's bend azimuth, exactly as before in the
  * shader;</li>
- * <li>the component's bend azimuth, radians;</li>
+ * <li>cos of the component's bend azimuth (so the vertex shader evaluates no trigonometry);</li>
  * <li>the pose-buffer texel of (pose k, point 0) of its pose table, an integer held exactly in a
  * float (checked &lt; 2^24 at construction);</li>
  * <li>the blend weight w toward pose k + 1;</li>
- * <li>the texel stride between poses (3 x points), an integer;</li>
+ * <li>sin of the component's bend azimuth;</li>
  * <li>the dither window of this level, packed {@code 256 lo + hi} with lo, hi in 0..255 (/255):
  * the shader keeps fragments with {@code lo <= bayer < hi} (see {@code plant.frag}).</li>
  * </ol>
@@ -125,8 +127,9 @@ public final class ComponentStream {
             int k = Math.min((int) coord, poses - 2);
             int stride = 3 * pt.points();
             int texel = poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)] + k * stride;
-            dest.put(px + bx).put(py + by).put(pz + bz).put(frame.bendAzimuth(comp))
-                    .put(texel).put(coord - k).put(stride).put(keep);
+            float a = frame.bendAzimuth(comp);
+            dest.put(px + bx).put(py + by).put(pz + bz).put((float) Math.cos(a))
+                    .put(texel).put(coord - k).put((float) Math.sin(a)).put(keep);
         }
     }
 

@@ -40,20 +40,25 @@ import org.lwjgl.system.MemoryUtil;
  * skeleton point) with one mesh per species and level (the component colour and the fraction along
  * the component baked into each vertex). Per frame, {@link #draw} uploads only per-instance data into
  * a preallocated buffer: the {@link ComponentStream} record (2 texels) of each drawn plant's
- * components, with the base already resolved on the CPU, then issues one instanced draw per species
- * and level (triangles near, lines far: Table 3).
+ * components, with the base and the cos/sin of the bend azimuth already resolved on the CPU, then
+ * issues one instanced draw per species and level (triangles near, lines far: Table 3). Triangle
+ * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
+ * the same vertices but skips the ribbon lighting and writes one flat colour per segment.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
  */
 public final class PlantRenderer implements AutoCloseable {
     private static final int MAX_LEVELS = 8;
+    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride. */
+    private static final int VERTEX_FLOATS = 9;
 
     private final World world;
     private final PlantBatches batches;
     private final ComponentStream stream;
     private final List<AutoCloseable> owned = new ArrayList<>();
     private final GlProgram program;
+    private final GlProgram lineProgram;
     private final GlBuffer poseBuffer;
     private final GlBufferTexture poseTexture;
     private final GlBuffer componentBuffer;
@@ -71,6 +76,13 @@ public final class PlantRenderer implements AutoCloseable {
     private final int uFogColour;
     private final int uFogStart;
     private final int uFogEnd;
+    private final int lViewProj;
+    private final int lEye;
+    private final int lSlotCount;
+    private final int lComponentBase;
+    private final int lFogColour;
+    private final int lFogStart;
+    private final int lFogEnd;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
@@ -91,6 +103,14 @@ public final class PlantRenderer implements AutoCloseable {
             if (m.levels() > MAX_LEVELS) {
                 throw new IllegalArgumentException("species '" + m.def().id() + "' has " + m.levels()
                         + " levels; the renderer supports at most " + MAX_LEVELS);
+            }
+            for (int slot = 0; slot < m.slotCount(); slot++) {
+                for (int v = 1; v < m.variants(); v++) {
+                    if (m.slotPoseTable(slot, v).points() != m.slotPoseTable(slot, 0).points()) {
+                        throw new IllegalArgumentException("species '" + m.def().id() + "' slot " + slot
+                                + ": pose tables of different variants differ in point count");
+                    }
+                }
             }
         }
         // pose tables: per species, per component type, per variant; 3 texels (12 floats) per point
@@ -116,6 +136,7 @@ public final class PlantRenderer implements AutoCloseable {
             checkTexels("pose tables", texels, Math.min(maxTexels, ComponentStream.MAX_EXACT));
             checkTexels("components", 2 * maxComponents, maxTexels);
             program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
+            lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
             poseBuffer = own(uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             staging = MemoryUtil.memAllocFloat((int) (ComponentStream.FLOATS * maxComponents));
@@ -153,6 +174,16 @@ public final class PlantRenderer implements AutoCloseable {
         uFogEnd = program.uniform("uFogEnd");
         glUniform1i(program.uniform("uPoses"), 0);
         glUniform1i(program.uniform("uComponents"), 1);
+        lineProgram.use();
+        lViewProj = lineProgram.uniform("uViewProj");
+        lEye = lineProgram.uniform("uEye");
+        lSlotCount = lineProgram.uniform("uSlotCount");
+        lComponentBase = lineProgram.uniform("uComponentBase");
+        lFogColour = lineProgram.uniform("uFogColour");
+        lFogStart = lineProgram.uniform("uFogStart");
+        lFogEnd = lineProgram.uniform("uFogEnd");
+        glUniform1i(lineProgram.uniform("uPoses"), 0);
+        glUniform1i(lineProgram.uniform("uComponents"), 1);
     }
 
     private <T extends AutoCloseable> T own(T resource) {
@@ -180,10 +211,13 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
-    /** One VAO (owning its vertex and index buffers) for a species' level: slot, point, a, b; colour, along. */
+    /**
+     * One VAO (owning its vertex and index buffers) for a species' level: slot, point, a, b; colour,
+     * along; pose stride (3 x points of the slot's pose table, the same for every variant).
+     */
     private GlVertexArray uploadMesh(GlTracker t, SpeciesModel m, LodMesh mesh) {
         int n = mesh.vertexCount();
-        FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(8, 8 * n));
+        FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
         IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
         try {
             for (int v = 0; v < n; v++) {
@@ -191,20 +225,23 @@ public final class PlantRenderer implements AutoCloseable {
                 Rgb rgb = m.component(m.slotComponent(slot)).def().colour();
                 int points = m.slotPoseTable(slot, 0).points();
                 fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
-                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1));
+                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
+                        .put(3 * points);
             }
             for (int i = 0; i < mesh.indexCount(); i++) {
                 iv.put(mesh.index(i));
             }
-            fv.position(0).limit(Math.max(8, 8 * n));
+            fv.position(0).limit(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
             iv.position(0).limit(Math.max(1, mesh.indexCount()));
             GlVertexArray vao = own(new GlVertexArray(t));
             vao.bind();
             own(GlBuffer.of(t, GL_ARRAY_BUFFER, fv, GL_STATIC_DRAW));
             glEnableVertexAttribArray(0);
-            glVertexAttribPointer(0, 4, GL_FLOAT, false, 32, 0);
+            glVertexAttribPointer(0, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 0);
             glEnableVertexAttribArray(1);
-            glVertexAttribPointer(1, 4, GL_FLOAT, false, 32, 16);
+            glVertexAttribPointer(1, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 16);
+            glEnableVertexAttribArray(2);
+            glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
             own(GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
             glBindVertexArray(0);
             return vao;
@@ -256,28 +293,43 @@ public final class PlantRenderer implements AutoCloseable {
         stream.write(batches, frame, camera.x(), camera.y(), camera.z(), componentStaging);
         componentBuffer.orphan();
         componentBuffer.upload(0, componentStaging);
-        program.use();
         camera.viewProjection(viewProj);
-        glUniformMatrix4fv(uViewProj, false, viewProj.get(matrix));
-        glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
+        viewProj.get(matrix);
+        float ex = (float) camera.x();
+        float ey = (float) camera.y();
+        float ez = (float) camera.z();
+        lineProgram.use();
+        glUniformMatrix4fv(lViewProj, false, matrix);
+        glUniform3f(lEye, ex, ey, ez);
+        glUniform3f(lFogColour, fog.r(), fog.g(), fog.b());
+        glUniform1f(lFogStart, fogStart);
+        glUniform1f(lFogEnd, fogEnd);
+        program.use();
+        glUniformMatrix4fv(uViewProj, false, matrix);
+        glUniform3f(uEye, ex, ey, ez);
         glUniform3f(uLightDir, lx, ly, lz);
         glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
         glUniform1f(uFogStart, fogStart);
         glUniform1f(uFogEnd, fogEnd);
         poseTexture.bind(0);
         componentTexture.bind(1);
+        boolean linesBound = false;
         for (int s = 0; s < batches.speciesCount(); s++) {
-            glUniform1i(uSlotCount, batches.slots(s));
             for (int l = 0, levels = batches.levels(s); l < levels; l++) {
                 int li = batches.list(s, l);
                 int n = batches.count(li);
                 if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0) {
                     continue;
                 }
-                glUniform1i(uComponentBase, batches.componentOffset(li));
+                boolean lines = batches.lines(li);
+                if (lines != linesBound) {
+                    (lines ? lineProgram : program).use();
+                    linesBound = lines;
+                }
+                glUniform1i(lines ? lSlotCount : uSlotCount, batches.slots(s));
+                glUniform1i(lines ? lComponentBase : uComponentBase, batches.componentOffset(li));
                 vaos[li].bind();
-                glDrawElementsInstanced(batches.lines(li) ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT,
-                        0L, n);
+                glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
                 draws++;
             }
         }

@@ -251,8 +251,8 @@ class RenderBenchmarkTest {
                                 pt.side(pose, point, side).lerp(pt.side(pose1, point, q), w);
                                 pt.normal(pose, point, nrm).lerp(pt.normal(pose1, point, q), w);
                                 p.fma(mesh.vertexA(k), side).fma(mesh.vertexB(k), nrm);
-                                float c = (float) Math.cos(rec.get(r + 3));
-                                float sn = (float) Math.sin(rec.get(r + 3));
+                                float c = rec.get(r + 3);
+                                float sn = rec.get(r + 6);
                                 v.put(rec.get(r) - world.plantX(p0) + p.x * c - p.z * sn)
                                         .put(rec.get(r + 1) - world.plantY(p0) + p.y)
                                         .put(rec.get(r + 2) - world.plantZ(p0) + p.x * sn + p.z * c);

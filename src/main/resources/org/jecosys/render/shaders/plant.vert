@@ -3,12 +3,14 @@
 // names a slot (component instance of the plant), a pose-table point and side/normal coefficients.
 // Per component, the CPU pass (ComponentStream) has already resolved the world position of the
 // component's base (the plant's base plus its ground offset, or the animated tip of its parent), its
-// bend azimuth, the pose-table texel of pose k, the blend weight toward k + 1 and this level's dither
-// window. The shader blends poses k and k + 1 of the point, rotates by the azimuth and adds the base:
-// 2 + 6 texel fetches per vertex.
+// bend azimuth as its cosine and sine, the pose-table texel of pose k, the blend weight toward k + 1
+// and this level's dither window. The shader blends poses k and k + 1 of the point, rotates by the
+// azimuth and adds the base: 2 + 6 texel fetches per vertex and no trigonometry. Line levels use
+// plant_line.vert instead.
 
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
 layout(location = 1) in vec4 aColour;           // component colour (linear 0..1), fraction along it
+layout(location = 2) in float aStride;          // texels between poses k and k + 1 of the slot (3 x points)
 
 uniform mat4 uViewProj;
 uniform vec3 uEye;
@@ -33,16 +35,16 @@ void main() {
     int slot = int(aVertex.x);
     int point = int(aVertex.y);
     int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 2;
-    vec4 c0 = texelFetch(uComponents, ci);       // base xyz, azimuth
-    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, pose stride, dither window
+    vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
+    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
     int t = int(c1.x + 0.5) + point * 3;
-    int u = t + int(c1.z + 0.5);
+    int u = t + int(aStride + 0.5);
     float w = c1.y;
     vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
     vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
-    float ca = cos(c0.w);
-    float sa = sin(c0.w);
+    float ca = c0.w;
+    float sa = c1.z;
     vec3 world = c0.xyz + rotY(p + aVertex.z * side + aVertex.w * normal, ca, sa);
     gl_Position = uViewProj * vec4(world, 1.0);
 

@@ -1,0 +1,26 @@
+#version 330 core
+// Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
+// L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
+// fragment is tested.
+// Line variant of plant.frag: one flat, fogged colour per segment from plant_line.vert.
+flat in vec3 vColour;
+flat in vec2 vKeep;
+out vec4 fragColour;
+
+// 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
+float bayer4(vec2 p) {
+    ivec2 q = ivec2(p) & 3;
+    int a = q.x ^ q.y;
+    int m = ((a & 1) << 3) | ((q.y & 1) << 2) | (a & 2) | ((q.y & 2) >> 1);
+    return (float(m) + 0.5) / 16.0;
+}
+
+void main() {
+    if (vKeep.x > 0.0 || vKeep.y < 1.0) {
+        float b = bayer4(gl_FragCoord.xy);
+        if (b < vKeep.x || b >= vKeep.y) {
+            discard;
+        }
+    }
+    fragColour = vec4(vColour, 1.0);
+}
