@@ -73,8 +73,8 @@ import org.lwjgl.system.MemoryUtil;
 class RenderBenchmarkTest {
     private static final int W = 1280;
     private static final int H = 720;
-    private static final int WARM = 4;
-    private static final int FRAMES = 32;
+    private static final int WARM = 30;
+    private static final int FRAMES = 64;
     private static final double DT = 1.0 / 30;
 
     private double cpuMs;
