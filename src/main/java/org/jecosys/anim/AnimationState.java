@@ -59,9 +59,7 @@ public final class AnimationState {
     private final float[] plantX;
     private final float[] plantY;
     private final float[] plantZ;
-    private final double[][] lodEdges;
-    private final double[][] lodEdges2;
-    private double lodScale = 1;
+    private final LodBands lod;
 
     /** Output ranges closer than this many components are merged (recomputing the gap is idempotent). */
     private static final int MERGE_GAP = 256;
@@ -110,7 +108,6 @@ public final class AnimationState {
     public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
                           float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, float[] restHeading) {
         this.kinds = Require.nonNull("kinds", kinds);
-        Require.nonNull("lodEdges", lodEdges);
         plants = Require.nonNull("plantSpecies", plantSpecies).length;
         if (firstComponent.length != plants + 1 || plantX.length != plants || plantY.length != plants
                 || plantZ.length != plants) {
@@ -127,14 +124,9 @@ public final class AnimationState {
         this.plantX = plantX.clone();
         this.plantY = plantY.clone();
         this.plantZ = plantZ.clone();
-        this.lodEdges = new double[lodEdges.length][];
-        this.lodEdges2 = new double[lodEdges.length][];
-        for (int s = 0; s < lodEdges.length; s++) {
-            this.lodEdges[s] = lodEdges[s].clone();
-            this.lodEdges2[s] = new double[lodEdges[s].length];
-        }
+        this.lod = new LodBands(lodEdges);
         for (int p = 0; p < plants; p++) {
-            Require.range("plantSpecies[" + p + "]", plantSpecies[p], 0, lodEdges.length - 1);
+            Require.range("plantSpecies[" + p + "]", plantSpecies[p], 0, lod.species() - 1);
             if (firstComponent[p + 1] < firstComponent[p]) {
                 throw new IllegalArgumentException("firstComponent must not decrease, at plant " + p);
             }
@@ -171,7 +163,6 @@ public final class AnimationState {
         pressZ = new float[plants];
         level = new byte[plants];
         plantVersion = new long[plants];
-        setLodScale(1);
         resetToRest(0, plants);
     }
 
@@ -202,19 +193,12 @@ public final class AnimationState {
      * @param scale in [0.01, 100]
      */
     public void setLodScale(double scale) {
-        Require.range("scale", scale, 0.01, 100);
-        lodScale = scale;
-        for (int s = 0; s < lodEdges.length; s++) {
-            for (int i = 0; i < lodEdges[s].length; i++) {
-                double d = lodEdges[s][i] * scale;
-                lodEdges2[s][i] = d * d;
-            }
-        }
+        lod.setScale(scale);
     }
 
     /** The level-of-detail distance scale. */
     public double lodScale() {
-        return lodScale;
+        return lod.scale();
     }
 
     /**
@@ -313,11 +297,7 @@ public final class AnimationState {
             double dy = plantY[p] - eyeY;
             double dz = plantZ[p] - eyeZ;
             double d2 = dx * dx + dy * dy + dz * dz;
-            double[] edges = lodEdges2[plantSpecies[p]];
-            int l = 0;
-            while (l < edges.length && d2 >= edges[l]) {
-                l++;
-            }
+            int l = lod.level(plantSpecies[p], d2);
             level[p] = (byte) l;
             if (!visible[p] || mode == AnimationMode.STATIC) {
                 continue;

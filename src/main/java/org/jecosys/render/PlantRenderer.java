@@ -68,21 +68,9 @@ public final class PlantRenderer implements AutoCloseable {
     private final FloatBuffer componentStaging;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
-    private final int uViewProj;
-    private final int uEye;
+    private final Uniforms triangleUniforms;
+    private final Uniforms lineUniforms;
     private final int uLightDir;
-    private final int uSlotCount;
-    private final int uComponentBase;
-    private final int uFogColour;
-    private final int uFogStart;
-    private final int uFogEnd;
-    private final int lViewProj;
-    private final int lEye;
-    private final int lSlotCount;
-    private final int lComponentBase;
-    private final int lFogColour;
-    private final int lFogStart;
-    private final int lFogEnd;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
@@ -163,27 +151,45 @@ public final class PlantRenderer implements AutoCloseable {
         }
         componentStaging = staging;
         matrix = mat;
-        program.use();
-        uViewProj = program.uniform("uViewProj");
-        uEye = program.uniform("uEye");
+        lineUniforms = new Uniforms(lineProgram);
+        triangleUniforms = new Uniforms(program);
         uLightDir = program.uniform("uLightDir");
-        uSlotCount = program.uniform("uSlotCount");
-        uComponentBase = program.uniform("uComponentBase");
-        uFogColour = program.uniform("uFogColour");
-        uFogStart = program.uniform("uFogStart");
-        uFogEnd = program.uniform("uFogEnd");
-        glUniform1i(program.uniform("uPoses"), 0);
-        glUniform1i(program.uniform("uComponents"), 1);
-        lineProgram.use();
-        lViewProj = lineProgram.uniform("uViewProj");
-        lEye = lineProgram.uniform("uEye");
-        lSlotCount = lineProgram.uniform("uSlotCount");
-        lComponentBase = lineProgram.uniform("uComponentBase");
-        lFogColour = lineProgram.uniform("uFogColour");
-        lFogStart = lineProgram.uniform("uFogStart");
-        lFogEnd = lineProgram.uniform("uFogEnd");
-        glUniform1i(lineProgram.uniform("uPoses"), 0);
-        glUniform1i(lineProgram.uniform("uComponents"), 1);
+    }
+
+    /**
+     * The uniforms the triangle and the line programs share; the constructor binds the two samplers
+     * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
+     */
+    private static final class Uniforms {
+        final int viewProj;
+        final int eye;
+        final int slotCount;
+        final int componentBase;
+        final int fogColour;
+        final int fogStart;
+        final int fogEnd;
+
+        Uniforms(GlProgram p) {
+            p.use();
+            viewProj = p.uniform("uViewProj");
+            eye = p.uniform("uEye");
+            slotCount = p.uniform("uSlotCount");
+            componentBase = p.uniform("uComponentBase");
+            fogColour = p.uniform("uFogColour");
+            fogStart = p.uniform("uFogStart");
+            fogEnd = p.uniform("uFogEnd");
+            glUniform1i(p.uniform("uPoses"), 0);
+            glUniform1i(p.uniform("uComponents"), 1);
+        }
+
+        /** Sets the per-frame values on the program in use. No allocation. */
+        void frame(FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start, float end) {
+            glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+            glUniform3f(eye, ex, ey, ez);
+            glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
+            glUniform1f(fogStart, start);
+            glUniform1f(fogEnd, end);
+        }
     }
 
     private <T extends AutoCloseable> T own(T resource) {
@@ -299,18 +305,10 @@ public final class PlantRenderer implements AutoCloseable {
         float ey = (float) camera.y();
         float ez = (float) camera.z();
         lineProgram.use();
-        glUniformMatrix4fv(lViewProj, false, matrix);
-        glUniform3f(lEye, ex, ey, ez);
-        glUniform3f(lFogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(lFogStart, fogStart);
-        glUniform1f(lFogEnd, fogEnd);
+        lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
         program.use();
-        glUniformMatrix4fv(uViewProj, false, matrix);
-        glUniform3f(uEye, ex, ey, ez);
+        triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
         glUniform3f(uLightDir, lx, ly, lz);
-        glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(uFogStart, fogStart);
-        glUniform1f(uFogEnd, fogEnd);
         poseTexture.bind(0);
         componentTexture.bind(1);
         boolean linesBound = false;
@@ -326,8 +324,9 @@ public final class PlantRenderer implements AutoCloseable {
                     (lines ? lineProgram : program).use();
                     linesBound = lines;
                 }
-                glUniform1i(lines ? lSlotCount : uSlotCount, batches.slots(s));
-                glUniform1i(lines ? lComponentBase : uComponentBase, batches.componentOffset(li));
+                Uniforms u = lines ? lineUniforms : triangleUniforms;
+                glUniform1i(u.slotCount, batches.slots(s));
+                glUniform1i(u.componentBase, batches.componentOffset(li));
                 vaos[li].bind();
                 glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
                 draws++;

@@ -1,0 +1,55 @@
+package org.jecosys.anim;
+
+import org.jecosys.math.Require;
+
+/**
+ * Per species, the distances where its levels of detail end (paper §4.1, Table 3), scaled by a
+ * LOD bias, kept squared for the per-plant test. One owner thread; {@link #level} allocates nothing.
+ */
+final class LodBands {
+    private final double[][] edges;
+    private final double[][] edges2;
+    private double scale = 1;
+
+    /** @param edges per species, the ascending distances (metres) where its levels end; copied */
+    LodBands(double[][] edges) {
+        Require.nonNull("lodEdges", edges);
+        this.edges = new double[edges.length][];
+        this.edges2 = new double[edges.length][];
+        for (int s = 0; s < edges.length; s++) {
+            this.edges[s] = edges[s].clone();
+            this.edges2[s] = new double[edges[s].length];
+        }
+        setScale(1);
+    }
+
+    int species() {
+        return edges.length;
+    }
+
+    /** Scales every distance, in [0.01, 100] (2 keeps detail twice as far). */
+    void setScale(double s) {
+        Require.range("scale", s, 0.01, 100);
+        scale = s;
+        for (int sp = 0; sp < edges.length; sp++) {
+            for (int i = 0; i < edges[sp].length; i++) {
+                double d = edges[sp][i] * s;
+                edges2[sp][i] = d * d;
+            }
+        }
+    }
+
+    double scale() {
+        return scale;
+    }
+
+    /** The level of a plant of {@code species} at squared distance {@code d2} from the eye (0 = nearest). */
+    int level(int species, double d2) {
+        double[] e = edges2[species];
+        int l = 0;
+        while (l < e.length && d2 >= e[l]) {
+            l++;
+        }
+        return l;
+    }
+}
