@@ -1,0 +1,232 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import java.nio.FloatBuffer;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.PoseTable;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.joml.Vector3f;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInstance;
+
+/**
+ * The per-frame component pass, without a GL context: every record is checked against an
+ * independent derivation from the world, the pose tables and the frame (C1, whose flowers carry a
+ * head and petals on the tip of their stalk).
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class ComponentStreamTest {
+    private static final int F = ComponentStream.FLOATS;
+    private World world;
+    private List<SpeciesModel> models;
+    private int[][][] poseTexel;
+    private PlantBatches batches;
+    private Frame frame;
+    private FloatBuffer rec;
+    private ViewCamera cam;
+
+    @BeforeAll
+    void build() {
+        world = RenderScenes.build(RenderScenes.load("c1.xml"));
+        models = world.plants().species();
+        // the pose buffer's layout as PlantRenderer builds it: species, component type, variant; 3 texels a point
+        poseTexel = new int[models.size()][][];
+        int texels = 0;
+        for (int s = 0; s < models.size(); s++) {
+            SpeciesModel m = models.get(s);
+            poseTexel[s] = new int[m.componentCount()][m.variants()];
+            for (int c = 0; c < m.componentCount(); c++) {
+                for (int v = 0; v < m.variants(); v++) {
+                    poseTexel[s][c][v] = texels;
+                    PoseTable pt = m.component(c).poseTable(v);
+                    texels += 3 * pt.poses() * pt.points();
+                }
+            }
+        }
+        // a frame with every component bent somewhere, some pose coordinates outside the table on purpose
+        frame = new Frame(world.plantCount(), world.componentCount());
+        SplittableRandom rnd = new SplittableRandom(7);
+        for (int c = 0; c < world.componentCount(); c++) {
+            float coord = (float) rnd.nextDouble(-1, 17); // C1's tables have 16 poses
+            frame.set(c, coord, (float) rnd.nextDouble(-Math.PI, Math.PI));
+        }
+        cam = new ViewCamera();
+        cam.setPosition(0, 6, 16);
+        cam.setOrientation(0, -Math.atan2(6, 16));
+        cam.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
+        batches = new PlantBatches(world, 1.0);
+        batches.update(cam);
+        rec = FloatBuffer.allocate((int) (F * batches.maxComponents()));
+        new ComponentStream(world, poseTexel).write(batches, frame, cam.x(), cam.y(), cam.z(), rec);
+    }
+
+    /** Record index of slot {@code slot} of the {@code i}-th plant of list {@code li}. */
+    private int record(int li, int i, int slot) {
+        int s = world.plantSpecies(batches.plant(li, i));
+        return F * (batches.componentOffset(li) + i * models.get(s).slotCount() + slot);
+    }
+
+    @Test
+    void oneRecordPerSlotOfEveryListedPlantInListOrder() {
+        int components = 0;
+        for (int li = 0; li < batches.listCount(); li++) {
+            assertEquals(components, batches.componentOffset(li), "list " + li);
+            for (int i = 0; i < batches.count(li); i++) {
+                components += models.get(world.plantSpecies(batches.plant(li, i))).slotCount();
+            }
+        }
+        assertTrue(batches.instances() > 20, "the view holds a good part of C1");
+        assertEquals(batches.components(), components);
+        assertEquals(F * components, rec.limit());
+    }
+
+    @Test
+    void poseTexelAndWeightGiveBackTheClampedPoseCoordinate() {
+        forEachRecord((li, i, slot, r) -> {
+            int p = batches.plant(li, i);
+            SpeciesModel m = models.get(world.plantSpecies(p));
+            int v = world.plantVariant(p);
+            PoseTable pt = m.slotPoseTable(slot, v);
+            int first = poseTexel[world.plantSpecies(p)][m.slotComponent(slot)][m.slotVariant(slot, v)];
+            int stride = 3 * pt.points();
+            float texel = rec.get(r + 4);
+            assertEquals(Math.rint(texel), texel, "a whole texel");
+            int k = ((int) texel - first) / stride;
+            assertEquals(first + k * stride, (int) texel, "texel of point 0 of a pose");
+            assertTrue(k >= 0 && k <= pt.poses() - 2, "pose k and k + 1 exist: k = " + k);
+            float w = rec.get(r + 5);
+            assertTrue(w >= 0 && w <= 1, "weight " + w);
+            float coord = frame.poseCoord(world.firstComponent(p) + slot);
+            float clamped = Math.max(0, Math.min(pt.poses() - 1, coord));
+            assertEquals(clamped, k + w, 1e-5, "k + w for coordinate " + coord);
+        });
+    }
+
+    @Test
+    void azimuthIsCarriedAsItsCosineAndSine() {
+        forEachRecord((li, i, slot, r) -> {
+            int c = world.firstComponent(batches.plant(li, i)) + slot;
+            float cos = rec.get(r + 3);
+            float sin = rec.get(r + 6);
+            assertEquals(1, cos * cos + sin * sin, 1e-6);
+            assertEquals(0, Math.IEEEremainder(Math.atan2(sin, cos) - frame.bendAzimuth(c), 2 * Math.PI), 1e-5);
+        });
+    }
+
+    @Test
+    void rootsStandOnTheirPlantAndChildrenOnTheirParentsAnimatedTip() {
+        int children = 0;
+        Vector3f a = new Vector3f();
+        Vector3f b = new Vector3f();
+        for (int li = 0; li < batches.listCount(); li++) {
+            for (int i = 0; i < batches.count(li); i++) {
+                int p = batches.plant(li, i);
+                SpeciesModel m = models.get(world.plantSpecies(p));
+                double rest = world.plantRestAzimuth(p);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    int r = record(li, i, slot);
+                    int parent = m.slotParent(slot);
+                    double ex;
+                    double ey;
+                    double ez;
+                    if (parent < 0) {
+                        // the plant's base plus its ground offset turned by the plant's rest azimuth
+                        double ox = m.slotBaseX(slot);
+                        double oz = m.slotBaseZ(slot);
+                        ex = world.plantX(p) + ox * Math.cos(rest) - oz * Math.sin(rest);
+                        ey = world.plantY(p);
+                        ez = world.plantZ(p) + ox * Math.sin(rest) + oz * Math.cos(rest);
+                    } else {
+                        // the parent's record: its base, plus its last point at (k, w) turned by its azimuth
+                        children++;
+                        int q = record(li, i, parent);
+                        PoseTable pt = m.slotPoseTable(parent, world.plantVariant(p));
+                        int first = poseTexel[world.plantSpecies(p)][m.slotComponent(parent)]
+                                [m.slotVariant(parent, world.plantVariant(p))];
+                        int k = ((int) rec.get(q + 4) - first) / (3 * pt.points());
+                        float w = rec.get(q + 5);
+                        int last = pt.points() - 1;
+                        pt.position(k, last, a).lerp(pt.position(k + 1, last, b), w);
+                        float c = rec.get(q + 3);
+                        float sn = rec.get(q + 6);
+                        ex = rec.get(q) + a.x * c - a.z * sn;
+                        ey = rec.get(q + 1) + a.y;
+                        ez = rec.get(q + 2) + a.x * sn + a.z * c;
+                    }
+                    String at = "plant " + p + " slot " + slot;
+                    assertEquals(ex, rec.get(r), 2e-5, at + " x");
+                    assertEquals(ey, rec.get(r + 1), 2e-5, at + " y");
+                    assertEquals(ez, rec.get(r + 2), 2e-5, at + " z");
+                }
+            }
+        }
+        assertTrue(children > 50, "C1's flowers put heads and petals on their stalks: " + children);
+    }
+
+    @Test
+    void theDitherWindowsOfALevelsPlantTileTheThresholdsWithoutOverlap() {
+        // at every distance, level l keeps [lo_l, hi_l) with hi_0 = 255, lo_last = 0 and lo_l = hi_(l+1):
+        // every fragment of a plant inside a band is drawn by exactly one of the two levels
+        for (int s = 0; s < batches.speciesCount(); s++) {
+            int levels = batches.levels(s);
+            double far = batches.edge(s, levels - 2) + 2;
+            for (double d = 0; d <= far; d += 0.01) {
+                int prevLo = -1;
+                for (int l = 0; l < levels; l++) {
+                    int keep = (int) ComponentStream.keep(batches, s, l, levels, d);
+                    int lo = keep / 256;
+                    int hi = keep % 256;
+                    String at = "species " + s + " level " + l + " at " + d + " m";
+                    assertTrue(lo <= hi, at + ": [" + lo + ", " + hi + ")");
+                    assertEquals(l == 0 ? 255 : prevLo, hi, at);
+                    prevLo = lo;
+                }
+                assertEquals(0, prevLo, "the last level keeps from 0");
+            }
+        }
+        // and the records carry the window of the plant's own distance
+        forEachRecord((li, i, slot, r) -> assertTrue(rec.get(r + 7) >= 0 && rec.get(r + 7) <= 256 * 255 + 255));
+    }
+
+    @Test
+    void writingAllocatesNothing() {
+        ComponentStream stream = new ComponentStream(world, poseTexel);
+        FloatBuffer dest = FloatBuffer.allocate(rec.capacity());
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long self = Thread.currentThread().getId();
+        int zeroWindows = 0;
+        for (int window = 0; window < 50 && zeroWindows < 2; window++) {
+            long before = mx.getThreadAllocatedBytes(self);
+            for (int k = 0; k < 200; k++) {
+                stream.write(batches, frame, cam.x(), cam.y(), cam.z(), dest);
+            }
+            long bytes = mx.getThreadAllocatedBytes(self) - before;
+            zeroWindows = bytes == 0 ? zeroWindows + 1 : 0;
+        }
+        assertEquals(2, zeroWindows, "two consecutive windows of 200 writes with no allocation after warm-up");
+        assertEquals(rec, dest, "the same records as the first stream's");
+    }
+
+    private interface RecordCheck {
+        void check(int list, int i, int slot, int at);
+    }
+
+    private void forEachRecord(RecordCheck check) {
+        for (int li = 0; li < batches.listCount(); li++) {
+            for (int i = 0; i < batches.count(li); i++) {
+                int slots = models.get(world.plantSpecies(batches.plant(li, i))).slotCount();
+                for (int slot = 0; slot < slots; slot++) {
+                    check.check(li, i, slot, record(li, i, slot));
+                }
+            }
+        }
+    }
+}
