@@ -52,22 +52,37 @@ import org.lwjgl.system.MemoryUtil;
  * scene's start camera, driven by the real {@link Simulation} (stepped 1/30 s per frame on its worker
  * threads): S1 = mode STATIC vs S3 = mode CONSTRAINT (Table 7), force field enabled vs disabled in
  * CONSTRAINT mode (Table 6), and the scene's frame against a bare instanced draw of the same geometry
- * in the same run. fps = frames / wall time with glFinish per frame; CPU ms = time in
- * SceneRenderer.render before glFinish (culling, component pass, upload, GL calls).
+ * in the same run.
  *
- * <p>Bare reference: after the scene's last frame, for every species and level list that frame drew,
+ * <p>Method. Every configuration (S1, S3 = field on, field off, render only, bare) is measured in
+ * many short rounds: in each round each configuration runs one block of one or two warm-up frames and
+ * a few timed frames, glFinish per frame, and the block order is rotated from round to round so that
+ * no configuration always comes first or follows the same neighbour. A frame's time is wall time from
+ * the step (if any) to the end of glFinish. Why short blocks: on this shared 2-CPU machine the same
+ * frame drawn again and again takes, say, 6.2 ms for half a second and then 9.4 ms for the next (the
+ * rasteriser's threads, the simulation's workers and the neighbours share two cores), so a block of a
+ * second or so lands on one such plateau by chance; blocks of a few frames, interleaved, give every
+ * configuration the same share of fast and slow stretches. A configuration's fps is 1000 / the median
+ * frame time over all its timed frames; a ratio is the median over rounds of the ratio of the two
+ * blocks' median frame times in the same round, reported with the first and third quartiles of the
+ * rounds. CPU ms = median time in SceneRenderer.render before glFinish in S3 frames (culling,
+ * component pass, upload, GL calls).
+ *
+ * <p>Bare reference: from one S3 frame after warm-up, for every species and level list that frame drew,
  * the real mesh of that level (same vertices, same index buffer, same primitive: triangles or lines)
  * posed as the list's first plant is in that frame, resolved once on the CPU into plain positions
  * relative to its base, drawn with one glDrawElementsInstanced per list with the list's plants' bases
  * as a per-instance offset; plus the scene's terrain mesh (same grid, same indices); one shader that
  * only transforms by the view-projection and writes a constant colour; same clear, same depth test,
  * same framebuffer. So: the same numbers of triangles and lines at the same places and sizes, with no
- * pose fetch, no animation, no lighting, no fog and no dither. Render-only fps (no simulation step) is
- * reported next to it, and a breakdown of the render-only frame (terrain only, plants only, per level,
- * per-frame CPU/upload only, tiny viewport for the vertex share, no dither band).
+ * pose fetch, no animation, no lighting, no fog and no dither. Render only = the scene renderer drawing
+ * the latest frame again, no step. A breakdown of the render-only frame follows (terrain only, plants
+ * only, per level, per-frame CPU/upload only, tiny viewport for the vertex share, no dither band), one
+ * block each.
  *
  * <p>Writes target/bench/render.md. Run with {@code mvn -B verify -Pbench
- * -Dtest=RenderBenchmarkTest -Dsurefire.failIfNoSpecifiedTests=false}. No timing assertions.
+ * -Dtest=RenderBenchmarkTest -Dsurefire.failIfNoSpecifiedTests=false}; {@code -Djecosys.renderRounds=N}
+ * changes the number of rounds (default 40, half for meadow). No timing assertions.
  */
 @Tag("benchmark")
 class RenderBenchmarkTest {
@@ -76,83 +91,130 @@ class RenderBenchmarkTest {
     private static final int WARM = 30;
     private static final int FRAMES = 64;
     private static final double DT = 1.0 / 30;
+    private static final int ROUNDS = Integer.getInteger("jecosys.renderRounds", 40);
 
-    private double cpuMs;
+    /** Configurations measured in rounds, in their first round's order. */
+    private static final String[] CONFIGS = {"S1", "S3", "field off", "render", "bare"};
+    private static final int S1 = 0;
+    private static final int S3 = 1;
+    private static final int OFF = 2;
+    private static final int RENDER = 3;
+    private static final int BARE = 4;
 
     @Test
     void renderBenchmark() throws Exception {
         StringBuilder md = new StringBuilder("# Rendering benchmark\n\n");
         StringBuilder parts = new StringBuilder();
         try (GlContext gl = GlContext.headless(false); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
-            md.append("GL: ").append(gl.describe()).append(", ").append(W).append('x').append(H)
-                    .append(", ").append(FRAMES).append(" frames after ").append(WARM).append(" warm-up, glFinish per frame, ")
-                    .append(Runtime.getRuntime().availableProcessors()).append(" CPUs. S1/S3/field columns: frames from ")
-                    .append("the real Simulation (1/30 s step per frame, start camera), step time included. Render fps: ")
-                    .append("the last S3 frame rendered again and again, no step. Bare: the same terrain mesh and the same ")
-                    .append("plant meshes (same triangles and lines, same sizes, at the drawn plants), pre-posed, ")
-                    .append("instanced, transform-only shader, constant colour, depth test on (see the class Javadoc).\n\n")
+            md.append("GL: ").append(gl.describe()).append(", ").append(W).append('x').append(H).append(", ")
+                    .append(Runtime.getRuntime().availableProcessors()).append(" CPUs. ").append(ROUNDS)
+                    .append(" rounds (meadow: ").append(rounds(true)).append("); per round and configuration one block of warm-up and timed frames (C1-C3: ")
+                    .append(blockWarm(false)).append(" + ").append(blockFrames(false)).append(", meadow: ")
+                    .append(blockWarm(true)).append(" + ").append(blockFrames(true))
+                    .append("), block order rotated each round, glFinish per frame. fps = 1000 / median frame ms; ")
+                    .append("ratio = median over rounds of the paired blocks' ratio [first, third quartile of the rounds]. ")
+                    .append("S1/S3/field off: frames from the real Simulation (1/30 s step per frame, start camera), ")
+                    .append("step time included; field on is S3. Render: the latest frame drawn again, no step. ")
+                    .append("Bare: the same terrain mesh and the same plant meshes (same triangles and lines, same ")
+                    .append("sizes, at the drawn plants), pre-posed, instanced, transform-only shader, constant colour, ")
+                    .append("depth test on (see the class Javadoc). Step ms: median wall time of Simulation.step in ")
+                    .append("those frames; 'from step ms' = (render ms + step ms of the reference) / (render ms + step ms ")
+                    .append("of S3): the ratio if the step were the only difference between the frames (it runs before the draw, with the rasteriser idle).\n\n")
                     .append("| scene | plants | triangles | lines | S1 static fps | S3 animated fps | S3/S1 | field off fps")
-                    .append(" | field on fps | on/off | CPU ms/frame | render fps | bare fps | S3/bare | render/bare |\n")
-                    .append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-            parts.append("\n## Where a frame's time goes (render only, ms per frame)\n\n")
+                    .append(" | on/off | CPU ms/frame | step ms S1 / S3 / off | S3/S1, on/off from step ms")
+                    .append(" | render fps | bare fps | S3/bare | render/bare |\n")
+                    .append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+            parts.append("\n## Where a frame's time goes (render only, ms per frame, one block of ").append(FRAMES)
+                    .append(" frames after ").append(WARM).append(")\n\n")
                     .append("| scene | full | clear only | terrain only | plants only | plants CPU+upload, no draw |")
-                    .append(" plants by level (L0/L1/L2/L3) | full, 16x9 viewport | full, no dither band | bare | bare 16x9 |\n")
-                    .append("|---|---|---|---|---|---|---|---|---|---|---|\n");
+                    .append(" plants by level (L0/L1/L2/L3) | full, 16x9 viewport | full, no dither band | bare 16x9 |\n")
+                    .append("|---|---|---|---|---|---|---|---|---|---|\n");
             for (String name : List.of("c1.xml", "c2.xml", "c3.xml", "meadow.xml")) {
                 SceneDef def = RenderScenes.load(name);
                 World world = RenderScenes.build(def);
                 ViewCamera cam = RenderScenes.camera(def, world, W, H);
+                boolean big = world.plantCount() > 1000;
                 try (Simulation sim = Simulation.of(world, def.simulationDef(), 0);
                      SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
                     fb.bind();
-                    sim.setFieldEnabled(true);
-                    sim.setMode(AnimationMode.STATIC);
-                    double s1 = fps(r, sim, cam);
                     sim.setMode(AnimationMode.CONSTRAINT);
-                    double s3 = fps(r, sim, cam);
-                    double cpu = cpuMs;
-                    sim.setFieldEnabled(false);
-                    double off = fps(r, sim, cam);
                     sim.setFieldEnabled(true);
-                    double on = fps(r, sim, cam);
+                    long[] cpu = new long[2]; // render CPU, step
+                    Runnable stepAndRender = () -> {
+                        long s0 = System.nanoTime();
+                        sim.step(DT, cam);
+                        cpu[1] = System.nanoTime() - s0;
+                        long c0 = System.nanoTime();
+                        r.render(sim.latestFrame(), cam, W, H);
+                        cpu[0] = System.nanoTime() - c0;
+                    };
+                    for (int i = 0; i < WARM; i++) {
+                        stepAndRender.run();
+                        glFinish();
+                    }
                     long tri = r.triangles();
                     long lines = r.lines();
-                    Frame frame = sim.latestFrame();
-                    double full = ms(r, frame, cam, W, H);
-                    double bareMs;
-                    double bareTiny;
-                    try (Bare bare = new Bare(gl, world, r.plants().batches(), frame, cam)) {
+                    try (Bare bare = new Bare(gl, world, r.plants().batches(), sim.latestFrame(), cam)) {
                         assertEquals(tri, bare.triangles);
                         assertEquals(lines, bare.lines);
-                        bareMs = bare.ms(W, H);
-                        bareTiny = bare.ms(16, 9);
+                        Runnable[] setup = {
+                            () -> sim.setMode(AnimationMode.STATIC),
+                            () -> {
+                                sim.setMode(AnimationMode.CONSTRAINT);
+                                sim.setFieldEnabled(true);
+                            },
+                            () -> {
+                                sim.setMode(AnimationMode.CONSTRAINT);
+                                sim.setFieldEnabled(false);
+                            },
+                            () -> {
+                                sim.setMode(AnimationMode.CONSTRAINT);
+                                sim.setFieldEnabled(true);
+                                sim.step(DT, cam); // an animated frame to draw again and again
+                            },
+                            () -> { },
+                        };
+                        Runnable[] frame = {stepAndRender, stepAndRender, stepAndRender,
+                            () -> r.render(sim.latestFrame(), cam, W, H), () -> bare.draw(W, H)};
+                        Rounds m = new Rounds(CONFIGS.length, rounds(big), blockFrames(big));
+                        double[] cpuMs = new double[rounds(big) * blockFrames(big)];
+                        int cpuN = 0;
+                        double[][] stepMs = new double[OFF + 1][rounds(big) * blockFrames(big)];
+                        int[] stepN = new int[OFF + 1];
+                        for (int round = 0; round < rounds(big); round++) {
+                            for (int k = 0; k < CONFIGS.length; k++) {
+                                int c = (k + round) % CONFIGS.length;
+                                setup[c].run();
+                                for (int i = 0; i < blockWarm(big); i++) {
+                                    frame[c].run();
+                                    glFinish();
+                                }
+                                for (int i = 0; i < blockFrames(big); i++) {
+                                    long t0 = System.nanoTime();
+                                    frame[c].run();
+                                    glFinish();
+                                    m.add(c, round, (System.nanoTime() - t0) / 1e6);
+                                    if (c == S3) {
+                                        cpuMs[cpuN++] = cpu[0] / 1e6;
+                                    }
+                                    if (c <= OFF) {
+                                        stepMs[c][stepN[c]++] = cpu[1] / 1e6;
+                                    }
+                                }
+                            }
+                        }
+                        double step1 = median(stepMs[S1], stepN[S1]);
+                        double step3 = median(stepMs[S3], stepN[S3]);
+                        double stepOff = median(stepMs[OFF], stepN[OFF]);
+                        double renderMs = 1000 / m.fps(RENDER);
+                        md.append(String.format("| %s | %d | %d | %d | %.1f | %.1f | %s | %.1f | %s | %.1f | %.3f / %.3f / %.3f | %.2f / %.2f | %.1f | %.1f | %s | %s |%n",
+                                def.name(), world.plantCount(), tri, lines, m.fps(S1), m.fps(S3), m.ratio(S1, S3),
+                                m.fps(OFF), m.ratio(OFF, S3), median(cpuMs, cpuN), step1, step3, stepOff,
+                                (renderMs + step1) / (renderMs + step3), (renderMs + stepOff) / (renderMs + step3),
+                                m.fps(RENDER), m.fps(BARE), m.ratio(BARE, S3), m.ratio(BARE, RENDER)));
+                        double bareTiny = bare.ms(16, 9);
+                        parts.append(breakdown(def.name(), r, sim.latestFrame(), cam)).append(String.format(" %.1f |%n", bareTiny));
                     }
-                    double tiny = ms(r, frame, cam, 16, 9);
-                    r.drawPlants = false;
-                    r.drawTerrain = false;
-                    double clear = ms(r, frame, cam, W, H);
-                    r.drawTerrain = true;
-                    double terrain = ms(r, frame, cam, W, H);
-                    r.drawTerrain = false;
-                    r.drawPlants = true;
-                    double plants = ms(r, frame, cam, W, H);
-                    r.plants().levelMask = 0;
-                    double upload = ms(r, frame, cam, W, H);
-                    StringBuilder byLevel = new StringBuilder();
-                    for (int l = 0; l < 4; l++) {
-                        r.plants().levelMask = 1 << l;
-                        byLevel.append(l == 0 ? "" : " / ").append(String.format("%.1f", ms(r, frame, cam, W, H)));
-                    }
-                    r.plants().levelMask = ~0;
-                    r.drawTerrain = true;
-                    r.settings().lodTransition(0);
-                    double noBand = ms(r, frame, cam, W, H);
-                    double bare = 1000 / bareMs;
-                    md.append(String.format("| %s | %d | %d | %d | %.1f | %.1f | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.1f | %.2f | %.2f |%n",
-                            def.name(), world.plantCount(), tri, lines, s1, s3, s3 / s1, off, on, on / off, cpu,
-                            1000 / full, bare, s3 / bare, 1000 / full / bare));
-                    parts.append(String.format("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %s | %.1f | %.1f | %.1f | %.1f |%n",
-                            def.name(), full, clear, terrain, plants, upload, byLevel, tiny, noBand, bareMs, bareTiny));
                 }
                 assertEquals(0, gl.tracker().live() - 3);
             }
@@ -164,23 +226,101 @@ class RenderBenchmarkTest {
         System.out.println(md);
     }
 
-    private double fps(SceneRenderer r, Simulation sim, ViewCamera cam) {
-        long t0 = 0;
-        long cpu = 0;
-        for (int i = 0; i < WARM + FRAMES; i++) {
-            if (i == WARM) {
-                t0 = System.nanoTime();
-                cpu = 0;
-            }
-            sim.step(DT, cam);
-            Frame frame = sim.latestFrame();
-            long c0 = System.nanoTime();
-            r.render(frame, cam, W, H);
-            cpu += System.nanoTime() - c0;
-            glFinish();
+    private static int blockWarm(boolean big) {
+        return big ? 1 : 2;
+    }
+
+    private static int blockFrames(boolean big) {
+        return big ? 3 : 8;
+    }
+
+    private static int rounds(boolean big) {
+        return big ? ROUNDS / 2 : ROUNDS;
+    }
+
+    /** The breakdown row of the render-only frame, less its last cell. Leaves the renderer as found. */
+    private static String breakdown(String name, SceneRenderer r, Frame frame, ViewCamera cam) {
+        double full = ms(r, frame, cam, W, H);
+        double tiny = ms(r, frame, cam, 16, 9);
+        r.drawPlants = false;
+        r.drawTerrain = false;
+        double clear = ms(r, frame, cam, W, H);
+        r.drawTerrain = true;
+        double terrain = ms(r, frame, cam, W, H);
+        r.drawTerrain = false;
+        r.drawPlants = true;
+        double plants = ms(r, frame, cam, W, H);
+        r.plants().levelMask = 0;
+        double upload = ms(r, frame, cam, W, H);
+        StringBuilder byLevel = new StringBuilder();
+        for (int l = 0; l < 4; l++) {
+            r.plants().levelMask = 1 << l;
+            byLevel.append(l == 0 ? "" : " / ").append(String.format("%.1f", ms(r, frame, cam, W, H)));
         }
-        cpuMs = cpu / 1e6 / FRAMES;
-        return FRAMES / ((System.nanoTime() - t0) / 1e9);
+        r.plants().levelMask = ~0;
+        r.drawTerrain = true;
+        double band = r.settings().lodTransition();
+        r.settings().lodTransition(0);
+        double noBand = ms(r, frame, cam, W, H);
+        r.settings().lodTransition(band);
+        return String.format("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %s | %.1f | %.1f |",
+                name, full, clear, terrain, plants, upload, byLevel, tiny, noBand);
+    }
+
+    /** Median of the first {@code n} values (sorts them). */
+    static double median(double[] v, int n) {
+        java.util.Arrays.sort(v, 0, n);
+        return n % 2 == 1 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+    }
+
+    /** Frame times of several configurations over several rounds, and the medians and ratios the report quotes. */
+    static final class Rounds {
+        private final double[][][] ms; // config, round, frame
+        private final int[][] n;
+
+        Rounds(int configs, int rounds, int frames) {
+            ms = new double[configs][rounds][frames];
+            n = new int[configs][rounds];
+        }
+
+        void add(int config, int round, double frameMs) {
+            ms[config][round][n[config][round]++] = frameMs;
+        }
+
+        /** Median frame time of one block, ms. */
+        double blockMs(int config, int round) {
+            return median(ms[config][round].clone(), n[config][round]);
+        }
+
+        /** 1000 / the median over all of a configuration's timed frames. */
+        double fps(int config) {
+            int total = 0;
+            double[] all = new double[ms[config].length * ms[config][0].length];
+            for (int r = 0; r < ms[config].length; r++) {
+                System.arraycopy(ms[config][r], 0, all, total, n[config][r]);
+                total += n[config][r];
+            }
+            return 1000 / median(all, total);
+        }
+
+        /**
+         * The median over rounds of (block time of {@code slower} / block time of {@code faster}), i.e. the
+         * fps of {@code faster} relative to {@code slower}, with the rounds' first and third quartiles.
+         */
+        double[] ratios(int reference, int config) {
+            double[] q = new double[ms[config].length];
+            for (int r = 0; r < q.length; r++) {
+                q[r] = blockMs(reference, r) / blockMs(config, r);
+            }
+            java.util.Arrays.sort(q);
+            return new double[] {median(q.clone(), q.length), q[q.length / 4], q[(3 * q.length) / 4]};
+        }
+
+        /** fps of {@code config} over fps of {@code reference}, formatted "median [low, high]". */
+        String ratio(int reference, int config) {
+            double[] q = ratios(reference, config);
+            return String.format("%.2f [%.2f, %.2f]", q[0], q[1], q[2]);
+        }
     }
 
     /** Milliseconds per render-only frame of {@code frame} over a {@code w x h} viewport. */
@@ -202,12 +342,13 @@ class RenderBenchmarkTest {
         private final List<int[]> draws = new ArrayList<>(); // vao index, primitive, index count, instances
         private final List<GlVertexArray> vaos = new ArrayList<>();
         private final GlProgram prog;
-        private final ViewCamera cam;
+        private final FloatBuffer viewProj = MemoryUtil.memAllocFloat(16);
         long triangles;
         long lines;
+        private boolean freed;
 
         Bare(GlContext gl, World world, PlantBatches b, Frame frame, ViewCamera cam) {
-            this.cam = cam;
+            cam.viewProjection(new Matrix4f()).get(viewProj);
             GlTracker t = gl.tracker();
             prog = own(new GlProgram(t, "bare.vert", "bare.frag"));
             List<SpeciesModel> models = world.plants().species();
@@ -345,30 +486,33 @@ class RenderBenchmarkTest {
             draws.add(new int[] {primitive, count, instances});
         }
 
-        /** Milliseconds per bare frame over a {@code w x h} viewport. */
-        double ms(int w, int h) {
+        /** One bare frame over a {@code w x h} viewport: clear, the draws, glFinish left to the caller. */
+        void draw(int w, int h) {
             prog.use();
-            FloatBuffer m = MemoryUtil.memAllocFloat(16);
-            glUniformMatrix4fv(prog.uniform("uViewProj"), false, cam.viewProjection(new Matrix4f()).get(m));
-            MemoryUtil.memFree(m);
+            glUniformMatrix4fv(prog.uniform("uViewProj"), false, viewProj);
             glViewport(0, 0, w, h);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LEQUAL);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            for (int d = 0; d < draws.size(); d++) {
+                int[] dr = draws.get(d);
+                vaos.get(d).bind();
+                glDrawElementsInstanced(dr[0], dr[1], GL_UNSIGNED_INT, 0L, dr[2]);
+            }
+            glDisable(GL_DEPTH_TEST);
+            glBindVertexArray(0);
+        }
+
+        /** Milliseconds per bare frame over a {@code w x h} viewport, one block. */
+        double ms(int w, int h) {
             long t0 = 0;
             for (int i = 0; i < WARM + FRAMES; i++) {
                 if (i == WARM) {
                     t0 = System.nanoTime();
                 }
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                for (int d = 0; d < draws.size(); d++) {
-                    int[] dr = draws.get(d);
-                    vaos.get(d).bind();
-                    glDrawElementsInstanced(dr[0], dr[1], GL_UNSIGNED_INT, 0L, dr[2]);
-                }
+                draw(w, h);
                 glFinish();
             }
-            glDisable(GL_DEPTH_TEST);
-            glBindVertexArray(0);
             return (System.nanoTime() - t0) / 1e6 / FRAMES;
         }
 
@@ -376,6 +520,10 @@ class RenderBenchmarkTest {
         public void close() {
             PlantRenderer.closeReverse(owned);
             owned.clear();
+            if (!freed) {
+                freed = true;
+                MemoryUtil.memFree(viewProj);
+            }
         }
     }
 }
