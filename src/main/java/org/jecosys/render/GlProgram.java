@@ -1,6 +1,8 @@
 package org.jecosys.render;
 
+import static org.lwjgl.opengl.GL11C.glGetInteger;
 import static org.lwjgl.opengl.GL20C.GL_COMPILE_STATUS;
+import static org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM;
 import static org.lwjgl.opengl.GL20C.GL_FRAGMENT_SHADER;
 import static org.lwjgl.opengl.GL20C.GL_LINK_STATUS;
 import static org.lwjgl.opengl.GL20C.GL_VERTEX_SHADER;
@@ -107,6 +109,10 @@ public final class GlProgram extends GlResource {
 
     @Override
     void delete(int name) {
+        // a program in use is only flagged for deletion and lives on until another is used: leave none in use
+        if (glGetInteger(GL_CURRENT_PROGRAM) == name) {
+            glUseProgram(0);
+        }
         glDeleteProgram(name);
     }
 }

@@ -6,9 +6,14 @@ import static org.lwjgl.opengl.GL30C.glGenVertexArrays;
 
 /** A vertex array object. Render thread only. */
 public final class GlVertexArray extends GlResource {
-    /** Creates an empty vertex array. */
+    /**
+     * Creates an empty vertex array, bound once so that it exists for the driver at once (a name from
+     * glGenVertexArrays is only reserved until its first bind); leaves no vertex array bound.
+     */
     public GlVertexArray(GlTracker tracker) {
         super(tracker, glGenVertexArrays());
+        glBindVertexArray(id());
+        glBindVertexArray(0);
     }
 
     /** Binds it. */

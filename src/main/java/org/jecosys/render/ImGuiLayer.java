@@ -11,7 +11,8 @@ import imgui.internal.ImGuiContext;
  * ({@code installGlfw}), input and display size come from GLFW; headless (tests), the caller gives
  * the display size and no input. Panels are built between {@link #begin} and {@link #end} with the
  * plain {@code ImGui.*} calls. The GL3 backend's own GL objects (font texture, program, buffers) are
- * released by {@link #close()} (idempotent); they are not counted by {@link GlTracker}.
+ * released by {@link #close()} (idempotent); {@link GlTracker} does not see them (the tests count them
+ * by asking the driver about every name, and check that closing releases them all).
  */
 public final class ImGuiLayer implements AutoCloseable {
     private final ImGuiContext context;

@@ -277,7 +277,11 @@ class RenderC1Test {
     void theImGuiPanelRenders() {
         ViewCamera cam = cameraAt(grassPlant(), 1.5);
         render(TestFrames.rest(world), cam, other);
+        GlCensus before = GlCensus.take();
+        GlCensus during;
+        ImGuiLayer closed;
         try (ImGuiLayer ui = new ImGuiLayer(gl, 0)) {
+            closed = ui;
             for (int i = 0; i < 2; i++) {
                 fb.bind();
                 renderer.render(TestFrames.rest(world), cam, W, H);
@@ -291,7 +295,16 @@ class RenderC1Test {
                 ui.end();
             }
             Pixels.read(W, H, px);
+            during = GlCensus.take().minus(before);
         }
+        // the backend's own GL objects, which GlTracker does not see: counted by asking the driver
+        assertTrue(during.textures() >= 1, "ImGui's font atlas: " + during);
+        assertTrue(during.programs() >= 1, "ImGui's program: " + during);
+        assertTrue(during.buffers() >= 2, "ImGui's vertex and index buffers: " + during);
+        assertEquals(before, GlCensus.take(), "closing the ImGui layer releases every GL object it made (it had "
+                + during + ")");
+        closed.close(); // idempotent
+        assertEquals(before, GlCensus.take());
         // the panel covers the top-left corner
         int changed = 0;
         for (int y = H - 120; y < H - 20; y++) {

@@ -85,6 +85,27 @@ class RenderResourcesTest {
     }
 
     @Test
+    void everyGlObjectTheRendererMakesIsTrackedAndReleased() {
+        // the driver's own count of live objects, whoever made them, against GlTracker's
+        GlCensus before = GlCensus.take();
+        int tracked = gl.tracker().live();
+        GlCensus during;
+        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings());
+             FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
+            fb.bind();
+            r.render(TestFrames.wind(world, 0.5), camera, W, H);
+            during = GlCensus.take().minus(before);
+            assertTrue(during.total() > 10, "objects: " + during);
+            assertEquals(gl.tracker().live() - tracked, during.total(),
+                    "every object made is a tracked Gl* wrapper (no stray shader or buffer): " + during);
+            assertEquals(0, during.shaders(), "shaders are deleted once linked");
+        }
+        assertEquals(tracked, gl.tracker().live());
+        assertEquals(before, GlCensus.take(), "closing released every object the driver knows of (there were "
+                + during + ")");
+    }
+
+    @Test
     void renderingAllocatesNothingAfterWarmUp() {
         Frame[] frames = new Frame[4];
         for (int i = 0; i < frames.length; i++) {
