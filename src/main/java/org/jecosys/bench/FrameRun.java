@@ -43,39 +43,72 @@ final class FrameRun {
     }
 
     /**
-     * Runs {@code warm + frames} frames and keeps the last {@code frames}.
+     * Runs every configuration {@code warm + frames} frames, interleaved, and keeps each one's last
+     * {@code frames}. Configuration c is mode {@code modes[c]} with the field {@code fields[c]}, in its
+     * own {@link Simulation} on the shared (immutable) world, walking the same camera path from time 0,
+     * so frame i of every configuration sees the same camera. The configurations take turns in blocks
+     * of {@code block} frames, the turn order rotated by one each round: on a shared machine the speed
+     * of the same work drifts over seconds (other processes, the GL rasteriser's threads), and running
+     * one configuration after the other would give each a different share of fast and slow stretches;
+     * in turns they get the same share, so their ratios (Tables 6 and 7) compare like with like.
      *
+     * @param block    frames per turn, &gt;= 1 (a few for rendered frames; hundreds for simulation-only
+     *                 frames, whose state would otherwise leave the caches at every turn)
      * @param gl       the context to render with, or null for simulation only
      * @param renderer the scene's renderer (with gl), or null
      */
-    static FrameRun measure(SceneDef scene, World world, AnimationMode mode, boolean field, int warm, int frames,
-                            GlContext gl, SceneRenderer renderer, int width, int height) {
-        FrameRun r = new FrameRun(frames);
-        try (Simulation sim = Simulation.of(world, variant(scene, mode, field), 0)) {
+    static FrameRun[] measure(SceneDef scene, World world, AnimationMode[] modes, boolean[] fields, int warm,
+                              int frames, int block, GlContext gl, SceneRenderer renderer, int width, int height) {
+        int n = modes.length;
+        FrameRun[] runs = new FrameRun[n];
+        Simulation[] sims = new Simulation[n];
+        try {
+            for (int c = 0; c < n; c++) {
+                runs[c] = new FrameRun(frames);
+                sims[c] = Simulation.of(world, variant(scene, modes[c], fields[c]), 0);
+            }
             CameraWalk walk = new CameraWalk(scene.camera(), world.terrain().heightfield(), width / (double) height);
-            for (int k = 0; k < warm + frames; k++) {
-                ViewCamera cam = walk.at(sim.time());
-                long t0 = System.nanoTime();
-                sim.stepFixed(cam);
-                Frame frame = sim.latestFrame();
-                if (renderer != null) {
-                    renderer.render(frame, cam, width, height);
-                    gl.finish();
-                }
-                long t1 = System.nanoTime();
-                int i = k - warm;
-                if (i >= 0) {
-                    r.frameMs[i] = (t1 - t0) / 1e6;
-                    r.fieldMs[i] = frame.fieldNanos() / 1e6;
-                    r.componentsAnimated += frame.componentsAnimated() / (double) frames;
-                    if (renderer != null) {
-                        r.triangles += renderer.triangles() / (double) frames;
-                        r.lines += renderer.lines() / (double) frames;
+            int[] done = new int[n];
+            int total = warm + frames;
+            for (int round = 0; done[n - 1] < total; round++) { // every configuration runs total frames
+                for (int j = 0; j < n; j++) {
+                    int c = (j + round) % n;
+                    for (int b = 0; b < block && done[c] < total; b++) {
+                        frame(sims[c], walk, runs[c], done[c]++ - warm, frames, gl, renderer, width, height);
                     }
                 }
             }
+        } finally {
+            for (Simulation sim : sims) {
+                if (sim != null) {
+                    sim.close();
+                }
+            }
         }
-        return r;
+        return runs;
+    }
+
+    /** One frame of one configuration; recorded at index {@code i} when {@code i >= 0} (else warm-up). */
+    private static void frame(Simulation sim, CameraWalk walk, FrameRun r, int i, int frames, GlContext gl,
+                              SceneRenderer renderer, int width, int height) {
+        ViewCamera cam = walk.at(sim.time());
+        long t0 = System.nanoTime();
+        sim.stepFixed(cam);
+        Frame frame = sim.latestFrame();
+        if (renderer != null) {
+            renderer.render(frame, cam, width, height);
+            gl.finish();
+        }
+        long t1 = System.nanoTime();
+        if (i >= 0) {
+            r.frameMs[i] = (t1 - t0) / 1e6;
+            r.fieldMs[i] = frame.fieldNanos() / 1e6;
+            r.componentsAnimated += frame.componentsAnimated() / (double) frames;
+            if (renderer != null) {
+                r.triangles += renderer.triangles() / (double) frames;
+                r.lines += renderer.lines() / (double) frames;
+            }
+        }
     }
 
     /** Frames per second, one value per frame. */

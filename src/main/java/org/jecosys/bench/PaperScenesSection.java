@@ -20,13 +20,18 @@ import org.jecosys.sim.World;
  * the camera walks each scene's path; each frame is one fixed simulation step (field update and
  * animation), and in the rendered variant also a headless 1280x720 frame on this machine's GL
  * (finished before the clock stops). Configurations: S1 static, S2 random, S3 constraint (field
- * on; Table 7), random with the field off (Table 6's "frame rate 2").
+ * on; Table 7), random with the field off (Table 6's "frame rate 2"). The four configurations of a
+ * scene run side by side and take turns in short blocks (see {@link FrameRun#measure}), so that the
+ * machine's drift over a run does not decide their ratios.
  */
 final class PaperScenesSection implements Section {
     static final int WIDTH = 1280;
     static final int HEIGHT = 720;
     private static final String[] NAMES = {"C1", "C2", "C3", "Meadow"};
     private static final String[] FILES = {"c1.xml", "c2.xml", "c3.xml", "meadow.xml"};
+    /** Frames per turn when the four configurations take turns (see {@link FrameRun#measure}). */
+    private static final int SIM_BLOCK = 200;
+    private static final int RENDER_BLOCK = 8;
 
     private final Path scenes;
 
@@ -91,11 +96,12 @@ final class PaperScenesSection implements Section {
     }
 
     private static Runs runs(SceneDef scene, World world, int warm, int frames, GlContext gl, SceneRenderer r) {
-        return new Runs(
-                FrameRun.measure(scene, world, AnimationMode.STATIC, true, warm, frames, gl, r, WIDTH, HEIGHT),
-                FrameRun.measure(scene, world, AnimationMode.RANDOM, true, warm, frames, gl, r, WIDTH, HEIGHT),
-                FrameRun.measure(scene, world, AnimationMode.CONSTRAINT, true, warm, frames, gl, r, WIDTH, HEIGHT),
-                FrameRun.measure(scene, world, AnimationMode.RANDOM, false, warm, frames, gl, r, WIDTH, HEIGHT));
+        AnimationMode[] modes = {AnimationMode.STATIC, AnimationMode.RANDOM, AnimationMode.CONSTRAINT,
+            AnimationMode.RANDOM};
+        boolean[] fields = {true, true, true, false};
+        FrameRun[] f = FrameRun.measure(scene, world, modes, fields, warm, frames, r == null ? SIM_BLOCK : RENDER_BLOCK,
+                gl, r, WIDTH, HEIGHT);
+        return new Runs(f[0], f[1], f[2], f[3]);
     }
 
     private static String paperFps(double[] row, int at) {
