@@ -21,7 +21,7 @@ final class BenchCommand implements Callable<Integer> {
     CommandSpec spec;
     @Mixin
     Verbose verbose;
-    @Option(names = "--quick", description = "A short run (about 3 minutes on 2 cores).")
+    @Option(names = "--quick", description = "A short run (about 40 s on 2 cores; the full run takes about 5 minutes).")
     boolean quick;
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "bench-results",
             description = "Output folder (default: ${DEFAULT-VALUE}).")

@@ -26,6 +26,8 @@ import org.jecosys.terrain.TerrainDef;
  * 4M components: grass tufts A of 25 leaves at 4 tufts per m^2 on a flat square), with 1 and 2
  * workers. The camera looks straight down from above the middle, so every plant is visible and
  * every component is animated; the scene's wind and field settings apply (paper sections 3-4).
+ * The 1- and 2-worker simulations of a size run side by side and take turns of a few milliseconds,
+ * so the machine's drift over the run does not decide their ratio.
  */
 final class ScaleSection implements Section {
     private final Path scenes;
@@ -76,35 +78,54 @@ final class ScaleSection implements Section {
         for (int s = 0; s < sizes.length; s++) {
             SimulationDef def = world(base, sizes[s]);
             World world = World.build(def, scenes, 2, Progress.NONE);
-            for (int w = 0; w < workers.length; w++) {
-                try (Simulation sim = Simulation.of(world, def, workers[w])) {
-                    double side = def.terrain().sizeX();
-                    ViewCamera cam = ViewCamera.of(new CameraDef(0, side * 0.6 + 5, 0, 0, -Math.PI / 2 + 1e-3,
-                            Math.toRadians(100), 0.5, side * 4 + 100, List.of(), 1, false), 0, 16.0 / 9);
-                    double[] stepMs = new double[steps];
-                    double animated = 0;
-                    for (int k = 0; k < warm + steps; k++) {
-                        long t0 = System.nanoTime();
-                        sim.stepFixed(cam);
-                        long t1 = System.nanoTime();
-                        if (k >= warm) {
-                            stepMs[k - warm] = (t1 - t0) / 1e6;
-                            animated += sim.latestFrame().componentsAnimated() / (double) steps;
+            double side = def.terrain().sizeX();
+            ViewCamera cam = ViewCamera.of(new CameraDef(0, side * 0.6 + 5, 0, 0, -Math.PI / 2 + 1e-3,
+                    Math.toRadians(100), 0.5, side * 4 + 100, List.of(), 1, false), 0, 16.0 / 9);
+            // 1 and 2 workers side by side, taking turns of a few milliseconds (order rotated each
+            // round), so that a slow stretch of this shared machine hits both alike
+            int block = Math.max(2, 200_000 / world.componentCount());
+            Simulation[] sims = new Simulation[workers.length];
+            double[][] stepMs = new double[workers.length][steps];
+            double[] animated = new double[workers.length];
+            try {
+                for (int w = 0; w < workers.length; w++) {
+                    sims[w] = Simulation.of(world, def, workers[w]);
+                }
+                int[] done = new int[workers.length];
+                for (int round = 0; done[workers.length - 1] < warm + steps; round++) {
+                    for (int j = 0; j < workers.length; j++) {
+                        int w = (j + round) % workers.length;
+                        for (int b = 0; b < block && done[w] < warm + steps; b++) {
+                            long t0 = System.nanoTime();
+                            sims[w].stepFixed(cam);
+                            long t1 = System.nanoTime();
+                            int k = done[w]++ - warm;
+                            if (k >= 0) {
+                                stepMs[w][k] = (t1 - t0) / 1e6;
+                                animated[w] += sims[w].latestFrame().componentsAnimated() / (double) steps;
+                            }
                         }
                     }
-                    double median = Stats.median(stepMs);
-                    double perSecond = animated / (median / 1e3);
-                    upsByWorkers[w][s] = perSecond;
-                    t.row(world.componentCount(), world.plantCount(), workers[w], animated, median, perSecond,
-                            w == 0 ? "-" : String.format(java.util.Locale.ROOT, "%.2fx", perSecond
-                                    / upsByWorkers[0][s]));
-                    Map<String, Object> r = new LinkedHashMap<>();
-                    r.put("components", world.componentCount());
-                    r.put("workers", workers[w]);
-                    r.put("medianStepMs", median);
-                    r.put("updatesPerSecond", perSecond);
-                    raw.add(r);
                 }
+            } finally {
+                for (Simulation sim : sims) {
+                    if (sim != null) {
+                        sim.close();
+                    }
+                }
+            }
+            for (int w = 0; w < workers.length; w++) {
+                double median = Stats.median(stepMs[w]);
+                double perSecond = animated[w] / (median / 1e3);
+                upsByWorkers[w][s] = perSecond;
+                t.row(world.componentCount(), world.plantCount(), workers[w], animated[w], median, perSecond,
+                        w == 0 ? "-" : String.format(java.util.Locale.ROOT, "%.2fx", perSecond / upsByWorkers[0][s]));
+                Map<String, Object> r = new LinkedHashMap<>();
+                r.put("components", world.componentCount());
+                r.put("workers", workers[w]);
+                r.put("medianStepMs", median);
+                r.put("updatesPerSecond", perSecond);
+                raw.add(r);
             }
         }
         for (int w = 0; w < workers.length; w++) {
@@ -122,7 +143,8 @@ final class ScaleSection implements Section {
             ms.add(m);
         }
         t.note("Whole fixed steps (wind, force-field update concurrently with the workers, dynamic-constraint "
-                + "animation, frame publication), camera above the middle looking down so every plant is visible. "
+                + "animation, frame publication), camera above the middle looking down so every plant is visible; "
+                + "1 and 2 workers take turns of a few milliseconds. "
                 + "Targets for the updater: at least 2e8 component updates per second with 2 workers, and 2 workers "
                 + "at least 1.8x one.");
         report.add(t);
