@@ -1,9 +1,16 @@
 package org.jecosys.render;
 
+import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_FLOAT;
+import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
+import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_LINES;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
 import static org.lwjgl.opengl.GL11C.GL_UNSIGNED_INT;
+import static org.lwjgl.opengl.GL11C.glBlendFunc;
+import static org.lwjgl.opengl.GL11C.glDepthMask;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
@@ -43,7 +50,10 @@ import org.lwjgl.system.MemoryUtil;
  * components, with the base and the cos/sin of the bend azimuth already resolved on the CPU, then
  * issues one instanced draw per species and level (triangles near, lines far: Table 3). Triangle
  * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
- * the same vertices but skips the ribbon lighting and writes one flat colour per segment.
+ * the same vertices but skips the ribbon lighting and writes one flat colour per segment, with the
+ * share of a pixel the leaf's true width covers as opacity: the line levels are drawn last, blended
+ * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
+ * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
@@ -71,6 +81,9 @@ public final class PlantRenderer implements AutoCloseable {
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
     private final int uLightDir;
+    private final int uPixelScale;
+    private final int uLineLightDir;
+    private boolean pending;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
@@ -154,6 +167,8 @@ public final class PlantRenderer implements AutoCloseable {
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
         uLightDir = program.uniform("uLightDir");
+        uPixelScale = lineProgram.uniform("uPixelScale");
+        uLineLightDir = lineProgram.uniform("uLightDir");
     }
 
     /**
@@ -275,25 +290,41 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws. Render thread;
-     * no allocation.
+     * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws every level:
+     * {@link #drawNear} then {@link #drawFar}. Draw your opaque geometry (terrain) before this, since
+     * the far level is blended without writing depth. Render thread; no allocation.
+     */
+    public void draw(Frame frame, ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+                     float fogEnd, int viewportHeight) {
+        drawNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
+        drawFar();
+    }
+
+    /**
+     * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws the triangle
+     * (near) levels, opaque, writing depth. Follow it in the same frame with your opaque geometry and
+     * then {@link #drawFar}. Render thread; no allocation.
      *
      * @param frame    the frame to show (sizes match the world)
      * @param camera   the viewer
-     * @param lightDir unit vector toward the sun
+     * @param lx       unit vector toward the sun, x (likewise ly, lz)
      * @param fog      fog colour (the sky)
      * @param fogStart distance where fog starts, metres
      * @param fogEnd   distance of full fog, metres
+     * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0: far away a line is
+     *                 wider than the leaf it stands for, and the line level is drawn with the share of
+     *                 a pixel the leaf covers as its opacity
      */
-    public void draw(Frame frame, ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
-                     float fogEnd) {
+    public void drawNear(Frame frame, ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+                         float fogEnd, int viewportHeight) {
         if (frame.componentCount() != world.componentCount()) {
             throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
                     + world.componentCount());
         }
         batches.update(camera);
         draws = 0;
-        if (batches.instances() == 0) {
+        pending = batches.instances() > 0;
+        if (!pending) {
             return;
         }
         stream.write(batches, frame, camera.x(), camera.y(), camera.z(), componentStaging);
@@ -306,25 +337,46 @@ public final class PlantRenderer implements AutoCloseable {
         float ez = (float) camera.z();
         lineProgram.use();
         lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
+        glUniform1f(uPixelScale, (float) (2 * Math.tan(camera.fovY() / 2) / Math.max(1, viewportHeight)));
+        glUniform3f(uLineLightDir, lx, ly, lz);
         program.use();
         triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
         glUniform3f(uLightDir, lx, ly, lz);
         poseTexture.bind(0);
         componentTexture.bind(1);
-        boolean linesBound = false;
+        drawLists(false, triangleUniforms);
+    }
+
+    /**
+     * Draws the line (far) levels of the last {@link #drawNear}: blended by the share of a pixel each
+     * leaf covers, depth tested but not written, so call it after the opaque geometry. Does nothing
+     * if nothing is in view. Render thread; no allocation.
+     */
+    public void drawFar() {
+        if (!pending) {
+            return;
+        }
+        pending = false;
+        lineProgram.use();
+        poseTexture.bind(0);
+        componentTexture.bind(1);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(false);
+        drawLists(true, lineUniforms);
+        glDepthMask(true);
+        glDisable(GL_BLEND);
+    }
+
+    /** One instanced draw per list of the given primitive with the program in use. */
+    private void drawLists(boolean lines, Uniforms u) {
         for (int s = 0; s < batches.speciesCount(); s++) {
             for (int l = 0, levels = batches.levels(s); l < levels; l++) {
                 int li = batches.list(s, l);
                 int n = batches.count(li);
-                if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0) {
+                if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
                     continue;
                 }
-                boolean lines = batches.lines(li);
-                if (lines != linesBound) {
-                    (lines ? lineProgram : program).use();
-                    linesBound = lines;
-                }
-                Uniforms u = lines ? lineUniforms : triangleUniforms;
                 glUniform1i(u.slotCount, batches.slots(s));
                 glUniform1i(u.componentBase, batches.componentOffset(li));
                 vaos[li].bind();

@@ -112,13 +112,16 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
-        // plants first: the terrain drawn after them fails the early depth test behind them (less
-        // shading on a software rasteriser); opaque geometry, so the image is the same
+        // near plants first: the terrain drawn after them fails the early depth test behind them (less
+        // shading on a software rasteriser); the far (line) level last, blended over both
         if (drawPlants) {
-            plants.draw(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+            plants.drawNear(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd(), height);
         }
         if (drawTerrain) {
             terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+        }
+        if (drawPlants) {
+            plants.drawFar();
         }
         glDisable(GL_DEPTH_TEST);
         if (field != null && (settings.showField() || settings.showWind())) {

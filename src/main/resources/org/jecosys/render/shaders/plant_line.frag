@@ -2,9 +2,11 @@
 // Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
 // L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
 // fragment is tested.
-// Line variant of plant.frag: one flat, fogged colour per segment from plant_line.vert.
+// Line variant of plant.frag: one flat, fogged colour per segment from plant_line.vert, with the
+// share of a pixel the leaf covers there as alpha (the line level is blended over the opaque scene).
 flat in vec3 vColour;
 flat in vec2 vKeep;
+in float vCover;
 out vec4 fragColour;
 
 // 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
@@ -22,5 +24,5 @@ void main() {
             discard;
         }
     }
-    fragColour = vec4(vColour, 1.0);
+    fragColour = vec4(vColour, vCover);
 }

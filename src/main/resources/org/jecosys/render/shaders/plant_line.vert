@@ -1,10 +1,18 @@
 #version 330 core
 // Plants drawn as lines (the far level, paper Table 3): the cheaper variant of plant.vert. The line
 // vertices are placed exactly as in plant.vert (same pose blend of position, side and normal: 2 + 6
-// texel fetches, the ribbon edges and rims need the side and normal offsets), but there is no ribbon
-// lighting: the colour is the component colour with the same base darkening and sunlit tips as
-// plant.vert, a constant light factor, and fog, one flat colour per segment. The component record
+// texel fetches, the ribbon edges and rims need the side and normal offsets) and lit the same way
+// (two-sided, base darkening, sunlit tips, fog), one flat colour per segment from its first vertex,
+// so that the far level has the colour of the triangle level it replaces. The component record
 // (ComponentStream) and the dither window are the same as for plant.vert.
+//
+// Coverage: a line is one pixel wide whatever the leaf's width, so far away, where a leaf is a
+// fraction of a pixel wide, lines would cover several times the area the leaf does (and the area the
+// triangle level just nearer covers, one pixel centre in so many): the far level would look denser
+// and brighter than the near one. A ribbon is drawn as its two edges (a = +-half width); each edge
+// line takes as alpha the half width over the pixel's footprint at that distance, so once the two
+// edges fall in the same pixels they add up to the leaf's share of the pixel, and when they are a
+// pixel or more apart each is about opaque. Vertices on a centre line (a = 0) are opaque.
 
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
 layout(location = 1) in vec4 aColour;           // component colour (linear 0..1), fraction along it
@@ -19,12 +27,12 @@ uniform int uComponentBase;
 uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
+uniform vec3 uLightDir;                          // unit, toward the light
+uniform float uPixelScale;                       // pixel height per metre of distance: 2 tan(fovY / 2) / height
 
 flat out vec3 vColour;                           // fogged, one colour per line segment
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
-
-// light factor of a ribbon whose normal carries no information (plant.vert's fallback)
-const float LIT = 0.65;
+out float vCover;                                // alpha: the share of a pixel the ribbon covers
 
 void main() {
     int slot = int(aVertex.x);
@@ -47,8 +55,21 @@ void main() {
     float along = aColour.w;
     vec3 colour = aColour.rgb * (0.50 + 0.55 * along);
     colour = mix(colour, colour * vec3(1.10, 1.18, 0.80) + vec3(0.05, 0.06, 0.0), along * along);
-    float fog = clamp((length(uEye - world) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    vColour = mix(colour * (0.45 + 0.75 * LIT), uFogColour, fog * fog);
+    vec3 toEye = uEye - world;
+    float distance = length(toEye);
+    vec3 n = vec3(normal.x * ca - normal.z * sa, normal.y, normal.x * sa + normal.z * ca);
+    float len = length(n);
+    float lit = 0.65;                            // plant.vert's value for a normal that says nothing
+    if (len > 1e-9) {
+        n /= len;
+        n = dot(n, toEye) < 0.0 ? -n : n;
+        float nl = dot(n, uLightDir);
+        lit = max(nl, 0.0) + 0.35 * max(-nl, 0.0);
+    }
+    float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
+    float halfWidth = abs(aVertex.z) * length(side);
+    vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / max(distance * uPixelScale, 1e-6), 1.0 / 32.0, 1.0);
+    vColour = mix(colour * (0.45 + 0.75 * lit), uFogColour, fog * fog);
 
     int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;

@@ -1,0 +1,108 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.ByteBuffer;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.Test;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The far (line) level looks like the triangle level it replaces: the meadow drawn from its start
+ * camera with every plant at level 1 (triangles) and again with every plant at level 2 (lines) gives
+ * the same mean colour over the far half of the terrain, within 4 levels of 255. One solid pixel
+ * per leaf edge would cover several times the leaf's area there and paint the far meadow a brighter
+ * green than the near one (a visible band at the level edge).
+ */
+class RenderLodLookTest {
+    private static final int W = 960;
+    private static final int H = 540;
+
+    @Test
+    void farGrassHasTheColourOfTheTriangleLevelItReplaces() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        ViewCamera cam = RenderScenes.camera(def, world, W, H);
+        Frame frame = TestFrames.rest(world);
+        ByteBuffer ground = MemoryUtil.memAlloc(4 * W * H);
+        ByteBuffer near = MemoryUtil.memAlloc(4 * W * H);
+        ByteBuffer far = MemoryUtil.memAlloc(4 * W * H);
+        try (GlContext gl = GlContext.headless(true); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
+             SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+            fb.bind();
+            r.drawPlants = false;
+            r.render(frame, cam, W, H);
+            Pixels.read(W, H, ground);
+            r.drawPlants = true;
+            PlantBatches b = r.plants().batches();
+            allAt(b, new double[] {0.5, 1000}); // level 1 from 0.5 m on
+            r.render(frame, cam, W, H);
+            Pixels.read(W, H, near);
+            assertEquals(0, b.lineCount());
+            allAt(b, new double[] {0.5, 1.0}); // level 2 (lines) from 1 m on
+            r.render(frame, cam, W, H);
+            Pixels.read(W, H, far);
+            assertTrue(b.lineCount() > 100_000, "lines: " + b.lineCount());
+            gl.debug().check("rendering the meadow at one level");
+
+            // the far half of the terrain on screen: rows between the horizon and the middle of the ground
+            int top = 0; // highest terrain row (GL rows, bottom up) in the middle column
+            for (int y = 0; y < H; y++) {
+                if (Pixels.blue(ground, W, W / 2, y) < 120) {
+                    top = y;
+                }
+            }
+            int bottom = 0;
+            int from = bottom + (top - bottom) / 2;
+            int to = top - 2; // not the silhouette against the sky
+            assertTrue(to - from > 30, "rows " + from + ".." + to);
+            double[] g = mean(ground, from, to);
+            double[] n = mean(near, from, to);
+            double[] f = mean(far, from, to);
+            assertTrue(n[1] - g[1] > 3, "level 1 grass shows over the ground: " + fmt(n) + " vs " + fmt(g));
+            assertTrue(f[1] - g[1] > 3, "level 2 grass shows over the ground: " + fmt(f) + " vs " + fmt(g));
+            for (int c = 0; c < 3; c++) {
+                assertEquals(n[c], f[c], 4, "mean colour of the far meadow, lines " + fmt(f) + " vs triangles "
+                        + fmt(n) + " (ground " + fmt(g) + ")");
+            }
+        } finally {
+            MemoryUtil.memFree(ground);
+            MemoryUtil.memFree(near);
+            MemoryUtil.memFree(far);
+        }
+    }
+
+    private static void allAt(PlantBatches b, double[] edges) {
+        for (int s = 0; s < b.speciesCount(); s++) {
+            if (b.levels(s) == 3) {
+                b.setLodDistances(s, edges);
+            }
+        }
+    }
+
+    /** Mean r, g, b over rows {@code from..to} (GL rows, bottom up), 0..255. */
+    private static double[] mean(ByteBuffer px, int from, int to) {
+        double[] m = new double[3];
+        long n = 0;
+        for (int y = from; y <= to; y++) {
+            for (int x = 0; x < W; x++) {
+                m[0] += Pixels.red(px, W, x, y);
+                m[1] += Pixels.green(px, W, x, y);
+                m[2] += Pixels.blue(px, W, x, y);
+                n++;
+            }
+        }
+        for (int c = 0; c < 3; c++) {
+            m[c] /= n;
+        }
+        return m;
+    }
+
+    private static String fmt(double[] m) {
+        return String.format("%.1f/%.1f/%.1f", m[0], m[1], m[2]);
+    }
+}
