@@ -114,20 +114,8 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         }
-        // pose tables: per species, per component type, per variant; 3 texels (12 floats) per point
         int[][][] poseTexel = new int[models.size()][][];
-        long texels = 0;
-        for (int s = 0; s < models.size(); s++) {
-            SpeciesModel m = models.get(s);
-            poseTexel[s] = new int[m.componentCount()][m.variants()];
-            for (int c = 0; c < m.componentCount(); c++) {
-                for (int v = 0; v < m.variants(); v++) {
-                    poseTexel[s][c][v] = (int) texels;
-                    PoseTable pt = m.component(c).poseTable(v);
-                    texels += 3L * pt.poses() * pt.points();
-                }
-            }
-        }
+        long texels = poseTexelLayout(models, poseTexel);
         this.stream = new ComponentStream(world, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         FloatBuffer staging = null;
@@ -397,6 +385,27 @@ public final class PlantRenderer implements AutoCloseable {
         closeReverse(owned);
         MemoryUtil.memFree(componentStaging);
         MemoryUtil.memFree(matrix);
+    }
+
+    /**
+     * The pose buffer's layout: species after species, component type after type, variant after
+     * variant, 3 texels (12 floats) per point of each pose. Fills {@code first[s][c][v]} with the
+     * first texel of that pose table and returns the texels in all. Construction time; allocates.
+     */
+    static long poseTexelLayout(List<SpeciesModel> models, int[][][] first) {
+        long texels = 0;
+        for (int s = 0; s < models.size(); s++) {
+            SpeciesModel m = models.get(s);
+            first[s] = new int[m.componentCount()][m.variants()];
+            for (int c = 0; c < m.componentCount(); c++) {
+                for (int v = 0; v < m.variants(); v++) {
+                    first[s][c][v] = (int) Math.min(texels, Integer.MAX_VALUE);
+                    PoseTable pt = m.component(c).poseTable(v);
+                    texels += 3L * pt.poses() * pt.points();
+                }
+            }
+        }
+        return texels;
     }
 
     /** Closes {@code resources} last to first; keeps going past a failure and rethrows the first. */

@@ -37,20 +37,8 @@ class ComponentStreamTest {
     void build() {
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         models = world.plants().species();
-        // the pose buffer's layout as PlantRenderer builds it: species, component type, variant; 3 texels a point
         poseTexel = new int[models.size()][][];
-        int texels = 0;
-        for (int s = 0; s < models.size(); s++) {
-            SpeciesModel m = models.get(s);
-            poseTexel[s] = new int[m.componentCount()][m.variants()];
-            for (int c = 0; c < m.componentCount(); c++) {
-                for (int v = 0; v < m.variants(); v++) {
-                    poseTexel[s][c][v] = texels;
-                    PoseTable pt = m.component(c).poseTable(v);
-                    texels += 3 * pt.poses() * pt.points();
-                }
-            }
-        }
+        PlantRenderer.poseTexelLayout(models, poseTexel); // the pose buffer's layout as the renderer uploads it
         // a frame with every component bent somewhere, some pose coordinates outside the table on purpose
         frame = new Frame(world.plantCount(), world.componentCount());
         SplittableRandom rnd = new SplittableRandom(7);
