@@ -47,10 +47,7 @@ final class FrameRun {
      * {@code frames}. Configuration c is mode {@code modes[c]} with the field {@code fields[c]}, in its
      * own {@link Simulation} on the shared (immutable) world, walking the same camera path from time 0,
      * so frame i of every configuration sees the same camera. The configurations take turns in blocks
-     * of {@code block} frames, the turn order rotated by one each round: on a shared machine the speed
-     * of the same work drifts over seconds (other processes, the GL rasteriser's threads), and running
-     * one configuration after the other would give each a different share of fast and slow stretches;
-     * in turns they get the same share, so their ratios (Tables 6 and 7) compare like with like.
+     * of {@code block} frames ({@link Turns}), so their ratios (Tables 6 and 7) compare like with like.
      *
      * @param block    frames per turn, &gt;= 1 (a few for rendered frames; hundreds for simulation-only
      *                 frames, whose state would otherwise leave the caches at every turn)
@@ -68,16 +65,8 @@ final class FrameRun {
                 sims[c] = Simulation.of(world, variant(scene, modes[c], fields[c]), 0);
             }
             CameraWalk walk = new CameraWalk(scene.camera(), world.terrain().heightfield(), width / (double) height);
-            int[] done = new int[n];
-            int total = warm + frames;
-            for (int round = 0; done[n - 1] < total; round++) { // every configuration runs total frames
-                for (int j = 0; j < n; j++) {
-                    int c = (j + round) % n;
-                    for (int b = 0; b < block && done[c] < total; b++) {
-                        frame(sims[c], walk, runs[c], done[c]++ - warm, frames, gl, renderer, width, height);
-                    }
-                }
-            }
+            Turns.run(n, warm + frames, block,
+                    (c, k) -> frame(sims[c], walk, runs[c], k - warm, frames, gl, renderer, width, height));
         } finally {
             for (Simulation sim : sims) {
                 if (sim != null) {

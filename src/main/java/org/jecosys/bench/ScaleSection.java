@@ -81,8 +81,8 @@ final class ScaleSection implements Section {
             double side = def.terrain().sizeX();
             ViewCamera cam = ViewCamera.of(new CameraDef(0, side * 0.6 + 5, 0, 0, -Math.PI / 2 + 1e-3,
                     Math.toRadians(100), 0.5, side * 4 + 100, List.of(), 1, false), 0, 16.0 / 9);
-            // 1 and 2 workers side by side, taking turns of a few milliseconds (order rotated each
-            // round), so that a slow stretch of this shared machine hits both alike
+            // 1 and 2 workers side by side, taking turns of a few milliseconds (Turns), so that a slow
+            // stretch of this shared machine hits both alike
             int block = Math.max(2, 200_000 / world.componentCount());
             Simulation[] sims = new Simulation[workers.length];
             double[][] stepMs = new double[workers.length][steps];
@@ -91,22 +91,15 @@ final class ScaleSection implements Section {
                 for (int w = 0; w < workers.length; w++) {
                     sims[w] = Simulation.of(world, def, workers[w]);
                 }
-                int[] done = new int[workers.length];
-                for (int round = 0; done[workers.length - 1] < warm + steps; round++) {
-                    for (int j = 0; j < workers.length; j++) {
-                        int w = (j + round) % workers.length;
-                        for (int b = 0; b < block && done[w] < warm + steps; b++) {
-                            long t0 = System.nanoTime();
-                            sims[w].stepFixed(cam);
-                            long t1 = System.nanoTime();
-                            int k = done[w]++ - warm;
-                            if (k >= 0) {
-                                stepMs[w][k] = (t1 - t0) / 1e6;
-                                animated[w] += sims[w].latestFrame().componentsAnimated() / (double) steps;
-                            }
-                        }
+                Turns.run(workers.length, warm + steps, block, (w, k) -> {
+                    long t0 = System.nanoTime();
+                    sims[w].stepFixed(cam);
+                    long t1 = System.nanoTime();
+                    if (k >= warm) {
+                        stepMs[w][k - warm] = (t1 - t0) / 1e6;
+                        animated[w] += sims[w].latestFrame().componentsAnimated() / (double) steps;
                     }
-                }
+                });
             } finally {
                 for (Simulation sim : sims) {
                     if (sim != null) {
