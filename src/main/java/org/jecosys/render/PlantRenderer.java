@@ -30,6 +30,7 @@ import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
+import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.plant.LodMesh;
@@ -50,8 +51,8 @@ import org.lwjgl.system.MemoryUtil;
  * components, with the base and the cos/sin of the bend azimuth already resolved on the CPU, then
  * issues one instanced draw per species and level (triangles near, lines far: Table 3). Triangle
  * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
- * the same vertices but skips the ribbon lighting and writes one flat colour per segment, with the
- * share of a pixel the leaf's true width covers as opacity: the line levels are drawn last, blended
+ * and lights the same vertices and writes one flat colour per segment, with the share of a pixel the
+ * leaf's true width covers as opacity: the line levels are drawn last, blended
  * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
  *
@@ -80,9 +81,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
-    private final int uLightDir;
     private final int uPixelScale;
-    private final int uLineLightDir;
     private boolean pending;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
@@ -154,9 +153,7 @@ public final class PlantRenderer implements AutoCloseable {
         matrix = mat;
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
-        uLightDir = program.uniform("uLightDir");
         uPixelScale = lineProgram.uniform("uPixelScale");
-        uLineLightDir = lineProgram.uniform("uLightDir");
     }
 
     /**
@@ -171,6 +168,7 @@ public final class PlantRenderer implements AutoCloseable {
         final int fogColour;
         final int fogStart;
         final int fogEnd;
+        final int lightDir;
 
         Uniforms(GlProgram p) {
             p.use();
@@ -181,13 +179,16 @@ public final class PlantRenderer implements AutoCloseable {
             fogColour = p.uniform("uFogColour");
             fogStart = p.uniform("uFogStart");
             fogEnd = p.uniform("uFogEnd");
+            lightDir = p.uniform("uLightDir");
             glUniform1i(p.uniform("uPoses"), 0);
             glUniform1i(p.uniform("uComponents"), 1);
         }
 
         /** Sets the per-frame values on the program in use. No allocation. */
-        void frame(FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start, float end) {
+        void frame(FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start, float end,
+                   float lx, float ly, float lz) {
             glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+            glUniform3f(lightDir, lx, ly, lz);
             glUniform3f(eye, ex, ey, ez);
             glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
             glUniform1f(fogStart, start);
@@ -309,6 +310,7 @@ public final class PlantRenderer implements AutoCloseable {
             throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
                     + world.componentCount());
         }
+        Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
         batches.update(camera);
         draws = 0;
         pending = batches.instances() > 0;
@@ -324,12 +326,10 @@ public final class PlantRenderer implements AutoCloseable {
         float ey = (float) camera.y();
         float ez = (float) camera.z();
         lineProgram.use();
-        lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
-        glUniform1f(uPixelScale, (float) (2 * Math.tan(camera.fovY() / 2) / Math.max(1, viewportHeight)));
-        glUniform3f(uLineLightDir, lx, ly, lz);
+        lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        glUniform1f(uPixelScale, (float) (2 * Math.tan(camera.fovY() / 2) / viewportHeight));
         program.use();
-        triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd);
-        glUniform3f(uLightDir, lx, ly, lz);
+        triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         poseTexture.bind(0);
         componentTexture.bind(1);
         drawLists(false, triangleUniforms);
