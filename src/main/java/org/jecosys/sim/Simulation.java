@@ -1,9 +1,7 @@
 package org.jecosys.sim;
 
 import java.io.IOException;
-import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
@@ -15,9 +13,7 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rng;
 import org.jecosys.math.ViewCamera;
-import org.jecosys.plant.LodDef;
 import org.jecosys.plant.SpeciesDef;
-import org.jecosys.plant.SpeciesModel;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.WindField;
@@ -66,18 +62,6 @@ import org.jecosys.wind.WindSource;
  * </ul>
  */
 public final class Simulation implements AutoCloseable {
-    /**
-     * The JVM's per-thread allocation counter, looked up once: {@code ManagementFactory.getThreadMXBean()}
-     * itself allocates on every call, which would pollute the very measurement. Null when unsupported.
-     */
-    private static final com.sun.management.ThreadMXBean THREADS = threadBean();
-
-    private static com.sun.management.ThreadMXBean threadBean() {
-        java.lang.management.ThreadMXBean mx = ManagementFactory.getThreadMXBean();
-        return mx instanceof com.sun.management.ThreadMXBean smx && smx.isThreadAllocatedMemorySupported() ? smx
-                : null;
-    }
-
     /** Target components per fixed chunk of plants. */
     public static final int CHUNK_COMPONENTS = 8192;
 
@@ -89,7 +73,6 @@ public final class Simulation implements AutoCloseable {
     private final AnimationState state;
     private final FrameExchange exchange;
     private final WorkerPool pool;
-    private final long[] workerIds;
     private final ChunkAnimator chunkAnimator;
     private final float[][] windX = new float[2][];
     private final float[][] windZ = new float[2][];
@@ -142,34 +125,14 @@ public final class Simulation implements AutoCloseable {
         }
         field = QuadtreeForceField.build(def.field(), hf.minX(), hf.minZ(), hf.maxX(), hf.maxZ(), hf.minHeight(),
                 hf.maxHeight() + plantHeight, wind, xs, zs);
-        List<SpeciesModel> species = world.plants().species();
-        kinds = SpringKinds.of(species);
-        double[][] edges = new double[species.size()][];
-        for (int s = 0; s < species.size(); s++) {
-            List<LodDef> lods = species.get(s).def().lods();
-            edges[s] = new double[lods.size() - 1];
-            for (int l = 0; l + 1 < lods.size(); l++) {
-                edges[s][l] = lods.get(l).maxDistance();
-            }
-        }
+        kinds = SpringKinds.of(world.plants().species());
         int comps = world.componentCount();
         int[] first = new int[plants + 1];
-        int[] sp = new int[plants];
-        int[] kind = new int[comps];
-        float[] heading = new float[comps];
         for (int p = 0; p < plants; p++) {
             first[p] = world.firstComponent(p);
-            sp[p] = world.plantSpecies(p);
-            SpeciesModel sm = species.get(sp[p]);
-            int v = world.plantVariant(p);
-            for (int s = 0; s < sm.slotCount(); s++) {
-                int c = first[p] + s;
-                kind[c] = kinds.kindOf(sp[p], sm.slotComponent(s), sm.slotVariant(s, v));
-                heading[c] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
-            }
         }
         first[plants] = comps;
-        state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading);
+        state = AnimationStates.of(world, kinds, first, xs, ys, zs);
         for (int b = 0; b < 2; b++) {
             windX[b] = new float[plants];
             windZ[b] = new float[plants];
@@ -183,7 +146,6 @@ public final class Simulation implements AutoCloseable {
         chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, windX, windZ, visible, eye,
                 ad.seed());
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
-        workerIds = pool.threadIds();
     }
 
     /**
@@ -493,7 +455,7 @@ public final class Simulation implements AutoCloseable {
 
     /** Ids of the pool's worker threads, {@link #workers()} - 1 of them (allocates). Any thread. */
     public long[] workerThreadIds() {
-        return workerIds.clone();
+        return pool.threadIds();
     }
 
     /**
@@ -502,19 +464,7 @@ public final class Simulation implements AutoCloseable {
      * Any thread; allocates nothing itself.
      */
     public long allocatedBytes() {
-        com.sun.management.ThreadMXBean smx = THREADS;
-        if (smx == null) {
-            return -1;
-        }
-        long sum = 0;
-        for (int i = 0; i < workerIds.length; i++) {
-            sum += Math.max(0, smx.getThreadAllocatedBytes(workerIds[i]));
-        }
-        long st = steppingThread;
-        if (st >= 0) {
-            sum += Math.max(0, smx.getThreadAllocatedBytes(st));
-        }
-        return sum;
+        return pool.allocatedBytes(steppingThread);
     }
 
     /** Stops the workers. Idempotent; call it when no step runs. */

@@ -23,8 +23,14 @@ final class WorkerPool implements AutoCloseable {
     }
 
     private static final int SPINS = 200;
+    /**
+     * The JVM's per-thread allocation counter, looked up once: {@code ManagementFactory.getThreadMXBean()}
+     * itself allocates on every call, which would pollute the very measurement. Null when unsupported.
+     */
+    private static final com.sun.management.ThreadMXBean THREADS = threadBean();
 
     private final Thread[] threads;
+    private final long[] ids;
     private final ChunkTask task;
     private final int chunks;
     private final AtomicInteger next = new AtomicInteger();
@@ -44,12 +50,21 @@ final class WorkerPool implements AutoCloseable {
             t.setDaemon(true);
             threads[i] = t;
         }
+        ids = new long[threads.length];
+        for (int i = 0; i < threads.length; i++) {
+            ids[i] = threads[i].getId();
+        }
         for (Thread t : threads) {
             t.start();
         }
     }
 
-    /** Number of worker threads. */
+    private static com.sun.management.ThreadMXBean threadBean() {
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        return mx instanceof com.sun.management.ThreadMXBean smx && smx.isThreadAllocatedMemorySupported() ? smx
+                : null;
+    }
+
     /** Threads that animate: the pool's threads and the owner, which helps in {@link #await()}. */
     int workers() {
         return threads.length + 1;
@@ -57,11 +72,24 @@ final class WorkerPool implements AutoCloseable {
 
     /** The worker threads' ids (allocates). */
     long[] threadIds() {
-        long[] ids = new long[threads.length];
-        for (int i = 0; i < ids.length; i++) {
-            ids[i] = threads[i].getId();
+        return ids.clone();
+    }
+
+    /**
+     * Bytes allocated so far by the worker threads and by thread {@code other} (the owner; -1: none),
+     * from {@code com.sun.management.ThreadMXBean#getThreadAllocatedBytes}; -1 when the JVM cannot
+     * tell. Any thread; no allocation.
+     */
+    long allocatedBytes(long other) {
+        com.sun.management.ThreadMXBean mx = THREADS;
+        if (mx == null) {
+            return -1;
         }
-        return ids;
+        long sum = other >= 0 ? Math.max(0, mx.getThreadAllocatedBytes(other)) : 0;
+        for (long id : ids) {
+            sum += Math.max(0, mx.getThreadAllocatedBytes(id));
+        }
+        return sum;
     }
 
     /** Releases the workers on a new step. Owner thread. No allocation. */

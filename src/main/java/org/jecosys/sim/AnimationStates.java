@@ -1,0 +1,46 @@
+package org.jecosys.sim;
+
+import java.util.List;
+import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.SpringKinds;
+import org.jecosys.plant.LodDef;
+import org.jecosys.plant.SpeciesModel;
+
+/** The {@link AnimationState} of a {@link World}: its plants and components laid out as the animation reads them. */
+final class AnimationStates {
+    private AnimationStates() {
+    }
+
+    /**
+     * Builds the state of every component of {@code world} at rest. Build time; allocates; any thread.
+     *
+     * @param first  per plant its first component, and the component count at index plantCount
+     * @param xs     plant base x, metres (likewise ys, zs)
+     */
+    static AnimationState of(World world, SpringKinds kinds, int[] first, float[] xs, float[] ys, float[] zs) {
+        List<SpeciesModel> species = world.plants().species();
+        double[][] edges = new double[species.size()][];
+        for (int s = 0; s < species.size(); s++) {
+            List<LodDef> lods = species.get(s).def().lods();
+            edges[s] = new double[lods.size() - 1];
+            for (int l = 0; l + 1 < lods.size(); l++) {
+                edges[s][l] = lods.get(l).maxDistance();
+            }
+        }
+        int plants = world.plantCount();
+        int[] sp = new int[plants];
+        int[] kind = new int[world.componentCount()];
+        float[] heading = new float[world.componentCount()];
+        for (int p = 0; p < plants; p++) {
+            sp[p] = world.plantSpecies(p);
+            SpeciesModel sm = species.get(sp[p]);
+            int v = world.plantVariant(p);
+            for (int s = 0; s < sm.slotCount(); s++) {
+                int c = first[p] + s;
+                kind[c] = kinds.kindOf(sp[p], sm.slotComponent(s), sm.slotVariant(s, v));
+                heading[c] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
+            }
+        }
+        return new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading);
+    }
+}
