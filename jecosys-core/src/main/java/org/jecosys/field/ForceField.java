@@ -1,6 +1,6 @@
 package org.jecosys.field;
 
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.joml.Vector2d;
 
 /**
@@ -36,7 +36,7 @@ public interface ForceField {
      * Recomputes visibility, LOD and the wind of every effective node for this camera, with the
      * flows at their current time (paper §3.1.1 and §3.2). No allocation.
      */
-    void update(ViewCamera camera);
+    void update(Camera camera);
 
     /** Whether the plant was on a visible node at the last update (invisible plants are not animated). */
     boolean isVisible(int plant);

@@ -2,7 +2,7 @@ package org.jecosys.field;
 
 import java.util.Arrays;
 import org.jecosys.math.Require;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.wind.WindField;
 import org.joml.FrustumIntersection;
 import org.joml.Matrix4f;
@@ -156,7 +156,7 @@ public final class QuadtreeForceField implements ForceField {
     }
 
     @Override
-    public void update(ViewCamera camera) {
+    public void update(Camera camera) {
         Require.nonNull("camera", camera);
         ensureNodeState();
         if (current == Integer.MAX_VALUE) {

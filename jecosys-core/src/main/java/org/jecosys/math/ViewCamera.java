@@ -4,15 +4,16 @@ import org.joml.Matrix4f;
 import org.joml.Vector3f;
 
 /**
- * A perspective viewer shared by the force field (frustum culling and distance LOD, paper §3.1.1),
- * the simulation and the renderer. Conventions (same as {@link CameraDef}): metres and radians,
+ * The convenient {@link Camera}: a perspective viewer given by its eye, heading, pitch and lens, shared
+ * by the force field (frustum culling and distance LOD, paper §3.1.1), the simulation and the renderer.
+ * A game with its own matrices uses {@link MatrixCamera} instead. Conventions (same as {@link CameraDef}): metres and radians,
  * Y is up and the ground is the XZ plane; {@code yaw = 0} looks along -Z, positive yaw turns toward
  * +X; positive pitch looks up. The projection is OpenGL's (clip-space depth in [-1, 1]).
  *
  * <p>Mutable and not thread-safe: one owner thread sets it; others may read a copy made with
  * {@link #set(ViewCamera)}. No method allocates except the constructors and {@link #of}.
  */
-public final class ViewCamera {
+public final class ViewCamera implements Camera {
     private double x;
     private double y;
     private double z;
@@ -103,16 +104,19 @@ public final class ViewCamera {
     }
 
     /** Eye X, metres. */
+    @Override
     public double x() {
         return x;
     }
 
     /** Eye Y (absolute height), metres. */
+    @Override
     public double y() {
         return y;
     }
 
     /** Eye Z, metres. */
+    @Override
     public double z() {
         return z;
     }
@@ -151,6 +155,7 @@ public final class ViewCamera {
      * The unit view direction in world space: (sin yaw cos pitch, sin pitch, -cos yaw cos pitch).
      * No allocation.
      */
+    @Override
     public Vector3f forward(Vector3f dest) {
         double cp = Math.cos(pitch);
         return dest.set((float) (Math.sin(yaw) * cp), (float) Math.sin(pitch), (float) (-Math.cos(yaw) * cp));
@@ -160,11 +165,13 @@ public final class ViewCamera {
      * Writes the world-to-view matrix: {@code Rx(-pitch) * Ry(yaw) * T(-eye)}, the inverse of the
      * camera's world transform {@code T(eye) * Ry(-yaw) * Rx(pitch)}. No allocation.
      */
+    @Override
     public Matrix4f view(Matrix4f dest) {
         return write(dest, 1, 1, 0, 0, false);
     }
 
     /** Writes the OpenGL perspective projection (depth in [-1, 1]). No allocation. */
+    @Override
     public Matrix4f projection(Matrix4f dest) {
         double h = Math.tan(fovY * 0.5);
         double p22 = (far + near) / (near - far);
@@ -174,6 +181,7 @@ public final class ViewCamera {
     }
 
     /** Writes projection * view: world to clip space. No allocation. */
+    @Override
     public Matrix4f viewProjection(Matrix4f dest) {
         double h = Math.tan(fovY * 0.5);
         return write(dest, 1 / (h * aspect), 1 / h, (far + near) / (near - far), 2 * far * near / (near - far), true);
@@ -213,5 +221,15 @@ public final class ViewCamera {
                 (float) (sx * r01), (float) (sy * r11), (float) (p22 * r21), (float) -r21,
                 (float) (sx * r02), (float) (sy * r12), (float) (p22 * r22), (float) -r22,
                 (float) (sx * t0), (float) (sy * t1), (float) (p22 * t2 + p23), (float) -t2);
+    }
+
+    @Override
+    public double viewHeightPerMetre() {
+        return 2 * Math.tan(fovY * 0.5);
+    }
+
+    @Override
+    public double viewHeightAtEye() {
+        return 0;
     }
 }

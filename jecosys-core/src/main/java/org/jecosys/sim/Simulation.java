@@ -12,7 +12,7 @@ import org.jecosys.field.QuadtreeForceField;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rng;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.plant.SpeciesDef;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
@@ -25,7 +25,7 @@ import org.jecosys.wind.WindSource;
  * and the published frames the renderer reads. See the package documentation for a game loop.
  *
  * <h2>Stepping</h2>
- * {@link #step(double, ViewCamera)} adds real time to an accumulator and runs as many fixed steps
+ * {@link #step(double, Camera)} adds real time to an accumulator and runs as many fixed steps
  * ({@link AnimationDef#fixedStep()}) as it holds, at most {@link AnimationDef#maxSubSteps()}; the
  * backlog beyond that is dropped (the meadow slows down rather than spiral). One fixed step:
  * <ol>
@@ -199,7 +199,7 @@ public final class Simulation implements AutoCloseable {
      * @param camera the viewer, for visibility and level of detail (read, not kept)
      * @return fixed steps run
      */
-    public int step(double dt, ViewCamera camera) {
+    public int step(double dt, Camera camera) {
         Require.range("dt", dt, 0, 10);
         Require.nonNull("camera", camera);
         accumulator += dt;
@@ -218,7 +218,7 @@ public final class Simulation implements AutoCloseable {
     }
 
     /** Runs exactly one fixed step (ignoring the accumulator) and publishes its frame. Stepping thread. */
-    public void stepFixed(ViewCamera camera) {
+    public void stepFixed(Camera camera) {
         Require.nonNull("camera", camera);
         if (closed) {
             throw new IllegalStateException("the simulation is closed");
@@ -250,7 +250,7 @@ public final class Simulation implements AutoCloseable {
     }
 
     /** Advances the wind one fixed step and writes the field's result for its end into buffer b. */
-    private void updateField(ViewCamera camera, int b) {
+    private void updateField(Camera camera, int b) {
         wind.advance(fixedStep);
         eye[b][0] = camera.x();
         eye[b][1] = camera.y();

@@ -19,7 +19,8 @@ import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
 import java.nio.FloatBuffer;
 import org.jecosys.field.FieldDebugView;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
+import org.joml.Vector3f;
 import org.jecosys.terrain.Heightfield;
 import org.lwjgl.system.MemoryUtil;
 
@@ -38,6 +39,7 @@ public final class FieldOverlay implements AutoCloseable {
     private static final int LINE_PER_WIND = 6;
     private static final int EXTRA = 16;
 
+    private final Vector3f heading = new Vector3f();
     private final GlTracker tracker;
     private final Heightfield terrain;
     private final GlProgram program;
@@ -99,7 +101,7 @@ public final class FieldOverlay implements AutoCloseable {
      * @param showField draw the quadtree cells
      * @param showWind  draw the wind vectors
      */
-    public void draw(FieldDebugView view, ViewCamera camera, boolean showField, boolean showWind, int width,
+    public void draw(FieldDebugView view, Camera camera, boolean showField, boolean showWind, int width,
                      int height) {
         int nodes = view.nodeCount();
         if (nodes > capacityNodes) {
@@ -120,8 +122,10 @@ public final class FieldOverlay implements AutoCloseable {
         float ex = (float) camera.x();
         float ez = (float) camera.z();
         float size = (float) Math.max(terrain.sizeX(), terrain.sizeZ()) * 0.025f;
-        float fx = (float) Math.sin(camera.yaw());
-        float fz = (float) -Math.cos(camera.yaw());
+        camera.forward(heading);
+        float hl = (float) Math.sqrt(heading.x * heading.x + heading.z * heading.z);
+        float fx = hl > 1e-6f ? heading.x / hl : 0f;
+        float fz = hl > 1e-6f ? heading.z / hl : -1f;
         vertex(b, ex + fx * size * 1.6f, ez + fz * size * 1.6f, 1f, 0.85f, 0.1f, 1f);
         vertex(b, ex - fz * size * 0.6f, ez + fx * size * 0.6f, 1f, 0.85f, 0.1f, 1f);
         vertex(b, ex + fz * size * 0.6f, ez - fx * size * 0.6f, 1f, 0.85f, 0.1f, 1f);

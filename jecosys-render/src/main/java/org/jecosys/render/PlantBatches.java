@@ -5,7 +5,7 @@ import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
 import java.util.ArrayList;
 import java.util.List;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.plant.InstanceLayout;
 import org.jecosys.plant.LodChooser;
 import org.jecosys.plant.LodDef;
@@ -187,7 +187,7 @@ public final class PlantBatches {
      * Recomputes the lists for a camera: culling, level choice, dithering membership and counters.
      * No allocation.
      */
-    public void update(ViewCamera camera) {
+    public void update(Camera camera) {
         camera.viewProjection(viewProj);
         frustum.set(viewProj, false);
         int lists = listBase[species];

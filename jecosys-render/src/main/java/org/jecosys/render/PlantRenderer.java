@@ -16,6 +16,7 @@ import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
@@ -32,7 +33,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
@@ -283,7 +284,7 @@ public final class PlantRenderer implements AutoCloseable {
      * {@link #drawNear} then {@link #drawFar}. Draw your opaque geometry (terrain) before this, since
      * the far level is blended without writing depth. Render thread; no allocation.
      */
-    public void draw(Frame frame, ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+    public void draw(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
                      float fogEnd, int viewportHeight) {
         drawNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
         drawFar();
@@ -304,7 +305,7 @@ public final class PlantRenderer implements AutoCloseable {
      *                 wider than the leaf it stands for, and the line level is drawn with the share of
      *                 a pixel the leaf covers as its opacity
      */
-    public void drawNear(Frame frame, ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+    public void drawNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
                          float fogEnd, int viewportHeight) {
         if (frame.componentCount() != world.componentCount()) {
             throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
@@ -327,7 +328,8 @@ public final class PlantRenderer implements AutoCloseable {
         float ez = (float) camera.z();
         lineProgram.use();
         lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-        glUniform1f(uPixelScale, (float) (2 * Math.tan(camera.fovY() / 2) / viewportHeight));
+        glUniform2f(uPixelScale, (float) (camera.viewHeightAtEye() / viewportHeight),
+                (float) (camera.viewHeightPerMetre() / viewportHeight));
         program.use();
         triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         poseTexture.bind(0);

@@ -14,7 +14,7 @@ import static org.lwjgl.opengl.GL11C.glViewport;
 
 import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Rgb;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 
@@ -98,7 +98,7 @@ public final class SceneRenderer implements AutoCloseable {
      * @param frame  the animation frame to show
      * @param camera the viewer (its aspect should be width / height)
      */
-    public void render(Frame frame, ViewCamera camera, int width, int height) {
+    public void render(Frame frame, Camera camera, int width, int height) {
         gl.checkThread();
         if (settings.lodTransition() != band) {
             band = settings.lodTransition();

@@ -17,7 +17,7 @@ import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import org.jecosys.math.Rgb;
-import org.jecosys.math.ViewCamera;
+import org.jecosys.math.Camera;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.terrain.ResourceMap;
 import org.jecosys.terrain.Terrain;
@@ -186,7 +186,7 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /** Draws the terrain. Render thread; no allocation. */
-    public void draw(ViewCamera camera, float lx, float ly, float lz, Rgb fog, float fogStart, float fogEnd) {
+    public void draw(Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart, float fogEnd) {
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());

@@ -28,7 +28,8 @@ uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
 uniform vec3 uLightDir;                          // unit, toward the light
-uniform float uPixelScale;                       // pixel height per metre of distance: 2 tan(fovY / 2) / height
+uniform vec2 uPixelScale;                        // a pixel's height, metres: x + distance * y (Camera's
+                                                 // viewHeightAtEye and viewHeightPerMetre over the viewport height)
 
 flat out vec3 vColour;                           // fogged, one colour per line segment
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
@@ -68,7 +69,7 @@ void main() {
     }
     float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
     float halfWidth = abs(aVertex.z) * length(side);
-    vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / max(distance * uPixelScale, 1e-6), 1.0 / 32.0, 1.0);
+    vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / max(uPixelScale.x + distance * uPixelScale.y, 1e-6), 1.0 / 32.0, 1.0);
     vColour = mix(colour * (0.45 + 0.75 * lit), uFogColour, fog * fog);
 
     int keep = int(c1.w + 0.5);
