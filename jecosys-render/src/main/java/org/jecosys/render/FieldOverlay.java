@@ -95,14 +95,19 @@ public final class FieldOverlay implements AutoCloseable {
     }
 
     /**
-     * Draws the map over a viewport of {@code width x height} pixels. Render thread.
+     * Draws the map in the top-right corner of the viewport {@code (x, y, width, height)}, pixels,
+     * and sets that viewport again on return. Render thread.
      *
      * @param view      the field's debug view (read on this thread between field updates)
      * @param showField draw the quadtree cells
      * @param showWind  draw the wind vectors
+     * @param x         viewport left, pixels
+     * @param y         viewport bottom, pixels
+     * @param width     viewport width, pixels
+     * @param height    viewport height, pixels
      */
-    public void draw(FieldDebugView view, Camera camera, boolean showField, boolean showWind, int width,
-                     int height) {
+    public void draw(FieldDebugView view, Camera camera, boolean showField, boolean showWind, int x, int y,
+                     int width, int height) {
         int nodes = view.nodeCount();
         if (nodes > capacityNodes) {
             reserve(Math.max(nodes, 2 * capacityNodes));
@@ -150,7 +155,7 @@ public final class FieldOverlay implements AutoCloseable {
         vertices.orphan();
         vertices.upload(0, b);
         int side = (int) (0.38f * Math.min(width, height));
-        glViewport(width - side - 10, height - side - 10, side, side);
+        glViewport(x + width - side - 10, y + height - side - 10, side, side);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         program.use();
@@ -163,7 +168,7 @@ public final class FieldOverlay implements AutoCloseable {
         }
         glBindVertexArray(0);
         glDisable(GL_BLEND);
-        glViewport(0, 0, width, height);
+        glViewport(x, y, width, height);
     }
 
     private static void quad(FloatBuffer b, float x0, float z0, float x1, float z1, float r, float g, float bl, float a) {

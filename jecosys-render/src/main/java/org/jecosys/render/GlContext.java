@@ -33,14 +33,22 @@ import org.lwjgl.opengl.GL;
 import org.lwjgl.opengl.GLCapabilities;
 
 /**
- * A GLFW window with an OpenGL 3.3+ core context, current on the thread that made it, which becomes
- * the render thread: every GL call of the renderers made from this context must happen on it
- * ({@link #checkThread()}). {@link #headless} uses GLFW's null platform with an EGL context, which
- * works on Mesa's llvmpipe with no X server (tests, CI, servers); {@link #windowed} opens a visible
- * window on the desktop.
+ * The OpenGL 3.3+ core context the renderers draw with, current on the thread that made or wrapped
+ * it, which becomes the render thread: every GL call of the renderers made with this object must
+ * happen on it ({@link #checkThread()}). Three ways to get one:
+ * <ul>
+ * <li>{@link #current(boolean)} wraps the context the caller (a game) made current on this thread,
+ * with any windowing library: no window is made, no GLFW call is made and no callback is touched;
+ * {@link #close()} frees only what the library made (its debug callback, when asked for one) and
+ * leaves the context, the window and GLFW to their owner.</li>
+ * <li>{@link #headless} makes a hidden window on GLFW's null platform with an EGL context, which works
+ * on Mesa's llvmpipe with no X server (tests, CI, servers).</li>
+ * <li>{@link #windowed} opens a visible window on the desktop.</li>
+ * </ul>
  *
- * <p>GLFW is process-global: one context at a time. {@link #close()} (idempotent) destroys the
- * window, frees the callbacks and terminates GLFW; close every renderer first (see {@link #tracker()}).
+ * <p>The last two own GLFW, which is process-global: one such context at a time; their
+ * {@link #close()} (idempotent) destroys the window, frees the error callback and terminates GLFW.
+ * Close every renderer first (see {@link #tracker()}).
  */
 public final class GlContext implements AutoCloseable {
     private final long window;
@@ -48,6 +56,7 @@ public final class GlContext implements AutoCloseable {
     private final GlTracker tracker = new GlTracker();
     private final GLCapabilities caps;
     private final GlDebug debug;
+    /** Null for a wrapped context: GLFW belongs to the host. */
     private final GLFWErrorCallback errorCallback;
     private final String[] lastGlfwError;
     private boolean closed;
@@ -60,6 +69,41 @@ public final class GlContext implements AutoCloseable {
         this.errorCallback = errorCallback;
         this.lastGlfwError = lastGlfwError;
         this.thread = Thread.currentThread();
+    }
+
+    /**
+     * Wraps the OpenGL context that is current on the calling thread (made by a game with GLFW, SDL,
+     * AWT or anything else), which becomes the render thread of the renderers made with the result.
+     * Makes no window and calls no GLFW function; uses the thread's LWJGL capabilities when the host
+     * has created them ({@code GL.createCapabilities()}) and creates them otherwise. Allocates.
+     *
+     * @param debug whether to install a KHR_debug message callback that turns GL errors into
+     *              exceptions ({@link #debug()}); it replaces the host's debug callback, if any, until
+     *              {@link #close()}, so leave it off unless you want the library's checks
+     * @return a context object that does not own the context: its {@link #close()} leaves the context,
+     *         the window and GLFW alone
+     * @throws IllegalStateException when no context is current on this thread, or it is older than
+     *                               OpenGL 3.3
+     */
+    public static GlContext current(boolean debug) {
+        GLCapabilities caps;
+        try {
+            caps = GL.getCapabilities();
+        } catch (IllegalStateException noCaps) {
+            try {
+                caps = GL.createCapabilities();
+            } catch (IllegalStateException | UnsatisfiedLinkError e) {
+                throw new IllegalStateException("no OpenGL context is current on thread "
+                        + Thread.currentThread().getName() + ": make the game's context current (e.g. "
+                        + "glfwMakeContextCurrent) before GlContext.current", e);
+            }
+        }
+        if (!caps.OpenGL33) {
+            throw new IllegalStateException("JEcoSys needs OpenGL 3.3 core; the current context is "
+                    + glGetString(GL_VERSION));
+        }
+        GlDebug dbg = debug ? new GlDebug(caps) : null;
+        return new GlContext(0, caps, dbg, null, new String[1]);
     }
 
     /** Whether a desktop display is available: {@code DISPLAY} or {@code WAYLAND_DISPLAY} is set. */
@@ -146,7 +190,11 @@ public final class GlContext implements AutoCloseable {
         return new GlContext(w, caps, dbg, cb, last);
     }
 
-    /** The GLFW window handle. */
+    /**
+     * The GLFW window handle of a context this class made, 0 for a wrapped one ({@link #current}).
+     *
+     * @return the window handle, or 0
+     */
     public long window() {
         return window;
     }
@@ -190,7 +238,22 @@ public final class GlContext implements AutoCloseable {
         }
     }
 
-    /** Destroys the window and terminates GLFW. Render thread; idempotent. */
+    /**
+     * Whether this object made the context (and owns the window and GLFW), as opposed to wrapping a
+     * host's ({@link #current}).
+     *
+     * @return true for {@link #headless} and {@link #windowed} contexts
+     */
+    public boolean ownsContext() {
+        return errorCallback != null;
+    }
+
+    /**
+     * Frees what the library made. For a wrapped context ({@link #current}): only the debug callback,
+     * if one was asked for; the context, its capabilities, the window and GLFW stay the host's. For a
+     * context this class made: also destroys the window and terminates GLFW. Close every renderer
+     * first. Render thread; idempotent.
+     */
     @Override
     public void close() {
         if (closed) {
@@ -200,6 +263,9 @@ public final class GlContext implements AutoCloseable {
         closed = true;
         if (debug != null) {
             debug.close();
+        }
+        if (errorCallback == null) {
+            return;
         }
         GL.setCapabilities(null);
         glfwMakeContextCurrent(0);

@@ -410,30 +410,40 @@ public final class PlantRenderer implements AutoCloseable {
         return texels;
     }
 
-    /** Closes {@code resources} last to first; keeps going past a failure and rethrows the first. */
+    /** Closes {@code resources} last to first, like {@link #closeAll} (every one, even past a failure). */
     static void closeReverse(List<AutoCloseable> resources) {
+        AutoCloseable[] reversed = new AutoCloseable[resources.size()];
+        for (int i = 0; i < reversed.length; i++) {
+            reversed[i] = resources.get(reversed.length - 1 - i);
+        }
+        closeAll(reversed);
+    }
+
+    /**
+     * Closes every non-null resource, in order, even when one fails: the first failure is thrown
+     * afterwards (wrapped when checked) with the later ones added as suppressed exceptions, so one
+     * broken close never leaks the objects after it. Render thread; allocates only on failure.
+     */
+    static void closeAll(AutoCloseable... resources) {
         RuntimeException first = null;
-        for (int i = resources.size() - 1; i >= 0; i--) {
+        for (AutoCloseable r : resources) {
+            if (r == null) {
+                continue;
+            }
             try {
-                closeAll(resources.get(i));
-            } catch (RuntimeException e) {
-                first = first == null ? e : first;
+                r.close();
+            } catch (Exception e) {
+                RuntimeException wrapped = e instanceof RuntimeException re ? re
+                        : new IllegalStateException("closing " + r, e);
+                if (first == null) {
+                    first = wrapped;
+                } else {
+                    first.addSuppressed(wrapped);
+                }
             }
         }
         if (first != null) {
             throw first;
-        }
-    }
-
-    static void closeAll(AutoCloseable... resources) {
-        for (AutoCloseable r : resources) {
-            if (r != null) {
-                try {
-                    r.close();
-                } catch (Exception e) {
-                    throw new IllegalStateException("closing " + r, e);
-                }
-            }
         }
     }
 }

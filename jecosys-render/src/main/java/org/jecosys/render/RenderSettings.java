@@ -16,6 +16,8 @@ public final class RenderSettings {
     private boolean showWind;
     private float fogStart = 25;
     private float fogEnd = 160;
+    private boolean clear = true;
+    private boolean terrain = true;
 
     /** Sky (clear and fog) colour. */
     public Rgb sky() {
@@ -90,6 +92,49 @@ public final class RenderSettings {
         }
         fogStart = start;
         fogEnd = end;
+        return this;
+    }
+
+    /**
+     * Whether {@link SceneRenderer#render(org.jecosys.sim.Frame, org.jecosys.math.Camera)} first clears
+     * its viewport to the sky colour and depth 1. On by default (the viewer, headless rendering); a
+     * game that draws its own sky and ground first turns it off.
+     *
+     * @return whether the viewport is cleared before drawing
+     */
+    public boolean clear() {
+        return clear;
+    }
+
+    /**
+     * Sets whether the renderer clears its viewport before drawing (see {@link #clear()}).
+     *
+     * @param clear true to clear colour and depth of the viewport first
+     * @return this settings object
+     */
+    public RenderSettings clear(boolean clear) {
+        this.clear = clear;
+        return this;
+    }
+
+    /**
+     * Whether the library draws the scene's terrain mesh. On by default; a game that draws its own
+     * ground turns it off, and the plants are depth-tested against the game's depth buffer.
+     *
+     * @return whether the terrain is drawn
+     */
+    public boolean terrain() {
+        return terrain;
+    }
+
+    /**
+     * Sets whether the library draws the scene's terrain (see {@link #terrain()}).
+     *
+     * @param terrain true to draw the terrain mesh
+     * @return this settings object
+     */
+    public RenderSettings terrain(boolean terrain) {
+        this.terrain = terrain;
         return this;
     }
 }

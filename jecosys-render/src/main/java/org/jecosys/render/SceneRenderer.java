@@ -11,8 +11,13 @@ import static org.lwjgl.opengl.GL11C.glDepthFunc;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL11C.glViewport;
+import static org.lwjgl.opengl.GL11C.GL_BLEND;
+import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
+import static org.lwjgl.opengl.GL11C.glDepthMask;
+import static org.lwjgl.opengl.GL11C.glScissor;
 
 import org.jecosys.field.FieldDebugView;
+import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
 import org.jecosys.sim.Frame;
@@ -20,7 +25,8 @@ import org.jecosys.sim.World;
 
 /**
  * Renders a whole frame of a {@link World}: sky, plants, lit terrain and the optional force-field
- * overlays, into the currently bound framebuffer (a window's or a {@link GlFramebuffer}). Owns the
+ * overlays, into the currently bound framebuffer and viewport (a window's, a game's own or a
+ * {@link GlFramebuffer}), and puts back every GL state it changed (see {@link #render(Frame, Camera)}). Owns the
  * terrain, plant and overlay renderers. Render thread only; {@link #render} allocates nothing in the
  * steady state (changing the tint or LOD band re-uploads or rebuilds once).
  */
@@ -37,6 +43,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final FieldOverlay overlay;
     private double band;
     private FieldDebugView field;
+    private final GlStateGuard state;
     private boolean closed;
     /** Benchmark breakdown only (package-private): skip the terrain or the plants. */
     boolean drawTerrain = true;
@@ -54,16 +61,18 @@ public final class SceneRenderer implements AutoCloseable {
         this.band = settings.lodTransition();
         TerrainRenderer t = null;
         PlantRenderer p = null;
+        GlStateGuard g = new GlStateGuard();
         try {
             t = new TerrainRenderer(gl, world.terrain(), settings.tint());
             p = new PlantRenderer(gl, world, band);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
-            PlantRenderer.closeAll(p, t);
+            PlantRenderer.closeAll(p, t, g);
             throw e;
         }
         terrain = t;
         plants = p;
+        state = g;
     }
 
     /** The settings this renderer reads. */
@@ -92,32 +101,88 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws one frame into the bound framebuffer over a {@code width x height} viewport. Render
-     * thread; no allocation in the steady state.
+     * Draws one frame into the bound framebuffer, over a {@code width x height} viewport at its
+     * origin: {@code glViewport(0, 0, width, height)} then {@link #render(Frame, Camera)}. The
+     * viewport is put back on return like every other state. Render thread; no allocation in the
+     * steady state.
      *
      * @param frame  the animation frame to show
      * @param camera the viewer (its aspect should be width / height)
+     * @param width  viewport width, pixels, &gt; 0
+     * @param height viewport height, pixels, &gt; 0
      */
     public void render(Frame frame, Camera camera, int width, int height) {
         gl.checkThread();
+        Require.range("width", width, 1, 1 << 16);
+        Require.range("height", height, 1, 1 << 16);
+        Require.nonNull("frame", frame);
+        Require.nonNull("camera", camera);
+        state.save();
+        try {
+            glViewport(0, 0, width, height);
+            draw(frame, camera, 0, 0, width, height);
+        } finally {
+            state.restore();
+        }
+    }
+
+    /**
+     * Draws one frame into whatever framebuffer and viewport are bound, so a game can draw its sky and
+     * ground first, render into part of its window, and draw its HUD after. With
+     * {@link RenderSettings#clear()} on, the viewport's rectangle is first cleared to the sky colour
+     * and depth 1 (a scissored clear); off, the plants are depth-tested against what is already in the
+     * depth buffer. {@link RenderSettings#terrain()} says whether the library's own terrain is drawn.
+     *
+     * <p>State contract: every GL state this method changes is put back before it returns (see
+     * {@link GlStateGuard}: program, vertex array, array and texture-buffer bindings, active texture
+     * unit and the buffer textures of units 0 and 1, depth test, function and mask, culling,
+     * blending, scissor, clear colour, viewport). The framebuffer binding is never changed. Render
+     * thread; no allocation in the steady state.
+     *
+     * @param frame  the animation frame to show
+     * @param camera the viewer (its projection's aspect should match the viewport's)
+     */
+    public void render(Frame frame, Camera camera) {
+        gl.checkThread();
+        Require.nonNull("frame", frame);
+        Require.nonNull("camera", camera);
+        state.save();
+        try {
+            draw(frame, camera, state.viewportX(), state.viewportY(), state.viewportWidth(),
+                    state.viewportHeight());
+        } finally {
+            state.restore();
+        }
+    }
+
+    private void draw(Frame frame, Camera camera, int vx, int vy, int width, int height) {
+        if (width <= 0 || height <= 0) {
+            return;
+        }
         if (settings.lodTransition() != band) {
             band = settings.lodTransition();
             plants.batches().setBandWidth(band);
         }
         terrain.setTint(settings.tint());
         Rgb sky = settings.sky();
-        glViewport(0, 0, width, height);
-        glClearColor(sky.r(), sky.g(), sky.b(), 1f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (settings.clear()) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(vx, vy, width, height);
+            glClearColor(sky.r(), sky.g(), sky.b(), 1f);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            glDisable(GL_SCISSOR_TEST);
+        }
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
+        glDepthMask(true);
         glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
         // near plants first: the terrain drawn after them fails the early depth test behind them (less
         // shading on a software rasteriser); the far (line) level last, blended over both
         if (drawPlants) {
             plants.drawNear(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd(), height);
         }
-        if (drawTerrain) {
+        if (drawTerrain && settings.terrain()) {
             terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
         }
         if (drawPlants) {
@@ -125,7 +190,7 @@ public final class SceneRenderer implements AutoCloseable {
         }
         glDisable(GL_DEPTH_TEST);
         if (field != null && (settings.showField() || settings.showWind())) {
-            overlay.draw(field, camera, settings.showField(), settings.showWind(), width, height);
+            overlay.draw(field, camera, settings.showField(), settings.showWind(), vx, vy, width, height);
         }
     }
 
@@ -144,7 +209,7 @@ public final class SceneRenderer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            PlantRenderer.closeAll(overlay, plants, terrain);
+            PlantRenderer.closeAll(overlay, plants, terrain, state);
         }
     }
 }
