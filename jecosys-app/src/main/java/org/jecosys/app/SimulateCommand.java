@@ -12,11 +12,11 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
-import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.AnimationView;
 import org.jecosys.bench.Json;
 import org.jecosys.field.FieldCounters;
 import org.jecosys.field.ForceFieldDef;
-import org.jecosys.field.QuadtreeForceField;
+import org.jecosys.field.ForceField;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.SceneDef;
@@ -217,8 +217,8 @@ final class SimulateCommand implements Callable<Integer> {
 
     private static String dump(Simulation sim) {
         World w = sim.world();
-        AnimationState s = sim.state();
-        QuadtreeForceField f = sim.forceField();
+        AnimationView s = sim.state();
+        ForceField f = sim.forceField();
         StringBuilder sb = new StringBuilder(DUMP_HEADER).append('\n');
         for (int p = 0; p < w.plantCount(); p++) {
             String species = w.plants().species().get(w.plantSpecies(p)).def().id();
@@ -226,7 +226,7 @@ final class SimulateCommand implements Callable<Integer> {
             if (node < 0) {
                 node = f.leafNode(p);
             }
-            int depth = f.tree().depth(node);
+            int depth = f.debugView().depth(node);
             for (int c = w.firstComponent(p), e = c + w.componentsOf(p); c < e; c++) {
                 sb.append(p).append(',').append(c).append(',').append(species).append(',')
                         .append(w.plantX(p)).append(',').append(w.plantZ(p)).append(',')

@@ -90,8 +90,13 @@ final class ViewerPanel {
             for (int i = 0; i < wind.size(); i++) {
                 WindSource w = wind.get(i);
                 ImGui.pushID(i);
-                if (ImGui.checkbox(w.id() + " (" + w.kind().xmlName() + ")", w.isEnabled())) {
+                String kindName = w.def() == null ? "user flow" : w.kind().xmlName();
+                if (ImGui.checkbox(w.id() + " (" + kindName + ")", w.isEnabled())) {
                     sim.setFlowEnabled(w, !w.isEnabled());
+                }
+                if (w.def() == null) {
+                    ImGui.popID();
+                    continue; // a program's own flow: only its switch is editable here
                 }
                 edit[0] = (float) w.def().strength();
                 if (ImGui.sliderFloat("strength", edit, 0, 20)) {
@@ -192,8 +197,8 @@ final class ViewerPanel {
         List<FlowDef> flows = new ArrayList<>();
         for (int i = 0; i < wind.size(); i++) {
             WindSource w = wind.get(i);
-            if (w.kind() == FlowKind.BLAST || w.id().startsWith(Viewer.AGENT_ID)) {
-                continue;
+            if (w.def() == null || w.kind() == FlowKind.BLAST || w.id().startsWith(Viewer.AGENT_ID)) {
+                continue; // a program's own flow, a blast or the drag agent is not part of the scene file
             }
             FlowDef d = w.def();
             flows.add(new FlowDef(d.id(), d.kind(), w.isEnabled(), d.x(), d.z(), d.strength(), d.direction(),

@@ -14,6 +14,17 @@ import org.jecosys.math.Require;
  */
 public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps, int subIntervals, int threads,
                            long seed) {
+    /**
+     * Checks the components.
+     *
+     * @param mode         static, random or constraint, not null
+     * @param fixedStep    fixed step, seconds, in [1e-5, 1]
+     * @param maxSubSteps  most fixed steps per step(dt) call, in [1, 1000]
+     * @param subIntervals spring sub-intervals per step, in [1, 64]
+     * @param threads      animation workers, in [0, 256]; 0 means the available processors
+     * @param seed         seed of the random mode (any value)
+     * @throws IllegalArgumentException when mode is null or a number is out of range
+     */
     public AnimationDef {
         Require.nonNull("mode", mode);
         Require.range("fixedStep", fixedStep, 1e-5, 1);
@@ -22,7 +33,7 @@ public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps
         Require.range("threads", threads, 0, 256);
     }
 
-    /** Constraint mode at 60 Hz, at most 8 sub-steps, 4 sub-intervals, all processors, seed 1. */
+    /** {@return constraint mode at 60 Hz, at most 8 sub-steps, 4 sub-intervals, all processors, seed 1} */
     public static AnimationDef defaults() {
         return new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4, 0, 1);
     }

@@ -15,7 +15,7 @@ public enum AnimationMode {
         this.xmlName = xmlName;
     }
 
-    /** The value used in scene files and on the command line. */
+    /** {@return the value used in scene files and on the command line, e.g. {@code "constraint"}} */
     public String xmlName() {
         return xmlName;
     }

@@ -1,11 +1,11 @@
 package org.jecosys.anim;
 
 import org.jecosys.math.Require;
-import org.jecosys.math.Rng;
 
 /**
  * The animated state of every plant component in flat arrays indexed by component (paper §4.2;
- * DESIGN.md style 2), and its updater. Per component: deviation D and velocity v (2D, ground plane,
+ * structure of arrays, no object per component or plant), and its updater. Per component:
+ * deviation D and velocity v (2D, ground plane,
  * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
  * function of D and the component's constants, written by {@link #animate} into the caller's arrays
  * (the simulation's back frame) and computed on demand by the accessors. Per plant: the force input
@@ -50,7 +50,7 @@ import org.jecosys.math.Rng;
  * (no reductions, no shared random state). Everything else: one thread while no range runs.
  * Nothing here allocates after construction.
  */
-public final class AnimationState {
+public final class AnimationState implements AnimationView {
     private final SpringKinds kinds;
     private final int plants;
     private final int components;
@@ -60,9 +60,6 @@ public final class AnimationState {
     private final float[] plantY;
     private final float[] plantZ;
     private final LodBands lod;
-
-    /** Output ranges closer than this many components are merged (recomputing the gap is idempotent). */
-    private static final int MERGE_GAP = 256;
 
     private final short[] kind;
     /*
@@ -205,6 +202,9 @@ public final class AnimationState {
      * Puts plants {@code first .. end-1} and their components back at rest: D = v = 0 (hence pose 0
      * and the rest heading), no remembered force. Outputs already written elsewhere (a frame) are not
      * touched: write them again with {@link #copyOutputs}. No allocation.
+     *
+     * @param first first plant reset
+     * @param end   one past the last plant reset; {@code first <= end}
      */
     public void resetToRest(int first, int end) {
         for (int p = first; p < end; p++) {
@@ -222,83 +222,48 @@ public final class AnimationState {
 
     /**
      * Advances plants {@code first .. end-1} by one step of the length last given to
-     * {@link SpringKinds#prepare} (paper §4.2.2), without writing any output: the outputs are a
-     * function of D (see {@link #poseCoordinate}, {@link #copyOutputs}). Otherwise as
-     * {@link #animate(int, int, AnimationMode, float[], float[], boolean[], double, double, double, Rng,
-     * float[], float[], float[], float[], long[])}.
-     *
-     * @return components updated
-     */
-    public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
-                       double eyeX, double eyeY, double eyeZ, Rng rng) {
-        return animate(first, end, mode, windX, windZ, visible, eyeX, eyeY, eyeZ, rng, null, null, null, null, null);
-    }
-
-    /**
-     * Advances plants {@code first .. end-1} by one step of the length last given to
-     * {@link SpringKinds#prepare} (paper §4.2.2) and writes the outputs of all their components.
-     * Only plants with {@code visible[p]} are updated (the others keep their last state), and of
-     * those only the components that their level of detail draws. The level of every plant in the
-     * range is recomputed from the eye.
+     * {@link SpringKinds#prepare} (paper §4.2.2) and, if {@code step} has output arrays, writes the
+     * outputs of all their components. Only plants with {@code visible[p]} are updated (the others
+     * keep their last state), and of those only the components that their level of detail draws.
+     * The level of every plant in the range is recomputed from the eye.
      *
      * <ul>
      * <li>CONSTRAINT: the spring of {@link SpringKinds}, driven from the force at the previous update
      * to the force of wind {@code (windX[p], windZ[p])} (m/s) now;</li>
      * <li>RANDOM: each updated component takes a random deviation in a disc of radius 0.3 length
-     * (paper Table 7's S2), from {@code rng};</li>
+     * (paper Table 7's S2), from the step's random source;</li>
      * <li>STATIC: nothing moves (see {@link #resetToRest}).</li>
      * </ul>
      *
-     * <p>Outputs: for every component c of the range, {@code poseOut[c]} and {@code azimuthOut[c]}
-     * receive its pose coordinate and azimuth ({@link #poseCoordinate}, {@link #azimuth}), bit for
-     * bit. They are computed for the updated plants (and short gaps between them); the other
-     * components' D did not change, so their outputs are copied from {@code poseBefore} and
-     * {@code azimuthBefore}, which must hold the outputs of the state before this call (for example
-     * the frame published last), but only for plants whose outputs in {@code poseOut} are stale:
-     * {@code outVersion[p]} says which {@link #version} of plant p the output arrays hold, and is
-     * brought up to date here. All five null: no output is written.
+     * <p>Outputs ({@link AnimationStep#outputs}): for every component c of the range,
+     * {@code poseOut[c]} and {@code azimuthOut[c]} receive its pose coordinate and azimuth
+     * ({@link #poseCoordinate}, {@link #azimuth}), bit for bit. They are computed for the updated
+     * plants (and short gaps between them); the other components' D did not change, so their outputs
+     * are copied from {@code poseBefore} and {@code azimuthBefore}, which must hold the outputs of the
+     * state before this call (for example the frame published last), but only for plants whose
+     * outputs in {@code poseOut} are stale: {@code outVersion[p]} says which {@link #version} of plant
+     * p the output arrays hold, and is brought up to date here. Without output arrays
+     * ({@link AnimationStep#noOutputs}) no output is written: the outputs are a function of D (see
+     * {@link #poseCoordinate}, {@link #copyOutputs}). No allocation.
      *
-     * @param windX   per plant wind X at its node, m/s (indexed by plant)
-     * @param windZ   per plant wind Z, m/s
-     * @param visible per plant, whether it is on a visible node
-     * @param rng     random source of this range (RANDOM mode only; may be null otherwise)
-     * @param poseOut per component, receives the pose coordinate (indexed by component), or null
-     * @param azimuthOut per component, receives the azimuth, or null
-     * @param poseBefore per component, the pose coordinates before this call (read only), or null
-     * @param azimuthBefore per component, the azimuths before this call (read only), or null
-     * @param outVersion per plant, the version of its outputs in poseOut/azimuthOut (updated), or null
+     * @param first first plant of the range
+     * @param end   end of the range (exclusive)
+     * @param step  the step's inputs; also holds this call's bookkeeping, so it must not be given to
+     *              another call running at the same time
      * @return components updated
      */
-    public int animate(int first, int end, AnimationMode mode, float[] windX, float[] windZ, boolean[] visible,
-                       double eyeX, double eyeY, double eyeZ, Rng rng, float[] poseOut, float[] azimuthOut,
-                       float[] poseBefore, float[] azimuthBefore, long[] outVersion) {
-        final boolean out = poseOut != null;
-        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)
-                || out != (outVersion != null)) {
-            throw new IllegalArgumentException("give all five output arrays or none");
-        }
+    public int animate(int first, int end, AnimationStep step) {
+        final boolean out = step.hasOutputs();
+        final StepCursor cursor = step.cursor;
+        final AnimationMode mode = step.mode;
+        final boolean[] visible = step.visible;
+        final double eyeX = step.eyeX;
+        final double eyeY = step.eyeY;
+        final double eyeZ = step.eyeZ;
+        cursor.begin(first);
         int updated = 0;
-        final float[] co = kinds.coef;
-        final int[] masks = kinds.lodMask;
-        final short[] kind = this.kind;
-        final int[] runStart = this.runStart;
-        final int[] runClass = this.runClass;
-        final int[] runMask = this.runMask;
-        final float[] runForce = this.runForce;
-        int segRun = -1; // pending spring segment: runs segRun .. segRunEnd - 1, one class, contiguous
-        int segRunEnd = -1;
-        int segClass = -1;
-        int outStart = -1; // pending output range [outStart, outEnd) of components
-        int outEnd = -1;
-        int outStartPlant = -1;
-        int done = first; // outputs up to date below this plant
         for (int p = first; p < end; p++) {
-            double dx = plantX[p] - eyeX;
-            double dy = plantY[p] - eyeY;
-            double dz = plantZ[p] - eyeZ;
-            double d2 = dx * dx + dy * dy + dz * dz;
-            int l = lod.level(plantSpecies[p], d2);
-            level[p] = (byte) l;
+            int l = updateLevel(p, eyeX, eyeY, eyeZ);
             if (!visible[p] || mode == AnimationMode.STATIC) {
                 continue;
             }
@@ -307,92 +272,89 @@ public final class AnimationState {
             int c0 = firstComponent[p];
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
-                updated += SpringRuns.randomise(c0, c1, bit, kind, masks, kinds.length, rng, devX, devZ, velX, velZ);
+                updated += SpringRuns.randomise(c0, c1, bit, kind, kinds.lodMask, kinds.length, step.rng, devX, devZ,
+                        velX, velZ);
             } else {
-                float ux = windX[p];
-                float uz = windZ[p];
-                float speed = (float) Math.sqrt(ux * ux + uz * uz);
-                float p1x = speed * ux;
-                float p1z = speed * uz;
-                float p0x = pressX[p];
-                float p0z = pressZ[p];
-                for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
-                    if ((runMask[r] & bit) == 0) {
-                        continue;
-                    }
-                    int cls = runClass[r];
-                    SpringRuns.setForce(r, cls, co, runForce, p0x, p0z, p1x, p1z);
-                    updated += runStart[r + 1] - runStart[r];
-                    if (segRun >= 0 && cls == segClass && runStart[r] == runStart[segRunEnd]) {
-                        segRunEnd = r + 1;
-                    } else {
-                        if (segRun >= 0) {
-                            spring(segRun, segRunEnd, segClass);
-                        }
-                        segRun = r;
-                        segRunEnd = r + 1;
-                        segClass = cls;
-                    }
-                }
-                pressX[p] = p1x;
-                pressZ[p] = p1z;
+                updated += queueSpringRuns(p, bit, step.windX[p], step.windZ[p], cursor);
             }
-            if (!out) {
-                continue;
+            if (out) {
+                cursor.queueOutputs(this, step, p, c0, c1);
             }
-            if (outStart < 0) {
-                outStart = c0;
-                outStartPlant = p;
-            } else if (c0 - outEnd > MERGE_GAP) {
-                if (segRun >= 0) { // the outputs read D: advance the pending segment first
-                    spring(segRun, segRunEnd, segClass);
-                    segRun = -1;
-                }
-                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
-                        outVersion);
-                outStart = c0;
-                outStartPlant = p;
-            }
-            outEnd = c1;
         }
-        if (segRun >= 0) {
-            spring(segRun, segRunEnd, segClass);
-        }
+        cursor.advanceSegment(this);
         if (out) {
-            if (outStart >= 0) {
-                done = writeOutputs(done, outStartPlant, outEnd, poseOut, azimuthOut, poseBefore, azimuthBefore,
-                        outVersion);
-            }
-            copyStale(done, end, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
+            cursor.finishOutputs(this, step, end);
         }
         return updated;
     }
 
+    /**
+     * Recomputes plant p's level of detail from its squared distance (m^2) to the eye (world
+     * metres), stores it and returns it.
+     */
+    private int updateLevel(int p, double eyeX, double eyeY, double eyeZ) {
+        double dx = plantX[p] - eyeX;
+        double dy = plantY[p] - eyeY;
+        double dz = plantZ[p] - eyeZ;
+        double d2 = dx * dx + dy * dy + dz * dz;
+        int l = lod.level(plantSpecies[p], d2);
+        level[p] = (byte) l;
+        return l;
+    }
+
+    /**
+     * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: each of its spring runs drawn
+     * at that level gets its force terms ({@link SpringRuns#setForce}) from the plant's force at its
+     * last update to the force of wind {@code (ux, uz)} (m/s) now, and is queued on the cursor to be
+     * advanced (in segments, see the class comment); the plant then remembers the new force.
+     *
+     * @return components queued
+     */
+    private int queueSpringRuns(int p, int bit, float ux, float uz, StepCursor cursor) {
+        float speed = (float) Math.sqrt(ux * ux + uz * uz);
+        float p1x = speed * ux;
+        float p1z = speed * uz;
+        float p0x = pressX[p];
+        float p0z = pressZ[p];
+        int queued = 0;
+        for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
+            if ((runMask[r] & bit) == 0) {
+                continue;
+            }
+            int cls = runClass[r];
+            SpringRuns.setForce(r, cls, kinds.coef, runForce, p0x, p0z, p1x, p1z);
+            queued += runStart[r + 1] - runStart[r];
+            cursor.queueRun(this, r, cls, runStart);
+        }
+        pressX[p] = p1x;
+        pressZ[p] = p1z;
+        return queued;
+    }
+
     /** Advances runs {@code r0 .. r1-1} (contiguous, all of spring class cls): {@link SpringRuns#spring}. */
-    private void spring(int r0, int r1, int cls) {
+    void spring(int r0, int r1, int cls) {
         SpringRuns.spring(r0, r1, cls, kinds.coef, runStart, runForce, devX, devZ, velX, velZ);
     }
 
     /**
      * Brings the stale outputs of plants [done, p0) up to date from before, computes the outputs of
-     * plant p0's first component to component c1 (a plant boundary); returns the plant that starts at c1.
+     * plant p0's first component to component c1 (a plant boundary); returns the plant that starts at
+     * c1. The output arrays are the step's.
      */
-    private int writeOutputs(int done, int p0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
-                             float[] azimuthBefore, long[] outVersion) {
-        copyStale(done, p0, poseOut, azimuthOut, poseBefore, azimuthBefore, outVersion);
-        outputs(firstComponent[p0], c1, poseOut, azimuthOut);
+    int writeOutputs(int done, int p0, int c1, AnimationStep step) {
+        copyStale(done, p0, step);
+        outputs(firstComponent[p0], c1, step.poseOut, step.azimuthOut);
         int p = p0;
         for (; p < plants && firstComponent[p] < c1; p++) {
-            outVersion[p] = plantVersion[p];
+            step.outVersion[p] = plantVersion[p];
         }
         return p;
     }
 
     /** Copies the outputs of plants [p0, p1) whose outVersion is stale from before (runs of them at once). */
-    private void copyStale(int p0, int p1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
-                           float[] azimuthBefore, long[] outVersion) {
-        BendOutputs.copyStale(p0, p1, firstComponent, plantVersion, poseOut, azimuthOut, poseBefore, azimuthBefore,
-                outVersion);
+    void copyStale(int p0, int p1, AnimationStep step) {
+        BendOutputs.copyStale(p0, p1, firstComponent, plantVersion, step.poseOut, step.azimuthOut, step.poseBefore,
+                step.azimuthBefore, step.outVersion);
     }
 
     /**

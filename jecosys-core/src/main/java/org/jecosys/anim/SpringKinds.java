@@ -5,15 +5,15 @@ import java.util.List;
 import org.jecosys.field.DragLaw;
 import org.jecosys.math.Require;
 import org.jecosys.plant.ComponentDef;
-import org.jecosys.plant.ComponentModel;
+import org.jecosys.plant.PlantComponent;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
 import org.joml.Vector3f;
 
 /**
  * The constants of every component <em>kind</em> (species x component type x shape variant) and the
- * cached step coefficients of the dynamic-constraint spring (paper §4.2.1-4.2.2, eq. 5, as
- * DESIGN.md "The model" resolves it).
+ * cached step coefficients of the dynamic-constraint spring (paper §4.2.1-4.2.2, eq. 5, resolved as
+ * "The model" below states; see also docs/ARCHITECTURE.md, "The model").
  *
  * <h2>The model</h2>
  * Each component's deviation D (metres, 2D in the ground plane, the centre of mass's offset from its
@@ -63,7 +63,7 @@ import org.joml.Vector3f;
  * the stepping thread calls {@link #prepare} while the workers are idle; workers then only read.
  */
 public final class SpringKinds {
-    /** Coefficients per kind in {@link #coefficients()}. */
+    /** Coefficients per kind in {@link #coefficients(int, float[], int)}. */
     public static final int STRIDE = 8;
 
     private final int count;
@@ -125,6 +125,9 @@ public final class SpringKinds {
      * The kinds of a scene's species: kind {@link #kindOf}{@code (s, c, v)} for species s, component
      * type c and shape variant v. The rest lean of a kind is the horizontal tip offset of its pose 0
      * (the gravity-bent rest shape, local +X). Build time; allocates.
+     *
+     * @param species the scene's built species, in scene order
+     * @return the kinds, species by species, component type by component type, variant by variant
      */
     public static SpringKinds of(List<SpeciesModel> species) {
         Require.nonNull("species", species);
@@ -137,7 +140,7 @@ public final class SpringKinds {
             base[s] = b.n;
             variants[s] = sm.variants();
             for (int c = 0; c < sm.componentCount(); c++) {
-                ComponentModel cm = sm.component(c);
+                PlantComponent cm = sm.component(c);
                 ComponentDef d = cm.def();
                 int mask = 0;
                 for (int l = 0; l < d.lodSegments().size(); l++) {
@@ -154,57 +157,99 @@ public final class SpringKinds {
         return new SpringKinds(b, base, variants);
     }
 
-    /** Kind of species s, component type c, variant v (for kinds made by {@link #of}). */
+    /**
+     * {@return the kind of a species' component type in a shape variant (for kinds made by {@link #of})}
+     *
+     * @param species   species index, in the list given to {@link #of}
+     * @param component component type index within the species
+     * @param variant   shape variant, in [0, the species' variants)
+     */
     public int kindOf(int species, int component, int variant) {
         return speciesBase[species] + component * speciesVariants[species] + variant;
     }
 
-    /** Number of kinds. */
+    /** {@return the number of kinds} */
     public int count() {
         return count;
     }
 
-    /** Spring constant PC of kind k, N/m. */
+    /**
+     * {@return the spring constant PC of kind k, N/m}
+     *
+     * @param k kind, in [0, count())
+     */
     public double stiffness(int k) {
         return stiffness[k];
     }
 
-    /** Response time tau of kind k, seconds. */
+    /**
+     * {@return the response time tau of kind k, seconds}
+     *
+     * @param k kind, in [0, count())
+     */
     public double responseTime(int k) {
         return responseTime[k];
     }
 
-    /** Mass of kind k, kg (does not enter the motion; see the class comment). */
+    /**
+     * {@return the mass of kind k, kg (does not enter the motion; see the class comment)}
+     *
+     * @param k kind, in [0, count())
+     */
     public double mass(int k) {
         return mass[k];
     }
 
-    /** Drag coefficient times area of kind k, m^2. */
+    /**
+     * {@return the drag coefficient times area of kind k, m^2}
+     *
+     * @param k kind, in [0, count())
+     */
     public double dragArea(int k) {
         return dragArea[k];
     }
 
-    /** Equilibrium deviation per unit {@code |u| u}: {@code 0.5 rho dragArea / PC}, m per (m/s)^2. */
+    /**
+     * {@return the equilibrium deviation per unit {@code |u| u}: {@code 0.5 rho dragArea / PC}, m per (m/s)^2}
+     *
+     * @param k kind, in [0, count())
+     */
     public double gain(int k) {
         return gain[k];
     }
 
-    /** Rest lean of kind k: horizontal tip offset of the rest pose, metres (with a small floor). */
+    /**
+     * {@return the rest lean of kind k: horizontal tip offset of the rest pose, metres (at least 1e-4 length)}
+     *
+     * @param k kind, in [0, count())
+     */
     public float restLean(int k) {
         return leanMag[k];
     }
 
-    /** Skeleton length of kind k, metres. */
+    /**
+     * {@return the skeleton length of kind k, metres}
+     *
+     * @param k kind, in [0, count())
+     */
     public float length(int k) {
         return length[k];
     }
 
-    /** Bend of the last pose of kind k, radians. */
+    /**
+     * {@return the bend of the last pose of kind k, radians}
+     *
+     * @param k kind, in [0, count())
+     */
     public float maxBend(int k) {
         return maxBend[k];
     }
 
-    /** Last pose coordinate (K - 1) of kind k. */
+    /**
+     * {@return the last pose coordinate (K - 1) of kind k}
+     *
+     * @param k kind, in [0, count())
+     */
     public float poseMax(int k) {
         return poseMax[k];
     }
@@ -213,27 +258,61 @@ public final class SpringKinds {
      * The spring class of kind k: the first kind with the same response time and gain (the only
      * constants the step coefficients depend on), so kinds of one class always have bit-identical
      * coefficients. The shape variants of one component type share their class.
+     *
+     * @param k kind, in [0, count())
+     * @return the class's first kind, in [0, k]
      */
     public int springClass(int k) {
         return springClass[k];
     }
 
-    /** Bit l set when kind k is drawn (lodSegments &gt; 0) at level of detail l. */
+    /**
+     * {@return a mask with bit l set when kind k is drawn (lodSegments &gt; 0) at level of detail l}
+     *
+     * @param k kind, in [0, count())
+     */
     public int lodMask(int k) {
         return lodMask[k];
     }
 
-    /** The step length the coefficients were last prepared for, seconds (NaN before the first). */
+    /** {@return the step length the coefficients were last prepared for, seconds (NaN before the first)} */
     public double preparedStep() {
         return preparedStep;
     }
 
     /**
-     * The cached coefficients, {@link #STRIDE} per kind in the order aDD, aDv, bD, cD, aVD, aVv, bV,
-     * cV (see the class comment). A live array: read it, do not write it.
+     * Copies the cached coefficients of kind k, {@link #STRIDE} of them in the order aDD, aDv, bD, cD,
+     * aVD, aVv, bV, cV (see the class comment), into {@code dest} from {@code offset}. Any thread
+     * while no {@link #prepare} runs; no allocation.
+     *
+     * @param k      kind, in [0, count())
+     * @param dest   where to write, at least {@code offset + STRIDE} long
+     * @param offset first index written
+     * @return {@code dest}
+     * @throws IllegalArgumentException when k is out of range or dest is too short
      */
-    public float[] coefficients() {
-        return coef;
+    public float[] coefficients(int k, float[] dest, int offset) {
+        Require.range("k", k, 0, count - 1);
+        Require.nonNull("dest", dest);
+        if (offset < 0 || dest.length - offset < STRIDE) {
+            throw new IllegalArgumentException("dest must hold " + STRIDE + " values from offset " + offset
+                    + ", its length is " + dest.length);
+        }
+        System.arraycopy(coef, k * STRIDE, dest, offset, STRIDE);
+        return dest;
+    }
+
+    /**
+     * One cached coefficient of kind k (see {@link #coefficients(int, float[], int)}). No allocation.
+     *
+     * @param k kind, in [0, count())
+     * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
+     * @return the coefficient (NaN-free after {@link #prepare}; 0 before)
+     */
+    public float coefficient(int k, int i) {
+        Require.range("k", k, 0, count - 1);
+        Require.range("i", i, 0, STRIDE - 1);
+        return coef[k * STRIDE + i];
     }
 
     /**
@@ -319,6 +398,10 @@ public final class SpringKinds {
         private int[] poses = new int[8];
         private int[] lodMask = new int[8];
 
+        /** An empty builder, room for 8 kinds before it grows (doubling). Allocates. */
+        public Builder() {
+        }
+
         /**
          * Adds a kind; returns its index.
          *
@@ -331,6 +414,9 @@ public final class SpringKinds {
          * @param maxBend      bend of the last pose, radians, in [1e-3, pi/2]
          * @param poses        pose count K, in [2, 64]
          * @param lodMask      bit l set when drawn at level l
+         * @return the new kind's index
+         * @throws IllegalArgumentException when a value is out of range or there are already
+         *                                  {@code Short.MAX_VALUE} kinds
          */
         public int add(double stiffness, double responseTime, double mass, double dragArea, double length,
                        double restLean, double maxBend, int poses, int lodMask) {
@@ -369,7 +455,7 @@ public final class SpringKinds {
             return n++;
         }
 
-        /** The kinds added so far (kindOf is not available on these). */
+        /** {@return the kinds added so far (kindOf is not available on these)} Allocates. */
         public SpringKinds build() {
             return new SpringKinds(this, new int[0], new int[0]);
         }

@@ -12,30 +12,36 @@ public final class FieldCounters {
     int effectiveNodes;
     int flowEvaluations;
 
+    /** All zero, never written: the counters of a field that does not count ({@link ForceField#counters()}). */
+    public static final FieldCounters NONE = new FieldCounters();
+
     FieldCounters() {
     }
 
-    /** All nodes of the tree. */
+    /** {@return the number of nodes of the tree} */
     public int nodes() {
         return nodes;
     }
 
-    /** All leaves of the tree. */
+    /** {@return the number of leaves of the tree} */
     public int leaves() {
         return leaves;
     }
 
-    /** Nodes that passed the frustum test (those inside collapsed subtrees included). */
+    /** {@return the number of nodes that passed the frustum test (those inside collapsed subtrees included)} */
     public int visibleNodes() {
         return visibleNodes;
     }
 
-    /** Visible leaves: the effective nodes full resolution would have. */
+    /** {@return the number of visible leaves: the effective nodes full resolution would have} */
     public int visibleLeaves() {
         return visibleLeaves;
     }
 
-    /** Nodes whose wind represents a visible area (visible leaves, or ancestors standing for them). */
+    /**
+     * {@return the number of nodes whose wind represents a visible area (visible leaves, or ancestors
+     * standing for them)}
+     */
     public int effectiveNodes() {
         return effectiveNodes;
     }
@@ -43,6 +49,8 @@ public final class FieldCounters {
     /**
      * Evaluations of the summed flows: one per effective node holding at least one plant
      * (0 when the field is disabled). Each is a sum over every flow of the wind field.
+     *
+     * @return evaluations in the last update, &gt;= 0
      */
     public int flowEvaluations() {
         return flowEvaluations;

@@ -8,58 +8,100 @@ package org.jecosys.field;
  * [0, {@link #nodeCount()}).
  */
 public final class FieldDebugView {
+    /**
+     * A view with no nodes, for fields that have none to show ({@link ForceField#debugView()}); no
+     * node id is valid on it.
+     */
+    public static final FieldDebugView EMPTY = new FieldDebugView(null);
+
     private final QuadtreeForceField field;
 
     FieldDebugView(QuadtreeForceField field) {
         this.field = field;
     }
 
-    /** Number of nodes. */
+    /** {@return the number of nodes; 0 for {@link #EMPTY}} */
     public int nodeCount() {
-        return field.tree().nodeCount();
+        return field == null ? 0 : field.tree().nodeCount();
     }
 
-    /** Node west edge, metres. */
+    /**
+     * {@return the node's west edge (lowest X), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float minX(int node) {
         return field.tree().minX(node);
     }
 
-    /** Node north edge, metres. */
+    /**
+     * {@return the node's north edge (lowest Z), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float minZ(int node) {
         return field.tree().minZ(node);
     }
 
-    /** Node east edge, metres. */
+    /**
+     * {@return the node's east edge (highest X), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float maxX(int node) {
         return field.tree().maxX(node);
     }
 
-    /** Node south edge, metres. */
+    /**
+     * {@return the node's south edge (highest Z), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float maxZ(int node) {
         return field.tree().maxZ(node);
     }
 
-    /** Depth of the node (root 0). */
+    /**
+     * {@return the depth of the node (root 0)}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int depth(int node) {
         return field.tree().depth(node);
     }
 
-    /** Whether the node is a leaf. */
+    /**
+     * {@return whether the node is a leaf}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public boolean isLeaf(int node) {
         return field.tree().firstChild(node) < 0;
     }
 
-    /** Whether the node passed the frustum test (darker areas of Figure 2 are invisible nodes). */
+    /**
+     * {@return whether the node passed the frustum test (darker areas of Figure 2 are invisible nodes)}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public boolean visible(int node) {
         return field.nodeVisible(node);
     }
 
-    /** Whether the node is effective: it carries the wind of its visible subtree. */
+    /**
+     * {@return whether the node is effective: it carries the wind of its visible subtree}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public boolean effective(int node) {
         return field.representative(node) == node;
     }
 
-    /** The effective node representing this visible node, or -1 when invisible. */
+    /**
+     * {@return the effective node representing this visible node, or -1 when invisible}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int representative(int node) {
         return field.representative(node);
     }
@@ -68,6 +110,9 @@ public final class FieldDebugView {
      * LOD level used: for an effective node, how many levels of its subtree collapsed into it
      * (its height; 0 for a leaf); for a node inside a collapsed subtree, how many levels up its
      * representative is. -1 when invisible.
+     *
+     * @param node node id, in [0, nodeCount())
+     * @return levels, &gt;= 0, or -1
      */
     public int lodLevel(int node) {
         int r = field.representative(node);
@@ -78,12 +123,20 @@ public final class FieldDebugView {
         return r == node ? t.height(node) : t.depth(node) - t.depth(r);
     }
 
-    /** X of the wind (m/s) the node receives (its representative's), 0 when invisible (Figure 3). */
+    /**
+     * {@return the X of the wind (m/s) the node receives (its representative's), 0 when invisible (Figure 3)}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float windX(int node) {
         return field.nodeWindX(node);
     }
 
-    /** Z of the wind (m/s) the node receives, 0 when invisible. */
+    /**
+     * {@return the Z of the wind (m/s) the node receives, 0 when invisible}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float windZ(int node) {
         return field.nodeWindZ(node);
     }

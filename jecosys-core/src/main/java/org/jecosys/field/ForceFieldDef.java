@@ -16,6 +16,15 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
     /** Largest allowed {@link #maxDepth()}. */
     public static final int MAX_DEPTH = 16;
 
+    /**
+     * Checks the components and copies the distances.
+     *
+     * @param enabled           whether the field evaluates flows
+     * @param maxObjectsPerNode split threshold, in [1, 1000000]
+     * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
+     * @param lodDistances      strictly ascending positive distances, metres
+     * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
+     */
     public ForceFieldDef {
         Require.range("maxObjectsPerNode", maxObjectsPerNode, 1, 1_000_000);
         Require.range("maxDepth", maxDepth, 0, MAX_DEPTH);
@@ -31,7 +40,7 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
         }
     }
 
-    /** Enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m. */
+    /** {@return enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m} */
     public static ForceFieldDef defaults() {
         return new ForceFieldDef(true, 8, 8, List.of(15.0, 30.0));
     }

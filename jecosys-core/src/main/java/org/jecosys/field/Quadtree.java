@@ -158,6 +158,11 @@ public final class Quadtree {
      * Inserts a plant at ground point (x, z) (metres, inside the bounds) and returns its id
      * (ids are 0, 1, 2, ... in insertion order). Splits leaves as described in the class comment.
      * Allocates only when arrays must grow.
+     *
+     * @param x ground X, metres, in [minX, maxX]
+     * @param z ground Z, metres, in [minZ, maxZ]
+     * @return the new plant's id, {@code plantCount() - 1}
+     * @throws IllegalArgumentException when (x, z) is outside the bounds
      */
     public int insert(double x, double z) {
         Require.range("x", x, rootMinX, rootMaxX);
@@ -176,6 +181,11 @@ public final class Quadtree {
      * Moves a plant (a movable object, §3.1.1) to (x, z), metres, clamped into the bounds, and
      * re-locates it in the leaf now containing it (which may split). O(depth). No allocation
      * unless arrays must grow.
+     *
+     * @param plant plant id, in [0, plantCount())
+     * @param x     new ground X, metres (finite; clamped into the bounds)
+     * @param z     new ground Z, metres (finite; clamped into the bounds)
+     * @throws IllegalArgumentException when the id is out of range or a coordinate is not finite
      */
     public void move(int plant, double x, double z) {
         Require.range("plant", plant, 0, plantCount - 1);
@@ -280,109 +290,173 @@ public final class Quadtree {
         }
     }
 
-    /** Number of plants. */
+    /** {@return the number of plants} */
     public int plantCount() {
         return plantCount;
     }
 
-    /** Number of nodes (ids are 0 .. nodeCount - 1; 0 is the root). */
+    /** {@return the number of nodes (ids are 0 .. nodeCount - 1; 0 is the root)} */
     public int nodeCount() {
         return nodeCount;
     }
 
-    /** Number of leaves. */
+    /** {@return the number of leaves} */
     public int leafCount() {
         return leafCount;
     }
 
-    /** Split threshold (plants per leaf above the maximum depth). */
+    /** {@return the split threshold (plants per leaf above the maximum depth)} */
     public int maxObjectsPerNode() {
         return maxObjects;
     }
 
-    /** Deepest level a node may have. */
+    /** {@return the deepest level a node may have (root 0)} */
     public int maxDepth() {
         return maxDepth;
     }
 
-    /** The leaf node holding a plant. */
+    /**
+     * {@return the leaf node holding a plant}
+     *
+     * @param plant plant id, in [0, plantCount())
+     */
     public int leafOf(int plant) {
         return leafOf[plant];
     }
 
-    /** A plant's X, metres. */
+    /**
+     * {@return a plant's X, metres}
+     *
+     * @param plant plant id, in [0, plantCount())
+     */
     public double plantX(int plant) {
         return px[plant];
     }
 
-    /** A plant's Z, metres. */
+    /**
+     * {@return a plant's Z, metres}
+     *
+     * @param plant plant id, in [0, plantCount())
+     */
     public double plantZ(int plant) {
         return pz[plant];
     }
 
-    /** First of the four children of a node, or -1 for a leaf. */
+    /**
+     * {@return the first of the four children of a node, or -1 for a leaf}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int firstChild(int node) {
         return firstChild[node];
     }
 
-    /** Parent of a node, or -1 for the root. */
+    /**
+     * {@return the parent of a node, or -1 for the root}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int parent(int node) {
         return parent[node];
     }
 
-    /** Depth of a node (root 0). */
+    /**
+     * {@return the depth of a node (root 0)}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int depth(int node) {
         return depth[node];
     }
 
-    /** Height of a node: levels between it and its deepest leaf (0 for a leaf). */
+    /**
+     * {@return the height of a node: levels between it and its deepest leaf (0 for a leaf)}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int height(int node) {
         return height[node];
     }
 
-    /** Plants in a node's subtree. */
+    /**
+     * {@return the number of plants in a node's subtree}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public int plantsIn(int node) {
         return count[node];
     }
 
-    /** Node west edge, metres. */
+    /**
+     * {@return the node's west edge (lowest X), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float minX(int node) {
         return minX[node];
     }
 
-    /** Node north edge, metres. */
+    /**
+     * {@return the node's north edge (lowest Z), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float minZ(int node) {
         return minZ[node];
     }
 
-    /** Node east edge, metres. */
+    /**
+     * {@return the node's east edge (highest X), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float maxX(int node) {
         return maxX[node];
     }
 
-    /** Node south edge, metres. */
+    /**
+     * {@return the node's south edge (highest Z), metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public float maxZ(int node) {
         return maxZ[node];
     }
 
-    /** X of the centre of gravity of a node's plants (§3.2), or the node's centre when empty. */
+    /**
+     * {@return the X of the centre of gravity of a node's plants (§3.2), or of the node's centre when empty, metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public double centroidX(int node) {
         int c = count[node];
         return c > 0 ? sumX[node] / c : (minX[node] + maxX[node]) * 0.5;
     }
 
-    /** Z of the centre of gravity of a node's plants (§3.2), or the node's centre when empty. */
+    /**
+     * {@return the Z of the centre of gravity of a node's plants (§3.2), or of the node's centre when empty, metres}
+     *
+     * @param node node id, in [0, nodeCount())
+     */
     public double centroidZ(int node) {
         int c = count[node];
         return c > 0 ? sumZ[node] / c : (minZ[node] + maxZ[node]) * 0.5;
     }
 
-    /** First plant of a leaf's list, or -1 when empty; continue with {@link #nextPlant}. */
+    /**
+     * {@return the first plant of a leaf's list, or -1 when empty} Continue with {@link #nextPlant}.
+     *
+     * @param leaf a leaf's node id
+     */
     public int firstPlant(int leaf) {
         return head[leaf];
     }
 
-    /** The plant after {@code plant} in its leaf's list, or -1. */
+    /**
+     * {@return the plant after {@code plant} in its leaf's list, or -1 at the end}
+     *
+     * @param plant plant id, in [0, plantCount())
+     */
     public int nextPlant(int plant) {
         return next[plant];
     }

@@ -93,6 +93,19 @@ public final class QuadtreeForceField implements ForceField {
 
     /**
      * A field built by inserting plants {@code 0 .. n-1} at (xs[i], zs[i]) in order. Allocates.
+     *
+     * @param def  settings (split threshold, maximum depth, LOD distances, enabled)
+     * @param minX terrain west edge, metres
+     * @param minZ terrain north edge, metres
+     * @param maxX terrain east edge, metres, &gt; minX
+     * @param maxZ terrain south edge, metres, &gt; minZ
+     * @param minY lowest terrain height, metres
+     * @param maxY highest terrain height plus the tallest plant, metres, &gt;= minY
+     * @param wind the flows to evaluate
+     * @param xs   plant X, metres, one per plant, inside the bounds
+     * @param zs   plant Z, metres, same length as xs
+     * @return the field with n plants; call {@link #update} before reading winds
+     * @throws IllegalArgumentException when the arrays differ in length or a bound or plant is invalid
      */
     public static QuadtreeForceField build(ForceFieldDef def, double minX, double minZ, double maxX, double maxZ,
                                            double minY, double maxY, WindField wind, float[] xs, float[] zs) {
@@ -116,17 +129,17 @@ public final class QuadtreeForceField implements ForceField {
         windZ = windZ == null ? new float[n] : Arrays.copyOf(windZ, n);
     }
 
-    /** The settings. */
+    /** {@return the settings} */
     public ForceFieldDef def() {
         return def;
     }
 
-    /** The quadtree (read-only use: structure queries). */
+    /** {@return the quadtree (read-only use: structure queries)} */
     public Quadtree tree() {
         return tree;
     }
 
-    /** The flows this field evaluates. */
+    /** {@return the flows this field evaluates} */
     public WindField windField() {
         return wind;
     }

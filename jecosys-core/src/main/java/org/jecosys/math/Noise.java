@@ -8,7 +8,14 @@ public final class Noise {
     private Noise() {
     }
 
-    /** Smooth value noise at (x, y), period-free, in [-1, 1]. */
+    /**
+     * Smooth value noise at (x, y), period-free, in [-1, 1].
+     *
+     * @param seed selects the noise pattern
+     * @param x    first coordinate, in lattice cells (one cell per unit)
+     * @param y    second coordinate, in lattice cells
+     * @return the noise value, in [-1, 1]
+     */
     public static double value2(long seed, double x, double y) {
         long xi = (long) Math.floor(x);
         long yi = (long) Math.floor(y);
@@ -23,7 +30,15 @@ public final class Noise {
         return a + (b - a) * fy;
     }
 
-    /** Smooth value noise at (x, y, z), in [-1, 1]. */
+    /**
+     * Smooth value noise at (x, y, z), in [-1, 1].
+     *
+     * @param seed selects the noise pattern
+     * @param x    first coordinate, in lattice cells (one cell per unit)
+     * @param y    second coordinate, in lattice cells
+     * @param z    third coordinate, in lattice cells (often time, to animate a 2D pattern)
+     * @return the noise value, in [-1, 1]
+     */
     public static double value3(long seed, double x, double y, double z) {
         long xi = (long) Math.floor(x);
         long yi = (long) Math.floor(y);
@@ -41,6 +56,13 @@ public final class Noise {
     /**
      * Fractal sum of {@code octaves} layers of 2D value noise, each at twice the frequency and
      * {@code gain} times the amplitude of the last, normalised to [-1, 1].
+     *
+     * @param seed    selects the noise pattern (each octave uses a seed derived from it)
+     * @param x       first coordinate, in cells of the first octave
+     * @param y       second coordinate, in cells of the first octave
+     * @param octaves number of layers; 0 or less gives 0
+     * @param gain    amplitude ratio between successive octaves, typically in (0, 1)
+     * @return the normalised sum, in [-1, 1]
      */
     public static double fractal2(long seed, double x, double y, int octaves, double gain) {
         double sum = 0;

@@ -45,7 +45,12 @@ public final class ViewCamera implements Camera {
         return c;
     }
 
-    /** Copies every setting of {@code other} into this camera. No allocation. */
+    /**
+     * Copies every setting of {@code other} into this camera. No allocation.
+     *
+     * @param other the camera to copy, not null
+     * @return this camera
+     */
     public ViewCamera set(ViewCamera other) {
         Require.nonNull("other", other);
         x = other.x;
@@ -60,7 +65,14 @@ public final class ViewCamera implements Camera {
         return this;
     }
 
-    /** Sets the eye position, metres (absolute, not above terrain). No allocation. */
+    /**
+     * Sets the eye position, metres (absolute, not above terrain). No allocation.
+     *
+     * @param x eye X, metres (finite)
+     * @param y eye Y, metres above Y = 0, not above the terrain (finite)
+     * @param z eye Z, metres (finite)
+     * @return this camera
+     */
     public ViewCamera setPosition(double x, double y, double z) {
         this.x = Require.finite("x", x);
         this.y = Require.finite("y", y);
@@ -73,6 +85,7 @@ public final class ViewCamera implements Camera {
      *
      * @param yaw   radians, 0 looks along -Z, positive turns toward +X (any finite value)
      * @param pitch radians in [-pi/2, pi/2], positive looks up
+     * @return this camera
      */
     public ViewCamera setOrientation(double yaw, double pitch) {
         this.yaw = Require.finite("yaw", yaw);
@@ -87,6 +100,7 @@ public final class ViewCamera implements Camera {
      * @param aspect width / height, &gt; 0
      * @param near   near clip distance, metres, &gt; 0
      * @param far    far clip distance, metres, &gt; near
+     * @return this camera
      */
     public ViewCamera setLens(double fovY, double aspect, double near, double far) {
         Require.range("fovY", fovY, 1e-3, Math.PI - 1e-3);
@@ -121,32 +135,56 @@ public final class ViewCamera implements Camera {
         return z;
     }
 
-    /** Heading, radians (0 looks along -Z, positive toward +X). */
+    /**
+     * Heading, radians (0 looks along -Z, positive toward +X).
+     *
+     * @return the yaw as last set, radians (not wrapped)
+     */
     public double yaw() {
         return yaw;
     }
 
-    /** Pitch, radians (positive looks up). */
+    /**
+     * Pitch, radians (positive looks up).
+     *
+     * @return radians, in [-pi/2, pi/2]
+     */
     public double pitch() {
         return pitch;
     }
 
-    /** Vertical field of view, radians. */
+    /**
+     * Vertical field of view, radians.
+     *
+     * @return radians, in [1e-3, pi - 1e-3]
+     */
     public double fovY() {
         return fovY;
     }
 
-    /** Viewport aspect ratio, width / height. */
+    /**
+     * Viewport aspect ratio, width / height.
+     *
+     * @return width / height, &gt; 0
+     */
     public double aspect() {
         return aspect;
     }
 
-    /** Near clip distance, metres. */
+    /**
+     * Near clip distance, metres.
+     *
+     * @return metres, &gt; 0
+     */
     public double near() {
         return near;
     }
 
-    /** Far clip distance, metres. */
+    /**
+     * Far clip distance, metres.
+     *
+     * @return metres, &gt; {@link #near()}
+     */
     public double far() {
         return far;
     }

@@ -6,8 +6,8 @@ import org.jecosys.math.Rgb;
 
 /**
  * One component type of a species: its skeleton shape (paper §4.1), its dynamic-constraint
- * parameters (paper §4.2, eq. 4-5, with tau a response time as DESIGN.md resolves it) and its
- * drag. Immutable; any thread.
+ * parameters (paper §4.2, eq. 4-5; tau is the component's response time, a species property, not
+ * the frame interval: see {@code org.jecosys.anim.SpringKinds}) and its drag. Immutable; any thread.
  *
  * @param id           unique within the species
  * @param type         leaf, petal, head or stalk
@@ -33,6 +33,29 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
                            int segments, double length, double baseWidth, double tipWidth, double curvature,
                            double twist, double tilt, double mass, double stiffness, double responseTime,
                            double dragArea, Rgb colour, List<Integer> lodSegments) {
+    /**
+     * Checks the components and copies {@code lodSegments}.
+     *
+     * @param id           unique within the species, not empty
+     * @param type         leaf, petal, head or stalk, not null
+     * @param shape        strip or fan, not null
+     * @param count        components per plant, in [1, 256]
+     * @param attachTo     id of the carrying component, or null for the ground (checked by the species)
+     * @param segments     skeleton segments, in [1, 32]
+     * @param length       skeleton length, metres, in [1e-6, 10]
+     * @param baseWidth    width at the base, metres, in [1e-6, 1]
+     * @param tipWidth     width at the tip, metres, in [0, 1]
+     * @param curvature    rest curvature, radians, in [-pi, pi]
+     * @param twist        twist over the length, radians, in [-2 pi, 2 pi]
+     * @param tilt         base angle from vertical, radians, in [0, pi/2]
+     * @param mass         kilograms, in [1e-9, 10]
+     * @param stiffness    spring constant PC, N/m, in [1e-9, 1e6]
+     * @param responseTime response time tau, seconds, in [1e-3, 10]
+     * @param dragArea     drag coefficient times area, m^2, in [0, 10]
+     * @param colour       base colour, not null
+     * @param lodSegments  segments drawn per level of detail, each in [0, segments]
+     * @throws IllegalArgumentException when a component is null, empty or out of range
+     */
     public ComponentDef {
         Require.nonNull("id", id);
         if (id.isEmpty()) {
@@ -56,6 +79,322 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         lodSegments = List.copyOf(Require.nonNull("lodSegments", lodSegments));
         for (int i = 0; i < lodSegments.size(); i++) {
             Require.range("lodSegments[" + i + "]", lodSegments.get(i), 0, segments);
+        }
+    }
+
+    /** Default {@link #shape()} (the scene schema's default too): a strip. */
+    public static final ComponentShape DEFAULT_SHAPE = ComponentShape.STRIP;
+    /** Default {@link #count()}: one per plant. */
+    public static final int DEFAULT_COUNT = 1;
+    /** Default {@link #tipWidth()}, metres: 0, a pointed tip. */
+    public static final double DEFAULT_TIP_WIDTH = 0;
+    /** Default {@link #curvature()}, radians: straight before gravity. */
+    public static final double DEFAULT_CURVATURE = 0;
+    /** Default {@link #twist()}, radians: none. */
+    public static final double DEFAULT_TWIST = 0;
+    /** Default {@link #tilt()}, radians: upright base. */
+    public static final double DEFAULT_TILT = 0;
+    /** Default {@link #responseTime()}, seconds. */
+    public static final double DEFAULT_RESPONSE_TIME = 0.3;
+    /** Default {@link #dragArea()}, m^2. */
+    public static final double DEFAULT_DRAG_AREA = 0.001;
+    /** Default {@link #colour()}: a mid green, #4a8a2a. */
+    public static final Rgb DEFAULT_COLOUR = Rgb.parseHex("#4a8a2a");
+
+    /**
+     * A builder for a component type {@code id} of kind {@code type}, every other value at the scene
+     * schema's default ({@code DEFAULT_*}; attachTo absent): what a {@code <component>} element with
+     * only its required attributes loads as. Segments, length, baseWidth, mass, stiffness and
+     * lodSegments have no default and must be set. Any thread; allocates.
+     *
+     * @param id   unique within the species, not empty
+     * @param type leaf, petal, head or stalk
+     * @return a new builder
+     */
+    public static Builder builder(String id, ComponentType type) {
+        return new Builder(id, type);
+    }
+
+    /**
+     * A builder holding every value of this def, to change a few. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public Builder toBuilder() {
+        Builder b = new Builder(id, type);
+        b.shape = shape;
+        b.count = count;
+        b.attachTo = attachTo;
+        b.segments = segments;
+        b.length = length;
+        b.baseWidth = baseWidth;
+        b.tipWidth = tipWidth;
+        b.curvature = curvature;
+        b.twist = twist;
+        b.tilt = tilt;
+        b.mass = mass;
+        b.stiffness = stiffness;
+        b.responseTime = responseTime;
+        b.dragArea = dragArea;
+        b.colour = colour;
+        b.lodSegments = lodSegments;
+        return b;
+    }
+
+    /**
+     * Fluent builder of a {@link ComponentDef} with the scene schema's defaults (see
+     * {@link ComponentDef#builder}); values are checked by {@link #build()}. One thread; allocates.
+     */
+    public static final class Builder {
+        private final String id;
+        private final ComponentType type;
+        private ComponentShape shape = DEFAULT_SHAPE;
+        private int count = DEFAULT_COUNT;
+        private String attachTo;
+        private int segments = -1;
+        private double length = Double.NaN;
+        private double baseWidth = Double.NaN;
+        private double tipWidth = DEFAULT_TIP_WIDTH;
+        private double curvature = DEFAULT_CURVATURE;
+        private double twist = DEFAULT_TWIST;
+        private double tilt = DEFAULT_TILT;
+        private double mass = Double.NaN;
+        private double stiffness = Double.NaN;
+        private double responseTime = DEFAULT_RESPONSE_TIME;
+        private double dragArea = DEFAULT_DRAG_AREA;
+        private Rgb colour = DEFAULT_COLOUR;
+        private List<Integer> lodSegments;
+
+        private Builder(String id, ComponentType type) {
+            this.id = id;
+            this.type = type;
+        }
+
+        /**
+         * Sets how primitives are generated from the skeleton.
+         *
+         * @param shape strip or fan
+         * @return this builder
+         */
+        public Builder shape(ComponentShape shape) {
+            this.shape = shape;
+            return this;
+        }
+
+        /**
+         * Sets how many of this component a plant has.
+         *
+         * @param count in [1, 256]
+         * @return this builder
+         */
+        public Builder count(int count) {
+            this.count = count;
+            return this;
+        }
+
+        /**
+         * Sets the component at whose tip these sit.
+         *
+         * @param attachTo another component's id, or null for the ground
+         * @return this builder
+         */
+        public Builder attachTo(String attachTo) {
+            this.attachTo = attachTo;
+            return this;
+        }
+
+        /**
+         * Sets the skeleton segments (required).
+         *
+         * @param segments in [1, 32]
+         * @return this builder
+         */
+        public Builder segments(int segments) {
+            this.segments = segments;
+            return this;
+        }
+
+        /**
+         * Sets the skeleton length (required).
+         *
+         * @param length metres, in (0, 10]
+         * @return this builder
+         */
+        public Builder length(double length) {
+            this.length = length;
+            return this;
+        }
+
+        /**
+         * Sets the width at the base (required).
+         *
+         * @param baseWidth metres, in (0, 1]
+         * @return this builder
+         */
+        public Builder baseWidth(double baseWidth) {
+            this.baseWidth = baseWidth;
+            return this;
+        }
+
+        /**
+         * Sets the width at the tip.
+         *
+         * @param tipWidth metres, in [0, 1]
+         * @return this builder
+         */
+        public Builder tipWidth(double tipWidth) {
+            this.tipWidth = tipWidth;
+            return this;
+        }
+
+        /**
+         * Sets the rest curvature before gravity.
+         *
+         * @param curvature radians over the whole length, in [-pi, pi]
+         * @return this builder
+         */
+        public Builder curvature(double curvature) {
+            this.curvature = curvature;
+            return this;
+        }
+
+        /**
+         * Sets the twist around the skeleton.
+         *
+         * @param twist radians over the whole length, in [-2 pi, 2 pi]
+         * @return this builder
+         */
+        public Builder twist(double twist) {
+            this.twist = twist;
+            return this;
+        }
+
+        /**
+         * Sets the angle of the base from vertical.
+         *
+         * @param tilt radians, in [0, pi/2]
+         * @return this builder
+         */
+        public Builder tilt(double tilt) {
+            this.tilt = tilt;
+            return this;
+        }
+
+        /**
+         * Sets the mass (required).
+         *
+         * @param mass kilograms, in (0, 10]
+         * @return this builder
+         */
+        public Builder mass(double mass) {
+            this.mass = mass;
+            return this;
+        }
+
+        /**
+         * Sets the spring constant PC of eq. 4 (required).
+         *
+         * @param stiffness N/m, in (0, 1e6]
+         * @return this builder
+         */
+        public Builder stiffness(double stiffness) {
+            this.stiffness = stiffness;
+            return this;
+        }
+
+        /**
+         * Sets the response time tau of the spring.
+         *
+         * @param responseTime seconds, in [1e-3, 10]
+         * @return this builder
+         */
+        public Builder responseTime(double responseTime) {
+            this.responseTime = responseTime;
+            return this;
+        }
+
+        /**
+         * Sets the drag coefficient times area.
+         *
+         * @param dragArea m^2, in [0, 10]
+         * @return this builder
+         */
+        public Builder dragArea(double dragArea) {
+            this.dragArea = dragArea;
+            return this;
+        }
+
+        /**
+         * Sets the base colour.
+         *
+         * @param colour not null
+         * @return this builder
+         */
+        public Builder colour(Rgb colour) {
+            this.colour = colour;
+            return this;
+        }
+
+        /**
+         * Sets the segments used per level of detail of the species (required).
+         *
+         * @param lodSegments one value per level, each in [0, segments]; 0 = not drawn there
+         * @return this builder
+         */
+        public Builder lodSegments(List<Integer> lodSegments) {
+            this.lodSegments = lodSegments;
+            return this;
+        }
+
+        /**
+         * Sets the segments used per level of detail of the species (required).
+         *
+         * @param lodSegments one value per level, each in [0, segments]; 0 = not drawn there
+         * @return this builder
+         */
+        public Builder lodSegments(int... lodSegments) {
+            List<Integer> l = new java.util.ArrayList<>(lodSegments.length);
+            for (int v : lodSegments) {
+                l.add(v);
+            }
+            this.lodSegments = l;
+            return this;
+        }
+
+        /**
+         * The def. Allocates.
+         *
+         * @return a new def
+         * @throws IllegalStateException    when a value without default (segments, length, baseWidth,
+         *                                  mass, stiffness, lodSegments) was not set
+         * @throws IllegalArgumentException when a value is out of range (see {@link ComponentDef})
+         */
+        public ComponentDef build() {
+            List<String> missing = new java.util.ArrayList<>();
+            if (segments < 0) {
+                missing.add("segments");
+            }
+            if (Double.isNaN(length)) {
+                missing.add("length");
+            }
+            if (Double.isNaN(baseWidth)) {
+                missing.add("baseWidth");
+            }
+            if (Double.isNaN(mass)) {
+                missing.add("mass");
+            }
+            if (Double.isNaN(stiffness)) {
+                missing.add("stiffness");
+            }
+            if (lodSegments == null) {
+                missing.add("lodSegments");
+            }
+            if (!missing.isEmpty()) {
+                throw new IllegalStateException("component '" + id + "': set " + String.join(", ", missing)
+                        + " (no default in the scene schema)");
+            }
+            return new ComponentDef(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth,
+                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments);
         }
     }
 }

@@ -56,6 +56,7 @@ public final class ComponentMesh {
      * @param pointed   whether the component's tip width is 0 (strips only)
      * @param n         segments used, &gt;= 0
      * @param primitive triangles or lines
+     * @return the count from the table above; 0 when {@code n = 0}
      */
     public static int primitiveCount(ComponentShape shape, boolean pointed, int n, Primitive primitive) {
         Require.nonNull("shape", shape);
@@ -105,6 +106,7 @@ public final class ComponentMesh {
      * @param segments  skeleton segments S, in [1, 32]
      * @param n         segments used, in [0, S]
      * @param primitive triangles or lines
+     * @return the mesh; empty when {@code n = 0}
      */
     public static ComponentMesh build(ComponentShape shape, boolean pointed, int segments, int n, Primitive primitive) {
         Require.nonNull("shape", shape);
@@ -193,42 +195,58 @@ public final class ComponentMesh {
         return new ComponentMesh(primitive, vp, va, vb, idx);
     }
 
-    /** Triangles or lines. */
+    /** {@return the primitive: triangles or lines} */
     public Primitive primitive() {
         return primitive;
     }
 
-    /** Triangles or line segments in this mesh. */
+    /** {@return the number of triangles or line segments in this mesh} */
     public int primitiveCount() {
         return indices.length / (primitive == Primitive.TRIANGLES ? 3 : 2);
     }
 
-    /** Vertices in this mesh. */
+    /** {@return the number of vertices in this mesh} */
     public int vertexCount() {
         return vertexPoint.length;
     }
 
-    /** Pose-table point index of vertex {@code v}. */
+    /**
+     * {@return the pose-table point index of vertex {@code v}}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public int vertexPoint(int v) {
         return vertexPoint[v];
     }
 
-    /** Side-vector coefficient {@code a} of vertex {@code v}. */
+    /**
+     * {@return the side-vector coefficient {@code a} of vertex {@code v}, in [-1, 1]}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public float vertexA(int v) {
         return vertexA[v];
     }
 
-    /** Normal-vector coefficient {@code b} of vertex {@code v}. */
+    /**
+     * {@return the normal-vector coefficient {@code b} of vertex {@code v}, in [-1, 1]}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public float vertexB(int v) {
         return vertexB[v];
     }
 
-    /** Index count: 3 per triangle or 2 per line. */
+    /** {@return the index count: 3 per triangle or 2 per line} */
     public int indexCount() {
         return indices.length;
     }
 
-    /** Index {@code i} (a vertex of this mesh). */
+    /**
+     * {@return index {@code i}, a vertex of this mesh}
+     *
+     * @param i position in the index list, in [0, indexCount())
+     */
     public int index(int i) {
         return indices[i];
     }

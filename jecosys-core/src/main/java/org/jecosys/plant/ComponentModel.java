@@ -83,7 +83,7 @@ public final class ComponentModel implements PlantComponent {
         return meshes[level];
     }
 
-    /** Whether the tip is pointed (tipWidth 0): the strip rule with one triangle at the tip. */
+    /** {@return whether the tip is pointed (tipWidth 0): the strip rule with one triangle at the tip} */
     public boolean pointed() {
         return def.tipWidth() == 0;
     }
@@ -93,6 +93,8 @@ public final class ComponentModel implements PlantComponent {
      * ({@link PoseMapping#poseCoordinate} with this variant's length). No allocation.
      *
      * @param deviation deviation magnitude, metres
+     * @param variant   shape variant, in [0, variants())
+     * @return pose coordinate in [0, poses - 1]; its integer part and fraction pick and blend two poses
      */
     public double poseCoordinate(double deviation, int variant) {
         PoseTable t = tables[variant];

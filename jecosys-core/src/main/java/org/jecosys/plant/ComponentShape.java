@@ -16,7 +16,7 @@ public enum ComponentShape {
         this.xmlName = xmlName;
     }
 
-    /** The attribute value used in scene files. */
+    /** {@return the attribute value used in scene files: {@code "strip"} or {@code "fan"}} */
     public String xmlName() {
         return xmlName;
     }

@@ -17,7 +17,7 @@ public enum ComponentType {
         this.xmlName = xmlName;
     }
 
-    /** The attribute value used in scene files. */
+    /** {@return the attribute value used in scene files, e.g. {@code "leaf"}} */
     public String xmlName() {
         return xmlName;
     }

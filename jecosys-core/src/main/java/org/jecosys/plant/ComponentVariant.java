@@ -17,6 +17,15 @@ public record ComponentVariant(double lengthScale, double widthScale, double cur
     /** The unchanged component. */
     public static final ComponentVariant IDENTITY = new ComponentVariant(1, 1, 1, 0);
 
+    /**
+     * Checks the components.
+     *
+     * @param lengthScale    factor on the length, in [0.1, 1.9]
+     * @param widthScale     factor on both widths, in [0.1, 1.9]
+     * @param curvatureScale factor on the rest curvature, in [0.1, 1.9]
+     * @param extraTilt      added tilt, radians, in [0, pi/4]
+     * @throws IllegalArgumentException when a component is out of range
+     */
     public ComponentVariant {
         Require.range("lengthScale", lengthScale, 0.1, 1.9);
         Require.range("widthScale", widthScale, 0.1, 1.9);
@@ -28,6 +37,12 @@ public record ComponentVariant(double lengthScale, double widthScale, double cur
      * Draws the variant {@code variant} of component type {@code component} from {@code seed}:
      * a pure function of its arguments (its own {@link Rng} sub-stream), so a species built twice
      * with one seed is identical and different seeds give different shapes.
+     *
+     * @param v         the species' variation
+     * @param seed      the species' shape seed
+     * @param variant   variant index, in [0, v.variants())
+     * @param component component type index within the species
+     * @return the variant (allocates)
      */
     public static ComponentVariant sample(VariationDef v, long seed, int variant, int component) {
         Require.nonNull("v", v);

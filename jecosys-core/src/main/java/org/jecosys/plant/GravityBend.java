@@ -53,6 +53,7 @@ public final class GravityBend {
      * @param type      component type: {@link ComponentType#STALK} is round, the rest flat
      * @param width     width at the joint, metres, &gt; 0
      * @param segLength segment length, metres, &gt; 0
+     * @return {@code MODULUS * I / segLength}, N m / rad
      */
     public static double jointStiffness(ComponentType type, double width, double segLength) {
         double inertia = type == ComponentType.STALK

@@ -6,7 +6,7 @@ import org.jecosys.math.Require;
 
 /**
  * The per-plant render record proposed for the renderer: exactly {@link #BYTES} = 16 bytes per
- * plant beyond the simulation state (DESIGN.md budget), uploaded once per scene (plants do not move)
+ * plant beyond the simulation state (the per-plant memory budget), uploaded once per scene (plants do not move)
  * into a preallocated instance buffer. The bend of each component (deviation, pose coordinate,
  * azimuth) is simulation state and is not counted here.
  *
@@ -44,31 +44,56 @@ public final class InstanceLayout {
     private InstanceLayout() {
     }
 
-    /** The rest azimuth (any radians, wrapped) as a uint16 in [0, 65535]. */
+    /**
+     * The rest azimuth as a uint16.
+     *
+     * @param azimuth rest azimuth, radians (any value; wrapped to one turn)
+     * @return in [0, 65535], 65536 steps per turn
+     */
     public static int packAzimuth(double azimuth) {
         double turns = azimuth / (2 * Math.PI);
         turns -= Math.floor(turns);
         return (int) Math.round(turns * 65536.0) & 0xFFFF;
     }
 
-    /** The azimuth of a packed value, radians in [0, 2 pi). */
+    /**
+     * The azimuth of a packed value.
+     *
+     * @param packed a value of {@link #packAzimuth} (only the low 16 bits are read)
+     * @return radians, in [0, 2 pi)
+     */
     public static double unpackAzimuth(int packed) {
         return (packed & 0xFFFF) * (2 * Math.PI / 65536.0);
     }
 
-    /** Species and variant packed into a uint16. */
+    /**
+     * Species and variant packed into a uint16: {@code species << 6 | variant}.
+     *
+     * @param species species index, in [0, {@link #MAX_SPECIES}]
+     * @param variant shape variant, in [0, {@link #MAX_VARIANT}]
+     * @return the packed kind, in [0, 65535]
+     * @throws IllegalArgumentException when an index does not fit
+     */
     public static int packKind(int species, int variant) {
         Require.range("species", species, 0, MAX_SPECIES);
         Require.range("variant", variant, 0, MAX_VARIANT);
         return species << 6 | variant;
     }
 
-    /** Species index of a packed kind. */
+    /**
+     * {@return the species index of a packed kind}
+     *
+     * @param kind a value of {@link #packKind}
+     */
     public static int species(int kind) {
         return (kind & 0xFFFF) >>> 6;
     }
 
-    /** Shape variant of a packed kind. */
+    /**
+     * {@return the shape variant of a packed kind}
+     *
+     * @param kind a value of {@link #packKind}
+     */
     public static int variant(int kind) {
         return kind & 0x3F;
     }
@@ -76,6 +101,16 @@ public final class InstanceLayout {
     /**
      * Writes instance {@code instance} at byte {@code instance * BYTES} of {@code dest} (absolute
      * puts; the buffer's position is unchanged; its order must be little-endian).
+     *
+     * @param dest     the instance buffer, little-endian
+     * @param instance instance index, in [0, dest.limit() / BYTES)
+     * @param x        world X of the plant's base, metres
+     * @param y        terrain height of the base, metres
+     * @param z        world Z of the base, metres
+     * @param azimuth  rest azimuth, radians (packed by {@link #packAzimuth})
+     * @param species  species index, in [0, {@link #MAX_SPECIES}]
+     * @param variant  shape variant, in [0, {@link #MAX_VARIANT}]
+     * @throws IllegalArgumentException when dest is null or big-endian or an index is out of range
      */
     public static void put(ByteBuffer dest, int instance, float x, float y, float z, double azimuth,
                            int species, int variant) {

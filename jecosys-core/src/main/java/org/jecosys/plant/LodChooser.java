@@ -47,23 +47,32 @@ public final class LodChooser {
         band = Require.range("bandWidth", bandWidth, 0, minGap == Double.POSITIVE_INFINITY ? 1e9 : minGap);
     }
 
-    /** A chooser for {@code species}' levels with band {@code bandWidth} metres. */
+    /**
+     * A chooser for {@code species}' levels. Allocates.
+     *
+     * @param species   the species whose {@link SpeciesDef#lods()} are used
+     * @param bandWidth transition band width, metres (see the constructor)
+     * @return a new chooser
+     */
     public static LodChooser of(SpeciesDef species, double bandWidth) {
         return new LodChooser(Require.nonNull("species", species).lods(), bandWidth);
     }
 
-    /** Number of levels. */
+    /** {@return the number of levels, at least 1} */
     public int levels() {
         return edges.length + 1;
     }
 
-    /** Transition band width, metres. */
+    /** {@return the transition band width, metres} */
     public double bandWidth() {
         return band;
     }
 
     /**
-     * The level whose band holds {@code distance} (metres; negative and NaN count as 0).
+     * The level whose band holds {@code distance}.
+     *
+     * @param distance viewer distance, metres; negative and NaN count as 0
+     * @return the level, in [0, levels())
      */
     public int level(double distance) {
         int l = 0;
@@ -73,7 +82,12 @@ public final class LodChooser {
         return l;
     }
 
-    /** Fade toward level {@code level(distance) + 1}, in [0, 1); 0 in the last level. */
+    /**
+     * Fade toward level {@code level(distance) + 1}.
+     *
+     * @param distance viewer distance, metres
+     * @return in [0, 1); 0 in the last level, outside the band and when the band width is 0
+     */
     public double fade(double distance) {
         int l = level(distance);
         if (l >= edges.length || band <= 0) {
@@ -86,7 +100,12 @@ public final class LodChooser {
         return Math.min((distance - start) / band, Math.nextDown(1.0));
     }
 
-    /** {@code level(distance) + fade(distance)}: continuous and non-decreasing in distance. */
+    /**
+     * The LOD coordinate {@code level(distance) + fade(distance)}.
+     *
+     * @param distance viewer distance, metres
+     * @return continuous and non-decreasing in distance, in [0, levels())
+     */
     public double coordinate(double distance) {
         return level(distance) + fade(distance);
     }
@@ -97,6 +116,7 @@ public final class LodChooser {
      *
      * @param coordinate a value of {@link #coordinate}
      * @param hash01     the instance's stable pseudo-random value in [0, 1)
+     * @return the level to draw
      */
     public static int ditheredLevel(double coordinate, double hash01) {
         int l = (int) Math.floor(coordinate);

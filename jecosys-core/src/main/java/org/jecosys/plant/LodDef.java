@@ -11,6 +11,13 @@ import org.jecosys.math.Require;
  * @param primitive   triangles or lines
  */
 public record LodDef(double maxDistance, Primitive primitive) {
+    /**
+     * Checks the components.
+     *
+     * @param maxDistance farthest viewer distance, metres, &gt; 0, or +Infinity
+     * @param primitive   triangles or lines, not null
+     * @throws IllegalArgumentException when maxDistance is not positive or primitive is null
+     */
     public LodDef {
         Require.positiveOrInfinite("maxDistance", maxDistance);
         Require.nonNull("primitive", primitive);

@@ -62,47 +62,67 @@ public final class LodMesh {
         return new LodMesh(primitive, vs, vp, va, vb, idx);
     }
 
-    /** Triangles or lines. */
+    /** {@return the primitive: triangles or lines} */
     public Primitive primitive() {
         return primitive;
     }
 
-    /** Primitives (triangles or line segments) of one plant at this level. */
+    /** {@return the primitives (triangles or line segments) of one plant at this level} */
     public int primitiveCount() {
         return indices.length / (primitive == Primitive.TRIANGLES ? 3 : 2);
     }
 
-    /** Vertices of one plant at this level. */
+    /** {@return the number of vertices of one plant at this level} */
     public int vertexCount() {
         return vertexPoint.length;
     }
 
-    /** Indices: 3 per triangle, 2 per line. */
+    /** {@return the number of indices: 3 per triangle, 2 per line} */
     public int indexCount() {
         return indices.length;
     }
 
-    /** Slot (component instance) of vertex {@code v}. */
+    /**
+     * {@return the slot (component instance) of vertex {@code v}}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public int vertexSlot(int v) {
         return vertexSlot[v];
     }
 
-    /** Pose-table point of vertex {@code v}. */
+    /**
+     * {@return the pose-table point of vertex {@code v}}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public int vertexPoint(int v) {
         return vertexPoint[v];
     }
 
-    /** Side coefficient of vertex {@code v}. */
+    /**
+     * {@return the side coefficient {@code a} of vertex {@code v}}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public float vertexA(int v) {
         return vertexA[v];
     }
 
-    /** Normal coefficient of vertex {@code v}. */
+    /**
+     * {@return the normal coefficient {@code b} of vertex {@code v}}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
     public float vertexB(int v) {
         return vertexB[v];
     }
 
-    /** Index {@code i}. */
+    /**
+     * {@return index {@code i}, a vertex of this mesh}
+     *
+     * @param i position in the index list, in [0, indexCount())
+     */
     public int index(int i) {
         return indices[i];
     }
@@ -111,6 +131,10 @@ public final class LodMesh {
      * Writes interleaved vertex attributes for upload, 4 floats per vertex
      * {@code (slot, point, a, b)} (slot and point exact as floats), into {@code dest} from
      * {@code offset}. No allocation.
+     *
+     * @param dest   receives {@code 4 * vertexCount()} floats
+     * @param offset first index written, in [0, dest.length - 4 * vertexCount()]
+     * @throws IllegalArgumentException when dest is null or too short from offset
      */
     public void copyVertices(float[] dest, int offset) {
         Require.nonNull("dest", dest);
@@ -124,7 +148,12 @@ public final class LodMesh {
         }
     }
 
-    /** Copies the index list into {@code dest} from {@code offset}. No allocation. */
+    /**
+     * Copies the index list into {@code dest} from {@code offset}. No allocation.
+     *
+     * @param dest   receives {@link #indexCount()} ints
+     * @param offset first index written
+     */
     public void copyIndices(int[] dest, int offset) {
         System.arraycopy(indices, 0, dest, offset, indices.length);
     }

@@ -1,47 +1,77 @@
 package org.jecosys.plant;
 
 /**
- * A component type of a species, ready to animate and draw (DESIGN.md extension point; paper §4.1
- * and §4.2): its pre-computed bent skeletons (one {@link PoseTable} per shape variant), its level of
+ * A component type of a species, ready to animate and draw (paper §4.1 and §4.2; an extension
+ * point, see docs/ARCHITECTURE.md, "Extension points"): its pre-computed bent skeletons (one
+ * {@link PoseTable} per shape variant), its level of
  * detail subsets and meshes, and its dynamic-constraint parameters. The updater in {@code anim}
  * animates every component of a type over flat arrays using these values.
+ *
+ * <p>The built-in implementation is {@link ComponentModel}; a game supplies its own for a component
+ * type of a species with a {@link ComponentFactory} (often a {@link ForwardingPlantComponent} over the
+ * built-in one), registered in {@link ComponentFactories}.
  *
  * <p>Implementations are immutable after construction: any thread; accessors do not allocate.
  */
 public interface PlantComponent {
-    /** The definition this component was built from. */
+    /** {@return the definition this component was built from} */
     ComponentDef def();
 
-    /** Shape variants (pose tables) of this component type, &gt;= 1. */
+    /** {@return the number of shape variants (pose tables) of this component type, &gt;= 1} */
     int variants();
 
-    /** The pose table of shape variant {@code variant}, in [0, variants()). */
+    /**
+     * {@return the pose table of a shape variant}
+     *
+     * @param variant shape variant, in [0, variants())
+     */
     PoseTable poseTable(int variant);
 
-    /** Skeleton length of variant {@code variant}, metres (used by {@link PoseMapping}). */
+    /**
+     * {@return the skeleton length of a variant, metres (used by {@link PoseMapping})}
+     *
+     * @param variant shape variant, in [0, variants())
+     */
     double length(int variant);
 
-    /** Mass of variant {@code variant}, kg (eq. 4's m). */
+    /**
+     * {@return the mass of a variant, kg (eq. 4's m)}
+     *
+     * @param variant shape variant, in [0, variants())
+     */
     double mass(int variant);
 
-    /** Spring constant PC of eq. 4, N/m. */
+    /** {@return the spring constant PC of eq. 4, N/m} */
     double stiffness();
 
-    /** Response time tau of the dynamic constraint, seconds. */
+    /** {@return the response time tau of the dynamic constraint, seconds} */
     double responseTime();
 
-    /** Drag coefficient times area, m^2. */
+    /** {@return the drag coefficient times area, m^2} */
     double dragArea();
 
-    /** Levels of detail (the species' count). */
+    /** {@return the number of levels of detail (the species' count)} */
     int levels();
 
-    /** Skeleton points used at {@code level} (animation updates only these, §4.1). */
+    /**
+     * {@return the number of skeleton points used at a level (animation updates only these, §4.1)}
+     *
+     * @param level level of detail, in [0, levels())
+     */
     int lodPointCount(int level);
 
-    /** The {@code i}-th point index used at {@code level}, ascending. */
+    /**
+     * {@return the {@code i}-th point index used at a level; ascending in i}
+     *
+     * @param level level of detail, in [0, levels())
+     * @param i     in [0, lodPointCount(level))
+     */
     int lodPoint(int level, int i);
 
-    /** The mesh of one instance of this component at {@code level}. */
+    /**
+     * {@return the mesh of one instance of this component at a level}
+     *
+     * @param level level of detail, in [0, levels())
+     */
     ComponentMesh mesh(int level);
 }

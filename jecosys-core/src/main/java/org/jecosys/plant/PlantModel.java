@@ -8,8 +8,8 @@ import org.jecosys.math.Rng;
 
 /**
  * The pre-computation step of a scene's plants (paper §4.1): builds one {@link SpeciesModel} per
- * species and reports the total time (the scene loader prints it; DESIGN.md budget: under 200 ms
- * for every shipped species). Each species' variation seed is
+ * species and reports the total time (the scene loader prints it; the budget is under 200 ms for
+ * all the shipped species together). Each species' variation seed is
  * {@code Rng.mix(seed + id.hashCode())}, so a species' shapes do not depend on the order of the
  * list. Immutable after {@link #build}; any thread.
  */
@@ -30,39 +30,80 @@ public final class PlantModel {
      * @param seed     scene seed
      * @param gravity  m/s^2, in [0, 100]
      * @param progress progress listener ({@link Progress#NONE} for none)
+     * @return the built species and the build time
+     * @throws IllegalArgumentException when defs is empty or holds null, or gravity is out of range
      */
     public static PlantModel build(List<SpeciesDef> defs, long seed, double gravity, Progress progress) {
+        return build(defs, seed, gravity, progress, ComponentFactories.NONE);
+    }
+
+    /**
+     * Builds every species, with the user components of {@code components} in place of the built-in
+     * ones they name ({@link SpeciesModel#withComponents}; an extension point, see
+     * docs/ARCHITECTURE.md, "Extension points"; paper §5.1).
+     * Build time; allocates; calls {@code progress} once per species on this thread with step
+     * {@code "plants"}; calls the factories on this thread.
+     *
+     * @param defs       the species, at least one
+     * @param seed       scene seed
+     * @param gravity    m/s^2, in [0, 100]
+     * @param progress   progress listener ({@link Progress#NONE} for none)
+     * @param components user components ({@link ComponentFactories#NONE} for none)
+     * @return the built species and the build time
+     * @throws IllegalArgumentException when defs is empty or holds null, gravity is out of range, a
+     *                                  factory names a species or component that does not exist, or a
+     *                                  user component does not match its species
+     */
+    public static PlantModel build(List<SpeciesDef> defs, long seed, double gravity, Progress progress,
+                                   ComponentFactories components) {
         Require.nonNull("defs", defs);
         Require.nonNull("progress", progress);
+        Require.nonNull("components", components);
         if (defs.isEmpty()) {
             throw new IllegalArgumentException("defs must not be empty");
+        }
+        for (String id : components.speciesIds()) {
+            boolean known = false;
+            for (SpeciesDef d : defs) {
+                known |= d != null && d.id().equals(id);
+            }
+            if (!known) {
+                throw new IllegalArgumentException("component factories name species '" + id
+                        + "', which is not among the species to build");
+            }
         }
         long t0 = System.nanoTime();
         List<SpeciesModel> out = new ArrayList<>(defs.size());
         for (int i = 0; i < defs.size(); i++) {
             SpeciesDef d = Require.nonNull("defs[" + i + "]", defs.get(i));
-            out.add(SpeciesModel.build(d, speciesSeed(seed, d), gravity));
+            out.add(SpeciesModel.build(d, speciesSeed(seed, d), gravity).withComponents(components));
             progress.report("plants", i + 1, defs.size());
         }
         return new PlantModel(List.copyOf(out), System.nanoTime() - t0);
     }
 
-    /** The variation seed of {@code species} in a scene with seed {@code seed}. Pure. */
+    /**
+     * The variation seed of {@code species} in a scene with seed {@code seed}. Pure.
+     *
+     * @param seed    the scene seed
+     * @param species the species; only its id is read
+     * @return {@code Rng.mix(seed + species.id().hashCode())}
+     */
     public static long speciesSeed(long seed, SpeciesDef species) {
         return Rng.mix(seed + species.id().hashCode());
     }
 
-    /** The built species, in the order given. */
+    /** {@return the built species, in the order given (unmodifiable)} */
     public List<SpeciesModel> species() {
         return species;
     }
 
-    /** Total wall time of {@link #build}, nanoseconds. */
+    /** {@return the total wall time of {@link #build}, nanoseconds} */
     public long buildNanos() {
         return buildNanos;
     }
 
-    /** Total wall time of {@link #build}, milliseconds. */
+    /** {@return the total wall time of {@link #build}, milliseconds} */
     public double buildMillis() {
         return buildNanos / 1e6;
     }

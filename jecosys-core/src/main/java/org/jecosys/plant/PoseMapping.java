@@ -14,7 +14,13 @@ public final class PoseMapping {
     private PoseMapping() {
     }
 
-    /** Bend angle of a deviation, radians in [0, pi/2): {@code atan(|deviation| / length)}. */
+    /**
+     * Bend angle of a deviation: {@code atan(|deviation| / length)}.
+     *
+     * @param deviation deviation magnitude, metres (its absolute value is used)
+     * @param length    component skeleton length, metres, &gt; 0
+     * @return radians, in [0, pi/2)
+     */
     public static double bendAngle(double deviation, double length) {
         return Math.atan(Math.abs(deviation) / length);
     }
@@ -36,13 +42,25 @@ public final class PoseMapping {
         return Math.min(1.0, t) * (poses - 1);
     }
 
-    /** Lower pose index of a coordinate: {@code floor(c)} clamped to [0, poses - 2]. */
+    /**
+     * Lower pose index of a coordinate: {@code floor(c)} clamped to [0, poses - 2].
+     *
+     * @param poseCoordinate a value of {@link #poseCoordinate}
+     * @param poses          pose count K, &gt;= 2
+     * @return the pose blended from, in [0, poses - 2]
+     */
     public static int poseIndex(double poseCoordinate, int poses) {
         int k = (int) Math.floor(poseCoordinate);
         return Math.max(0, Math.min(poses - 2, k));
     }
 
-    /** Blend weight toward pose {@code poseIndex + 1}, in [0, 1]. */
+    /**
+     * Blend weight toward pose {@code poseIndex + 1}.
+     *
+     * @param poseCoordinate a value of {@link #poseCoordinate}
+     * @param poses          pose count K, &gt;= 2
+     * @return weight in [0, 1]; 1 at the last pose
+     */
     public static double blendWeight(double poseCoordinate, int poses) {
         double w = poseCoordinate - poseIndex(poseCoordinate, poses);
         return Math.max(0, Math.min(1, w));

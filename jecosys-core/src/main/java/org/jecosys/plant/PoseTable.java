@@ -58,6 +58,8 @@ public final class PoseTable {
      * @param twist      twist of the side vector around the skeleton over the length, radians
      * @param poses      pose count K, in [2, 64]
      * @param maxBend    extra bend of the last pose, radians, in (0, pi/2]
+     * @return the table of {@code poses * (segments + 1)} points
+     * @throws IllegalArgumentException when an argument is out of range
      */
     public static PoseTable build(double[] restAngles, int segments, double length, double baseWidth,
                                   double tipWidth, double twist, int poses, double maxBend) {
@@ -110,64 +112,94 @@ public final class PoseTable {
         return new PoseTable(poses, segments, l, maxBend, data);
     }
 
-    /** Pose count K. */
+    /** {@return the pose count K, in [2, 64]} */
     public int poses() {
         return poses;
     }
 
-    /** Skeleton segments. */
+    /** {@return the number of skeleton segments, in [1, 32]} */
     public int segments() {
         return segments;
     }
 
-    /** Skeleton points per pose: {@code segments + 1}. */
+    /** {@return the skeleton points per pose: {@code segments + 1}} */
     public int points() {
         return points;
     }
 
-    /** Length of every segment, metres. */
+    /** {@return the length of every segment, metres} */
     public double segmentLength() {
         return segLength;
     }
 
-    /** Total skeleton length, metres. */
+    /** {@return the total skeleton length, metres} */
     public double length() {
         return segLength * segments;
     }
 
-    /** Extra bend of the last pose, radians. */
+    /** {@return the extra bend of the last pose, radians} */
     public double maxBend() {
         return maxBend;
     }
 
-    /** Floats in the table: {@code poses * points * STRIDE}. */
+    /** {@return the number of floats in the table: {@code poses * points * STRIDE}} */
     public int floatCount() {
         return data.length;
     }
 
-    /** Index of the first float of (pose, point) in the flat table. */
+    /**
+     * {@return the index of the first float of (pose, point) in the flat table}
+     *
+     * @param pose  pose index, in [0, poses)
+     * @param point point index, in [0, points)
+     */
     public int offset(int pose, int point) {
         return (pose * points + point) * STRIDE;
     }
 
-    /** One float of the flat table, {@code index} in [0, floatCount()). No allocation. */
+    /**
+     * {@return one float of the flat table} No allocation.
+     *
+     * @param index in [0, floatCount())
+     */
     public float get(int index) {
         return data[index];
     }
 
-    /** Writes the skeleton point (metres, local frame) of (pose, point) into {@code dest}; returns it. */
+    /**
+     * Writes the skeleton point (metres, local frame) of (pose, point) into {@code dest}. No allocation.
+     *
+     * @param pose  pose index, in [0, poses)
+     * @param point point index, in [0, points)
+     * @param dest  where to write
+     * @return {@code dest}
+     */
     public Vector3f position(int pose, int point, Vector3f dest) {
         int o = offset(pose, point);
         return dest.set(data[o], data[o + 1], data[o + 2]);
     }
 
-    /** Writes the half-width side vector (metres) of (pose, point) into {@code dest}; returns it. */
+    /**
+     * Writes the half-width side vector (metres) of (pose, point) into {@code dest}. No allocation.
+     *
+     * @param pose  pose index, in [0, poses)
+     * @param point point index, in [0, points)
+     * @param dest  where to write
+     * @return {@code dest}
+     */
     public Vector3f side(int pose, int point, Vector3f dest) {
         int o = offset(pose, point) + 3;
         return dest.set(data[o], data[o + 1], data[o + 2]);
     }
 
-    /** Writes the half-width normal vector (metres) of (pose, point) into {@code dest}; returns it. */
+    /**
+     * Writes the half-width normal vector (metres) of (pose, point) into {@code dest}. No allocation.
+     *
+     * @param pose  pose index, in [0, poses)
+     * @param point point index, in [0, points)
+     * @param dest  where to write
+     * @return {@code dest}
+     */
     public Vector3f normal(int pose, int point, Vector3f dest) {
         int o = offset(pose, point) + 6;
         return dest.set(data[o], data[o + 1], data[o + 2]);
@@ -179,6 +211,9 @@ public final class PoseTable {
      * next, into {@code dest}; returns it. Per-frame safe: no allocation.
      *
      * @param poseCoordinate in [0, poses - 1]; clamped
+     * @param point          point index, in [0, points)
+     * @param dest           where to write
+     * @return {@code dest}
      */
     public Vector3f blendedPosition(double poseCoordinate, int point, Vector3f dest) {
         double c = Math.max(0, Math.min(poses - 1, poseCoordinate));
@@ -191,12 +226,21 @@ public final class PoseTable {
                 data[a + 2] + w * (data[b + 2] - data[a + 2]));
     }
 
-    /** Copies the whole table into {@code dest} from {@code destOffset}. No allocation. */
+    /**
+     * Copies the whole table into {@code dest} from {@code destOffset}. No allocation.
+     *
+     * @param dest       receives {@link #floatCount()} floats
+     * @param destOffset first index written
+     */
     public void copyTo(float[] dest, int destOffset) {
         System.arraycopy(data, 0, dest, destOffset, data.length);
     }
 
-    /** Puts the whole table into {@code dest} at its position (relative put). No allocation. */
+    /**
+     * Puts the whole table into {@code dest} at its position (relative put). No allocation.
+     *
+     * @param dest a buffer with at least {@link #floatCount()} floats remaining; its position advances
+     */
     public void writeTo(FloatBuffer dest) {
         dest.put(data);
     }

@@ -13,7 +13,7 @@ public enum Primitive {
         this.xmlName = xmlName;
     }
 
-    /** The attribute value used in scene files. */
+    /** {@return the attribute value used in scene files: {@code "triangles"} or {@code "lines"}} */
     public String xmlName() {
         return xmlName;
     }

@@ -24,7 +24,12 @@ public final class Skeleton {
     private Skeleton() {
     }
 
-    /** {@code angle} clamped to [-{@link #MAX_ANGLE}, {@link #MAX_ANGLE}]. */
+    /**
+     * {@code angle} clamped to [-{@link #MAX_ANGLE}, {@link #MAX_ANGLE}].
+     *
+     * @param angle a segment angle from vertical, radians
+     * @return the clamped angle, radians
+     */
     public static double clampAngle(double angle) {
         return Math.max(-MAX_ANGLE, Math.min(MAX_ANGLE, angle));
     }
@@ -69,6 +74,10 @@ public final class Skeleton {
     /**
      * Width of the linear width profile at point {@code point} of {@code segments + 1} points.
      *
+     * @param baseWidth width at point 0, metres
+     * @param tipWidth  width at the last point, metres
+     * @param point     point index, in [0, segments]
+     * @param segments  segment count, &gt;= 1
      * @return metres, {@code baseWidth + (tipWidth - baseWidth) point / segments}
      */
     public static double width(double baseWidth, double tipWidth, int point, int segments) {
@@ -78,6 +87,11 @@ public final class Skeleton {
     /**
      * Direction angle of the tangent at {@code point}: the first or last segment's angle at the
      * ends, the mean of the two adjacent segments' angles inside.
+     *
+     * @param angles   segment angles, radians
+     * @param segments segment count, &gt;= 1
+     * @param point    point index, in [0, segments]
+     * @return the tangent's angle from vertical, radians
      */
     public static double tangentAngle(double[] angles, int segments, int point) {
         if (point == 0) {

@@ -35,13 +35,13 @@ public final class SpeciesLibrary {
     private SpeciesLibrary() {
     }
 
-    /** Table 3: LOD1 0-10 m triangles, LOD2 10-15 m triangles, LOD3 beyond 15 m lines. */
+    /** {@return Table 3's levels: LOD1 0-10 m triangles, LOD2 10-15 m triangles, LOD3 beyond 15 m lines} */
     public static List<LodDef> table3Lods() {
         return List.of(new LodDef(10, Primitive.TRIANGLES), new LodDef(15, Primitive.TRIANGLES),
                 new LodDef(Double.POSITIVE_INFINITY, Primitive.LINES));
     }
 
-    /** Grass tuft A: 25 leaves; 250 / 150 triangles, 175 lines (Table 2). */
+    /** {@return grass tuft A: 25 leaves; 250 / 150 triangles, 175 lines (Table 2)} */
     public static SpeciesDef grassTuftA() {
         ComponentDef leaf = new ComponentDef("leaf", ComponentType.LEAF, ComponentShape.STRIP, 25, null,
                 5, 0.45, 0.006, 0.0015, 0.35, 0.4, 0.3, 4.0e-4, 0.2, 0.3, 0.002,
@@ -50,7 +50,7 @@ public final class SpeciesLibrary {
                 new VariationDef(8, 0.2, 0.15, 0.3, 0.15));
     }
 
-    /** Yellow flower B: stalk, head, 5 petals; 72 / 52 triangles, 37 lines (Table 2). */
+    /** {@return yellow flower B: stalk, head, 5 petals; 72 / 52 triangles, 37 lines (Table 2)} */
     public static SpeciesDef yellowFlowerB() {
         ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
                 6, 0.40, 0.004, 0.003, 0.05, 0, 0.05, 3.0e-3, 0.8, 0.45, 0.004,
@@ -65,7 +65,7 @@ public final class SpeciesLibrary {
                 table3Lods(), new VariationDef(6, 0.12, 0.1, 0.25, 0.08));
     }
 
-    /** Purple flower C: stalk, 2 leaves, 4 petals; 78 / 58 triangles, 39 lines (Table 2). */
+    /** {@return purple flower C: stalk, 2 leaves, 4 petals; 78 / 58 triangles, 39 lines (Table 2)} */
     public static SpeciesDef purpleFlowerC() {
         ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
                 8, 0.45, 0.004, 0.003, 0.08, 0, 0.05, 3.5e-3, 0.9, 0.45, 0.0045,
@@ -80,7 +80,7 @@ public final class SpeciesLibrary {
                 table3Lods(), new VariationDef(6, 0.12, 0.1, 0.25, 0.08));
     }
 
-    /** Rose: stalk, 2 leaves, 5 sepals, 10 petals, head; 177 / 105 triangles, 118 lines (Table 1). */
+    /** {@return the rose: stalk, 2 leaves, 5 sepals, 10 petals, head; 177 / 105 triangles, 118 lines (Table 1)} */
     public static SpeciesDef rose() {
         ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
                 12, 0.60, 0.007, 0.005, 0.1, 0, 0.04, 1.2e-2, 1.5, 0.5, 0.006,
@@ -101,7 +101,7 @@ public final class SpeciesLibrary {
                 table3Lods(), new VariationDef(4, 0.1, 0.1, 0.2, 0.05));
     }
 
-    /** A, B, C and the rose, in that order. */
+    /** {@return A, B, C and the rose, in that order} */
     public static List<SpeciesDef> all() {
         return List.of(grassTuftA(), yellowFlowerB(), purpleFlowerC(), rose());
     }

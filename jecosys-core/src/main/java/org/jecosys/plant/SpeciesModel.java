@@ -36,7 +36,7 @@ public final class SpeciesModel {
 
     private final SpeciesDef def;
     private final long seed;
-    private final ComponentModel[] components;
+    private final PlantComponent[] components;
     private final LodMesh[] meshes;
     private final int[] slotComponent;
     private final int[] slotParent;
@@ -46,7 +46,7 @@ public final class SpeciesModel {
     private final int[] slotVariantOffset;
     private final long buildNanos;
 
-    private SpeciesModel(SpeciesDef def, long seed, ComponentModel[] components, LodMesh[] meshes,
+    private SpeciesModel(SpeciesDef def, long seed, PlantComponent[] components, LodMesh[] meshes,
                          int[] slotComponent, int[] slotParent, double[] slotAzimuth, double[] slotBaseX,
                          double[] slotBaseZ, int[] slotVariantOffset, long buildNanos) {
         this.def = def;
@@ -62,7 +62,13 @@ public final class SpeciesModel {
         this.buildNanos = buildNanos;
     }
 
-    /** {@link #build(SpeciesDef, long, double)} under Earth gravity. */
+    /**
+     * {@link #build(SpeciesDef, long, double)} under Earth gravity ({@link GravityBend#EARTH_GRAVITY}).
+     *
+     * @param def  the species
+     * @param seed variation seed
+     * @return the built species (allocates)
+     */
     public static SpeciesModel build(SpeciesDef def, long seed) {
         return build(def, seed, GravityBend.EARTH_GRAVITY);
     }
@@ -71,19 +77,44 @@ public final class SpeciesModel {
      * Pre-computes every pose table, variant and mesh of a species. Build time (scene load);
      * allocates; any thread; deterministic for {@code (def, seed, gravity)}.
      *
+     * <p>The steps, in order: link each component type to its parent type ({@code parentTypes}),
+     * sample the shape variants ({@code sampleVariants}) and their lengths and masses, solve the
+     * gravity-bent rest pose of every (type, variant) into its pose table ({@code restPoseTables}),
+     * build the per-level component meshes ({@code componentModels}), lay out the slots
+     * ({@code SlotLayout}) and concatenate the whole-plant meshes ({@code plantMeshes}).
+     *
      * @param def     the species
      * @param seed    variation seed
      * @param gravity gravitational acceleration for the rest shapes, m/s^2, in [0, 100]; 0 leaves every
      *                component straight plus its own curvature
+     * @return the built species
+     * @throws IllegalArgumentException when def is null, gravity is out of range or the components'
+     *                                  attachTo links form a cycle
      */
     public static SpeciesModel build(SpeciesDef def, long seed, double gravity) {
         long t0 = System.nanoTime();
         Require.nonNull("def", def);
         Require.range("gravity", gravity, 0, 100);
         List<ComponentDef> cdefs = def.components();
+        int[] parent = parentTypes(cdefs);
+        checkNoCycle(cdefs, parent);
+        ComponentVariant[][] variants = sampleVariants(def, seed);
+        double[][] lengths = variantLengths(cdefs, variants);
+        double[][] masses = variantMasses(cdefs, variants);
+        PoseTable[][] tables = restPoseTables(def, gravity, parent, variants, lengths, masses);
+        ComponentModel[] models = componentModels(def, tables, lengths, masses);
+        SlotLayout slots = new SlotLayout(cdefs, parent, def.componentsPerPlant());
+        LodMesh[] meshes = plantMeshes(def, slots.component, models);
+        return new SpeciesModel(def, seed, models, meshes, slots.component, slots.parent, slots.azimuth,
+                slots.baseX, slots.baseZ, slots.variantOffset, System.nanoTime() - t0);
+    }
+
+    /**
+     * Per component type, the index of the type its {@code attachTo} names (the last of that id), or
+     * -1 for a type on the ground (no {@code attachTo}). Build time; allocates the result.
+     */
+    private static int[] parentTypes(List<ComponentDef> cdefs) {
         int nc = cdefs.size();
-        int nv = def.variation().variants();
-        int levels = def.lods().size();
         int[] parent = new int[nc];
         for (int c = 0; c < nc; c++) {
             parent[c] = -1;
@@ -94,98 +125,211 @@ public final class SpeciesModel {
                 }
             }
         }
-        checkNoCycle(cdefs, parent);
-        ComponentVariant[][] var = new ComponentVariant[nv][nc];
+        return parent;
+    }
+
+    /**
+     * The shape variants, indexed {@code [variant][component type]}: {@link ComponentVariant#sample}
+     * {@code (variation, seed, v, c)}. Build time; allocates the result.
+     */
+    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed) {
+        int nv = def.variation().variants();
+        int nc = def.components().size();
+        ComponentVariant[][] variants = new ComponentVariant[nv][nc];
         for (int v = 0; v < nv; v++) {
             for (int c = 0; c < nc; c++) {
-                var[v][c] = ComponentVariant.sample(def.variation(), seed, v, c);
+                variants[v][c] = ComponentVariant.sample(def.variation(), seed, v, c);
             }
         }
-        PoseTable[][] tables = new PoseTable[nc][nv];
-        double[][] lengths = new double[nc][nv];
-        double[][] masses = new double[nc][nv];
-        for (int v = 0; v < nv; v++) {
-            for (int c = 0; c < nc; c++) {
-                ComponentVariant cv = var[v][c];
+        return variants;
+    }
+
+    /**
+     * Length of each component type in each variant, metres, indexed {@code [type][variant]}: the
+     * type's length times the variant's length scale. Build time; allocates the result.
+     */
+    private static double[][] variantLengths(List<ComponentDef> cdefs, ComponentVariant[][] variants) {
+        double[][] lengths = new double[cdefs.size()][variants.length];
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
+                lengths[c][v] = cdefs.get(c).length() * variants[v][c].lengthScale();
+            }
+        }
+        return lengths;
+    }
+
+    /**
+     * Mass of each component type in each variant, kg, indexed {@code [type][variant]}: the type's
+     * mass times the variant's length and width scales. Build time; allocates the result.
+     */
+    private static double[][] variantMasses(List<ComponentDef> cdefs, ComponentVariant[][] variants) {
+        double[][] masses = new double[cdefs.size()][variants.length];
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
+                ComponentVariant cv = variants[v][c];
                 masses[c][v] = cdefs.get(c).mass() * cv.lengthScale() * cv.widthScale();
             }
         }
+        return masses;
+    }
+
+    /**
+     * The pose table of each component type in each variant, indexed {@code [type][variant]}: the
+     * rest shape bent under {@code gravity} (m/s^2) by its own mass and its tip load
+     * ({@link #tipMass}) with {@link GravityBend#solve}, widths scaled and curvature and tilt
+     * varied by the variant, then {@link PoseTable#build}. Build time; allocates the tables and one
+     * scratch array of rest angles.
+     */
+    private static PoseTable[][] restPoseTables(SpeciesDef def, double gravity, int[] parent,
+                                                ComponentVariant[][] variants, double[][] lengths, double[][] masses) {
+        List<ComponentDef> cdefs = def.components();
+        PoseTable[][] tables = new PoseTable[cdefs.size()][variants.length];
         double[] angles = new double[32];
-        for (int v = 0; v < nv; v++) {
-            for (int c = 0; c < nc; c++) {
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
                 ComponentDef d = cdefs.get(c);
-                ComponentVariant cv = var[v][c];
-                double tipMass = 0;
-                for (int ch = 0; ch < nc; ch++) {
-                    if (parent[ch] == c) {
-                        tipMass += masses[ch][v] * cdefs.get(ch).count() / d.count();
-                    }
-                }
-                double length = d.length() * cv.lengthScale();
+                ComponentVariant cv = variants[v][c];
+                double length = lengths[c][v];
                 double base = d.baseWidth() * cv.widthScale();
                 double tip = d.tipWidth() * cv.widthScale();
                 double curvature = Math.max(-Math.PI, Math.min(Math.PI, d.curvature() * cv.curvatureScale()));
                 double tilt = Math.min(Math.PI / 2, d.tilt() + cv.extraTilt());
                 GravityBend.solve(d.type(), d.segments(), length, base, tip, tilt, curvature, masses[c][v],
-                        tipMass, gravity, angles);
+                        tipMass(cdefs, parent, masses, c, v), gravity, angles);
                 tables[c][v] = PoseTable.build(angles, d.segments(), length, base, tip, d.twist(),
                         def.poses(), def.maxBend());
-                lengths[c][v] = length;
             }
         }
-        ComponentModel[] models = new ComponentModel[nc];
-        ComponentMesh[][] meshByLevel = new ComponentMesh[levels][nc];
-        for (int c = 0; c < nc; c++) {
+        return tables;
+    }
+
+    /**
+     * The load at the tip of one instance of component type {@code c} in variant {@code v}, kg: the
+     * masses (in variant v) of all instances of the types attached to it, shared among c's
+     * instances. No allocation.
+     */
+    private static double tipMass(List<ComponentDef> cdefs, int[] parent, double[][] masses, int c, int v) {
+        double tipMass = 0;
+        for (int ch = 0; ch < parent.length; ch++) {
+            if (parent[ch] == c) {
+                tipMass += masses[ch][v] * cdefs.get(ch).count() / cdefs.get(c).count();
+            }
+        }
+        return tipMass;
+    }
+
+    /**
+     * The component models: per type its pose tables, lengths and masses (per variant) and per level
+     * of detail its point subset ({@link ComponentMesh#lodPoints}) and mesh ({@link ComponentMesh#build},
+     * in the level's primitive). Build time; allocates.
+     */
+    private static ComponentModel[] componentModels(SpeciesDef def, PoseTable[][] tables, double[][] lengths,
+                                                    double[][] masses) {
+        List<ComponentDef> cdefs = def.components();
+        int levels = def.lods().size();
+        ComponentModel[] models = new ComponentModel[cdefs.size()];
+        for (int c = 0; c < models.length; c++) {
             ComponentDef d = cdefs.get(c);
             int[][] pts = new int[levels][];
             ComponentMesh[] ms = new ComponentMesh[levels];
             for (int l = 0; l < levels; l++) {
                 int n = d.lodSegments().get(l);
                 pts[l] = ComponentMesh.lodPoints(d.shape(), d.segments(), n);
-                ms[l] = ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n, def.lods().get(l).primitive());
-                meshByLevel[l][c] = ms[l];
+                ms[l] = ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n,
+                        def.lods().get(l).primitive());
             }
             models[c] = new ComponentModel(d, tables[c], lengths[c], masses[c], pts, ms);
         }
-        int slots = def.componentsPerPlant();
-        int[] sc = new int[slots];
-        int[] sp = new int[slots];
-        double[] sa = new double[slots];
-        double[] sx = new double[slots];
-        double[] sz = new double[slots];
-        int[] so = new int[slots];
-        int[] firstSlot = new int[nc];
-        int s = 0;
-        for (int c = 0; c < nc; c++) {
-            firstSlot[c] = s;
-            s += cdefs.get(c).count();
+        return models;
+    }
+
+    /**
+     * Per level of detail the whole-plant mesh: the meshes of the slots' component types at that
+     * level, concatenated in slot order ({@link LodMesh#concat}). Build time; allocates.
+     */
+    private static LodMesh[] plantMeshes(SpeciesDef def, int[] slotComponent, ComponentModel[] models) {
+        LodMesh[] meshes = new LodMesh[def.lods().size()];
+        for (int l = 0; l < meshes.length; l++) {
+            ComponentMesh[] meshOfComponent = new ComponentMesh[models.length];
+            for (int c = 0; c < models.length; c++) {
+                meshOfComponent[c] = models[c].mesh(l);
+            }
+            meshes[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent,
+                    meshOfComponent);
         }
-        for (int c = 0; c < nc; c++) {
-            ComponentDef d = cdefs.get(c);
-            for (int j = 0; j < d.count(); j++) {
-                int slot = firstSlot[c] + j;
-                sc[slot] = c;
-                so[slot] = j;
-                if (parent[c] >= 0) {
-                    sp[slot] = firstSlot[parent[c]] + j % cdefs.get(parent[c]).count();
-                    sa[slot] = 2 * Math.PI * j / d.count();
-                } else {
-                    sp[slot] = -1;
-                    boolean leaf = d.type() == ComponentType.LEAF;
-                    sa[slot] = leaf ? (j * GOLDEN_ANGLE) % (2 * Math.PI) : 2 * Math.PI * j / d.count();
-                    if (d.count() > 1) {
-                        double r = 0.5 * d.baseWidth() * Math.sqrt(j + 0.5);
-                        sx[slot] = r * Math.cos(sa[slot]);
-                        sz[slot] = r * Math.sin(sa[slot]);
+        return meshes;
+    }
+
+    /**
+     * The slots of one plant (see the class comment), component types expanded in definition order:
+     * per slot its component type, parent slot (-1 on the ground), azimuth about Y (radians), base
+     * offset in the ground plane (metres; 0 for attached slots) and variant offset. Build time;
+     * allocates its arrays, which the model then keeps.
+     */
+    private static final class SlotLayout {
+        final int[] component;
+        final int[] parent;
+        final double[] azimuth;
+        final double[] baseX;
+        final double[] baseZ;
+        final int[] variantOffset;
+
+        /**
+         * @param cdefs      the component types
+         * @param parentType per type its parent type, or -1 ({@link #parentTypes})
+         * @param slots      component instances per plant (the sum of the types' counts)
+         */
+        SlotLayout(List<ComponentDef> cdefs, int[] parentType, int slots) {
+            component = new int[slots];
+            parent = new int[slots];
+            azimuth = new double[slots];
+            baseX = new double[slots];
+            baseZ = new double[slots];
+            variantOffset = new int[slots];
+            int[] firstSlot = firstSlots(cdefs);
+            for (int c = 0; c < cdefs.size(); c++) {
+                ComponentDef d = cdefs.get(c);
+                for (int j = 0; j < d.count(); j++) {
+                    int slot = firstSlot[c] + j;
+                    component[slot] = c;
+                    variantOffset[slot] = j;
+                    int pt = parentType[c];
+                    if (pt >= 0) { // at the tip of instance j mod count of the parent type, spread evenly
+                        parent[slot] = firstSlot[pt] + j % cdefs.get(pt).count();
+                        azimuth[slot] = 2 * Math.PI * j / d.count();
+                    } else {
+                        placeOnGround(slot, d, j);
                     }
                 }
             }
         }
-        LodMesh[] lm = new LodMesh[levels];
-        for (int l = 0; l < levels; l++) {
-            lm[l] = LodMesh.concat(def.lods().get(l).primitive(), slots, sc, meshByLevel[l]);
+
+        /** Per component type the first of its slots. */
+        private static int[] firstSlots(List<ComponentDef> cdefs) {
+            int[] firstSlot = new int[cdefs.size()];
+            int s = 0;
+            for (int c = 0; c < cdefs.size(); c++) {
+                firstSlot[c] = s;
+                s += cdefs.get(c).count();
+            }
+            return firstSlot;
         }
-        return new SpeciesModel(def, seed, models, lm, sc, sp, sa, sx, sz, so, System.nanoTime() - t0);
+
+        /**
+         * Ground instance {@code j} of type {@code d} in {@code slot}: leaves at the golden angle
+         * {@code j * 2.39996}, other types spread evenly ({@code 2 pi j / count}); a multi-instance
+         * type sits on a phyllotaxis disc, radius {@code 0.5 baseWidth sqrt(j + 0.5)} metres.
+         */
+        private void placeOnGround(int slot, ComponentDef d, int j) {
+            parent[slot] = -1;
+            boolean leaf = d.type() == ComponentType.LEAF;
+            azimuth[slot] = leaf ? (j * GOLDEN_ANGLE) % (2 * Math.PI) : 2 * Math.PI * j / d.count();
+            if (d.count() > 1) {
+                double r = 0.5 * d.baseWidth() * Math.sqrt(j + 0.5);
+                baseX[slot] = r * Math.cos(azimuth[slot]);
+                baseZ[slot] = r * Math.sin(azimuth[slot]);
+            }
+        }
     }
 
     private static void checkNoCycle(List<ComponentDef> cdefs, int[] parent) {
@@ -201,102 +345,260 @@ public final class SpeciesModel {
         }
     }
 
-    /** The definition. */
+    /** {@return the definition this model was built from} */
     public SpeciesDef def() {
         return def;
     }
 
-    /** The variation seed this model was built with. */
+    /** {@return the variation seed this model was built with} */
     public long seed() {
         return seed;
     }
 
-    /** Wall time of {@link #build}, nanoseconds. */
+    /** {@return the wall time of {@link #build}, nanoseconds} */
     public long buildNanos() {
         return buildNanos;
     }
 
-    /** Component types. */
+    /** {@return the number of component types} */
     public int componentCount() {
         return components.length;
     }
 
-    /** Component type {@code c} in definition order. */
-    public ComponentModel component(int c) {
+    /**
+     * {@return component type {@code c}, in definition order: its built-in {@link ComponentModel}, or
+     * the component a {@link ComponentFactory} supplied ({@link #withComponents})}
+     *
+     * @param c component type index, in [0, componentCount())
+     */
+    public PlantComponent component(int c) {
         return components[c];
     }
 
-    /** Shape variants. */
+    /**
+     * This species with the component types named in {@code factories} (for this species' id)
+     * supplied by their {@link ComponentFactory} instead (an extension point, see
+     * docs/ARCHITECTURE.md, "Extension points"; paper §4.1, §5.1): each factory gets the species'
+     * def and the component it replaces, and its result is
+     * checked against the species' layout. The whole-plant meshes are rebuilt from the components'
+     * meshes; slots, variants and seeds are unchanged. Returns this model when no factory names this
+     * species. Build time; allocates; any thread.
+     *
+     * @param factories the user components
+     * @return the species model with those components
+     * @throws IllegalArgumentException when a factory names a component this species does not have,
+     *                                  returns null, or returns a component that does not match:
+     *                                  another def, not one pose table per variant with the species'
+     *                                  pose count and {@code segments + 1} points, not one mesh per
+     *                                  level with the level's primitive, or a length, mass, stiffness,
+     *                                  response time or drag area out of {@link ComponentDef}'s ranges
+     */
+    public SpeciesModel withComponents(ComponentFactories factories) {
+        Require.nonNull("factories", factories);
+        List<ComponentDef> cdefs = def.components();
+        for (String id : factories.componentIds(def.id())) {
+            boolean known = false;
+            for (ComponentDef d : cdefs) {
+                known |= d.id().equals(id);
+            }
+            if (!known) {
+                List<String> ids = new java.util.ArrayList<>();
+                for (ComponentDef d : cdefs) {
+                    ids.add(d.id());
+                }
+                throw new IllegalArgumentException("species '" + def.id() + "' has no component '" + id
+                        + "' to replace; its components: " + String.join(", ", ids));
+            }
+        }
+        // a copy typed PlantComponent[] (the built model's array is a ComponentModel[] at run time)
+        PlantComponent[] cs = java.util.Arrays.copyOf(components, components.length, PlantComponent[].class);
+        boolean changed = false;
+        for (int c = 0; c < cs.length; c++) {
+            ComponentFactory f = factories.get(def.id(), cdefs.get(c).id());
+            if (f != null) {
+                cs[c] = checkComponent(f.create(def, components[c]), cdefs.get(c));
+                changed = true;
+            }
+        }
+        if (!changed) {
+            return this;
+        }
+        LodMesh[] lm = new LodMesh[def.lods().size()];
+        ComponentMesh[] meshOfComponent = new ComponentMesh[cs.length];
+        for (int l = 0; l < lm.length; l++) {
+            for (int c = 0; c < cs.length; c++) {
+                meshOfComponent[c] = cs[c].mesh(l);
+            }
+            lm[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent,
+                    meshOfComponent);
+        }
+        return new SpeciesModel(def, seed, cs, lm, slotComponent, slotParent, slotAzimuth, slotBaseX, slotBaseZ,
+                slotVariantOffset, buildNanos);
+    }
+
+    /** Checks a user component against component type cd of this species; returns it. */
+    private PlantComponent checkComponent(PlantComponent pc, ComponentDef cd) {
+        String what = "the component factory for '" + def.id() + "/" + cd.id() + "'";
+        if (pc == null) {
+            throw new IllegalArgumentException(what + " returned null");
+        }
+        if (!cd.equals(pc.def())) {
+            throw new IllegalArgumentException(what + " returned a component whose def() is not the species' "
+                    + "def of that component (forward def() to the built-in component)");
+        }
+        if (pc.variants() != variants()) {
+            throw new IllegalArgumentException(what + " returned " + pc.variants() + " variants, the species has "
+                    + variants());
+        }
+        for (int v = 0; v < variants(); v++) {
+            PoseTable t = pc.poseTable(v);
+            if (t == null || t.poses() != def.poses() || t.points() != cd.segments() + 1) {
+                throw new IllegalArgumentException(what + ": pose table " + v + " must have the species' "
+                        + def.poses() + " poses and segments + 1 = " + (cd.segments() + 1) + " points");
+            }
+            Require.range(what + ": length(" + v + ")", pc.length(v), 1e-6, 10);
+            Require.range(what + ": mass(" + v + ")", pc.mass(v), 1e-9, 10);
+        }
+        Require.range(what + ": stiffness()", pc.stiffness(), 1e-9, 1e6);
+        Require.range(what + ": responseTime()", pc.responseTime(), 1e-3, 10);
+        Require.range(what + ": dragArea()", pc.dragArea(), 0, 10);
+        if (pc.levels() != def.lods().size()) {
+            throw new IllegalArgumentException(what + " returned " + pc.levels() + " levels, the species has "
+                    + def.lods().size());
+        }
+        for (int l = 0; l < def.lods().size(); l++) {
+            ComponentMesh m = pc.mesh(l);
+            if (m == null || m.primitive() != def.lods().get(l).primitive()) {
+                throw new IllegalArgumentException(what + ": mesh(" + l + ") must be drawn with "
+                        + def.lods().get(l).primitive());
+            }
+        }
+        return pc;
+    }
+
+    /** {@return the number of shape variants, in [1, 64]} */
     public int variants() {
         return def.variation().variants();
     }
 
-    /** Levels of detail. */
+    /** {@return the number of levels of detail} */
     public int levels() {
         return meshes.length;
     }
 
-    /** The whole-plant mesh at {@code level}. */
+    /**
+     * {@return the whole-plant mesh at a level}
+     *
+     * @param level level of detail, in [0, levels())
+     */
     public LodMesh mesh(int level) {
         return meshes[level];
     }
 
-    /** Primitives (triangles or lines, see {@link LodMesh#primitive}) of one plant at {@code level}. */
+    /**
+     * {@return the primitives (triangles or lines, see {@link LodMesh#primitive}) of one plant at a level}
+     *
+     * @param level level of detail, in [0, levels())
+     */
     public int primitiveCount(int level) {
         return meshes[level].primitiveCount();
     }
 
-    /** Component instances per plant. */
+    /** {@return the number of component instances (slots) per plant} */
     public int slotCount() {
         return slotComponent.length;
     }
 
-    /** Component type of {@code slot}. */
+    /**
+     * {@return the component type of a slot}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public int slotComponent(int slot) {
         return slotComponent[slot];
     }
 
-    /** Parent slot whose tip carries {@code slot}, or -1 on the ground. */
+    /**
+     * {@return the parent slot whose tip carries a slot, or -1 on the ground}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public int slotParent(int slot) {
         return slotParent[slot];
     }
 
-    /** Azimuth of {@code slot} about Y relative to the plant's rest azimuth, radians. */
+    /**
+     * {@return the azimuth of a slot about Y relative to the plant's rest azimuth, radians}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public double slotAzimuth(int slot) {
         return slotAzimuth[slot];
     }
 
-    /** Base X offset of a ground slot in the plant's (unrotated) frame, metres; 0 if attached. */
+    /**
+     * {@return the base X offset of a ground slot in the plant's (unrotated) frame, metres; 0 if attached}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public double slotBaseX(int slot) {
         return slotBaseX[slot];
     }
 
-    /** Base Z offset of a ground slot in the plant's (unrotated) frame, metres; 0 if attached. */
+    /**
+     * {@return the base Z offset of a ground slot in the plant's (unrotated) frame, metres; 0 if attached}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public double slotBaseZ(int slot) {
         return slotBaseZ[slot];
     }
 
-    /** Variant offset of {@code slot} (its instance index within its type). */
+    /**
+     * {@return the variant offset of a slot (its instance index within its type)}
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
     public int slotVariantOffset(int slot) {
         return slotVariantOffset[slot];
     }
 
-    /** Shape variant used by {@code slot} in a plant of variant {@code plantVariant}. */
+    /**
+     * {@return the shape variant a slot uses: {@code (plantVariant + slotVariantOffset(slot)) mod variants()}}
+     *
+     * @param slot         slot index, in [0, slotCount())
+     * @param plantVariant the plant's variant, in [0, variants())
+     */
     public int slotVariant(int slot, int plantVariant) {
         return (plantVariant + slotVariantOffset[slot]) % variants();
     }
 
-    /** The pose table drawn for {@code slot} in a plant of variant {@code plantVariant}. */
+    /**
+     * {@return the pose table drawn for a slot in a plant of a given variant}
+     *
+     * @param slot         slot index, in [0, slotCount())
+     * @param plantVariant the plant's variant, in [0, variants())
+     */
     public PoseTable slotPoseTable(int slot, int plantVariant) {
         return components[slotComponent[slot]].poseTable(slotVariant(slot, plantVariant));
     }
 
-    /** The shape variant of a plant with seed {@code plantSeed}: uniform in [0, variants). Pure. */
+    /**
+     * The shape variant of a plant with seed {@code plantSeed}. Pure.
+     *
+     * @param plantSeed the plant's variant seed ({@code PlantLayout.variantSeed})
+     * @return uniform in [0, variants())
+     */
     public int variantFor(long plantSeed) {
         return (int) Math.floorMod(Rng.mix(plantSeed ^ 0x5DEECE66DL), (long) variants());
     }
 
-    /** The rest azimuth of a plant with seed {@code plantSeed}, radians in [0, 2 pi). Pure. */
+    /**
+     * The rest azimuth of a plant with seed {@code plantSeed}. Pure.
+     *
+     * @param plantSeed the plant's variant seed
+     * @return radians, in [0, 2 pi)
+     */
     public static double restAzimuthFor(long plantSeed) {
         return (Rng.mix(plantSeed + 0x2545F4914F6CDD1DL) >>> 11) * 0x1.0p-53 * 2 * Math.PI;
     }

@@ -15,6 +15,16 @@ import org.jecosys.math.Require;
  * @param tilt      extra tilt from vertical, radians, in [0, pi/4]
  */
 public record VariationDef(int variants, double length, double width, double curvature, double tilt) {
+    /**
+     * Checks the components.
+     *
+     * @param variants  shape variants, in [1, 64]
+     * @param length    relative length variation, in [0, 0.9]
+     * @param width     relative width variation, in [0, 0.9]
+     * @param curvature relative curvature variation, in [0, 0.9]
+     * @param tilt      extra tilt, radians, in [0, pi/4]
+     * @throws IllegalArgumentException when a component is out of range
+     */
     public VariationDef {
         Require.range("variants", variants, 1, 64);
         Require.range("length", length, 0, 0.9);

@@ -31,12 +31,24 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
             this.xmlName = xmlName;
         }
 
-        /** The attribute value used in scene files. */
+        /** {@return the attribute value used in scene files, e.g. {@code "water"}} */
         public String xmlName() {
             return xmlName;
         }
     }
 
+    /**
+     * Checks the components.
+     *
+     * @param width         default width, pixels, in [16, 8192]
+     * @param height        default height, pixels, in [16, 8192]
+     * @param sky           background colour, not null
+     * @param lodTransition dithering band width, metres, in [0, 10]
+     * @param terrainTint   terrain tint, not null
+     * @param showField     whether the quadtree overlay starts visible
+     * @param showWind      whether the wind-vector overlay starts visible
+     * @throws IllegalArgumentException when a component is null or out of range
+     */
     public RenderDef {
         Require.range("width", width, 16, 8192);
         Require.range("height", height, 16, 8192);
@@ -45,7 +57,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         Require.nonNull("terrainTint", terrainTint);
     }
 
-    /** 1280x720, light blue sky, a 1 m transition band, no tint, overlays hidden. */
+    /** {@return 1280x720, light blue sky, a 1 m transition band, no tint, overlays hidden} */
     public static RenderDef defaults() {
         return new RenderDef(1280, 720, new Rgb(0.62f, 0.76f, 0.92f), 1, Tint.NONE, false, false);
     }

@@ -314,7 +314,7 @@ final class SceneBinder {
             motion = make(path, () -> new MotionDef(MotionDef.Kind.PATH, waypoints(path), path.num("speed"),
                     path.bool("loop")));
         } else if (advected) {
-            motion = new MotionDef(MotionDef.Kind.ADVECTED, List.of(), 1, false);
+            motion = MotionDef.ADVECTED;
         }
         if (motion == null) {
             return null;
@@ -327,10 +327,10 @@ final class SceneBinder {
         FlowKind k = kind;
         MotionDef m = motion;
         return make(f, () -> new FlowDef(f.str("id"), k, f.bool("enabled"), f.num("x"), f.num("z"),
-                f.num("strength"), numOr(f, "direction", 0), f.num("coreRadius"), f.num("influenceRadius"), activation,
-                m, numOr(f, "noiseScale", FlowDef.DEFAULT_NOISE_SCALE),
+                f.num("strength"), numOr(f, "direction", FlowDef.DEFAULT_DIRECTION), f.num("coreRadius"),
+                f.num("influenceRadius"), activation, m, numOr(f, "noiseScale", FlowDef.DEFAULT_NOISE_SCALE),
                 numOr(f, "noiseFrequency", FlowDef.DEFAULT_NOISE_FREQUENCY),
-                f.values.containsKey("seed") ? f.longValue("seed") : 0L));
+                f.values.containsKey("seed") ? f.longValue("seed") : FlowDef.DEFAULT_SEED));
     }
 
     private static double numOr(Values v, String name, double fallback) {

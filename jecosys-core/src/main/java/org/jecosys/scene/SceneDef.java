@@ -37,6 +37,24 @@ public record SceneDef(int version, String name, long seed, TerrainDef terrain, 
     /** The one scene-format version this build reads and writes. */
     public static final int FORMAT_VERSION = 1;
 
+    /**
+     * Checks the components and copies the lists.
+     *
+     * @param version       must be {@link #FORMAT_VERSION}
+     * @param name          human-readable name, not null
+     * @param seed          master seed (any value)
+     * @param terrain       not null
+     * @param species       species with unique ids
+     * @param distributions each naming one of {@code species}
+     * @param placements    each naming one of {@code species}
+     * @param flows         flows with unique ids
+     * @param field         not null
+     * @param camera        not null
+     * @param animation     not null
+     * @param render        not null
+     * @throws IllegalArgumentException on another version, a null component, a duplicate id or an
+     *                                  undefined species
+     */
     public SceneDef {
         if (version != FORMAT_VERSION) {
             throw new IllegalArgumentException("version must be " + FORMAT_VERSION + ", got " + version);
@@ -75,12 +93,18 @@ public record SceneDef(int version, String name, long seed, TerrainDef terrain, 
         }
     }
 
-    /** What a simulation of this scene is built from (everything but camera and render). */
+    /** {@return what a simulation of this scene is built from (everything but camera and render)} Allocates. */
     public SimulationDef simulationDef() {
         return new SimulationDef(terrain, species, distributions, placements, flows, field, animation, seed);
     }
 
-    /** The species with this id, or throws IllegalArgumentException naming the known ids. */
+    /**
+     * The species with this id.
+     *
+     * @param id a species id
+     * @return the species
+     * @throws IllegalArgumentException when no species has this id
+     */
     public SpeciesDef speciesById(String id) {
         for (SpeciesDef s : species) {
             if (s.id().equals(id)) {

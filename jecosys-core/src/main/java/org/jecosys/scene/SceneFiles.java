@@ -105,7 +105,12 @@ public final class SceneFiles {
         return scene;
     }
 
-    /** The scene as XML text, exactly as {@link #save} writes it. */
+    /**
+     * The scene as XML text, exactly as {@link #save} writes it.
+     *
+     * @param scene the scene
+     * @return a {@code <scene version="1">} document; {@link #load} reads it back to an equal scene
+     */
     public static String toXml(SceneDef scene) {
         return SceneWriter.toXml(scene);
     }
@@ -115,6 +120,8 @@ public final class SceneFiles {
      * to disk, and the temporary file is then moved over the target in one step. On any failure the
      * target keeps its previous content and the temporary file is removed.
      *
+     * @param target the scene file to write (replaced if it exists)
+     * @param scene  the scene
      * @throws IOException naming the target when the save failed
      */
     public static void save(Path target, SceneDef scene) throws IOException {

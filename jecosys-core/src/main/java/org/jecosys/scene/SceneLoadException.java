@@ -10,7 +10,12 @@ public final class SceneLoadException extends Exception {
     private static final long serialVersionUID = 1L;
     private final transient List<SceneProblem> problems;
 
-    /** A failure with at least one problem. */
+    /**
+     * A failure with at least one problem.
+     *
+     * @param problems the reasons, in file order, not empty (copied)
+     * @throws IllegalArgumentException when {@code problems} is empty
+     */
     public SceneLoadException(List<SceneProblem> problems) {
         super(format(problems));
         if (problems.isEmpty()) {
@@ -19,12 +24,16 @@ public final class SceneLoadException extends Exception {
         this.problems = List.copyOf(problems);
     }
 
-    /** A failure with one problem. */
+    /**
+     * A failure with one problem.
+     *
+     * @param problem the reason
+     */
     public SceneLoadException(SceneProblem problem) {
         this(List.of(problem));
     }
 
-    /** The problems, in file order, at least one. */
+    /** {@return the problems, in file order, at least one (unmodifiable)} */
     public List<SceneProblem> problems() {
         return problems;
     }

@@ -20,7 +20,6 @@ import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.field.ForceFieldDef;
 import org.jecosys.math.CameraDef;
-import org.jecosys.math.Rgb;
 import org.jecosys.math.Waypoint;
 import org.jecosys.plant.ComponentDef;
 import org.jecosys.plant.ComponentShape;
@@ -33,6 +32,7 @@ import org.jecosys.terrain.DistributionDef;
 import org.jecosys.terrain.PlacementDef;
 import org.jecosys.terrain.ResourceMapDef;
 import org.jecosys.terrain.TerrainDef;
+import org.jecosys.wind.ActivationDef;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.FlowKind;
 import org.jecosys.wind.MotionDef;
@@ -129,9 +129,10 @@ final class SceneSchema {
     private static ElementSpec flow(FlowKind kind, String doc) {
         ElementSpec e = new ElementSpec(kind.xmlName(), doc)
                 .attr(AttrSpec.of("id", ID, "", "Unique name of the flow.").required().get(d -> f(d).id()))
-                .attr(bool("enabled", "Whether the flow starts enabled.").def(true).get(d -> f(d).enabled()))
-                .attr(num("x", "metres", "Centre X.").range(-1e6, 1e6).def(0.0).get(d -> f(d).x()))
-                .attr(num("z", "metres", "Centre Z.").range(-1e6, 1e6).def(0.0).get(d -> f(d).z()));
+                .attr(bool("enabled", "Whether the flow starts enabled.").def(FlowDef.DEFAULT_ENABLED)
+                        .get(d -> f(d).enabled()))
+                .attr(num("x", "metres", "Centre X.").range(-1e6, 1e6).def(FlowDef.DEFAULT_X).get(d -> f(d).x()))
+                .attr(num("z", "metres", "Centre Z.").range(-1e6, 1e6).def(FlowDef.DEFAULT_Z).get(d -> f(d).z()));
         String strengthDoc = switch (kind) {
             case UNIFORM -> "Wind speed, m/s.";
             case GUST -> "Mean wind speed, m/s.";
@@ -145,29 +146,29 @@ final class SceneSchema {
         e.attr(num("strength", (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) ? "m/s" : "m^2/s", strengthDoc)
                 .range(kind == FlowKind.VORTEX ? -1e6 : 0, 1e6).required().get(d -> f(d).strength()));
         if (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) {
-            e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.").range(-360, 360).def(0.0)
-                    .get(d -> f(d).direction()));
+            e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.").range(-360, 360)
+                    .def(FlowDef.DEFAULT_DIRECTION).get(d -> f(d).direction()));
         }
         e.attr(num("coreRadius", "metres", "Within this distance of the centre a singular flow tapers linearly to 0.")
                 .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_CORE_RADIUS).get(d -> f(d).coreRadius()));
         AttrSpec influence = num("influenceRadius", "metres",
                 "Beyond this distance from the centre the flow is 0; absent means unbounded.")
-                .rangeAbove(0, 1e6).def(INF).get(d -> f(d).influenceRadius());
+                .rangeAbove(0, 1e6).def(FlowDef.DEFAULT_INFLUENCE_RADIUS).get(d -> f(d).influenceRadius());
         if (kind == FlowKind.RAIN) {
             influence = num("influenceRadius", "metres", "Radius of the rain disc.").rangeAbove(0, 1e6).required()
                     .get(d -> f(d).influenceRadius());
         }
         e.attr(influence);
-        e.attr(num("start", "seconds", "Simulation time the flow begins.").range(0, 1e9).def(0.0)
-                .get(d -> f(d).activation().start()));
-        double defaultDuration = kind == FlowKind.BLAST ? 0.5 : INF;
+        e.attr(num("start", "seconds", "Simulation time the flow begins.").range(0, 1e9)
+                .def(ActivationDef.DEFAULT_START).get(d -> f(d).activation().start()));
+        double defaultDuration = FlowDef.defaultDuration(kind);
         e.attr(num("duration", "seconds", kind == FlowKind.BLAST ? "Length of the pulse."
                         : "How long the flow lasts; absent means forever.")
                 .rangeAbove(0, 1e9).def(defaultDuration).get(d -> f(d).activation().duration()));
-        e.attr(num("rampIn", "seconds", "Time to reach full strength.").range(0, 1e9).def(0.0)
+        e.attr(num("rampIn", "seconds", "Time to reach full strength.").range(0, 1e9).def(ActivationDef.DEFAULT_RAMP_IN)
                 .get(d -> f(d).activation().rampIn()));
-        e.attr(num("rampOut", "seconds", "Time to fade out before the end.").range(0, 1e9).def(0.0)
-                .get(d -> f(d).activation().rampOut()));
+        e.attr(num("rampOut", "seconds", "Time to fade out before the end.").range(0, 1e9)
+                .def(ActivationDef.DEFAULT_RAMP_OUT).get(d -> f(d).activation().rampOut()));
         e.attr(bool("advected", "Whether the centre moves with the other active flows (paper section 3.2); "
                 + "not together with a path.").def(false).get(d -> f(d).motion().kind() == MotionDef.Kind.ADVECTED));
         if (kind == FlowKind.GUST || kind == FlowKind.RAIN) {
@@ -177,9 +178,11 @@ final class SceneSchema {
             e.attr(num("noiseFrequency", kind == FlowKind.GUST ? "Hz" : "drops/(s m^2)",
                             kind == FlowKind.GUST ? "How often gusts come." : "Drops per second per square metre.")
                     .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_NOISE_FREQUENCY).get(d -> f(d).noiseFrequency()));
-            e.attr(AttrSpec.of("seed", LONG, "", "Seed of the noise or drops.").def(0L).get(d -> f(d).seed()));
+            e.attr(AttrSpec.of("seed", LONG, "", "Seed of the noise or drops.").def(FlowDef.DEFAULT_SEED)
+                    .get(d -> f(d).seed()));
         }
-        e.child(path("A scripted path the centre walks along.", 1.0, false, false,
+        e.child(path("A scripted path the centre walks along.", MotionDef.DEFAULT_PATH_SPEED,
+                        MotionDef.DEFAULT_PATH_LOOP, false,
                         d -> ((MotionDef) d).waypoints(), d -> ((MotionDef) d).speed(), d -> ((MotionDef) d).loop()),
                 0, 1, d -> f(d).motion().kind() == MotionDef.Kind.PATH ? List.of(f(d).motion()) : List.of());
         return e;
@@ -250,9 +253,10 @@ final class SceneSchema {
                 .attr(enumeration("type", words(ComponentType.values(), ComponentType::xmlName), "What it is.")
                         .required().get(d -> c(d).type().xmlName()))
                 .attr(enumeration("shape", words(ComponentShape.values(), ComponentShape::xmlName),
-                        "How primitives are generated from the skeleton.").def("strip")
+                        "How primitives are generated from the skeleton.").def(ComponentDef.DEFAULT_SHAPE.xmlName())
                         .get(d -> c(d).shape().xmlName()))
-                .attr(integer("count", "How many a plant has.").range(1, 256).def(1).get(d -> c(d).count()))
+                .attr(integer("count", "How many a plant has.").range(1, 256).def(ComponentDef.DEFAULT_COUNT)
+                        .get(d -> c(d).count()))
                 .attr(AttrSpec.of("attachTo", ID, "", "Id of the component at whose tip these sit; absent for the "
                         + "ground.").get(d -> c(d).attachTo()))
                 .attr(integer("segments", "Skeleton segments (points = segments + 1).").range(1, 32).required()
@@ -261,20 +265,23 @@ final class SceneSchema {
                         .get(d -> c(d).length()))
                 .attr(num("baseWidth", "metres", "Width at the base.").rangeAbove(0, 1).required()
                         .get(d -> c(d).baseWidth()))
-                .attr(num("tipWidth", "metres", "Width at the tip.").range(0, 1).def(0.0).get(d -> c(d).tipWidth()))
+                .attr(num("tipWidth", "metres", "Width at the tip.").range(0, 1)
+                        .def(ComponentDef.DEFAULT_TIP_WIDTH).get(d -> c(d).tipWidth()))
                 .attr(angle("curvature", "Rest curvature over the whole length, before gravity.").range(-180, 180)
-                        .def(0.0).get(d -> c(d).curvature()))
-                .attr(angle("twist", "Twist around the skeleton over the whole length.").range(-360, 360).def(0.0)
-                        .get(d -> c(d).twist()))
-                .attr(angle("tilt", "Angle of the base from vertical.").range(0, 90).def(0.0).get(d -> c(d).tilt()))
+                        .def(ComponentDef.DEFAULT_CURVATURE).get(d -> c(d).curvature()))
+                .attr(angle("twist", "Twist around the skeleton over the whole length.").range(-360, 360)
+                        .def(ComponentDef.DEFAULT_TWIST).get(d -> c(d).twist()))
+                .attr(angle("tilt", "Angle of the base from vertical.").range(0, 90)
+                        .def(ComponentDef.DEFAULT_TILT).get(d -> c(d).tilt()))
                 .attr(num("mass", "kg", "Mass.").rangeAbove(0, 10).required().get(d -> c(d).mass()))
                 .attr(num("stiffness", "N/m", "Spring constant PC of equation 4.").rangeAbove(0, 1e6).required()
                         .get(d -> c(d).stiffness()))
-                .attr(num("responseTime", "seconds", "Response time tau of the spring.").range(0.001, 10).def(0.3)
+                .attr(num("responseTime", "seconds", "Response time tau of the spring.").range(0.001, 10)
+                        .def(ComponentDef.DEFAULT_RESPONSE_TIME)
                         .get(d -> c(d).responseTime()))
                 .attr(num("dragArea", "m^2", "Drag coefficient times area: force = 0.5 rho dragArea |u| u.")
-                        .range(0, 10).def(0.001).get(d -> c(d).dragArea()))
-                .attr(AttrSpec.of("colour", COLOUR, "", "Base colour.").def(Rgb.parseHex("#4a8a2a"))
+                        .range(0, 10).def(ComponentDef.DEFAULT_DRAG_AREA).get(d -> c(d).dragArea()))
+                .attr(AttrSpec.of("colour", COLOUR, "", "Base colour.").def(ComponentDef.DEFAULT_COLOUR)
                         .get(d -> c(d).colour()))
                 .attr(AttrSpec.of("lodSegments", INT_LIST, "", "Per level of detail of the species, segments used "
                         + "there (0 = not drawn); one value per lod, each at most segments.").range(0, 32)
@@ -287,7 +294,7 @@ final class SceneSchema {
                 .attr(integer("poses", "Pose-table size K, from rest to maxBend.").range(2, 64)
                         .def(SpeciesDef.DEFAULT_POSES).get(d -> ((SpeciesDef) d).poses()))
                 .attr(angle("maxBend", "Bend of the last pose beyond the rest shape.").rangeAbove(0, 90)
-                        .def(Math.toRadians(80)).get(d -> ((SpeciesDef) d).maxBend()))
+                        .def(SpeciesDef.DEFAULT_MAX_BEND).get(d -> ((SpeciesDef) d).maxBend()))
                 .child(lod, 1, MAX_LODS, d -> ((SpeciesDef) d).lods())
                 .child(variation, 0, 1, d -> List.of(((SpeciesDef) d).variation()))
                 .child(component, 1, MAX_COMPONENTS, d -> ((SpeciesDef) d).components());
@@ -296,29 +303,34 @@ final class SceneSchema {
                 + "(paper section 4.3).")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required().get(d -> dist(d).species()))
                 .attr(integer("count", "Exact number of plants, or -1 to use density.")
-                        .range(-1, DistributionDef.MAX_COUNT).def(-1).get(d -> dist(d).count()))
+                        .range(-1, DistributionDef.MAX_COUNT).def(DistributionDef.DEFAULT_COUNT)
+                        .get(d -> dist(d).count()))
                 .attr(num("density", "plants/m^2", "Plants per square metre where conditions hold (count -1).")
-                        .range(0, 10_000).def(1.0).get(d -> dist(d).density()))
-                .attr(num("minWater", "", "Lowest water level accepted.").range(0, 1).def(0.0)
+                        .range(0, 10_000).def(DistributionDef.DEFAULT_DENSITY).get(d -> dist(d).density()))
+                .attr(num("minWater", "", "Lowest water level accepted.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_MIN_WATER)
                         .get(d -> dist(d).minWater()))
-                .attr(num("maxWater", "", "Highest water level accepted.").range(0, 1).def(1.0)
+                .attr(num("maxWater", "", "Highest water level accepted.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_MAX_WATER)
                         .get(d -> dist(d).maxWater()))
-                .attr(num("minNutrients", "", "Lowest nutrient level accepted.").range(0, 1).def(0.0)
+                .attr(num("minNutrients", "", "Lowest nutrient level accepted.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_MIN_NUTRIENTS)
                         .get(d -> dist(d).minNutrients()))
-                .attr(num("maxNutrients", "", "Highest nutrient level accepted.").range(0, 1).def(1.0)
+                .attr(num("maxNutrients", "", "Highest nutrient level accepted.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_MAX_NUTRIENTS)
                         .get(d -> dist(d).maxNutrients()))
-                .attr(angle("maxSlope", "Steepest ground accepted.").range(0, 90).def(Math.PI / 2)
-                        .get(d -> dist(d).maxSlope()))
-                .attr(num("minAltitude", "metres", "Lowest terrain height accepted.").range(-1e5, 1e5).def(-1e5)
-                        .get(d -> dist(d).minAltitude()))
-                .attr(num("maxAltitude", "metres", "Highest terrain height accepted.").range(-1e5, 1e5).def(1e5)
-                        .get(d -> dist(d).maxAltitude()))
-                .attr(num("footprint", "metres", "Radius of ground a plant takes.").rangeAbove(0, 100).def(0.2)
-                        .get(d -> dist(d).footprint()))
-                .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1).def(0.5)
-                        .get(d -> dist(d).waterUse()))
+                .attr(angle("maxSlope", "Steepest ground accepted.").range(0, 90)
+                        .def(DistributionDef.DEFAULT_MAX_SLOPE).get(d -> dist(d).maxSlope()))
+                .attr(num("minAltitude", "metres", "Lowest terrain height accepted.").range(-1e5, 1e5)
+                        .def(DistributionDef.DEFAULT_MIN_ALTITUDE).get(d -> dist(d).minAltitude()))
+                .attr(num("maxAltitude", "metres", "Highest terrain height accepted.").range(-1e5, 1e5)
+                        .def(DistributionDef.DEFAULT_MAX_ALTITUDE).get(d -> dist(d).maxAltitude()))
+                .attr(num("footprint", "metres", "Radius of ground a plant takes.").rangeAbove(0, 100)
+                        .def(DistributionDef.DEFAULT_FOOTPRINT).get(d -> dist(d).footprint()))
+                .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_WATER_USE).get(d -> dist(d).waterUse()))
                 .attr(num("nutrientUse", "", "Nutrient level a plant consumes in its footprint.").range(0, 1)
-                        .def(0.5).get(d -> dist(d).nutrientUse()));
+                        .def(DistributionDef.DEFAULT_NUTRIENT_USE).get(d -> dist(d).nutrientUse()));
         ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
                         .get(d -> ((PlacementDef) d).species()))

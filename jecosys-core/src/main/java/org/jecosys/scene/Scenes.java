@@ -18,6 +18,9 @@ public final class Scenes {
      * Loads a scene file and builds its simulation with the scene's worker count; relative image
      * paths resolve against the file's folder.
      *
+     * @param file     the scene file
+     * @param progress told the progress of each generation step, on the calling thread
+     * @return a new simulation; the caller closes it
      * @throws SceneLoadException when the file is not a valid scene
      * @throws IOException        when an image it names cannot be read
      */
@@ -27,7 +30,12 @@ public final class Scenes {
         return Simulation.create(def.simulationDef(), baseDir(file), progress);
     }
 
-    /** The folder relative paths of {@code file} resolve against. */
+    /**
+     * The folder relative paths of {@code file} resolve against.
+     *
+     * @param file a scene file
+     * @return its absolute parent folder, or {@code .} when it has none
+     */
     public static Path baseDir(Path file) {
         Path parent = file.toAbsolutePath().getParent();
         return parent == null ? Path.of(".") : parent;

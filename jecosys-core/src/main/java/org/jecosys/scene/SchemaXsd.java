@@ -19,14 +19,19 @@ public final class SchemaXsd {
     private SchemaXsd() {
     }
 
-    /** The schema text. */
+    /** {@return the schema text, an XML Schema 1.0 document} */
     public static String generate() {
         SchemaXsd x = new SchemaXsd();
         x.document();
         return x.sb.toString();
     }
 
-    /** Writes the schema to the path given as the only argument. */
+    /**
+     * Writes the schema to the path given as the only argument; exits with status 2 otherwise.
+     *
+     * @param args one argument: the output file, e.g. {@code scenes/jecosys-scene.xsd}
+     * @throws IOException when the file cannot be written
+     */
     public static void main(String[] args) throws IOException {
         if (args.length != 1) {
             System.err.println("usage: SchemaXsd OUTPUT.xsd");

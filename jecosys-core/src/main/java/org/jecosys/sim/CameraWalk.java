@@ -22,8 +22,10 @@ public final class CameraWalk {
     private final ViewCamera camera;
 
     /**
-     * A walk of {@code def}'s path over {@code ground}.
+     * A walk of {@code def}'s path over {@code ground}. Allocates.
      *
+     * @param def    the scene camera: start pose, lens, path, walking speed (m/s) and loop flag
+     * @param ground the terrain the eye heights are measured from (0 outside it)
      * @param aspect viewport width over height
      */
     public CameraWalk(CameraDef def, Heightfield ground, double aspect) {
@@ -43,7 +45,12 @@ public final class CameraWalk {
         return ground.contains(x, z) ? ground.height(x, z) : 0;
     }
 
-    /** The camera at {@code time} seconds after the start (the same instance, updated). */
+    /**
+     * The camera at a time of the walk. No allocation.
+     *
+     * @param time seconds after the start, &gt;= 0
+     * @return the walk's one camera, updated (the same instance every call)
+     */
     public ViewCamera at(double time) {
         int n = path.size();
         double total = n < 2 ? 0 : cumulative[n - 1];

@@ -2,6 +2,7 @@ package org.jecosys.sim;
 
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.AnimationStep;
 import org.jecosys.math.Rng;
 
 /**
@@ -29,6 +30,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      */
     private final long[][] framePlantVersion;
     private final Rng[] chunkRng;
+    /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
+    private final AnimationStep[] chunkStep;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -62,8 +65,10 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         chunkAtRest = new boolean[chunks];
         framePlantVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
+        chunkStep = new AnimationStep[chunks];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
+            chunkStep[c] = new AnimationStep();
         }
     }
 
@@ -137,16 +142,16 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         int c0 = state.firstComponent(p0);
         int c1 = state.firstComponent(p1);
         long[] written = framePlantVersion[stepFrameIndex];
+        AnimationStep in = chunkStep[chunk].set(m, windX[b], windZ[b], visible[b]).eye(e[0], e[1], e[2])
+                .rng(chunkRng[chunk]);
         if (stamp) {
-            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                    chunkRng[chunk]);
+            chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
             float s = (float) ((stepNumber + 1) % 1_000_000);
             java.util.Arrays.fill(f.poseCoord, c0, c1, s);
             java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
             java.util.Arrays.fill(written, p0, p1, -1L);
         } else if (reset) {
-            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                    chunkRng[chunk]);
+            chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
             state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
             for (int p = p0; p < p1; p++) {
                 written[p] = state.version(p);
@@ -155,8 +160,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
             // outputs straight into the back frame for the updated plants; of the others only
             // those whose outputs there are stale, copied from the frame published last
             Frame before = stepBefore;
-            chunkCount[chunk] = state.animate(p0, p1, m, windX[b], windZ[b], visible[b], e[0], e[1], e[2],
-                    chunkRng[chunk], f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written);
+            chunkCount[chunk] = state.animate(p0, p1,
+                    in.outputs(f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written));
         }
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);

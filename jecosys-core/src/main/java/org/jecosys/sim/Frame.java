@@ -25,7 +25,12 @@ public final class Frame {
     long fieldNanos;
     long animationNanos;
 
-    /** An empty frame sized for a world. */
+    /**
+     * An empty frame sized for a world: every pose and azimuth 0, no plant visible. Allocates.
+     *
+     * @param plants     plants of the world, &gt;= 0
+     * @param components components of all plants, &gt;= 0
+     */
     public Frame(int plants, int components) {
         poseCoord = new float[components];
         bendAzimuth = new float[components];
@@ -33,57 +38,73 @@ public final class Frame {
         plantLevel = new byte[plants];
     }
 
-    /** Frame number, counting published frames from 1; 0 before the first step. */
+    /** {@return the frame number, counting published frames from 1; 0 before the first step} */
     public long number() {
         return number;
     }
 
-    /** Simulation time of the frame, seconds. */
+    /** {@return the simulation time of the frame, seconds} */
     public double time() {
         return time;
     }
 
-    /** Number of components. */
+    /** {@return the number of components} */
     public int componentCount() {
         return poseCoord.length;
     }
 
-    /** Number of plants. */
+    /** {@return the number of plants} */
     public int plantCount() {
         return plantVisible.length;
     }
 
-    /** Continuous pose coordinate of component c, in [0, poses - 1]. */
+    /**
+     * {@return the continuous pose coordinate of component c, in [0, poses - 1]}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public float poseCoord(int c) {
         return poseCoord[c];
     }
 
-    /** World heading of component c's bending plane, radians: local +X goes to (cos a, 0, sin a). */
+    /**
+     * {@return the world heading a of component c's bending plane, radians: local +X goes to (cos a, 0, sin a)}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public float bendAzimuth(int c) {
         return bendAzimuth[c];
     }
 
-    /** Whether plant p was on a visible force-field node in this frame. */
+    /**
+     * {@return whether plant p was on a visible force-field node in this frame}
+     *
+     * @param p plant index, in [0, plantCount())
+     */
     public boolean plantVisible(int p) {
         return plantVisible[p];
     }
 
-    /** The level of detail plant p was animated at (0 = nearest). */
+    /**
+     * {@return the level of detail plant p was animated at (0 = nearest)}
+     *
+     * @param p plant index, in [0, plantCount())
+     */
     public int plantLevel(int p) {
         return plantLevel[p];
     }
 
-    /** Components updated by the animation in the last step of this frame. */
+    /** {@return the number of components updated by the animation in the last step of this frame} */
     public int componentsAnimated() {
         return componentsAnimated;
     }
 
-    /** Time the force-field update took in the last step, nanoseconds. */
+    /** {@return the time the force-field update took in the last step, nanoseconds} */
     public long fieldNanos() {
         return fieldNanos;
     }
 
-    /** Time the animation update took in the last step, nanoseconds. */
+    /** {@return the time the animation update took in the last step, nanoseconds} */
     public long animationNanos() {
         return animationNanos;
     }
@@ -91,6 +112,10 @@ public final class Frame {
     /**
      * Writes (poseCoord, bendAzimuth) pairs of components {@code first .. first + count - 1} into
      * {@code dest} at its position, advancing it: the upload format of the renderer. No allocation.
+     *
+     * @param dest  receives {@code 2 * count} floats
+     * @param first first component, &gt;= 0
+     * @param count number of components; {@code first + count <= componentCount()}
      */
     public void putPoseAzimuth(FloatBuffer dest, int first, int count) {
         for (int i = first, end = first + count; i < end; i++) {

@@ -7,7 +7,8 @@ import java.util.concurrent.atomic.AtomicInteger;
  * renderer, or a game thread). The writer fills its back frame and {@link #publish()}es it; the
  * reader's {@link #latest()} takes the newest published frame if there is one. Neither ever waits
  * or sees a frame being written; frame numbers seen by the reader never go back. One packed atomic
- * integer holds which buffer is "ready" and whether it is new (DESIGN.md, Threads). No allocation.
+ * integer holds which buffer is "ready" and whether it is new, so exchanging is lock-free (see
+ * docs/ARCHITECTURE.md, "Threads"). No allocation after construction.
  */
 public final class FrameExchange {
     private static final int FRESH = 4;
@@ -19,7 +20,12 @@ public final class FrameExchange {
     /** The buffer the writer published last (initially the ready one): it keeps its content until the next publish. */
     private int published = 1;
 
-    /** Three empty frames sized for a world. */
+    /**
+     * Three empty frames sized for a world. Allocates.
+     *
+     * @param plants     plants of the world, &gt;= 0
+     * @param components components of all plants, &gt;= 0
+     */
     public FrameExchange(int plants, int components) {
         for (int i = 0; i < 3; i++) {
             frames[i] = new Frame(plants, components);
@@ -31,7 +37,7 @@ public final class FrameExchange {
         return frames[i];
     }
 
-    /** The writer's frame to fill. Writer thread only. */
+    /** {@return the writer's frame to fill} Writer thread only. */
     public Frame back() {
         return frames[back];
     }
@@ -60,6 +66,8 @@ public final class FrameExchange {
     /**
      * The newest complete frame: a newly published one if any, else the one this reader already
      * had. It stays unchanged until this reader calls again. Reader thread only.
+     *
+     * @return the newest complete frame (number 0 before the first publish)
      */
     public Frame latest() {
         if ((ready.get() & FRESH) != 0) {

@@ -6,9 +6,12 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.AnimationView;
 import org.jecosys.anim.SpringKinds;
+import org.jecosys.field.FieldBounds;
 import org.jecosys.field.FieldCounters;
-import org.jecosys.field.QuadtreeForceField;
+import org.jecosys.field.ForceField;
+import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rng;
@@ -68,7 +71,7 @@ public final class Simulation implements AutoCloseable {
     private final World world;
     private final SimulationDef def;
     private final WindField wind;
-    private final QuadtreeForceField field;
+    private final ForceField field;
     private final SpringKinds kinds;
     private final AnimationState state;
     private final FrameExchange exchange;
@@ -95,7 +98,7 @@ public final class Simulation implements AutoCloseable {
     private boolean closed;
     boolean stampFrames;
 
-    private Simulation(World world, SimulationDef def, int threads, int chunkComponents) {
+    private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
         this.world = world;
         this.def = def;
         AnimationDef ad = def.animation();
@@ -123,8 +126,13 @@ public final class Simulation implements AutoCloseable {
             }
             plantHeight = Math.max(plantHeight, h);
         }
-        field = QuadtreeForceField.build(def.field(), hf.minX(), hf.minZ(), hf.maxX(), hf.maxZ(), hf.minHeight(),
-                hf.maxHeight() + plantHeight, wind, xs, zs);
+        field = Require.nonNull("the force field factory's result",
+                fields.create(new FieldBounds(hf.minX(), hf.minZ(), hf.maxX(), hf.maxZ(), hf.minHeight(),
+                        hf.maxHeight() + plantHeight), def.field(), wind, xs.clone(), zs.clone()));
+        if (field.plantCount() != plants) {
+            throw new IllegalArgumentException("the force field must hold the world's " + plants + " plants, it holds "
+                    + field.plantCount());
+        }
         kinds = SpringKinds.of(world.plants().species());
         int comps = world.componentCount();
         int[] first = new int[plants + 1];
@@ -152,8 +160,10 @@ public final class Simulation implements AutoCloseable {
      * Builds the world of {@code def} (terrain, species, distribution) and a simulation of it, with
      * the def's worker count (0: the available processors). Build time; allocates; any thread.
      *
+     * @param def      terrain, species, distributions, flows, field and animation settings
      * @param baseDir  folder that relative image paths resolve against
      * @param progress receives the long generation steps
+     * @return the simulation, at rest, time 0; the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress) throws IOException {
@@ -163,26 +173,62 @@ public final class Simulation implements AutoCloseable {
     /**
      * Like {@link #create(SimulationDef, Path, Progress)} with {@code threads} animation workers, in
      * [0, 256]; 0 keeps the def's setting (whose 0 means the available processors).
+     *
+     * @param def      terrain, species, distributions, flows, field and animation settings
+     * @param baseDir  folder that relative image paths resolve against
+     * @param progress receives the long generation steps
+     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
+     * @return the simulation, at rest, time 0; the caller closes it
+     * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress, int threads)
             throws IOException {
         Require.nonNull("def", def);
         int t = workers(def, threads);
         World world = World.build(def, Require.nonNull("baseDir", baseDir), t, Require.nonNull("progress", progress));
-        return new Simulation(world, def, t, CHUNK_COMPONENTS);
+        return new Simulation(world, def, t, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
     }
 
-    /** A simulation of an already built world (which must come from {@code def}). Allocates; any thread. */
+    /**
+     * A simulation of an already built world (which must come from {@code def}), with the paper's
+     * quadtree force field. Allocates; any thread.
+     *
+     * @param world   the world, built from {@code def} (e.g. {@link World#build})
+     * @param def     what the world was built from: flows, field and animation settings
+     * @param threads animation workers in [0, 256]; 0 keeps the def's setting
+     * @return the simulation, at rest, time 0; the caller closes it
+     */
     public static Simulation of(World world, SimulationDef def, int threads) {
+        return of(world, def, threads, ForceFieldFactory.QUADTREE);
+    }
+
+    /**
+     * A simulation of an already built world (which must come from {@code def}) whose force field
+     * is built by {@code fields} instead of the paper's quadtree (paper §3, §5.1; see
+     * {@link ForceFieldFactory} for the contract). The field gets the terrain's box (the tallest
+     * plant included), {@code def.field()}, this simulation's {@link #windField()} and the plant
+     * positions in the world's plant order. Build time; allocates; any thread.
+     *
+     * @param world   the world, built from {@code def} (e.g. {@link World#build})
+     * @param def     what the world was built from: flows, field and animation settings
+     * @param threads animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
+     *                available processors)
+     * @param fields  builds the force field, called once on this thread
+     * @return the simulation, at rest, time 0
+     * @throws IllegalArgumentException on null arguments, a bad thread count, or a field that does
+     *                                  not hold exactly the world's plants
+     */
+    public static Simulation of(World world, SimulationDef def, int threads, ForceFieldFactory fields) {
         Require.nonNull("world", world);
         Require.nonNull("def", def);
-        return new Simulation(world, def, workers(def, threads), CHUNK_COMPONENTS);
+        Require.nonNull("fields", fields);
+        return new Simulation(world, def, workers(def, threads), CHUNK_COMPONENTS, fields);
     }
 
     /** Like {@link #of} with another chunk size (components), for tests of the chunking itself. */
     static Simulation of(World world, SimulationDef def, int threads, int chunkComponents) {
         Require.range("chunkComponents", chunkComponents, 1, Integer.MAX_VALUE);
-        return new Simulation(world, def, workers(def, threads), chunkComponents);
+        return new Simulation(world, def, workers(def, threads), chunkComponents, ForceFieldFactory.QUADTREE);
     }
 
     private static int workers(SimulationDef def, int threads) {
@@ -193,14 +239,20 @@ public final class Simulation implements AutoCloseable {
 
     /**
      * Adds {@code dt} seconds of real time and runs the fixed steps it completes, at most
-     * {@code maxSubSteps}; publishes a frame after each. Stepping thread. No allocation after warm-up.
+     * {@code maxSubSteps}; publishes a frame after each. Any finite {@code dt} is fine: after a long
+     * pause (a breakpoint, a suspended game, a slow level load) the simulation runs
+     * {@code maxSubSteps} steps, drops the rest of the backlog and counts it in
+     * {@link #droppedSteps()} (the meadow slows down rather than spiral or jump). Stepping thread.
+     * No allocation after warm-up.
      *
-     * @param dt     elapsed time, seconds, in [0, 10]
+     * @param dt     elapsed real time, seconds, finite and &gt;= 0
      * @param camera the viewer, for visibility and level of detail (read, not kept)
-     * @return fixed steps run
+     * @return fixed steps run, in [0, maxSubSteps]
+     * @throws IllegalArgumentException when {@code dt} is negative, NaN or infinite, or the camera is null
+     * @throws IllegalStateException    when the simulation is closed and a step is due
      */
     public int step(double dt, Camera camera) {
-        Require.range("dt", dt, 0, 10);
+        Require.nonNegative("dt", dt);
         Require.nonNull("camera", camera);
         accumulator += dt;
         int n = 0;
@@ -210,14 +262,22 @@ public final class Simulation implements AutoCloseable {
             n++;
         }
         if (accumulator >= fixedStep) {
-            long drop = (long) (accumulator / fixedStep);
-            droppedSteps += drop;
+            long drop = (long) (accumulator / fixedStep); // saturates at Long.MAX_VALUE for absurd pauses
+            droppedSteps = droppedSteps > Long.MAX_VALUE - drop ? Long.MAX_VALUE : droppedSteps + drop;
             accumulator -= drop * fixedStep;
+            if (!(accumulator < fixedStep)) {
+                accumulator = 0; // a pause so long that the remainder lost all precision: drop it too
+            }
         }
         return n;
     }
 
-    /** Runs exactly one fixed step (ignoring the accumulator) and publishes its frame. Stepping thread. */
+    /**
+     * Runs exactly one fixed step (ignoring the accumulator) and publishes its frame. Stepping thread.
+     *
+     * @param camera the viewer, for visibility and level of detail (read, not kept)
+     * @throws IllegalStateException when the simulation is closed
+     */
     public void stepFixed(Camera camera) {
         Require.nonNull("camera", camera);
         if (closed) {
@@ -275,19 +335,46 @@ public final class Simulation implements AutoCloseable {
     /**
      * The newest published frame (complete; unchanged until this reader calls again). Before the
      * first step: the rest state, number 0. One reader thread. No allocation.
+     *
+     * @return the frame; read it until the next call
      */
     public Frame latestFrame() {
         return exchange.latest();
     }
 
-    /** Queues a new flow built from {@code def}; returns its handle (use it for {@link #removeFlow}). Any thread; allocates. */
+    /**
+     * Queues a new flow built from {@code def}. Any thread; allocates.
+     *
+     * @param def the flow; its id must not be in use when the command runs
+     * @return its handle, for {@link #removeFlow}, {@link #setFlowEnabled} and {@link #moveAgent}
+     */
     public WindSource addFlow(FlowDef def) {
-        WindSource s = WindSource.of(def);
-        commands.add(() -> wind.add(s));
-        return s;
+        return addFlow(WindSource.of(def));
     }
 
-    /** Queues the removal of a flow or agent. Any thread; allocates a command. */
+    /**
+     * Queues a flow, a built-in one or a game's own implementation (paper §3.2; see
+     * {@link WindSource} and {@link org.jecosys.wind.AbstractWindSource}): from the next fixed step
+     * on, the force field sums it with the other flows at every effective node, applies its enabled
+     * switch and activation, and advances it with the clock, exactly like the scene's flows. After
+     * this call the flow belongs to the stepping thread: switch it with {@link #setFlowEnabled}, move
+     * it with {@link #moveAgent}, remove it with {@link #removeFlow}. Any thread; allocates a command.
+     *
+     * @param source the flow; its id must not be in use when the command runs (else the step that runs
+     *               it throws IllegalArgumentException)
+     * @return {@code source}, the handle
+     */
+    public WindSource addFlow(WindSource source) {
+        Require.nonNull("source", source);
+        commands.add(() -> wind.add(source));
+        return source;
+    }
+
+    /**
+     * Queues the removal of a flow or agent. Any thread; allocates a command.
+     *
+     * @param source the handle {@link #addFlow} or {@link #attachAgent} returned (a flow not held is ignored)
+     */
     public void removeFlow(WindSource source) {
         Require.nonNull("source", source);
         commands.add(() -> wind.remove(source));
@@ -296,6 +383,10 @@ public final class Simulation implements AutoCloseable {
     /**
      * Queues an agent: a flow (FIXED motion) the game moves with {@link #moveAgent}. Any thread;
      * allocates.
+     *
+     * @param def the agent's flow, e.g. a SOURCE around the player
+     * @return its handle
+     * @throws IllegalArgumentException when the motion is not FIXED
      */
     public WindSource attachAgent(FlowDef def) {
         Require.nonNull("def", def);
@@ -306,7 +397,15 @@ public final class Simulation implements AutoCloseable {
         return addFlow(def);
     }
 
-    /** Queues moving a flow's centre to (x, z), metres. Any thread; allocates a command. */
+    /**
+     * Queues moving a flow's centre to (x, z). Any thread; allocates a command.
+     *
+     * @param agent the flow's handle: a built-in flow, or a user flow with a movable centre (an
+     *              {@link org.jecosys.wind.AbstractWindSource}; the interface's default
+     *              {@link WindSource#setCentre} throws, in the step that runs the command)
+     * @param x     new centre X, metres (finite)
+     * @param z     new centre Z, metres (finite)
+     */
     public void moveAgent(WindSource agent, double x, double z) {
         Require.nonNull("agent", agent);
         Require.finite("x", x);
@@ -317,6 +416,12 @@ public final class Simulation implements AutoCloseable {
     /**
      * Queues a blast: a short radial pulse at (x, z) metres of peak strength {@code strength} m^2/s
      * lasting {@code duration} s, removed once over ({@link WindField#blast}). Any thread; allocates.
+     *
+     * @param id       unique flow id while the blast lasts
+     * @param x        centre X, metres (finite)
+     * @param z        centre Z, metres (finite)
+     * @param strength peak strength, m^2/s, &gt; 0
+     * @param duration seconds, &gt; 0
      */
     public void blast(String id, double x, double z, double strength, double duration) {
         Require.nonNull("id", id);
@@ -327,19 +432,32 @@ public final class Simulation implements AutoCloseable {
         commands.add(() -> wind.blast(id, x, z, strength, duration));
     }
 
-    /** Queues switching a flow on or off. Any thread; allocates a command. */
+    /**
+     * Queues switching a flow on or off. Any thread; allocates a command.
+     *
+     * @param source  the flow's handle
+     * @param enabled whether it acts
+     */
     public void setFlowEnabled(WindSource source, boolean enabled) {
         Require.nonNull("source", source);
         commands.add(() -> source.setEnabled(enabled));
     }
 
-    /** Queues a change of animation mode (paper Table 7). Any thread; allocates a command. */
+    /**
+     * Queues a change of animation mode (paper Table 7). Any thread; allocates a command.
+     *
+     * @param mode static, random or constraint
+     */
     public void setMode(AnimationMode mode) {
         Require.nonNull("mode", mode);
         commands.add(() -> this.mode = mode);
     }
 
-    /** Queues switching the force field on or off (see the class comment). Any thread; allocates a command. */
+    /**
+     * Queues switching the force field on or off (see the class comment). Any thread; allocates a command.
+     *
+     * @param enabled whether the field evaluates flows and culls plants
+     */
     public void setFieldEnabled(boolean enabled) {
         commands.add(() -> fieldEnabled = enabled);
     }
@@ -347,113 +465,141 @@ public final class Simulation implements AutoCloseable {
     /**
      * Queues a scale of every species' level-of-detail distances, in [0.01, 100] (2 keeps detail
      * twice as far). Any thread; allocates a command.
+     *
+     * @param scale factor on every level-of-detail distance, in [0.01, 100]
      */
     public void setLodScale(double scale) {
         Require.range("scale", scale, 0.01, 100);
         commands.add(() -> state.setLodScale(scale));
     }
 
-    /** The animation mode of the last step (stepping thread). */
+    /** {@return the animation mode of the last step} Stepping thread. */
     public AnimationMode mode() {
         return mode;
     }
 
-    /** Whether the force field was on in the last step (stepping thread). */
+    /** {@return whether the force field was on in the last step} Stepping thread. */
     public boolean fieldEnabled() {
         return fieldEnabled;
     }
 
-    /** The static world. Any thread. */
+    /** {@return the static world} Any thread. */
     public World world() {
         return world;
     }
 
-    /** The def this simulation was built from. Any thread. */
+    /** {@return the def this simulation was built from} Any thread. */
     public SimulationDef def() {
         return def;
     }
 
-    /** Number of plants. Any thread. */
+    /** {@return the number of plants} Any thread. */
     public int plantCount() {
         return world.plantCount();
     }
 
-    /** Number of components. Any thread. */
+    /** {@return the number of components} Any thread. */
     public int componentCount() {
         return world.componentCount();
     }
 
-    /** Threads that animate: the pool's threads and the stepping thread, which helps. Any thread. */
+    /**
+     * {@return the number of threads that animate: the pool's threads and the stepping thread, which
+     * helps} Any thread.
+     */
     public int workers() {
         return pool.workers();
     }
 
-    /** Fixed chunks of plants. Any thread. */
+    /** {@return the number of fixed chunks of plants} Any thread. */
     public int chunks() {
         return chunkAnimator.chunks();
     }
 
-    /** The fixed step, seconds. Any thread. */
+    /** {@return the fixed step, seconds} Any thread. */
     public double fixedStep() {
         return fixedStep;
     }
 
-    /** Fixed steps run so far. Stepping thread. */
+    /** {@return the number of fixed steps run so far} Stepping thread. */
     public long steps() {
         return steps;
     }
 
-    /** Simulation time, seconds (fixed steps x fixed step). Stepping thread. */
+    /** {@return the simulation time, seconds (fixed steps x fixed step)} Stepping thread. */
     public double time() {
         return time;
     }
 
-    /** Fixed steps dropped by the sub-step cap so far. Stepping thread. */
+    /** {@return the number of fixed steps dropped by the sub-step cap so far} Stepping thread. */
     public long droppedSteps() {
         return droppedSteps;
     }
 
-    /** The animated state, for reading between steps (do not modify). Stepping thread. */
-    public AnimationState state() {
+    /**
+     * A read-only view of the animated state (deviations, velocities, outputs, levels), for reading
+     * between steps. Stepping thread; the view allocates nothing.
+     *
+     * @return the live view (not a copy: it changes with every step)
+     */
+    public AnimationView state() {
         return state;
     }
 
-    /** The force field (its debug view and counters reflect the update for the next step). Stepping thread. */
-    public QuadtreeForceField forceField() {
+    /**
+     * The force field: the paper's quadtree ({@code org.jecosys.field.QuadtreeForceField}) unless
+     * the simulation was built with another {@link ForceFieldFactory}. Its debug view and counters
+     * reflect the update for the next step. Stepping thread; read it, do not add or move plants.
+     *
+     * @return the field
+     */
+    public ForceField forceField() {
         return field;
     }
 
-    /** Counters of the field's last update. Stepping thread. */
+    /** {@return the counters of the field's last update} Stepping thread. */
     public FieldCounters fieldCounters() {
         return field.counters();
     }
 
-    /** The wind flows. Stepping thread (add flows through {@link #addFlow} from other threads). */
+    /** {@return the wind flows} Stepping thread (add flows through {@link #addFlow} from other threads). */
     public WindField windField() {
         return wind;
     }
 
-    /** Wind X (m/s) at plant p's node that the last step used. Stepping thread. */
+    /**
+     * {@return the wind X (m/s) at plant p's node that the last step used} Stepping thread.
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float windX(int p) {
         return windX[1 - current][p];
     }
 
-    /** Wind Z (m/s) at plant p's node that the last step used. Stepping thread. */
+    /**
+     * {@return the wind Z (m/s) at plant p's node that the last step used} Stepping thread.
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float windZ(int p) {
         return windZ[1 - current][p];
     }
 
-    /** Whether plant p was visible in the last step. Stepping thread. */
+    /**
+     * {@return whether plant p was visible in the last step} Stepping thread.
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public boolean plantVisible(int p) {
         return visible[1 - current][p];
     }
 
-    /** {@link AnimationState#stateHash()} of the current state. Stepping thread, between steps. */
+    /** {@return the {@link AnimationState#stateHash()} of the current state} Stepping thread, between steps. */
     public long stateHash() {
         return state.stateHash();
     }
 
-    /** Ids of the pool's worker threads, {@link #workers()} - 1 of them (allocates). Any thread. */
+    /** {@return the ids of the pool's worker threads, {@link #workers()} - 1 of them} Allocates; any thread. */
     public long[] workerThreadIds() {
         return pool.threadIds();
     }
@@ -462,6 +608,8 @@ public final class Simulation implements AutoCloseable {
      * Bytes allocated so far by every worker thread and by the last stepping thread
      * ({@code com.sun.management.ThreadMXBean#getThreadAllocatedBytes}); -1 when the JVM cannot tell.
      * Any thread; allocates nothing itself.
+     *
+     * @return bytes, or -1
      */
     public long allocatedBytes() {
         return pool.allocatedBytes(steppingThread);

@@ -27,6 +27,19 @@ import org.jecosys.wind.FlowDef;
 public record SimulationDef(TerrainDef terrain, List<SpeciesDef> species, List<DistributionDef> distributions,
                             List<PlacementDef> placements, List<FlowDef> flows, ForceFieldDef field,
                             AnimationDef animation, long seed) {
+    /**
+     * Checks the components and copies the lists.
+     *
+     * @param terrain       not null
+     * @param species       not null
+     * @param distributions not null
+     * @param placements    not null
+     * @param flows         not null
+     * @param field         not null
+     * @param animation     not null
+     * @param seed          master seed (any value)
+     * @throws IllegalArgumentException when a component is null
+     */
     public SimulationDef {
         Require.nonNull("terrain", terrain);
         species = List.copyOf(Require.nonNull("species", species));

@@ -5,6 +5,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.math.Progress;
+import org.jecosys.math.Require;
+import org.jecosys.plant.ComponentFactories;
 import org.jecosys.plant.PlantModel;
 import org.jecosys.plant.SpeciesDef;
 import org.jecosys.plant.SpeciesModel;
@@ -99,15 +101,57 @@ public final class World {
      * @param baseDir  folder that relative image paths in the def resolve against
      * @param threads  worker threads for generation, &gt;= 1
      * @param progress receives progress of the long steps
+     * @return the world
      * @throws IOException when a heightmap or resource image cannot be read
      */
     public static World build(SimulationDef def, Path baseDir, int threads, Progress progress) throws IOException {
         return build(def, baseDir, threads, progress, new CompetitiveDistributor());
     }
 
-    /** {@link #build(SimulationDef, Path, int, Progress)} with another {@link TerrainDistributor}. */
+    /**
+     * {@link #build(SimulationDef, Path, int, Progress)} with another {@link TerrainDistributor}.
+     *
+     * @param def         what to build
+     * @param baseDir     folder that relative image paths in the def resolve against
+     * @param threads     worker threads for generation, &gt;= 1
+     * @param progress    receives progress of the long steps
+     * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
+     * @return the world
+     * @throws IOException when a heightmap or resource image cannot be read
+     */
     public static World build(SimulationDef def, Path baseDir, int threads, Progress progress,
                               TerrainDistributor distributor) throws IOException {
+        return build(def, baseDir, threads, progress, distributor, ComponentFactories.NONE);
+    }
+
+    /**
+     * {@link #build(SimulationDef, Path, int, Progress)} with another {@link TerrainDistributor} and
+     * user plant components: the component types {@code components} names are supplied by their
+     * {@link org.jecosys.plant.ComponentFactory} instead of the built-in model (extension points,
+     * see docs/ARCHITECTURE.md, "Extension points"; paper §4.1, §4.3, §5.1). The way to give a
+     * species built in code a component of the
+     * game's own; then {@code Simulation.of(world, def, threads)}. Build time; allocates; calls the
+     * distributor and the factories on this thread.
+     *
+     * @param def         what to build
+     * @param baseDir     folder that relative image paths in the def resolve against
+     * @param threads     worker threads for generation, &gt;= 1
+     * @param progress    receives progress of the long steps
+     * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
+     * @param components  user components ({@link ComponentFactories#NONE} for none)
+     * @return the world
+     * @throws IOException              when a heightmap or resource image cannot be read
+     * @throws IllegalArgumentException on a null argument, fewer than 1 thread, or a factory that
+     *                                  names an unknown species or component or returns a component
+     *                                  that does not match its species
+     */
+    public static World build(SimulationDef def, Path baseDir, int threads, Progress progress,
+                              TerrainDistributor distributor, ComponentFactories components) throws IOException {
+        Require.nonNull("def", def);
+        Require.nonNull("baseDir", baseDir);
+        Require.nonNull("progress", progress);
+        Require.nonNull("distributor", distributor);
+        Require.nonNull("components", components);
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be >= 1, got " + threads);
         }
@@ -115,7 +159,7 @@ public final class World {
         Terrain terrain = Terrain.build(def.terrain(), baseDir, threads, progress);
         long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
-                progress);
+                progress, components);
         List<String> ids = new ArrayList<>();
         for (SpeciesDef s : def.species()) {
             ids.add(s.id());
@@ -133,6 +177,8 @@ public final class World {
     /**
      * One line on what building took (paper §4.1: pose tables are pre-computed at load), e.g.
      * "terrain 12 ms, pose tables of 3 species 2.5 ms, distribution of 80 plants 9 ms".
+     *
+     * @return the summary (allocates)
      */
     public String buildSummary() {
         return String.format(java.util.Locale.ROOT, "terrain %.0f ms, pose tables of %d species %.1f ms, "
@@ -140,12 +186,12 @@ public final class World {
                 plants.buildMillis(), layout.count(), distributionNanos / 1e6);
     }
 
-    /** The terrain and its resource maps (after nothing was consumed). */
+    /** {@return the terrain and its resource maps (before any plant consumed)} */
     public Terrain terrain() {
         return terrain;
     }
 
-    /** The pre-computed species models, in the def's species order. */
+    /** {@return the pre-computed species models, in the def's species order} */
     public PlantModel plants() {
         return plants;
     }
@@ -153,6 +199,8 @@ public final class World {
     /**
      * Where the plants stand, in placement order, with the distribution's warnings and counts; world
      * plant p is layout plant {@link #layoutIndex(int) layoutIndex(p)}.
+     *
+     * @return the layout
      */
     public PlantLayout layout() {
         return layout;
@@ -193,72 +241,120 @@ public final class World {
         return x;
     }
 
-    /** The index in {@link #layout()} of world plant p (world plants are in spatial order). */
+    /**
+     * {@return the index in {@link #layout()} of world plant p (world plants are in spatial order)}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public int layoutIndex(int p) {
         return order[p];
     }
 
-    /** Number of plants. */
+    /** {@return the number of plants} */
     public int plantCount() {
         return x.length;
     }
 
-    /** Number of components of all plants. */
+    /** {@return the number of components of all plants} */
     public int componentCount() {
         return componentPlant.length;
     }
 
-    /** Plant X, metres. */
+    /**
+     * {@return the plant's X, metres}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float plantX(int p) {
         return x[p];
     }
 
-    /** Plant base height (terrain height at its position), metres. */
+    /**
+     * {@return the plant's base height (terrain height at its position), metres}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float plantY(int p) {
         return y[p];
     }
 
-    /** Plant Z, metres. */
+    /**
+     * {@return the plant's Z, metres}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float plantZ(int p) {
         return z[p];
     }
 
-    /** Rest azimuth of the plant, radians. */
+    /**
+     * {@return the rest azimuth of the plant, radians}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public float plantRestAzimuth(int p) {
         return restAzimuth[p];
     }
 
-    /** Index of the plant's species in the def's species list. */
+    /**
+     * {@return the index of the plant's species in the def's species list}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public int plantSpecies(int p) {
         return species[p];
     }
 
-    /** The plant's shape variant in its species model. */
+    /**
+     * {@return the plant's shape variant in its species model}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public int plantVariant(int p) {
         return variant[p];
     }
 
-    /** Index of the plant's first component. */
+    /**
+     * {@return the index of the plant's first component}
+     *
+     * @param p world plant index, in [0, plantCount()]; {@code plantCount()} gives componentCount()
+     */
     public int firstComponent(int p) {
         return firstComponent[p];
     }
 
-    /** Number of components (slots) of the plant. */
+    /**
+     * {@return the number of components (slots) of the plant}
+     *
+     * @param p world plant index, in [0, plantCount())
+     */
     public int componentsOf(int p) {
         return firstComponent[p + 1] - firstComponent[p];
     }
 
-    /** The plant a component belongs to. */
+    /**
+     * {@return the world plant a component belongs to}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public int componentPlant(int c) {
         return componentPlant[c];
     }
 
-    /** The component's slot in its plant's species model. */
+    /**
+     * {@return the component's slot in its plant's species model}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public int componentSlot(int c) {
         return componentSlot[c];
     }
 
-    /** The component at whose tip this one sits, as a world component index, or -1 for the ground. */
+    /**
+     * {@return the component at whose tip this one sits, as a world component index, or -1 for the ground}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public int componentParent(int c) {
         return componentParent[c];
     }

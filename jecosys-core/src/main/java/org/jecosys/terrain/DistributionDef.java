@@ -26,6 +26,24 @@ public record DistributionDef(String species, int count, double density, double 
     /** Largest exact count. */
     public static final int MAX_COUNT = 10_000_000;
 
+    /**
+     * Checks the components.
+     *
+     * @param species      species id, not null
+     * @param count        exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
+     * @param density      plants per square metre, in [0, 10000]
+     * @param minWater     lowest water level, in [0, 1]
+     * @param maxWater     highest water level, in [minWater, 1]
+     * @param minNutrients lowest nutrient level, in [0, 1]
+     * @param maxNutrients highest nutrient level, in [minNutrients, 1]
+     * @param maxSlope     steepest ground, radians, in [0, pi/2]
+     * @param minAltitude  lowest terrain height, metres (finite)
+     * @param maxAltitude  highest terrain height, metres, &gt;= minAltitude
+     * @param footprint    radius of ground a plant takes, metres, in [1e-6, 100]
+     * @param waterUse     water level a plant consumes, in [0, 1]
+     * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
+     * @throws IllegalArgumentException when a component is out of range or species is null
+     */
     public DistributionDef {
         Require.nonNull("species", species);
         Require.range("count", count, -1, MAX_COUNT);
@@ -43,5 +61,193 @@ public record DistributionDef(String species, int count, double density, double 
         Require.range("footprint", footprint, 1e-6, 100);
         Require.range("waterUse", waterUse, 0, 1);
         Require.range("nutrientUse", nutrientUse, 0, 1);
+    }
+
+    /** Default {@link #count()}: -1, place by {@link #density()}. */
+    public static final int DEFAULT_COUNT = -1;
+    /** Default {@link #density()}, plants per square metre. */
+    public static final double DEFAULT_DENSITY = 1;
+    /** Default {@link #minWater()}: any water level. */
+    public static final double DEFAULT_MIN_WATER = 0;
+    /** Default {@link #maxWater()}: any water level. */
+    public static final double DEFAULT_MAX_WATER = 1;
+    /** Default {@link #minNutrients()}: any nutrient level. */
+    public static final double DEFAULT_MIN_NUTRIENTS = 0;
+    /** Default {@link #maxNutrients()}: any nutrient level. */
+    public static final double DEFAULT_MAX_NUTRIENTS = 1;
+    /** Default {@link #maxSlope()}, radians: any slope (pi/2). */
+    public static final double DEFAULT_MAX_SLOPE = Math.PI / 2;
+    /** Default {@link #minAltitude()}, metres: the lowest height a scene may have. */
+    public static final double DEFAULT_MIN_ALTITUDE = -1e5;
+    /** Default {@link #maxAltitude()}, metres: the highest height a scene may have. */
+    public static final double DEFAULT_MAX_ALTITUDE = 1e5;
+    /** Default {@link #footprint()}, metres. */
+    public static final double DEFAULT_FOOTPRINT = 0.2;
+    /** Default {@link #waterUse()}. */
+    public static final double DEFAULT_WATER_USE = 0.5;
+    /** Default {@link #nutrientUse()}. */
+    public static final double DEFAULT_NUTRIENT_USE = 0.5;
+
+    /**
+     * A builder for a distribution of {@code species}, every value at the scene schema's default
+     * ({@code DEFAULT_*}): what a {@code <distribution species="...">} element loads as. Any thread;
+     * allocates.
+     *
+     * @param species id of the species
+     * @return a new builder
+     */
+    public static Builder builder(String species) {
+        return new Builder(species);
+    }
+
+    /**
+     * A builder holding every value of this def, to change a few. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public Builder toBuilder() {
+        return new Builder(species).count(count).density(density).water(minWater, maxWater)
+                .nutrients(minNutrients, maxNutrients).maxSlope(maxSlope).altitude(minAltitude, maxAltitude)
+                .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse);
+    }
+
+    /**
+     * Fluent builder of a {@link DistributionDef} with the scene schema's defaults (see
+     * {@link DistributionDef#builder}); values are checked by {@link #build()}. One thread; allocates.
+     */
+    public static final class Builder {
+        private final String species;
+        private int count = DEFAULT_COUNT;
+        private double density = DEFAULT_DENSITY;
+        private double minWater = DEFAULT_MIN_WATER;
+        private double maxWater = DEFAULT_MAX_WATER;
+        private double minNutrients = DEFAULT_MIN_NUTRIENTS;
+        private double maxNutrients = DEFAULT_MAX_NUTRIENTS;
+        private double maxSlope = DEFAULT_MAX_SLOPE;
+        private double minAltitude = DEFAULT_MIN_ALTITUDE;
+        private double maxAltitude = DEFAULT_MAX_ALTITUDE;
+        private double footprint = DEFAULT_FOOTPRINT;
+        private double waterUse = DEFAULT_WATER_USE;
+        private double nutrientUse = DEFAULT_NUTRIENT_USE;
+
+        private Builder(String species) {
+            this.species = species;
+        }
+
+        /**
+         * Sets an exact number of plants.
+         *
+         * @param count in [0, {@link #MAX_COUNT}], or -1 to use the density
+         * @return this builder
+         */
+        public Builder count(int count) {
+            this.count = count;
+            return this;
+        }
+
+        /**
+         * Sets the density used when the count is -1.
+         *
+         * @param density plants per square metre, in [0, 10000]
+         * @return this builder
+         */
+        public Builder density(double density) {
+            this.density = density;
+            return this;
+        }
+
+        /**
+         * Sets the water levels the species accepts.
+         *
+         * @param min lowest, in [0, 1]
+         * @param max highest, in [min, 1]
+         * @return this builder
+         */
+        public Builder water(double min, double max) {
+            this.minWater = min;
+            this.maxWater = max;
+            return this;
+        }
+
+        /**
+         * Sets the nutrient levels the species accepts.
+         *
+         * @param min lowest, in [0, 1]
+         * @param max highest, in [min, 1]
+         * @return this builder
+         */
+        public Builder nutrients(double min, double max) {
+            this.minNutrients = min;
+            this.maxNutrients = max;
+            return this;
+        }
+
+        /**
+         * Sets the steepest ground the species accepts.
+         *
+         * @param maxSlope radians, in [0, pi/2]
+         * @return this builder
+         */
+        public Builder maxSlope(double maxSlope) {
+            this.maxSlope = maxSlope;
+            return this;
+        }
+
+        /**
+         * Sets the terrain heights the species accepts.
+         *
+         * @param min lowest, metres
+         * @param max highest, metres, &gt;= min
+         * @return this builder
+         */
+        public Builder altitude(double min, double max) {
+            this.minAltitude = min;
+            this.maxAltitude = max;
+            return this;
+        }
+
+        /**
+         * Sets the radius of ground a plant takes.
+         *
+         * @param footprint metres, in (0, 100]
+         * @return this builder
+         */
+        public Builder footprint(double footprint) {
+            this.footprint = footprint;
+            return this;
+        }
+
+        /**
+         * Sets the water level a plant consumes in its footprint.
+         *
+         * @param waterUse in [0, 1]
+         * @return this builder
+         */
+        public Builder waterUse(double waterUse) {
+            this.waterUse = waterUse;
+            return this;
+        }
+
+        /**
+         * Sets the nutrient level a plant consumes in its footprint.
+         *
+         * @param nutrientUse in [0, 1]
+         * @return this builder
+         */
+        public Builder nutrientUse(double nutrientUse) {
+            this.nutrientUse = nutrientUse;
+            return this;
+        }
+
+        /**
+         * The def. Allocates.
+         *
+         * @return a new def
+         * @throws IllegalArgumentException when a value is out of range (see {@link DistributionDef})
+         */
+        public DistributionDef build() {
+            return new DistributionDef(species, count, density, minWater, maxWater, minNutrients, maxNutrients,
+                    maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse);
+        }
     }
 }

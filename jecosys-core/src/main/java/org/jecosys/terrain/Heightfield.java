@@ -72,8 +72,10 @@ public final class Heightfield {
      * 1 = all octaves equal), then shifted and scaled so the lowest vertex is at 0 m and the highest at
      * {@code heightScale} m. The same def gives the same heights for any thread count.
      *
+     * @param def      size, resolution, seed, relief height and roughness
      * @param threads  worker threads, at least 1
      * @param progress told "terrain" progress in rows; called on the calling thread
+     * @return a new heightfield (allocates its height and normal arrays)
      * @throws IllegalArgumentException naming a null def/progress or a bad thread count
      */
     public static Heightfield generate(TerrainDef def, int threads, Progress progress) {
@@ -132,8 +134,10 @@ public final class Heightfield {
      * image's corner pixel centres sit on the terrain's corners. {@code def.heightmap()} is not read:
      * the caller resolves it to {@code image}.
      *
+     * @param def      size, resolution and {@code heightScale}, metres
      * @param image    absolute path of the image
      * @param progress told "terrain" progress in rows; called on the calling thread
+     * @return a new heightfield
      * @throws IOException              when the file cannot be read
      * @throws IllegalArgumentException when def or image is null or the file is not an image
      */
@@ -160,6 +164,11 @@ public final class Heightfield {
      * A heightfield from explicit vertex heights (index {@code j * resolution + i}), e.g. for tests
      * or procedural callers. Copies {@code heights}.
      *
+     * @param sizeX      extent along X, metres, in [1e-3, 100000]
+     * @param sizeZ      extent along Z, metres, in [1e-3, 100000]
+     * @param resolution vertices per side, in [2, 2049]
+     * @param heights    {@code resolution * resolution} finite heights, metres
+     * @return a new heightfield
      * @throws IllegalArgumentException on bad sizes, a wrong array length or non-finite heights
      */
     public static Heightfield of(double sizeX, double sizeZ, int resolution, float[] heights) {
@@ -177,84 +186,111 @@ public final class Heightfield {
         return new Heightfield(sizeX, sizeZ, resolution, heights.clone());
     }
 
-    /** Extent along X, metres. */
+    /** {@return the extent along X, metres} */
     public double sizeX() {
         return sizeX;
     }
 
-    /** Extent along Z, metres. */
+    /** {@return the extent along Z, metres} */
     public double sizeZ() {
         return sizeZ;
     }
 
-    /** Vertices per side. */
+    /** {@return the number of vertices per side, at least 2} */
     public int resolution() {
         return res;
     }
 
-    /** Lowest X, metres (= -sizeX/2). */
+    /** {@return the lowest X, metres (= -sizeX/2)} */
     public double minX() {
         return -sizeX / 2;
     }
 
-    /** Highest X, metres (= sizeX/2). */
+    /** {@return the highest X, metres (= sizeX/2)} */
     public double maxX() {
         return sizeX / 2;
     }
 
-    /** Lowest Z, metres (= -sizeZ/2). */
+    /** {@return the lowest Z, metres (= -sizeZ/2)} */
     public double minZ() {
         return -sizeZ / 2;
     }
 
-    /** Highest Z, metres (= sizeZ/2). */
+    /** {@return the highest Z, metres (= sizeZ/2)} */
     public double maxZ() {
         return sizeZ / 2;
     }
 
-    /** Lowest vertex height, metres. */
+    /** {@return the lowest vertex height, metres} */
     public double minHeight() {
         return minHeight;
     }
 
-    /** Highest vertex height, metres. */
+    /** {@return the highest vertex height, metres} */
     public double maxHeight() {
         return maxHeight;
     }
 
-    /** Grid spacing along X, metres. */
+    /** {@return the grid spacing along X, metres: sizeX / (resolution - 1)} */
     public double cellX() {
         return cellX;
     }
 
-    /** Grid spacing along Z, metres. */
+    /** {@return the grid spacing along Z, metres: sizeZ / (resolution - 1)} */
     public double cellZ() {
         return cellZ;
     }
 
-    /** Whether (x, z) lies inside the terrain's extent (borders included). */
+    /**
+     * {@return whether (x, z) lies inside the terrain's extent (borders included)}
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     */
     public boolean contains(double x, double z) {
         return x >= -sizeX / 2 && x <= sizeX / 2 && z >= -sizeZ / 2 && z <= sizeZ / 2;
     }
 
-    /** Height of vertex (i, j), metres; i along X, j along Z, each in [0, resolution). */
+    /**
+     * {@return the height of vertex (i, j), metres}
+     *
+     * @param i vertex column, along X, in [0, resolution)
+     * @param j vertex row, along Z, in [0, resolution)
+     */
     public float vertexHeight(int i, int j) {
         return heights[j * res + i];
     }
 
-    /** Copies all vertex heights (metres, index j * resolution + i) into dest, length resolution^2. */
+    /**
+     * Copies all vertex heights (metres, index j * resolution + i) into dest. No allocation.
+     *
+     * @param dest at least resolution^2 floats
+     * @return {@code dest}
+     */
     public float[] copyHeights(float[] dest) {
         System.arraycopy(heights, 0, dest, 0, heights.length);
         return dest;
     }
 
-    /** Copies all unit vertex normals (x, y, z per vertex) into dest, length 3 * resolution^2. */
+    /**
+     * Copies all unit vertex normals (x, y, z per vertex, same order as the heights) into dest.
+     * No allocation.
+     *
+     * @param dest at least 3 * resolution^2 floats
+     * @return {@code dest}
+     */
     public float[] copyNormals(float[] dest) {
         System.arraycopy(normals, 0, dest, 0, normals.length);
         return dest;
     }
 
-    /** Bilinear height at (x, z), metres; (x, z) clamped to the terrain. */
+    /**
+     * Bilinear height at (x, z); (x, z) clamped to the terrain. No allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the ground height, metres
+     */
     public double height(double x, double z) {
         double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
         double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
@@ -264,7 +300,11 @@ public final class Heightfield {
     /**
      * Slope at (x, z), radians in [0, pi/2): the angle of the ground from horizontal, from the
      * bilinear blend of the vertices' central-difference gradients (the same gradients as the
-     * normals). (x, z) is clamped to the terrain.
+     * normals). (x, z) is clamped to the terrain. No allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the slope, radians in [0, pi/2)
      */
     public double slope(double x, double z) {
         double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
@@ -284,7 +324,15 @@ public final class Heightfield {
         return Math.atan(Math.sqrt(gx * gx + gz * gz));
     }
 
-    /** Writes the unit normal at (x, z) (bilinear blend of vertex normals) into dest; returns dest. */
+    /**
+     * Writes the unit normal at (x, z) (bilinear blend of vertex normals) into dest; (x, z) clamped
+     * to the terrain. No allocation.
+     *
+     * @param x    world X, metres
+     * @param z    world Z, metres
+     * @param dest where to write
+     * @return {@code dest}
+     */
     public Vector3f normal(double x, double z, Vector3f dest) {
         double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
         double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);

@@ -12,6 +12,15 @@ import org.jecosys.math.Require;
  * @param azimuth rest azimuth, radians
  */
 public record PlacementDef(String species, double x, double z, double azimuth) {
+    /**
+     * Checks the components.
+     *
+     * @param species species id, not null
+     * @param x       X, metres (finite)
+     * @param z       Z, metres (finite)
+     * @param azimuth rest azimuth, radians (finite)
+     * @throws IllegalArgumentException when species is null or a number is not finite
+     */
     public PlacementDef {
         Require.nonNull("species", species);
         Require.finite("x", x);

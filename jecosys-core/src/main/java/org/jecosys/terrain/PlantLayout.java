@@ -51,122 +51,170 @@ public final class PlantLayout {
         this.remainingNutrients = remainingNutrients.copy().freeze();
     }
 
-    /** Number of plants. */
+    /** {@return the number of plants} */
     public int count() {
         return x.length;
     }
 
-    /** X of plant i, metres. */
+    /**
+     * {@return the X of plant i, metres}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float x(int i) {
         return x[i];
     }
 
-    /** Y (terrain height under the plant) of plant i, metres. */
+    /**
+     * {@return the Y (terrain height under the plant) of plant i, metres}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float y(int i) {
         return y[i];
     }
 
-    /** Z of plant i, metres. */
+    /**
+     * {@return the Z of plant i, metres}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float z(int i) {
         return z[i];
     }
 
-    /** Rest azimuth of plant i, radians in [0, 2 pi). */
+    /**
+     * {@return the rest azimuth of plant i, radians in [0, 2 pi)}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float azimuth(int i) {
         return azimuth[i];
     }
 
-    /** Footprint radius of plant i, metres. */
+    /**
+     * {@return the footprint radius of plant i, metres}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float footprint(int i) {
         return footprint[i];
     }
 
-    /** Species index of plant i (into the species ids given to the distributor). */
+    /**
+     * {@return the species index of plant i (into the species ids given to the distributor)}
+     *
+     * @param i plant index, in [0, count())
+     */
     public int species(int i) {
         return species[i];
     }
 
-    /** Distribution index of plant i, or -1 for a hand placement. */
+    /**
+     * {@return the distribution index of plant i, or -1 for a hand placement}
+     *
+     * @param i plant index, in [0, count())
+     */
     public int distribution(int i) {
         return distribution[i];
     }
 
-    /** Variant seed of plant i. */
+    /**
+     * {@return the variant seed of plant i, which picks its per-instance variation}
+     *
+     * @param i plant index, in [0, count())
+     */
     public long variantSeed(int i) {
         return variantSeed[i];
     }
 
-    /** Footprint-mean water level plant i found when placed (before it consumed), in [0, 1]. */
+    /**
+     * {@return the footprint-mean water level plant i found when placed (before it consumed), in [0, 1]}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float waterAtPlacement(int i) {
         return water[i];
     }
 
-    /** Footprint-mean nutrient level plant i found when placed (before it consumed), in [0, 1]. */
+    /**
+     * {@return the footprint-mean nutrient level plant i found when placed (before it consumed), in [0, 1]}
+     *
+     * @param i plant index, in [0, count())
+     */
     public float nutrientsAtPlacement(int i) {
         return nutrients[i];
     }
 
-    /** Plants placed by distribution d. */
+    /**
+     * {@return the number of plants placed by distribution d}
+     *
+     * @param d distribution index, in the order of the distributor's distributions
+     */
     public int placed(int d) {
         return placedPerDistribution[d];
     }
 
-    /** Plants distribution d asked for (its count, or density x suitable area). */
+    /**
+     * {@return the number of plants distribution d asked for (its count, or density x suitable area)}
+     *
+     * @param d distribution index, in the order of the distributor's distributions
+     */
     public int target(int d) {
         return targetPerDistribution[d];
     }
 
-    /** Human-readable warnings, in a fixed order; empty when every target was met. */
+    /** {@return human-readable warnings, in a fixed order (unmodifiable); empty when every target was met} */
     public List<String> warnings() {
         return warnings;
     }
 
-    /** Water left after all plants consumed (frozen). */
+    /** {@return the water left after all plants consumed (frozen)} */
     public ResourceMap remainingWater() {
         return remainingWater;
     }
 
-    /** Nutrients left after all plants consumed (frozen). */
+    /** {@return the nutrients left after all plants consumed (frozen)} */
     public ResourceMap remainingNutrients() {
         return remainingNutrients;
     }
 
-    /** A copy of all X, metres. */
+    /** {@return a copy of all X, metres, one per plant} Allocates. */
     public float[] copyX() {
         return x.clone();
     }
 
-    /** A copy of all Y, metres. */
+    /** {@return a copy of all Y, metres, one per plant} Allocates. */
     public float[] copyY() {
         return y.clone();
     }
 
-    /** A copy of all Z, metres. */
+    /** {@return a copy of all Z, metres, one per plant} Allocates. */
     public float[] copyZ() {
         return z.clone();
     }
 
-    /** A copy of all rest azimuths, radians. */
+    /** {@return a copy of all rest azimuths, radians, one per plant} Allocates. */
     public float[] copyAzimuths() {
         return azimuth.clone();
     }
 
-    /** A copy of all footprint radii, metres. */
+    /** {@return a copy of all footprint radii, metres, one per plant} Allocates. */
     public float[] copyFootprints() {
         return footprint.clone();
     }
 
-    /** A copy of all species indices. */
+    /** {@return a copy of all species indices, one per plant} Allocates. */
     public int[] copySpecies() {
         return species.clone();
     }
 
-    /** A copy of all distribution indices (-1 for hand placements). */
+    /** {@return a copy of all distribution indices (-1 for hand placements), one per plant} Allocates. */
     public int[] copyDistributions() {
         return distribution.clone();
     }
 
-    /** A copy of all variant seeds. */
+    /** {@return a copy of all variant seeds, one per plant} Allocates. */
     public long[] copyVariantSeeds() {
         return variantSeed.clone();
     }
@@ -192,7 +240,7 @@ public final class PlantLayout {
         public Builder() {
         }
 
-        /** Plants added so far. */
+        /** {@return the number of plants added so far} */
         public int size() {
             return n;
         }
@@ -247,6 +295,9 @@ public final class PlantLayout {
          * @param warnings human-readable warnings
          * @param w        water left after all plants
          * @param nu       nutrients left after all plants
+         * @return a new, immutable layout
+         * @throws IllegalArgumentException when an argument is null or {@code placed} and
+         *                                  {@code target} differ in length
          */
         public PlantLayout build(int[] placed, int[] target, List<String> warnings, ResourceMap w, ResourceMap nu) {
             Require.nonNull("placed", placed);

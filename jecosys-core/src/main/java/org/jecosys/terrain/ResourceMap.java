@@ -51,8 +51,11 @@ public final class ResourceMap {
      * gathering in low ground and along valleys (see {@link ValleyWater}), in [0, 1]. IMAGE: the
      * greyscale image at {@code image}, resampled bilinearly (column along X, row along Z).
      *
-     * @param seed  seed of NOISE maps (ignored otherwise)
-     * @param image absolute path of the image for IMAGE maps; ignored (may be null) otherwise
+     * @param def     the map's source, resolution, amount and noise scale
+     * @param terrain gives the extent (and, for VALLEYS, the relief)
+     * @param seed    seed of NOISE maps (ignored otherwise)
+     * @param image   absolute path of the image for IMAGE maps; ignored (may be null) otherwise
+     * @return a new, mutable map
      * @throws IOException              when an IMAGE map's file cannot be read
      * @throws IllegalArgumentException on a null def/terrain, or a missing or unreadable image
      */
@@ -93,7 +96,16 @@ public final class ResourceMap {
         return new ResourceMap(sx, sz, res, v);
     }
 
-    /** A map of one level everywhere over a sizeX x sizeZ terrain centred on the origin. */
+    /**
+     * A map of one level everywhere over a sizeX x sizeZ terrain centred on the origin.
+     *
+     * @param sizeX      extent along X, metres, in [1e-3, 100000]
+     * @param sizeZ      extent along Z, metres, in [1e-3, 100000]
+     * @param resolution cells per side, in [2, 1024]
+     * @param level      the level of every cell, in [0, 1]
+     * @return a new, mutable map
+     * @throws IllegalArgumentException when an argument is out of range
+     */
     public static ResourceMap uniform(double sizeX, double sizeZ, int resolution, double level) {
         Require.range("level", level, 0, 1);
         double[] v = new double[Require.range("resolution", resolution, 2, 1024) * resolution];
@@ -104,6 +116,13 @@ public final class ResourceMap {
     /**
      * A map from explicit cell levels (index {@code j * resolution + i}, i along X), each in [0, 1].
      * Copies {@code levels}.
+     *
+     * @param sizeX      extent along X, metres, in [1e-3, 100000]
+     * @param sizeZ      extent along Z, metres, in [1e-3, 100000]
+     * @param resolution cells per side, in [2, 1024]
+     * @param levels     {@code resolution * resolution} levels, each in [0, 1]
+     * @return a new, mutable map
+     * @throws IllegalArgumentException when an argument is out of range or the array has the wrong length
      */
     public static ResourceMap of(double sizeX, double sizeZ, int resolution, double[] levels) {
         Require.range("sizeX", sizeX, 1e-3, 100_000);
@@ -120,43 +139,52 @@ public final class ResourceMap {
         return new ResourceMap(sizeX, sizeZ, resolution, levels.clone());
     }
 
-    /** A mutable copy (not frozen) with the same levels. Allocates. */
+    /** {@return a mutable copy (not frozen) with the same levels} Allocates. */
     public ResourceMap copy() {
         return new ResourceMap(sizeX, sizeZ, res, levels.clone());
     }
 
-    /** Makes this map read-only for good; returns this. */
+    /**
+     * Makes this map read-only for good: {@link #consume} then throws.
+     *
+     * @return this map
+     */
     public ResourceMap freeze() {
         frozen = true;
         return this;
     }
 
-    /** Whether {@link #consume} is refused. */
+    /** {@return whether this map is frozen, so that {@link #consume} is refused} */
     public boolean frozen() {
         return frozen;
     }
 
-    /** Cells per side. */
+    /** {@return the number of cells per side, in [2, 1024]} */
     public int resolution() {
         return res;
     }
 
-    /** Extent along X, metres. */
+    /** {@return the extent along X, metres} */
     public double sizeX() {
         return sizeX;
     }
 
-    /** Extent along Z, metres. */
+    /** {@return the extent along Z, metres} */
     public double sizeZ() {
         return sizeZ;
     }
 
-    /** Level of cell (i, j), i along X, j along Z. */
+    /**
+     * {@return the level of cell (i, j), in [0, 1]}
+     *
+     * @param i cell column, along X, in [0, resolution)
+     * @param j cell row, along Z, in [0, resolution)
+     */
     public double level(int i, int j) {
         return levels[j * res + i];
     }
 
-    /** Lowest cell level. */
+    /** {@return the lowest cell level, in [0, 1]} Scans every cell; no allocation. */
     public double min() {
         double m = Double.POSITIVE_INFINITY;
         for (double l : levels) {
@@ -165,7 +193,7 @@ public final class ResourceMap {
         return m;
     }
 
-    /** Highest cell level. */
+    /** {@return the highest cell level, in [0, 1]} Scans every cell; no allocation. */
     public double max() {
         double m = Double.NEGATIVE_INFINITY;
         for (double l : levels) {
@@ -174,7 +202,7 @@ public final class ResourceMap {
         return m;
     }
 
-    /** Sum of level times cell area over all cells, level * square metres. */
+    /** {@return the sum of level times cell area over all cells, level * square metres} */
     public double total() {
         double s = 0;
         for (double l : levels) {
@@ -183,7 +211,13 @@ public final class ResourceMap {
         return s * cellX * cellZ;
     }
 
-    /** Bilinear level at (x, z) between cell centres, clamped to the terrain. No allocation. */
+    /**
+     * Bilinear level at (x, z) between cell centres, clamped to the terrain. No allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the level, in [0, 1]
+     */
     public double sample(double x, double z) {
         double u = Grid.clamp((x + sizeX / 2) / cellX - 0.5, res - 1);
         double v = Grid.clamp((z + sizeZ / 2) / cellZ - 0.5, res - 1);
@@ -193,6 +227,11 @@ public final class ResourceMap {
     /**
      * Mean level under the disc of {@code radius} metres at (x, z), weighted by each cell's overlap
      * with the disc (the part outside the terrain does not count). No allocation.
+     *
+     * @param x      disc centre X, metres
+     * @param z      disc centre Z, metres
+     * @param radius disc radius, metres
+     * @return the mean level, in [0, 1]; {@link #sample} at (x, z) when the disc covers no cell area
      */
     public double footprintLevel(double x, double z, double radius) {
         int i0 = cellIndex(x - radius, sizeX, cellX);
@@ -214,7 +253,12 @@ public final class ResourceMap {
     /**
      * Removes {@code use} level from the disc of {@code radius} metres at (x, z): each overlapped
      * cell loses {@code use * overlap / cellArea}, clamped so no level goes below zero. No allocation.
+     * Needs exclusive access to this map.
      *
+     * @param x      disc centre X, metres
+     * @param z      disc centre Z, metres
+     * @param radius disc radius, metres
+     * @param use    level * square metres taken in all; 0 or less takes nothing
      * @throws IllegalStateException when the map is frozen
      */
     public void consume(double x, double z, double radius, double use) {

@@ -30,12 +30,23 @@ public record ResourceMapDef(Source source, int resolution, double amount, doubl
             this.xmlName = xmlName;
         }
 
-        /** The attribute value used in scene files. */
+        /** {@return the attribute value used in scene files, e.g. {@code "valleys"}} */
         public String xmlName() {
             return xmlName;
         }
     }
 
+    /**
+     * Checks the components.
+     *
+     * @param source     how the map is made, not null
+     * @param resolution cells per side, in [2, 1024]
+     * @param amount     overall level multiplier, in [0, 1]
+     * @param scale      NOISE feature size, metres, &gt; 0 (must be positive even when ignored)
+     * @param image      IMAGE: the image path; null exactly when the source is not IMAGE
+     * @throws IllegalArgumentException when a component is out of range, or {@code image} is given
+     *                                  for another source or missing for IMAGE
+     */
     public ResourceMapDef {
         Require.nonNull("source", source);
         Require.range("resolution", resolution, 2, 1024);

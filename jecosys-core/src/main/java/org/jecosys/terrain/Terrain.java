@@ -24,6 +24,9 @@ public final class Terrain {
     /**
      * A terrain from its parts. The maps are copied and frozen.
      *
+     * @param heightfield the relief
+     * @param water       the initial water map, covering the heightfield's extent
+     * @param nutrients   the initial nutrient map, covering the heightfield's extent
      * @throws IllegalArgumentException on null parts or maps whose extent differs from the heightfield's
      */
     public Terrain(Heightfield heightfield, ResourceMap water, ResourceMap nutrients) {
@@ -42,10 +45,12 @@ public final class Terrain {
      * resolved against {@code baseDir}; NOISE maps seeded from {@code def.seed()} with
      * {@link #WATER_SALT} / {@link #NUTRIENT_SALT}). Deterministic for a def whatever the thread count.
      *
+     * @param def      the terrain's size, relief and resource maps
      * @param baseDir  directory relative image paths are resolved against (the scene file's folder);
      *                 may be null when the def names no image
      * @param threads  worker threads, at least 1
      * @param progress told "terrain" progress (in thousandths), on the calling thread
+     * @return a new terrain
      * @throws IOException              when an image cannot be read
      * @throws IllegalArgumentException on null arguments, a missing baseDir, or an unreadable image
      */
@@ -66,17 +71,17 @@ public final class Terrain {
         return new Terrain(hf, w.freeze(), n.freeze());
     }
 
-    /** The heightfield. */
+    /** {@return the heightfield} */
     public Heightfield heightfield() {
         return heightfield;
     }
 
-    /** The initial water map (frozen). */
+    /** {@return the initial water map (frozen)} */
     public ResourceMap water() {
         return water;
     }
 
-    /** The initial nutrient map (frozen). */
+    /** {@return the initial nutrient map (frozen)} */
     public ResourceMap nutrients() {
         return nutrients;
     }

@@ -18,6 +18,20 @@ import org.jecosys.math.Require;
  */
 public record TerrainDef(double sizeX, double sizeZ, int resolution, double heightScale, double roughness,
                          long seed, String heightmap, ResourceMapDef water, ResourceMapDef nutrients) {
+    /**
+     * Checks the components.
+     *
+     * @param sizeX       extent along X, metres, in [1e-3, 100000]
+     * @param sizeZ       extent along Z, metres, in [1e-3, 100000]
+     * @param resolution  heightfield vertices per side, in [2, 2049]
+     * @param heightScale relief height, metres, in [0, 10000]
+     * @param roughness   fractal roughness, in [0, 1]
+     * @param seed        seed of the generated relief (any value)
+     * @param heightmap   heightmap path relative to the scene file, or null to generate
+     * @param water       the water map, not null
+     * @param nutrients   the nutrient map, not null
+     * @throws IllegalArgumentException when a component is out of range or a map is null
+     */
     public TerrainDef {
         Require.range("sizeX", sizeX, 1e-3, 100_000);
         Require.range("sizeZ", sizeZ, 1e-3, 100_000);
@@ -28,7 +42,11 @@ public record TerrainDef(double sizeX, double sizeZ, int resolution, double heig
         Require.nonNull("nutrients", nutrients);
     }
 
-    /** A flat 40 m by 40 m terrain with full resources. */
+    /**
+     * A flat 40 m by 40 m terrain with full resources.
+     *
+     * @return 65 vertices per side, height 0, water and nutrients 1 everywhere
+     */
     public static TerrainDef flat() {
         return new TerrainDef(40, 40, 65, 0, 0.5, 1, null, ResourceMapDef.UNIFORM_FULL, ResourceMapDef.UNIFORM_FULL);
     }

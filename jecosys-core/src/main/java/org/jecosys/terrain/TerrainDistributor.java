@@ -4,8 +4,9 @@ import java.util.List;
 import org.jecosys.math.Progress;
 
 /**
- * Places plants of several species on a terrain (DESIGN.md "Extension points"; paper §4.3). The
- * paper's technique is {@link CompetitiveDistributor}; a user may supply another placement rule.
+ * Places plants of several species on a terrain (paper §4.3). An extension point: the paper's
+ * technique is {@link CompetitiveDistributor}; a user may supply another placement rule and pass it to
+ * {@code World.build} (see docs/ARCHITECTURE.md, "Extension points").
  *
  * <p>Contract for implementations: the result depends only on the arguments (the seed included),
  * never on {@code threads}; the terrain's maps are not modified (work on {@link ResourceMap#copy()});

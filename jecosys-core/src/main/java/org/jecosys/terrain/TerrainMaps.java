@@ -28,12 +28,30 @@ public final class TerrainMaps {
     private TerrainMaps() {
     }
 
-    /** Writes {@code map} (e.g. {@link Terrain#water()}) with the {@link #WATER_LOW}-{@link #WATER_HIGH} ramp. */
+    /**
+     * Writes {@code map} (e.g. {@link Terrain#water()}) with the {@link #WATER_LOW}-{@link #WATER_HIGH} ramp.
+     *
+     * @param map    the water map to draw
+     * @param width  image width, pixels, in [1, {@link #MAX_SIDE}]
+     * @param height image height, pixels, in [1, {@link #MAX_SIDE}]
+     * @param out    the PNG file to write (replaced if it exists)
+     * @throws IOException              when the file cannot be written
+     * @throws IllegalArgumentException on null arguments or bad sizes
+     */
     public static void writeWater(ResourceMap map, int width, int height, Path out) throws IOException {
         writeLevels(map, WATER_LOW, WATER_HIGH, width, height, out);
     }
 
-    /** Writes {@code map} with the {@link #NUTRIENTS_LOW}-{@link #NUTRIENTS_HIGH} ramp. */
+    /**
+     * Writes {@code map} with the {@link #NUTRIENTS_LOW}-{@link #NUTRIENTS_HIGH} ramp.
+     *
+     * @param map    the nutrient map to draw
+     * @param width  image width, pixels, in [1, {@link #MAX_SIDE}]
+     * @param height image height, pixels, in [1, {@link #MAX_SIDE}]
+     * @param out    the PNG file to write (replaced if it exists)
+     * @throws IOException              when the file cannot be written
+     * @throws IllegalArgumentException on null arguments or bad sizes
+     */
     public static void writeNutrients(ResourceMap map, int width, int height, Path out) throws IOException {
         writeLevels(map, NUTRIENTS_LOW, NUTRIENTS_HIGH, width, height, out);
     }
@@ -42,8 +60,12 @@ public final class TerrainMaps {
      * Writes a resource map as a colour ramp: level 0 is {@code lowRgb}, level 1 {@code highRgb}
      * (0xRRGGBB), bilinear levels ({@link ResourceMap#sample}) at pixel centres.
      *
-     * @param width  image width, pixels, in [1, {@link #MAX_SIDE}]
-     * @param height image height, pixels, in [1, {@link #MAX_SIDE}]
+     * @param map     the map to draw
+     * @param lowRgb  colour of level 0, 0xRRGGBB
+     * @param highRgb colour of level 1, 0xRRGGBB
+     * @param width   image width, pixels, in [1, {@link #MAX_SIDE}]
+     * @param height  image height, pixels, in [1, {@link #MAX_SIDE}]
+     * @param out     the PNG file to write (replaced if it exists)
      * @throws IOException              when the file cannot be written
      * @throws IllegalArgumentException on null arguments or bad sizes
      */
@@ -67,7 +89,12 @@ public final class TerrainMaps {
      * where steep), each plant a disc of its footprint (at least one pixel) in {@code palette[species]}.
      * Plants are drawn in layout order.
      *
+     * @param terrain the relief to shade; its extent maps onto the image
+     * @param layout  the plants to draw
      * @param palette 0xRRGGBB per species index; longer than the largest species index in the layout
+     * @param width   image width, pixels, in [1, {@link #MAX_SIDE}]
+     * @param height  image height, pixels, in [1, {@link #MAX_SIDE}]
+     * @param out     the PNG file to write (replaced if it exists)
      * @throws IOException              when the file cannot be written
      * @throws IllegalArgumentException on null arguments, bad sizes or a palette too short
      */

@@ -13,7 +13,8 @@ import org.jecosys.math.Require;
 /**
  * Runs fixed chunks of work on a small private thread pool (or inline for one thread). Chunks must
  * write disjoint outputs and derive any randomness from their chunk index, so results are identical
- * for every thread count (DESIGN.md "Threads"). Owned and closed by the thread that created it.
+ * for every thread count (see docs/ARCHITECTURE.md, "Threads"). Owned and closed by the thread that
+ * created it.
  */
 final class Workers implements AutoCloseable {
     private final int threads;

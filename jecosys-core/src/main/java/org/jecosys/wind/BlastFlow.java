@@ -23,7 +23,12 @@ public final class BlastFlow extends FlowBase {
     private final double k;
     private final double duration;
 
-    /** A blast from its def (kind BLAST). Allocates. */
+    /**
+     * A blast from its def (kind BLAST). Allocates.
+     *
+     * @param def a BLAST flow: strength in m^2/s, activation giving its start and fade time
+     * @throws IllegalArgumentException when the def is of another kind
+     */
     public BlastFlow(FlowDef def) {
         super(def);
         if (def.kind() != FlowKind.BLAST) {

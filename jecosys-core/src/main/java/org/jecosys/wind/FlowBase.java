@@ -4,9 +4,10 @@ import org.jecosys.math.Require;
 import org.joml.Vector2d;
 
 /**
- * State every flow shares: definition, enabled switch, activation window, centre and scripted
- * path. One level of inheritance; each kind only adds its formula ({@link #unweighted}).
- * Not thread-safe; no allocation after construction.
+ * State every built-in flow shares: definition, enabled switch, activation window, centre and
+ * scripted path. One level of inheritance; each kind only adds its formula ({@link #unweighted}).
+ * {@link WindField} moves the centres of these flows itself (PATH and ADVECTED motion); user flows
+ * extend {@link AbstractWindSource} instead. Not thread-safe; no allocation after construction.
  */
 abstract sealed class FlowBase implements WindSource
         permits UniformFlow, SourceFlow, VortexFlow, GustFlow, BlastFlow, RainFlow {
@@ -94,34 +95,17 @@ abstract sealed class FlowBase implements WindSource
 
     @Override
     public final double weight(double time) {
-        if (!enabled) {
-            return 0;
-        }
-        ActivationDef a = def.activation();
-        double s = time - a.start();
-        if (s < 0) {
-            return 0;
-        }
-        double w = 1;
-        if (a.rampIn() > 0 && s < a.rampIn()) {
-            w = s / a.rampIn();
-        }
-        if (a.duration() != Double.POSITIVE_INFINITY) {
-            double left = a.duration() - s;
-            if (left <= 0) {
-                return 0;
-            }
-            if (a.rampOut() > 0 && left < a.rampOut()) {
-                w = Math.min(w, left / a.rampOut());
-            }
-        }
-        return w;
+        return enabled ? def.activation().weight(time) : 0;
     }
 
     @Override
     public final boolean expired(double time) {
-        ActivationDef a = def.activation();
-        return a.duration() != Double.POSITIVE_INFINITY && time >= a.start() + a.duration();
+        return def.activation().expired(time);
+    }
+
+    @Override
+    public final double influenceRadius() {
+        return def.influenceRadius();
     }
 
     @Override

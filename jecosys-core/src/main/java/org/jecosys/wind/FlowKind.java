@@ -26,7 +26,7 @@ public enum FlowKind {
         this.xmlName = xmlName;
     }
 
-    /** The element name used in scene files. */
+    /** {@return the element name used in scene files, e.g. {@code "vortex"}} */
     public String xmlName() {
         return xmlName;
     }

@@ -25,7 +25,12 @@ public final class GustFlow extends FlowBase {
     private final double freq;
     private final long seed;
 
-    /** A gust flow from its def (kind GUST). Allocates. */
+    /**
+     * A gust flow from its def (kind GUST). Allocates.
+     *
+     * @param def a GUST flow: mean speed (m/s), direction, noise scale (metres) and frequency (Hz), seed
+     * @throws IllegalArgumentException when the def is of another kind
+     */
     public GustFlow(FlowDef def) {
         super(def);
         if (def.kind() != FlowKind.GUST) {

@@ -24,6 +24,16 @@ public record MotionDef(Kind kind, List<Waypoint> waypoints, double speed, boole
         ADVECTED
     }
 
+    /**
+     * Checks the components and copies the waypoints.
+     *
+     * @param kind      not null
+     * @param waypoints not null; at least 2 for PATH
+     * @param speed     m/s, &gt; 0 (even when unused)
+     * @param loop      PATH only: whether the path repeats
+     * @throws IllegalArgumentException when a component is null or out of range, or a path has fewer
+     *                                  than 2 waypoints
+     */
     public MotionDef {
         Require.nonNull("kind", kind);
         waypoints = List.copyOf(Require.nonNull("waypoints", waypoints));
@@ -35,4 +45,24 @@ public record MotionDef(Kind kind, List<Waypoint> waypoints, double speed, boole
 
     /** A centre that does not move. */
     public static final MotionDef FIXED = new MotionDef(Kind.FIXED, List.of(), 1, false);
+
+    /** Default speed along a flow's path, m/s (the scene schema's default too). */
+    public static final double DEFAULT_PATH_SPEED = 1;
+    /** Default of {@link #loop()} for a flow's path: stop at the last waypoint. */
+    public static final boolean DEFAULT_PATH_LOOP = false;
+
+    /** A centre that moves with the other active flows (speed and loop unused). */
+    public static final MotionDef ADVECTED = new MotionDef(Kind.ADVECTED, List.of(), 1, false);
+
+    /**
+     * A path walked at {@link #DEFAULT_PATH_SPEED}, not looping (the scene schema's defaults).
+     * Allocates.
+     *
+     * @param waypoints at least 2; y is ignored
+     * @return the motion
+     * @throws IllegalArgumentException when there are fewer than 2 waypoints
+     */
+    public static MotionDef path(List<Waypoint> waypoints) {
+        return new MotionDef(Kind.PATH, waypoints, DEFAULT_PATH_SPEED, DEFAULT_PATH_LOOP);
+    }
 }

@@ -31,6 +31,8 @@ public final class RainFlow extends FlowBase {
     /**
      * A rain flow from its def (kind RAIN). Allocates.
      *
+     * @param def a RAIN flow: impulse strength (m^2/s), disc radius ({@code influenceRadius}, metres),
+     *            drop spacing ({@code noiseScale}, metres), rate ({@code noiseFrequency}, per s per m^2), seed
      * @throws IllegalArgumentException when {@code def.influenceRadius()} is infinite
      */
     public RainFlow(FlowDef def) {

@@ -12,7 +12,12 @@ import org.joml.Vector2d;
 public final class SourceFlow extends FlowBase {
     private final double k;
 
-    /** A source or sink from its def (kind SOURCE or SINK). Allocates. */
+    /**
+     * A source or sink from its def (kind SOURCE or SINK). Allocates.
+     *
+     * @param def a SOURCE or SINK flow: centre (metres), strength (m^2/s), core and influence radii
+     * @throws IllegalArgumentException when the def is of another kind
+     */
     public SourceFlow(FlowDef def) {
         super(def);
         if (def.kind() != FlowKind.SOURCE && def.kind() != FlowKind.SINK) {

@@ -11,7 +11,12 @@ public final class UniformFlow extends FlowBase {
     private final double ux;
     private final double uz;
 
-    /** A uniform flow from its def (kind UNIFORM). Allocates. */
+    /**
+     * A uniform flow from its def (kind UNIFORM). Allocates.
+     *
+     * @param def a UNIFORM flow: speed (strength, m/s) and direction (radians)
+     * @throws IllegalArgumentException when the def is of another kind
+     */
     public UniformFlow(FlowDef def) {
         super(checkKind(def));
         ux = def.strength() * Math.cos(def.direction());

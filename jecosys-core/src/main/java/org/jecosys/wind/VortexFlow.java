@@ -15,7 +15,13 @@ import org.joml.Vector2d;
 public final class VortexFlow extends FlowBase {
     private final double k;
 
-    /** A vortex from its def (kind VORTEX). Allocates. */
+    /**
+     * A vortex from its def (kind VORTEX). Allocates.
+     *
+     * @param def a VORTEX flow: centre (metres), circulation (strength, m^2/s, signed), core and
+     *            influence radii
+     * @throws IllegalArgumentException when the def is of another kind
+     */
     public VortexFlow(FlowDef def) {
         super(def);
         if (def.kind() != FlowKind.VORTEX) {

@@ -8,14 +8,15 @@ import org.joml.Vector2d;
  * The set of wind flows of a scene and the simulation clock that drives them (paper §3.2): sums
  * every active flow's velocity at a ground point (flows superpose linearly), moves flow centres
  * along their paths or with the other flows (advection), and manages runtime flows for games:
- * agents (a flow attached to a moving entity), blasts and rain showers.
+ * agents (a flow attached to a moving entity), blasts, rain showers and a game's own
+ * {@link WindSource} implementations, which are summed, switched and advanced like the built-ins.
  *
  * <p>Threads: owned by one thread (the simulation's); not thread-safe. Flows and agents may be
  * added or removed by that thread between updates. {@link #velocity} and {@link #advance} do not
  * allocate; adding flows allocates (and may grow the internal array).
  */
 public final class WindField {
-    private FlowBase[] flows;
+    private WindSource[] flows;
     private boolean[] oneShot;
     private double[] advX;
     private double[] advZ;
@@ -26,13 +27,19 @@ public final class WindField {
 
     /** An empty field at time 0. Allocates. */
     public WindField() {
-        flows = new FlowBase[8];
+        flows = new WindSource[8];
         oneShot = new boolean[8];
         advX = new double[8];
         advZ = new double[8];
     }
 
-    /** A field holding one flow per def, in order, at time 0. Allocates. */
+    /**
+     * A field holding one flow per def, in order, at time 0. Allocates.
+     *
+     * @param defs the flows, ids unique
+     * @return the new field
+     * @throws IllegalArgumentException when two defs share an id
+     */
     public static WindField of(List<FlowDef> defs) {
         Require.nonNull("defs", defs);
         WindField w = new WindField();
@@ -42,23 +49,32 @@ public final class WindField {
         return w;
     }
 
-    /** Simulation time, seconds since the start. */
+    /** {@return the simulation time, seconds since the start} */
     public double time() {
         return time;
     }
 
-    /** Number of flows held (enabled or not, active or not). */
+    /** {@return the number of flows held (enabled or not, active or not)} */
     public int size() {
         return count;
     }
 
-    /** The i-th flow, i in [0, size()). */
+    /**
+     * {@return the i-th flow, in the order added}
+     *
+     * @param i in [0, size())
+     * @throws IllegalArgumentException when i is out of range
+     */
     public WindSource get(int i) {
         Require.range("i", i, 0, count - 1);
         return flows[i];
     }
 
-    /** Index of the flow with this id, or -1 when there is none. No allocation. */
+    /**
+     * {@return the index of the flow with this id, or -1 when there is none} No allocation.
+     *
+     * @param id a flow id
+     */
     public int indexOf(String id) {
         for (int i = 0; i < count; i++) {
             if (flows[i].id().equals(id)) {
@@ -68,14 +84,25 @@ public final class WindField {
         return -1;
     }
 
-    /** Builds a flow from {@code def} ({@link WindSource#of}) and adds it. Allocates. */
+    /**
+     * Builds a flow from {@code def} ({@link WindSource#of}) and adds it. Allocates.
+     *
+     * @param def the flow's definition
+     * @return the new flow
+     * @throws IllegalArgumentException when a flow with the same id is already held
+     */
     public WindSource add(FlowDef def) {
         return add(WindSource.of(def));
     }
 
     /**
-     * Adds a flow. A PATH flow is placed on its path at the current time.
+     * Adds a flow: a built-in one ({@link WindSource#of}) or a user implementation, which is then
+     * evaluated exactly like the built-ins (see {@link WindSource}). A PATH flow is placed on its
+     * path at the current time. Owner thread, between updates; allocates only when the internal
+     * arrays grow.
      *
+     * @param source the flow, not already held
+     * @return {@code source}
      * @throws IllegalArgumentException when a flow with the same id is already held
      */
     public WindSource add(WindSource source) {
@@ -94,17 +121,21 @@ public final class WindField {
             advX = java.util.Arrays.copyOf(advX, n);
             advZ = java.util.Arrays.copyOf(advZ, n);
         }
-        FlowBase f = (FlowBase) source; // every WindSource is a FlowBase: the interface is sealed
-        if (f.hasPath()) {
+        if (source instanceof FlowBase f && f.hasPath()) {
             f.placeOnPath(time);
         }
-        flows[count] = f;
+        flows[count] = source;
         oneShot[count] = removeWhenExpired;
         count++;
         return source;
     }
 
-    /** Removes a flow; returns whether it was held. No allocation. */
+    /**
+     * Removes a flow. No allocation.
+     *
+     * @param source the flow (compared by identity)
+     * @return whether it was held
+     */
     public boolean remove(WindSource source) {
         for (int i = 0; i < count; i++) {
             if (flows[i] == source) {
@@ -127,6 +158,10 @@ public final class WindField {
      * Agents: attaches a flow to a moving entity (character, vehicle). The game calls
      * {@link WindSource#setCentre(double, double)} every frame with the entity's position and
      * {@link #remove(WindSource)} when it goes. {@code def.motion()} must be FIXED. Allocates.
+     *
+     * @param def the agent's flow, e.g. a SOURCE around a character
+     * @return the new flow, to move with {@link WindSource#setCentre(double, double)}
+     * @throws IllegalArgumentException when the motion is not FIXED or the id is already held
      */
     public WindSource attachAgent(FlowDef def) {
         Require.nonNull("def", def);
@@ -140,6 +175,14 @@ public final class WindField {
     /**
      * An explosion at (x, z) now: a {@link BlastFlow} of strength a (m^2/s, &gt; 0) lasting
      * {@code duration} seconds (&gt; 0), removed automatically once over. Allocates.
+     *
+     * @param id       unique flow id
+     * @param x        centre X, metres
+     * @param z        centre Z, metres
+     * @param strength m^2/s, &gt; 0
+     * @param duration seconds, &gt; 0
+     * @return the new flow
+     * @throws IllegalArgumentException when a value is out of range or the id is already held
      */
     public WindSource blast(String id, double x, double z, double strength, double duration) {
         ActivationDef act = new ActivationDef(time, Require.positive("duration", duration), 0, 0);
@@ -154,9 +197,17 @@ public final class WindField {
      * short seeded impulses ({@link RainFlow}), removed automatically after {@code duration}
      * seconds (or never, for +Infinity). Allocates.
      *
+     * @param id         unique flow id
+     * @param x          disc centre X, metres
+     * @param z          disc centre Z, metres
+     * @param radius     disc radius, metres, &gt; 0
      * @param strength   impulse strength, m^2/s, &gt; 0
      * @param spacing    cell size between impulses, metres, &gt; 0
      * @param rate       impulses per second per m^2, &gt; 0
+     * @param duration   seconds, &gt; 0, or +Infinity for a shower that never stops
+     * @param seed       seed of the impulses
+     * @return the new flow
+     * @throws IllegalArgumentException when a value is out of range or the id is already held
      */
     public WindSource rain(String id, double x, double z, double radius, double strength, double spacing,
                            double rate, double duration, long seed) {
@@ -171,14 +222,16 @@ public final class WindField {
      * Advances the clock by {@code dt} seconds (finite, &gt;= 0) and moves the centres: PATH flows
      * to their scripted position at the new time; ADVECTED flows by Euler integration of the sum
      * of the <i>other</i> flows' velocities at their centre at the old time (all advected flows
-     * read the same state, so the result does not depend on flow order). Blasts and showers made
-     * by {@link #blast} and {@link #rain} are removed once their window has ended. No allocation.
+     * read the same state, so the result does not depend on flow order). Then every flow, in order,
+     * is told the new time ({@link WindSource#onAdvance}). Blasts and showers made by {@link #blast}
+     * and {@link #rain} are removed once their window has ended. No allocation.
+     *
+     * @param dt seconds, finite, &gt;= 0
      */
     public void advance(double dt) {
         Require.nonNegative("dt", dt);
         for (int i = 0; i < count; i++) {
-            FlowBase f = flows[i];
-            if (f.def.motion().kind() == MotionDef.Kind.ADVECTED) {
+            if (flows[i] instanceof FlowBase f && f.def.motion().kind() == MotionDef.Kind.ADVECTED) {
                 velocityExcept(f.cx, f.cz, f, adv);
                 advX[i] = adv.x;
                 advZ[i] = adv.y;
@@ -186,14 +239,16 @@ public final class WindField {
         }
         time += dt;
         for (int i = 0; i < count; i++) {
-            FlowBase f = flows[i];
-            MotionDef.Kind k = f.def.motion().kind();
-            if (k == MotionDef.Kind.ADVECTED) {
-                f.cx += advX[i] * dt;
-                f.cz += advZ[i] * dt;
-            } else if (k == MotionDef.Kind.PATH) {
-                f.placeOnPath(time);
+            if (flows[i] instanceof FlowBase f) {
+                MotionDef.Kind k = f.def.motion().kind();
+                if (k == MotionDef.Kind.ADVECTED) {
+                    f.cx += advX[i] * dt;
+                    f.cz += advZ[i] * dt;
+                } else if (k == MotionDef.Kind.PATH) {
+                    f.placeOnPath(time);
+                }
             }
+            flows[i].onAdvance(time, dt);
         }
         for (int i = count - 1; i >= 0; i--) {
             if (oneShot[i] && flows[i].expired(time)) {
@@ -205,29 +260,46 @@ public final class WindField {
     /**
      * Writes the sum of every enabled, active flow's velocity (m/s; x = X, y = Z) at ground point
      * (x, z) at the current time into dest. Linear superposition. No allocation.
+     *
+     * @param x    ground point X, metres
+     * @param z    ground point Z, metres
+     * @param dest where to write
+     * @return {@code dest}
      */
     public Vector2d velocity(double x, double z, Vector2d dest) {
         return velocityExcept(x, z, null, dest);
     }
 
-    /** Like {@link #velocity} but leaves out {@code skip} (may be null). No allocation. */
+    /**
+     * Like {@link #velocity} but leaves out {@code skip}. No allocation.
+     *
+     * @param x    ground point X, metres
+     * @param z    ground point Z, metres
+     * @param skip the flow to leave out (compared by identity), or null for none
+     * @param dest where to write (m/s; x = X, y = Z)
+     * @return {@code dest}
+     */
     public Vector2d velocityExcept(double x, double z, WindSource skip, Vector2d dest) {
         double sx = 0;
         double sz = 0;
         Vector2d t = tmp;
         for (int i = 0; i < count; i++) {
-            FlowBase f = flows[i];
+            WindSource f = flows[i];
             if (f == skip) {
                 continue;
             }
-            f.velocity(x, z, time, t);
+            if (f instanceof FlowBase b) {
+                b.velocity(x, z, time, t); // the built-ins: one final method, no interface dispatch
+            } else {
+                f.velocity(x, z, time, t);
+            }
             sx += t.x;
             sz += t.y;
         }
         return dest.set(sx, sz);
     }
 
-    /** Number of flows enabled and inside their activation window now (weight &gt; 0). No allocation. */
+    /** {@return the number of flows enabled and inside their activation window now (weight &gt; 0)} No allocation. */
     public int activeCount() {
         int n = 0;
         for (int i = 0; i < count; i++) {

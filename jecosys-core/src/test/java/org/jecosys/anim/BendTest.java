@@ -23,8 +23,8 @@ class BendTest {
             assertEquals(Math.atan2(Math.sin(h), Math.cos(h)), s.azimuth(0), 2e-5);
             s.kinds().prepare(1.0 / 60, 4);
             for (int i = 0; i < 100; i++) {
-                s.animate(0, 1, AnimationMode.CONSTRAINT, new float[1], new float[1], new boolean[] {true}, 0, 0, 0,
-                        null);
+                s.animate(0, 1, AnimationStep.of(AnimationMode.CONSTRAINT, new float[1], new float[1],
+                        new boolean[] {true}));
             }
             assertEquals(0, s.poseCoordinate(0), "no wind, no bend");
             assertEquals(Math.atan2(Math.sin(h), Math.cos(h)), s.azimuth(0), 2e-5, "no flip at zero wind");
@@ -38,7 +38,7 @@ class BendTest {
         float[] wx = {(float) (6 * Math.cos(0.5))};
         float[] wz = {(float) (6 * Math.sin(0.5))};
         for (int i = 0; i < 300; i++) {
-            s.animate(0, 1, AnimationMode.CONSTRAINT, wx, wz, new boolean[] {true}, 0, 0, 0, null);
+            s.animate(0, 1, AnimationStep.of(AnimationMode.CONSTRAINT, wx, wz, new boolean[] {true}));
         }
         double d = Math.hypot(s.deviationX(0), s.deviationZ(0));
         assertEquals(PoseMapping.poseCoordinate(d, 0.4, 1.2, 16), s.poseCoordinate(0), 1e-3);
@@ -51,8 +51,8 @@ class BendTest {
         AnimationState s = plants(0xFF, 0f, 0.05f);
         s.kinds().prepare(1.0 / 60, 4);
         for (int i = 0; i < 300; i++) {
-            s.animate(0, 1, AnimationMode.CONSTRAINT, new float[1], new float[] {6}, new boolean[] {true}, 0, 0, 0,
-                    null);
+            s.animate(0, 1, AnimationStep.of(AnimationMode.CONSTRAINT, new float[1], new float[] {6},
+                    new boolean[] {true}));
         }
         double expected = Math.atan2(s.deviationZ(0), 0.05 + s.deviationX(0));
         assertEquals(expected, s.azimuth(0), 2e-5);
@@ -64,17 +64,18 @@ class BendTest {
         AnimationState s = plants(0b011, 0f, 0.05f);
         s.kinds().prepare(1.0 / 60, 4);
         float[] w = {5};
-        assertEquals(0, s.animate(0, 1, AnimationMode.CONSTRAINT, w, w, new boolean[] {false}, 0, 0, 0, null));
+        assertEquals(0, s.animate(0, 1, AnimationStep.of(AnimationMode.CONSTRAINT, w, w, new boolean[] {false})));
         assertEquals(0, s.deviationX(0));
         // 20 m away: level 2, where this kind is not drawn
-        assertEquals(0, s.animate(0, 1, AnimationMode.CONSTRAINT, w, w, new boolean[] {true}, 20, 0, 0, null));
+        AnimationStep step = AnimationStep.of(AnimationMode.CONSTRAINT, w, w, new boolean[] {true});
+        assertEquals(0, s.animate(0, 1, step.eye(20, 0, 0)));
         assertEquals(2, s.level(0));
         assertEquals(0, s.deviationX(0));
-        assertEquals(1, s.animate(0, 1, AnimationMode.CONSTRAINT, w, w, new boolean[] {true}, 12, 0, 0, null));
+        assertEquals(1, s.animate(0, 1, step.eye(12, 0, 0)));
         assertEquals(1, s.level(0));
         assertTrue(s.deviationX(0) > 0);
         s.setLodScale(2); // level edges 20 and 30: 20 m is now level 1
-        assertEquals(1, s.animate(0, 1, AnimationMode.CONSTRAINT, w, w, new boolean[] {true}, 20, 0, 0, null));
+        assertEquals(1, s.animate(0, 1, step.eye(20, 0, 0)));
     }
 
     @Test

@@ -17,6 +17,7 @@ class SpringModelTest {
         final float[] wx = new float[1];
         final float[] wz = new float[1];
         final boolean[] vis = {true};
+        final AnimationStep step = AnimationStep.of(AnimationMode.CONSTRAINT, wx, wz, vis);
         final int sub;
 
         One(double pc, double tau, double mass, double dragArea, int sub) {
@@ -43,7 +44,7 @@ class SpringModelTest {
 
         void step(double h) {
             s.kinds().prepare(h, sub);
-            assertEquals(1, s.animate(0, 1, AnimationMode.CONSTRAINT, wx, wz, vis, 0, 0, 0, null));
+            assertEquals(1, s.animate(0, 1, step));
         }
     }
 

@@ -56,7 +56,7 @@ class SpeciesLibraryTest {
             SpeciesModel m = SpeciesModel.build(def, 3);
             double tallest = 0;
             for (int c = 0; c < m.componentCount(); c++) {
-                ComponentModel cm = m.component(c);
+                PlantComponent cm = m.component(c);
                 ComponentDef d = cm.def();
                 assertTrue(d.responseTime() >= 0.2 && d.responseTime() <= 0.6, def.id() + " tau");
                 for (int v = 0; v < cm.variants(); v++) {

@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.Locale;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.AnimationStep;
 import org.jecosys.anim.SpringKinds;
 import org.jecosys.math.Rng;
 import org.junit.jupiter.api.Tag;
@@ -47,6 +48,8 @@ class AnimBenchmarkTest {
         final float[] poseOut;
         final float[] azOut;
         final long[] outVersion;
+        /** Per chunk, its animate inputs (chunks run on several workers at once). */
+        final AnimationStep[] steps;
         final float[][] src = new float[6][];
         final float[][] dst = new float[6][];
         boolean copyOnly;
@@ -121,6 +124,11 @@ class AnimBenchmarkTest {
                 chunks[m++] = plants;
             }
             chunkFirst = Arrays.copyOf(chunks, m);
+            steps = new AnimationStep[m - 1];
+            for (int i = 0; i < steps.length; i++) {
+                steps[i] = AnimationStep.of(AnimationMode.CONSTRAINT, wx, wz, vis)
+                        .outputs(poseOut, azOut, poseOut, azOut, outVersion);
+            }
             for (int i = 0; i < 6; i++) {
                 src[i] = new float[n];
                 dst[i] = new float[n];
@@ -140,8 +148,7 @@ class AnimBenchmarkTest {
                 }
                 return;
             }
-            state.animate(p0, p1, AnimationMode.CONSTRAINT, wx, wz, vis, 0, 0, 0, null, poseOut, azOut, poseOut,
-                    azOut, outVersion);
+            state.animate(p0, p1, steps[chunk]);
         }
     }
 

@@ -62,7 +62,12 @@ public final class ComponentStream {
      * Writes the records of every listed plant's components for the last {@link PlantBatches#update}
      * into {@code dest} from 0, and flips it. No allocation.
      *
-     * @param ex eye x, metres (likewise ey, ez)
+     * @param b     the batches, after their last {@link PlantBatches#update}
+     * @param frame the animation frame the batches were updated with
+     * @param ex    eye X, metres
+     * @param ey    eye Y, metres
+     * @param ez    eye Z, metres
+     * @param dest  receives {@link #FLOATS} floats per listed component; cleared, then flipped
      */
     public void write(PlantBatches b, Frame frame, double ex, double ey, double ez, FloatBuffer dest) {
         dest.clear();

@@ -50,7 +50,12 @@ public final class FieldOverlay implements AutoCloseable {
     private int capacityNodes;
     private boolean closed;
 
-    /** Creates the overlay for a terrain's bounds. Render thread; allocates. */
+    /**
+     * Creates the overlay for a terrain's bounds. Render thread; allocates.
+     *
+     * @param gl      the render context
+     * @param terrain gives the map's extent (metres) and the marker size
+     */
     public FieldOverlay(GlContext gl, Heightfield terrain) {
         this.tracker = gl.tracker();
         this.terrain = terrain;
@@ -86,7 +91,13 @@ public final class FieldOverlay implements AutoCloseable {
         glBindVertexArray(0);
     }
 
-    /** Grey level of a leaf cell (Figure 2): 0.85 for its own force, darker per level up, 0.12 invisible. Pure. */
+    /**
+     * Grey level of a leaf cell (Figure 2). Pure; any thread.
+     *
+     * @param visible  whether the leaf passed the frustum test
+     * @param lodLevel levels its representing ancestor is above it (0: its own force), -1 when invisible
+     * @return 0.85 for its own force, 0.14 darker per level up (at least 0.30), 0.12 when invisible
+     */
     public static float grey(boolean visible, int lodLevel) {
         if (!visible || lodLevel < 0) {
             return 0.12f;
@@ -99,6 +110,7 @@ public final class FieldOverlay implements AutoCloseable {
      * and sets that viewport again on return. Render thread.
      *
      * @param view      the field's debug view (read on this thread between field updates)
+     * @param camera    the viewer, drawn as a marker pointing along its heading
      * @param showField draw the quadtree cells
      * @param showWind  draw the wind vectors
      * @param x         viewport left, pixels

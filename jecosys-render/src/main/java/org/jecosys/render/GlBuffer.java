@@ -20,11 +20,13 @@ public final class GlBuffer extends GlResource {
     private final long capacity;
 
     /**
-     * Allocates {@code bytes} of uninitialised storage.
+     * Allocates {@code bytes} of uninitialised storage; leaves the buffer bound to its target.
      *
-     * @param target binding target, e.g. {@code GL_ARRAY_BUFFER}
-     * @param bytes  capacity, &gt; 0
-     * @param usage  usage hint, e.g. {@code GL_STATIC_DRAW}
+     * @param tracker counts the object (the renderer's {@link GlContext#tracker()})
+     * @param target  binding target, e.g. {@code GL_ARRAY_BUFFER}
+     * @param bytes   capacity, &gt; 0
+     * @param usage   usage hint, e.g. {@code GL_STATIC_DRAW}
+     * @throws IllegalArgumentException when {@code bytes} &le; 0
      */
     public GlBuffer(GlTracker tracker, int target, long bytes, int usage) {
         super(tracker, glGenBuffers());
@@ -38,31 +40,54 @@ public final class GlBuffer extends GlResource {
         glBufferData(target, bytes, usage);
     }
 
-    /** A buffer holding {@code data} (position to limit). */
+    /**
+     * A buffer holding {@code data} (position to limit); at least 4 bytes.
+     *
+     * @param tracker counts the object
+     * @param target  binding target, e.g. {@code GL_ARRAY_BUFFER}
+     * @param data    the floats to upload; its position is not changed
+     * @param usage   usage hint, e.g. {@code GL_STATIC_DRAW}
+     * @return the new buffer
+     */
     public static GlBuffer of(GlTracker tracker, int target, FloatBuffer data, int usage) {
         GlBuffer b = new GlBuffer(tracker, target, Math.max(4, (long) data.remaining() * 4), usage);
         b.upload(0, data);
         return b;
     }
 
-    /** A buffer holding {@code data} (position to limit). */
+    /**
+     * A buffer holding {@code data} (position to limit); at least 4 bytes.
+     *
+     * @param tracker counts the object
+     * @param target  binding target, e.g. {@code GL_ELEMENT_ARRAY_BUFFER}
+     * @param data    the ints to upload; its position is not changed
+     * @param usage   usage hint, e.g. {@code GL_STATIC_DRAW}
+     * @return the new buffer
+     */
     public static GlBuffer of(GlTracker tracker, int target, IntBuffer data, int usage) {
         GlBuffer b = new GlBuffer(tracker, target, Math.max(4, (long) data.remaining() * 4), usage);
         b.upload(0, data);
         return b;
     }
 
-    /** A streaming buffer ({@code GL_DYNAMIC_DRAW}) of {@code bytes}. */
+    /**
+     * A streaming buffer ({@code GL_DYNAMIC_DRAW}) of {@code bytes}.
+     *
+     * @param tracker counts the object
+     * @param target  binding target
+     * @param bytes   capacity, &gt; 0
+     * @return the new buffer
+     */
     public static GlBuffer dynamic(GlTracker tracker, int target, long bytes) {
         return new GlBuffer(tracker, target, bytes, GL_DYNAMIC_DRAW);
     }
 
-    /** Binding target. */
+    /** {@return the binding target, e.g. {@code GL_ARRAY_BUFFER}} */
     public int target() {
         return target;
     }
 
-    /** Capacity, bytes. */
+    /** {@return the capacity, bytes} */
     public long capacity() {
         return capacity;
     }
@@ -81,21 +106,39 @@ public final class GlBuffer extends GlResource {
         glBufferData(target, capacity, org.lwjgl.opengl.GL15C.GL_STREAM_DRAW);
     }
 
-    /** Writes {@code data}'s remaining bytes at byte {@code offset}. No heap allocation. */
+    /**
+     * Writes {@code data}'s remaining bytes at byte {@code offset}. No heap allocation.
+     *
+     * @param offset first byte written, &gt;= 0
+     * @param data   position to limit is written; its position is not changed
+     * @throws IllegalArgumentException when the upload does not fit the capacity
+     */
     public void upload(long offset, ByteBuffer data) {
         check(offset, data.remaining());
         glBindBuffer(target, id());
         glBufferSubData(target, offset, data);
     }
 
-    /** Writes {@code data}'s remaining floats at byte {@code offset}. No heap allocation. */
+    /**
+     * Writes {@code data}'s remaining floats at byte {@code offset}. No heap allocation.
+     *
+     * @param offset first byte written, &gt;= 0
+     * @param data   position to limit is written; its position is not changed
+     * @throws IllegalArgumentException when the upload does not fit the capacity
+     */
     public void upload(long offset, FloatBuffer data) {
         check(offset, 4L * data.remaining());
         glBindBuffer(target, id());
         glBufferSubData(target, offset, data);
     }
 
-    /** Writes {@code data}'s remaining ints at byte {@code offset}. No heap allocation. */
+    /**
+     * Writes {@code data}'s remaining ints at byte {@code offset}. No heap allocation.
+     *
+     * @param offset first byte written, &gt;= 0
+     * @param data   position to limit is written; its position is not changed
+     * @throws IllegalArgumentException when the upload does not fit the capacity
+     */
     public void upload(long offset, IntBuffer data) {
         check(offset, 4L * data.remaining());
         glBindBuffer(target, id());

@@ -15,6 +15,9 @@ import static org.lwjgl.opengl.GL31C.glTexBuffer;
  */
 public final class GlBufferTexture extends GlResource {
     /**
+     * A buffer texture over {@code buffer}; leaves no buffer texture bound.
+     *
+     * @param tracker        counts the object
      * @param buffer         storage (its target should be {@code GL_TEXTURE_BUFFER})
      * @param internalFormat texel format, e.g. {@code GL_RGBA32F}, {@code GL_RG32F}, {@code GL_RGBA32I}
      */
@@ -25,7 +28,11 @@ public final class GlBufferTexture extends GlResource {
         glBindTexture(GL_TEXTURE_BUFFER, 0);
     }
 
-    /** Binds to texture unit {@code unit}. */
+    /**
+     * Binds to a texture unit (and makes that unit active).
+     *
+     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}
+     */
     public void bind(int unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_BUFFER, id());

@@ -106,7 +106,10 @@ public final class GlContext implements AutoCloseable {
         return new GlContext(0, caps, dbg, null, new String[1]);
     }
 
-    /** Whether a desktop display is available: {@code DISPLAY} or {@code WAYLAND_DISPLAY} is set. */
+    /**
+     * {@return whether a desktop display is available: {@code DISPLAY} or {@code WAYLAND_DISPLAY} is
+     * set} Any thread.
+     */
     public static boolean hasDisplay() {
         return nonEmpty(System.getenv("DISPLAY")) || nonEmpty(System.getenv("WAYLAND_DISPLAY"));
     }
@@ -120,16 +123,23 @@ public final class GlContext implements AutoCloseable {
      * {@link GlFramebuffer} of any size. Fails with a clear message when no context can be made.
      *
      * @param debug whether to turn on KHR_debug output ({@link #debug()}); tests do
+     * @return a context current on this thread, which becomes the render thread; owns GLFW
+     * @throws IllegalStateException when GLFW or an OpenGL 3.3 core context cannot be made
      */
     public static GlContext headless(boolean debug) {
         return create("jecosys (headless)", 16, 16, true, debug);
     }
 
     /**
-     * A visible desktop window (X11 or Wayland).
+     * A visible desktop window (X11 or Wayland) with an OpenGL 3.3 core context, current on this
+     * thread, which becomes the render thread.
      *
+     * @param title  window title
      * @param width  client width, pixels
      * @param height client height, pixels
+     * @param debug  whether to turn on KHR_debug output ({@link #debug()})
+     * @return the context; owns the window and GLFW
+     * @throws IllegalStateException when GLFW or the context cannot be made (e.g. no display)
      */
     public static GlContext windowed(String title, int width, int height, boolean debug) {
         return create(title, width, height, false, debug);
@@ -199,22 +209,25 @@ public final class GlContext implements AutoCloseable {
         return window;
     }
 
-    /** The live-object counter shared by every GL wrapper made in this context. */
+    /** {@return the live-object counter shared by every GL wrapper made in this context} */
     public GlTracker tracker() {
         return tracker;
     }
 
-    /** The debug output, or null when made without debug. */
+    /** {@return the debug output, or null when made without debug} */
     public GlDebug debug() {
         return debug;
     }
 
-    /** The context's capabilities. */
+    /** {@return the context's LWJGL capabilities} */
     public GLCapabilities capabilities() {
         return caps;
     }
 
-    /** {@code GL_RENDERER + GL_VERSION}, e.g. "llvmpipe (LLVM 15.0.7, 256 bits) / 4.5 (Core Profile) Mesa". */
+    /**
+     * {@return {@code GL_RENDERER + " / " + GL_VERSION}, e.g. "llvmpipe (LLVM 15.0.7, 256 bits) / 4.5
+     * (Core Profile) Mesa"} Render thread; allocates.
+     */
     public String describe() {
         return glGetString(GL_RENDERER) + " / " + glGetString(GL_VERSION);
     }
@@ -225,7 +238,7 @@ public final class GlContext implements AutoCloseable {
         org.lwjgl.opengl.GL11C.glFinish();
     }
 
-    /** The last GLFW error message, or null. */
+    /** {@return the last GLFW error message, or null (always null for a wrapped context)} */
     public String lastGlfwError() {
         return lastGlfwError[0];
     }

@@ -55,7 +55,11 @@ public final class GlDebug implements AutoCloseable {
         errors++;
     }
 
-    /** Drains {@code glGetError} into the error record; returns the total error count. */
+    /**
+     * Drains {@code glGetError} (at most 16 codes) into the error record. Render thread.
+     *
+     * @return the total error count so far
+     */
     public int poll() {
         for (int e = glGetError(), n = 0; e != GL_NO_ERROR && n < 16; e = glGetError(), n++) {
             record("glGetError: 0x" + Integer.toHexString(e));
@@ -63,12 +67,12 @@ public final class GlDebug implements AutoCloseable {
         return errors;
     }
 
-    /** Errors recorded so far. */
+    /** {@return the number of errors recorded so far} */
     public int errors() {
         return errors;
     }
 
-    /** The first recorded errors, one a line (empty when none). Allocates. */
+    /** {@return the first recorded errors (at most 8), one a line; empty when none} Allocates. */
     public String report() {
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < Math.min(errors, KEEP); i++) {
@@ -77,7 +81,12 @@ public final class GlDebug implements AutoCloseable {
         return sb.toString();
     }
 
-    /** Fails with the recorded errors if there are any. */
+    /**
+     * Fails with the recorded errors if there are any (after {@link #poll()}). Render thread.
+     *
+     * @param where what ran, for the message, e.g. {@code "SceneRenderer.render"}
+     * @throws IllegalStateException listing the first errors when any was recorded
+     */
     public void check(String where) {
         if (poll() > 0) {
             throw new IllegalStateException(errors + " GL error(s) by " + where + ":\n" + report());

@@ -29,7 +29,15 @@ public final class GlFramebuffer extends GlResource {
     private int width;
     private int height;
 
-    /** A framebuffer of {@code width x height} pixels (each in [1, 16384]). */
+    /**
+     * A framebuffer of {@code width x height} pixels; leaves no framebuffer bound.
+     *
+     * @param tracker counts the three objects
+     * @param width   pixels, in [1, 16384]
+     * @param height  pixels, in [1, 16384]
+     * @throws IllegalArgumentException when a size is out of range
+     * @throws IllegalStateException    when the driver reports the framebuffer incomplete
+     */
     public GlFramebuffer(GlTracker tracker, int width, int height) {
         super(tracker, glGenFramebuffers());
         Renderbuffer c = null;
@@ -52,7 +60,15 @@ public final class GlFramebuffer extends GlResource {
         }
     }
 
-    /** Reallocates the storage for a new size (contents undefined). Not per frame. */
+    /**
+     * Reallocates the storage for a new size (contents undefined). Not per frame; leaves no
+     * framebuffer bound.
+     *
+     * @param width  pixels, in [1, 16384]
+     * @param height pixels, in [1, 16384]
+     * @throws IllegalArgumentException when a size is out of range
+     * @throws IllegalStateException    when the driver reports the framebuffer incomplete
+     */
     public void resize(int width, int height) {
         if (width < 1 || height < 1 || width > 16384 || height > 16384) {
             throw new IllegalArgumentException("framebuffer size must be in [1, 16384], got " + width + "x" + height);
@@ -74,12 +90,12 @@ public final class GlFramebuffer extends GlResource {
         }
     }
 
-    /** Width, pixels. */
+    /** {@return the width, pixels} */
     public int width() {
         return width;
     }
 
-    /** Height, pixels. */
+    /** {@return the height, pixels} */
     public int height() {
         return height;
     }

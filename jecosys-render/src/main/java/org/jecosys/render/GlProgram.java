@@ -37,8 +37,11 @@ public final class GlProgram extends GlResource {
     /**
      * Compiles and links {@code shaders/<vertex>} and {@code shaders/<fragment>}.
      *
+     * @param tracker  counts the object
      * @param vertex   vertex shader resource name, e.g. {@code "plant.vert"}
      * @param fragment fragment shader resource name
+     * @throws IllegalStateException with the driver's log when compiling or linking fails, or a
+     *                               resource is missing
      */
     public GlProgram(GlTracker tracker, String vertex, String fragment) {
         super(tracker, glCreateProgram());
@@ -98,7 +101,13 @@ public final class GlProgram extends GlResource {
         glUseProgram(id());
     }
 
-    /** Location of uniform {@code uniform}; fails if the program has no such active uniform. Setup time. */
+    /**
+     * The location of an active uniform. Setup time, not per frame.
+     *
+     * @param uniform the uniform's name in the shaders
+     * @return its location, &gt;= 0
+     * @throws IllegalStateException when the program has no such active uniform
+     */
     public int uniform(String uniform) {
         int loc = glGetUniformLocation(id(), uniform);
         if (loc < 0) {

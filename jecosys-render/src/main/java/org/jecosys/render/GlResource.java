@@ -2,7 +2,8 @@ package org.jecosys.render;
 
 /**
  * Base of every {@code Gl*} wrapper: one GL object name, owned by one renderer, created and deleted on
- * the render thread. {@link #close()} is idempotent; there is no finalizer (DESIGN.md, style 4).
+ * the render thread. {@link #close()} is idempotent; there is no finalizer: GL objects are freed
+ * explicitly on the render thread, never by the garbage collector.
  */
 abstract class GlResource implements AutoCloseable {
     private final GlTracker tracker;
@@ -21,7 +22,12 @@ abstract class GlResource implements AutoCloseable {
         tracker.created();
     }
 
-    /** The GL object name; fails after {@link #close()}. */
+    /**
+     * The GL object name; fails after {@link #close()}.
+     *
+     * @return the name, never 0
+     * @throws IllegalStateException when the object is closed
+     */
     public final int id() {
         if (id == 0) {
             throw new IllegalStateException(getClass().getSimpleName() + " is closed");
@@ -29,7 +35,7 @@ abstract class GlResource implements AutoCloseable {
         return id;
     }
 
-    /** Whether {@link #close()} was called. */
+    /** {@return whether {@link #close()} was called} */
     public final boolean closed() {
         return id == 0;
     }

@@ -41,12 +41,12 @@ public final class GlTracker {
         live--;
     }
 
-    /** GL objects created and not yet closed. */
+    /** {@return the number of GL objects created and not yet closed} */
     public int live() {
         return live;
     }
 
-    /** GL objects created since the context was made. */
+    /** {@return the number of GL objects created since the context was made} */
     public long createdTotal() {
         return created;
     }

@@ -9,6 +9,8 @@ public final class GlVertexArray extends GlResource {
     /**
      * Creates an empty vertex array, bound once so that it exists for the driver at once (a name from
      * glGenVertexArrays is only reserved until its first bind); leaves no vertex array bound.
+     *
+     * @param tracker counts the object
      */
     public GlVertexArray(GlTracker tracker) {
         super(tracker, glGenVertexArrays());

@@ -24,6 +24,11 @@ public final class Pixels {
     /**
      * Reads {@code width x height} RGBA pixels of the bound read framebuffer into {@code dest} (at
      * least {@code 4 * width * height} bytes; rows bottom-up). Render thread; no allocation.
+     *
+     * @param width  pixels, from the left edge
+     * @param height pixels, from the bottom edge
+     * @param dest   receives the pixels from index 0; cleared first (position 0, limit capacity)
+     * @throws IllegalArgumentException when {@code dest} is too small
      */
     public static void read(int width, int height, ByteBuffer dest) {
         if (dest.capacity() < 4L * width * height) {
@@ -34,17 +39,38 @@ public final class Pixels {
         glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, dest);
     }
 
-    /** Red of pixel (x, y) (y from the bottom) in an RGBA buffer of {@code width} columns, 0-255. */
+    /**
+     * {@return the red of pixel (x, y) in an RGBA buffer, 0-255}
+     *
+     * @param rgba  pixels as {@link #read} leaves them
+     * @param width columns per row
+     * @param x     column, from the left
+     * @param y     row, from the bottom
+     */
     public static int red(ByteBuffer rgba, int width, int x, int y) {
         return rgba.get(4 * (y * width + x)) & 255;
     }
 
-    /** Green of pixel (x, y), 0-255. */
+    /**
+     * {@return the green of pixel (x, y) in an RGBA buffer, 0-255}
+     *
+     * @param rgba  pixels as {@link #read} leaves them
+     * @param width columns per row
+     * @param x     column, from the left
+     * @param y     row, from the bottom
+     */
     public static int green(ByteBuffer rgba, int width, int x, int y) {
         return rgba.get(4 * (y * width + x) + 1) & 255;
     }
 
-    /** Blue of pixel (x, y), 0-255. */
+    /**
+     * {@return the blue of pixel (x, y) in an RGBA buffer, 0-255}
+     *
+     * @param rgba  pixels as {@link #read} leaves them
+     * @param width columns per row
+     * @param x     column, from the left
+     * @param y     row, from the bottom
+     */
     public static int blue(ByteBuffer rgba, int width, int x, int y) {
         return rgba.get(4 * (y * width + x) + 2) & 255;
     }
@@ -52,6 +78,12 @@ public final class Pixels {
     /**
      * Writes bottom-up RGBA pixels as a PNG file (top row first), creating parent folders; opaque
      * (alpha forced to 255). Any thread; allocates a native buffer for the flipped copy.
+     *
+     * @param file   the PNG to write (replaced if it exists)
+     * @param rgba   {@code 4 * width * height} bytes, rows bottom-up
+     * @param width  pixels
+     * @param height pixels
+     * @throws IOException when the folder or the file cannot be written
      */
     public static void writePng(Path file, ByteBuffer rgba, int width, int height) throws IOException {
         Path parent = file.toAbsolutePath().getParent();

@@ -154,6 +154,10 @@ public final class PlantBatches {
     /**
      * Sets the LOD edges of a species (the {@code maxDistance} of each level but the last, ascending,
      * metres) — the viewer's "edit LOD distances". Allocates; not per frame.
+     *
+     * @param species      species index, in [0, speciesCount())
+     * @param maxDistances {@code levels(species) - 1} ascending distances, metres, &gt; 0
+     * @throws IllegalArgumentException when the count is wrong or the distances do not ascend
      */
     public void setLodDistances(int species, double[] maxDistances) {
         if (maxDistances.length != levels[species] - 1) {
@@ -175,7 +179,11 @@ public final class PlantBatches {
         edges[species] = maxDistances.clone();
     }
 
-    /** Sets the transition band width of every species, metres (clamped to each species' smallest gap). */
+    /**
+     * Sets the transition band width of every species. Allocates; not per frame.
+     *
+     * @param bandWidth metres, &gt;= 0; clamped to each species' smallest gap between LOD edges
+     */
     public void setBandWidth(double bandWidth) {
         this.bandWidth = bandWidth;
         for (int s = 0; s < species; s++) {
@@ -186,6 +194,8 @@ public final class PlantBatches {
     /**
      * Recomputes the lists for a camera: culling, level choice, dithering membership and counters.
      * No allocation.
+     *
+     * @param camera the viewer: its frustum culls, its eye sets the distances
      */
     public void update(Camera camera) {
         camera.viewProjection(viewProj);
@@ -244,6 +254,9 @@ public final class PlantBatches {
      * Writes the {@link InstanceLayout} records of every listed plant, list after list, at the
      * buffer's absolute positions from 0 ({@link #instanceOffset} records per list); sets the limit.
      * No allocation.
+     *
+     * @param dest little-endian, at least {@code InstanceLayout.BYTES * maxInstances()} bytes; left at
+     *             position 0 with the limit after the last record
      */
     public void writeInstances(ByteBuffer dest) {
         dest.clear();
@@ -263,6 +276,9 @@ public final class PlantBatches {
      * Writes the (pose coordinate, bend azimuth) pairs of every listed plant's components, list after
      * list ({@link #componentOffset} pairs per list, {@code slots} per plant in slot order), with
      * {@link Frame#putPoseAzimuth}; the buffer is rewound and flipped. No allocation.
+     *
+     * @param frame the animation frame to draw
+     * @param dest  at least {@code 2 * maxComponents()} floats
      */
     public void writeComponents(Frame frame, FloatBuffer dest) {
         dest.clear();
@@ -275,102 +291,153 @@ public final class PlantBatches {
         dest.flip();
     }
 
-    /** Number of species. */
+    /** {@return the number of species} */
     public int speciesCount() {
         return species;
     }
 
-    /** Levels of detail of species {@code s}. */
+    /**
+     * {@return the number of levels of detail of species {@code s}}
+     *
+     * @param s species index, in [0, speciesCount())
+     */
     public int levels(int s) {
         return levels[s];
     }
 
-    /** Index of the list of (species, level). */
+    /**
+     * {@return the index of the list of (species, level)}
+     *
+     * @param s     species index, in [0, speciesCount())
+     * @param level level of detail, in [0, levels(s))
+     */
     public int list(int s, int level) {
         return listBase[s] + level;
     }
 
-    /** Number of lists (sum of every species' levels). */
+    /** {@return the number of lists (sum of every species' levels)} */
     public int listCount() {
         return listBase[species];
     }
 
-    /** Plants in list {@code list} after the last {@link #update}. */
+    /**
+     * {@return the number of plants in a list after the last {@link #update}}
+     *
+     * @param list list index, in [0, listCount())
+     */
     public int count(int list) {
         return listCount[list];
     }
 
-    /** The {@code i}-th plant of list {@code list}. */
+    /**
+     * {@return the {@code i}-th plant of a list, a world plant index}
+     *
+     * @param list list index, in [0, listCount())
+     * @param i    in [0, count(list))
+     */
     public int plant(int list, int i) {
         return plants[listStart[list] + i];
     }
 
-    /** First instance record of the list in the {@link #writeInstances} stream. */
+    /**
+     * {@return the first instance record of the list in the {@link #writeInstances} stream}
+     *
+     * @param list list index, in [0, listCount())
+     */
     public int instanceOffset(int list) {
         return instanceOffset[list];
     }
 
-    /** First component pair of the list in the {@link #writeComponents} stream. */
+    /**
+     * {@return the first component pair of the list in the {@link #writeComponents} stream}
+     *
+     * @param list list index, in [0, listCount())
+     */
     public int componentOffset(int list) {
         return componentOffset[list];
     }
 
-    /** Whether the list draws lines (else triangles). */
+    /**
+     * {@return whether the list draws lines (else triangles)}
+     *
+     * @param list list index, in [0, listCount())
+     */
     public boolean lines(int list) {
         return lines[list];
     }
 
-    /** Primitives of one plant of the list. */
+    /**
+     * {@return the number of primitives of one plant of the list}
+     *
+     * @param list list index, in [0, listCount())
+     */
     public int primitivesPerPlant(int list) {
         return primitives[list];
     }
 
-    /** Bounding radius of species {@code s}, metres. */
+    /**
+     * {@return the bounding radius of species {@code s} about a plant's base, metres}
+     *
+     * @param s species index, in [0, speciesCount())
+     */
     public float radius(int s) {
         return radius[s];
     }
 
-    /** LOD edge {@code l} of species {@code s} ({@code l < levels - 1}), metres. */
+    /**
+     * {@return LOD edge {@code l} of species {@code s}: where level l ends, metres}
+     *
+     * @param s species index, in [0, speciesCount())
+     * @param l edge index, in [0, levels(s) - 1)
+     */
     public double edge(int s, int l) {
         return edges[s][l];
     }
 
-    /** The level chooser of species {@code s}. */
+    /**
+     * {@return the level chooser of species {@code s}}
+     *
+     * @param s species index, in [0, speciesCount())
+     */
     public LodChooser chooser(int s) {
         return choosers[s];
     }
 
-    /** Transition band width of species {@code s}, metres. */
+    /**
+     * {@return the transition band width of species {@code s}, metres}
+     *
+     * @param s species index, in [0, speciesCount())
+     */
     public double bandWidth(int s) {
         return choosers[s].bandWidth();
     }
 
-    /** Triangles submitted by the last {@link #update}. */
+    /** {@return the number of triangles submitted by the last {@link #update}} */
     public long triangles() {
         return triangles;
     }
 
-    /** Lines submitted by the last {@link #update}. */
+    /** {@return the number of lines submitted by the last {@link #update}} */
     public long lineCount() {
         return lineCount;
     }
 
-    /** Instances (plant draws, a plant in a band counting twice) of the last {@link #update}. */
+    /** {@return the number of instances (plant draws, a plant in a band counting twice) of the last {@link #update}} */
     public int instances() {
         return instances;
     }
 
-    /** Component pairs of the last {@link #update}. */
+    /** {@return the number of component pairs of the last {@link #update}} */
     public int components() {
         return components;
     }
 
-    /** Upper bound of {@link #instances()}: every plant at every level. */
+    /** {@return the upper bound of {@link #instances()}: every plant at every level} */
     public int maxInstances() {
         return plants.length;
     }
 
-    /** Upper bound of {@link #components()}. */
+    /** {@return the upper bound of {@link #components()}} */
     public long maxComponents() {
         long n = 0;
         for (int s = 0; s < species; s++) {
@@ -381,7 +448,11 @@ public final class PlantBatches {
         return n;
     }
 
-    /** Slots (components) per plant of species {@code s}. */
+    /**
+     * {@return the number of slots (components) per plant of species {@code s}}
+     *
+     * @param s species index, in [0, speciesCount())
+     */
     public int slots(int s) {
         return slots[s];
     }

@@ -44,7 +44,8 @@ import org.lwjgl.opengl.GL11C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
- * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2, DESIGN.md "Rendering").
+ * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2; see also
+ * docs/ARCHITECTURE.md, "Rendering").
  * At construction every pose table goes to the GPU once (a buffer texture, 3 RGBA32F texels per
  * skeleton point) with one mesh per species and level (the component colour and the fraction along
  * the component baked into each vertex). Per frame, {@link #draw} uploads only per-instance data into
@@ -93,6 +94,8 @@ public final class PlantRenderer implements AutoCloseable {
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
      * allocates. If it throws, every GL object it had made is deleted again.
      *
+     * @param gl        the render context, current on this thread
+     * @param world     the plants: species models (pose tables, meshes) and positions
      * @param bandWidth LOD transition band, metres (RenderDef.lodTransition)
      */
     public PlantRenderer(GlContext gl, World world, double bandWidth) {
@@ -269,12 +272,12 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
-    /** The GL-free lists, LOD choice and counters (read them after {@link #draw}). */
+    /** {@return the GL-free lists, LOD choice and counters (read them after {@link #draw})} */
     public PlantBatches batches() {
         return batches;
     }
 
-    /** Instanced draw calls issued by the last {@link #draw}. */
+    /** {@return the number of instanced draw calls issued by the last {@link #draw}} */
     public int drawCalls() {
         return draws;
     }
@@ -283,6 +286,18 @@ public final class PlantRenderer implements AutoCloseable {
      * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws every level:
      * {@link #drawNear} then {@link #drawFar}. Draw your opaque geometry (terrain) before this, since
      * the far level is blended without writing depth. Render thread; no allocation.
+     *
+     * @param frame          the frame to show (sizes match the world)
+     * @param camera         the viewer
+     * @param lx             unit vector toward the sun, X
+     * @param ly             unit vector toward the sun, Y
+     * @param lz             unit vector toward the sun, Z
+     * @param fog            fog colour (the sky)
+     * @param fogStart       distance where fog starts, metres
+     * @param fogEnd         distance of full fog, metres
+     * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0 (see {@link #drawNear})
+     * @throws IllegalArgumentException when the frame's size does not match the world or the
+     *                                  viewport height is out of range
      */
     public void draw(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
                      float fogEnd, int viewportHeight) {
@@ -297,7 +312,9 @@ public final class PlantRenderer implements AutoCloseable {
      *
      * @param frame    the frame to show (sizes match the world)
      * @param camera   the viewer
-     * @param lx       unit vector toward the sun, x (likewise ly, lz)
+     * @param lx       unit vector toward the sun, X
+     * @param ly       unit vector toward the sun, Y
+     * @param lz       unit vector toward the sun, Z
      * @param fog      fog colour (the sky)
      * @param fogStart distance where fog starts, metres
      * @param fogEnd   distance of full fog, metres

@@ -19,72 +19,111 @@ public final class RenderSettings {
     private boolean clear = true;
     private boolean terrain = true;
 
-    /** Sky (clear and fog) colour. */
+    /**
+     * The defaults: a light blue sky, a 1 m LOD transition band, no terrain tint, overlays hidden,
+     * fog from 25 m to 160 m, clearing and terrain on. Allocates.
+     */
+    public RenderSettings() {
+    }
+
+    /** {@return the sky (clear and fog) colour} */
     public Rgb sky() {
         return sky;
     }
 
-    /** Sets the sky colour. */
+    /**
+     * Sets the sky colour.
+     *
+     * @param sky the clear and fog colour, not null
+     * @return this settings object
+     */
     public RenderSettings sky(Rgb sky) {
         this.sky = Require.nonNull("sky", sky);
         return this;
     }
 
-    /** LOD transition band width, metres. */
+    /** {@return the LOD transition band width, metres} */
     public double lodTransition() {
         return lodTransition;
     }
 
-    /** Sets the LOD transition band width, metres, in [0, 10]. */
+    /**
+     * Sets the width of the band over which two levels of detail are dithered.
+     *
+     * @param metres in [0, 10]; 0 switches levels abruptly
+     * @return this settings object
+     */
     public RenderSettings lodTransition(double metres) {
         this.lodTransition = Require.range("lodTransition", metres, 0, 10);
         return this;
     }
 
-    /** Terrain tint. */
+    /** {@return the terrain tint} */
     public TerrainTint tint() {
         return tint;
     }
 
-    /** Sets the terrain tint. */
+    /**
+     * Sets the terrain tint.
+     *
+     * @param tint which resource map tints the terrain, not null
+     * @return this settings object
+     */
     public RenderSettings tint(TerrainTint tint) {
         this.tint = Require.nonNull("tint", tint);
         return this;
     }
 
-    /** Whether the force-field quadtree overlay (paper Figure 2) is drawn. */
+    /** {@return whether the force-field quadtree overlay (paper Figure 2) is drawn} */
     public boolean showField() {
         return showField;
     }
 
-    /** Shows or hides the quadtree overlay. */
+    /**
+     * Shows or hides the quadtree overlay.
+     *
+     * @param show true to draw it
+     * @return this settings object
+     */
     public RenderSettings showField(boolean show) {
         this.showField = show;
         return this;
     }
 
-    /** Whether wind vectors per effective node (paper Figure 3) are drawn. */
+    /** {@return whether wind vectors per effective node (paper Figure 3) are drawn} */
     public boolean showWind() {
         return showWind;
     }
 
-    /** Shows or hides the wind vectors. */
+    /**
+     * Shows or hides the wind vectors.
+     *
+     * @param show true to draw them
+     * @return this settings object
+     */
     public RenderSettings showWind(boolean show) {
         this.showWind = show;
         return this;
     }
 
-    /** Distance where fog begins, metres. */
+    /** {@return the distance where fog begins, metres} */
     public float fogStart() {
         return fogStart;
     }
 
-    /** Distance of full fog, metres. */
+    /** {@return the distance of full fog, metres} */
     public float fogEnd() {
         return fogEnd;
     }
 
-    /** Sets the fog range, metres, 0 &lt;= start &lt; end. */
+    /**
+     * Sets the fog range.
+     *
+     * @param start distance where fog begins, metres, &gt;= 0
+     * @param end   distance of full fog, metres, &gt; start
+     * @return this settings object
+     * @throws IllegalArgumentException when the range is empty or starts below 0
+     */
     public RenderSettings fog(float start, float end) {
         Require.nonNegative("fogStart", start);
         if (!(end > start)) {

@@ -52,6 +52,8 @@ public final class SceneRenderer implements AutoCloseable {
     /**
      * Uploads everything static of the world. Render thread; allocates.
      *
+     * @param gl       the render context, current on this thread
+     * @param world    the terrain and plants to draw
      * @param settings read every frame; the caller may change it between frames
      */
     public SceneRenderer(GlContext gl, World world, RenderSettings settings) {
@@ -75,27 +77,31 @@ public final class SceneRenderer implements AutoCloseable {
         state = g;
     }
 
-    /** The settings this renderer reads. */
+    /** {@return the settings this renderer reads} */
     public RenderSettings settings() {
         return settings;
     }
 
-    /** Sets the force field whose quadtree and wind the overlays show (null for none). */
+    /**
+     * Sets the force field whose quadtree and wind the overlays show.
+     *
+     * @param view the field's debug view, read on the render thread between field updates; null for none
+     */
     public void setField(FieldDebugView view) {
         this.field = view;
     }
 
-    /** The plant renderer (its batches hold the per-frame counters). */
+    /** {@return the plant renderer (its batches hold the per-frame counters)} */
     public PlantRenderer plants() {
         return plants;
     }
 
-    /** The terrain renderer. */
+    /** {@return the terrain renderer} */
     public TerrainRenderer terrain() {
         return terrain;
     }
 
-    /** The overlay renderer. */
+    /** {@return the overlay renderer} */
     public FieldOverlay overlay() {
         return overlay;
     }
@@ -194,12 +200,12 @@ public final class SceneRenderer implements AutoCloseable {
         }
     }
 
-    /** Triangles submitted by the last {@link #render}: plants plus terrain. */
+    /** {@return the number of triangles submitted by the last {@link #render}: plants plus terrain} */
     public long triangles() {
         return plants.batches().triangles() + terrain.triangles();
     }
 
-    /** Lines submitted by the last {@link #render} (plants). */
+    /** {@return the number of lines submitted by the last {@link #render} (plants)} */
     public long lines() {
         return plants.batches().lineCount();
     }

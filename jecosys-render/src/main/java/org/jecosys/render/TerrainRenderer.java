@@ -59,7 +59,13 @@ public final class TerrainRenderer implements AutoCloseable {
     private TerrainTint tint;
     private boolean closed;
 
-    /** Builds and uploads the mesh. Render thread; allocates. */
+    /**
+     * Builds and uploads the mesh. Render thread; allocates.
+     *
+     * @param gl      the render context, current on this thread
+     * @param terrain the heightfield and the resource maps the tints read
+     * @param tint    the initial tint
+     */
     public TerrainRenderer(GlContext gl, Terrain terrain, TerrainTint tint) {
         gl.checkThread();
         this.terrain = terrain;
@@ -160,12 +166,17 @@ public final class TerrainRenderer implements AutoCloseable {
         }
     }
 
-    /** The current tint. */
+    /** {@return the current tint} */
     public TerrainTint tint() {
         return tint;
     }
 
-    /** Re-colours the mesh for another tint. Render thread; allocates a temporary buffer; not per frame. */
+    /**
+     * Re-colours the mesh for another tint. Render thread; allocates a temporary native buffer; not
+     * per frame.
+     *
+     * @param tint the new tint; nothing happens when it is the current one
+     */
     public void setTint(TerrainTint tint) {
         if (tint == this.tint) {
             return;
@@ -180,12 +191,23 @@ public final class TerrainRenderer implements AutoCloseable {
         this.tint = tint;
     }
 
-    /** Triangles of the terrain mesh. */
+    /** {@return the number of triangles of the terrain mesh} */
     public int triangles() {
         return indexCount / 3;
     }
 
-    /** Draws the terrain. Render thread; no allocation. */
+    /**
+     * Draws the terrain into the bound framebuffer with the current depth state. Render thread; no
+     * allocation.
+     *
+     * @param camera   the viewer
+     * @param lx       unit direction toward the sun, X
+     * @param ly       unit direction toward the sun, Y
+     * @param lz       unit direction toward the sun, Z
+     * @param fog      fog colour
+     * @param fogStart distance where fog begins, metres
+     * @param fogEnd   distance of full fog, metres
+     */
     public void draw(Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart, float fogEnd) {
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));

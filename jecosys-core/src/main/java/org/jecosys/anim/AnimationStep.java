@@ -1,0 +1,140 @@
+package org.jecosys.anim;
+
+import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
+
+/**
+ * The per-step inputs of {@link AnimationState#animate(int, int, AnimationStep)}: the mode, the
+ * per-plant wind and visibility, the eye, the random source and, optionally, the output arrays. A
+ * reusable holder: create one at build time for each range of plants that may be animated while
+ * another is (for example one per chunk), then refill it before each call with its setters, which
+ * return it for chaining and allocate nothing. Arrays are referenced, not copied, and read during
+ * the call only.
+ *
+ * <p>The holder also keeps the bookkeeping of the call it is given to, which is how that call
+ * allocates nothing: one holder must not be given to two calls that run at the same time. Fill it
+ * on the thread that calls {@code animate}, or publish it to that thread (as the worker pool's start
+ * does). A new holder is in CONSTRAINT mode with the eye at the origin, no random source and no
+ * outputs; wind and visibility must be set before use.
+ */
+public final class AnimationStep {
+    AnimationMode mode = AnimationMode.CONSTRAINT;
+    float[] windX;
+    float[] windZ;
+    boolean[] visible;
+    double eyeX;
+    double eyeY;
+    double eyeZ;
+    Rng rng;
+    float[] poseOut;
+    float[] azimuthOut;
+    float[] poseBefore;
+    float[] azimuthBefore;
+    long[] outVersion;
+    /** The bookkeeping of the call this holder is given to (allocated here, once). */
+    final StepCursor cursor = new StepCursor();
+
+    /** An empty holder (see the class comment). Build time; allocates. */
+    public AnimationStep() {
+    }
+
+    /**
+     * A new holder with these inputs, the eye at the origin, no random source and no outputs: for
+     * tests and one-off calls. Allocates.
+     *
+     * @param mode    CONSTRAINT, RANDOM or STATIC
+     * @param windX   per plant wind X at its node, m/s
+     * @param windZ   per plant wind Z, m/s
+     * @param visible per plant, whether it is on a visible node
+     * @return the new holder
+     */
+    public static AnimationStep of(AnimationMode mode, float[] windX, float[] windZ, boolean[] visible) {
+        return new AnimationStep().set(mode, windX, windZ, visible);
+    }
+
+    /**
+     * Sets the mode and the per-plant inputs. No allocation.
+     *
+     * @param mode    CONSTRAINT, RANDOM or STATIC (see {@link AnimationState#animate(int, int, AnimationStep)})
+     * @param windX   per plant wind X at its node, m/s (indexed by plant; read in CONSTRAINT mode only)
+     * @param windZ   per plant wind Z, m/s
+     * @param visible per plant, whether it is on a visible node
+     * @return this holder
+     */
+    public AnimationStep set(AnimationMode mode, float[] windX, float[] windZ, boolean[] visible) {
+        this.mode = Require.nonNull("mode", mode);
+        this.windX = windX;
+        this.windZ = windZ;
+        this.visible = visible;
+        return this;
+    }
+
+    /**
+     * Sets the eye, world metres: every plant's level of detail is recomputed from its distance to
+     * it. No allocation.
+     *
+     * @param x eye X, metres
+     * @param y eye Y, metres
+     * @param z eye Z, metres
+     * @return this holder
+     */
+    public AnimationStep eye(double x, double y, double z) {
+        eyeX = x;
+        eyeY = y;
+        eyeZ = z;
+        return this;
+    }
+
+    /**
+     * Sets the random source of the range (RANDOM mode only; may be null otherwise). No allocation.
+     *
+     * @param rng the range's own generator (not shared with another range running at the same time)
+     * @return this holder
+     */
+    public AnimationStep rng(Rng rng) {
+        this.rng = rng;
+        return this;
+    }
+
+    /**
+     * Makes the call write the outputs of every component of its range (see
+     * {@link AnimationState#animate(int, int, AnimationStep)}): give all five arrays or none (the
+     * call throws IllegalArgumentException otherwise). No allocation.
+     *
+     * @param poseOut       per component, receives the pose coordinate (indexed by component)
+     * @param azimuthOut    per component, receives the azimuth
+     * @param poseBefore    per component, the pose coordinates before the call (read only)
+     * @param azimuthBefore per component, the azimuths before the call (read only)
+     * @param outVersion    per plant, the version of its outputs in poseOut/azimuthOut (updated)
+     * @return this holder
+     */
+    public AnimationStep outputs(float[] poseOut, float[] azimuthOut, float[] poseBefore, float[] azimuthBefore,
+                                 long[] outVersion) {
+        this.poseOut = poseOut;
+        this.azimuthOut = azimuthOut;
+        this.poseBefore = poseBefore;
+        this.azimuthBefore = azimuthBefore;
+        this.outVersion = outVersion;
+        return this;
+    }
+
+    /**
+     * Makes the call write no output: it only advances the state (the outputs are a function of it,
+     * see {@link AnimationState#copyOutputs}). No allocation.
+     *
+     * @return this holder
+     */
+    public AnimationStep noOutputs() {
+        return outputs(null, null, null, null, null);
+    }
+
+    /** Whether outputs are to be written; throws IllegalArgumentException if only some arrays are given. */
+    boolean hasOutputs() {
+        final boolean out = poseOut != null;
+        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)
+                || out != (outVersion != null)) {
+            throw new IllegalArgumentException("give all five output arrays or none");
+        }
+        return out;
+    }
+}

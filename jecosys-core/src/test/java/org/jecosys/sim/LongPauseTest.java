@@ -1,0 +1,81 @@
+package org.jecosys.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.jecosys.anim.AnimationView;
+import org.jecosys.math.ViewCamera;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A game that stops at a breakpoint, or is suspended for a day, calls {@code step} with a huge dt:
+ * the simulation runs maxSubSteps fixed steps, counts the rest as dropped and carries on normally.
+ */
+class LongPauseTest {
+    @Test
+    void aLongPauseRunsMaxSubStepsAndDropsTheRest() throws Exception {
+        try (Simulation sim = SimFixtures.c1(2)) {
+            ViewCamera cam = SimFixtures.camera();
+            int max = sim.def().animation().maxSubSteps();
+            double h = sim.fixedStep();
+            assertEquals(1, sim.step(h * 1.5, cam));
+            long stepsBefore = sim.steps();
+            double timeBefore = sim.time();
+            long droppedBefore = sim.droppedSteps();
+
+            assertEquals(max, sim.step(1e6, cam));
+
+            assertEquals(stepsBefore + max, sim.steps());
+            assertEquals(timeBefore + max * h, sim.time(), 1e-9);
+            long dropped = sim.droppedSteps() - droppedBefore;
+            long expected = (long) ((1e6 + 0.5 * h) / h) - max;
+            assertTrue(Math.abs(dropped - expected) <= 1, "dropped " + dropped + ", expected about " + expected);
+            assertFinite(sim.state());
+            assertEquals(sim.steps(), sim.latestFrame().number());
+
+            // the backlog is gone: the next frames step normally
+            assertEquals(0, sim.step(0, cam));
+            assertEquals(1, sim.step(h, cam));
+            assertEquals(stepsBefore + max + 1, sim.steps());
+            assertFinite(sim.state());
+        }
+    }
+
+    @Test
+    void anAbsurdPauseSaturatesTheCounterAndNothingElse() throws Exception {
+        try (Simulation sim = SimFixtures.c1(1)) {
+            ViewCamera cam = SimFixtures.camera();
+            int max = sim.def().animation().maxSubSteps();
+            assertEquals(max, sim.step(Double.MAX_VALUE, cam));
+            assertTrue(sim.droppedSteps() > 0);
+            assertEquals(max, sim.step(Double.MAX_VALUE, cam));
+            assertEquals(Long.MAX_VALUE, sim.droppedSteps(), "saturates, never wraps to negative");
+            assertEquals(1, sim.step(sim.fixedStep(), cam), "no backlog is kept");
+            assertEquals(2L * max + 1, sim.steps());
+            assertFinite(sim.state());
+        }
+    }
+
+    @Test
+    void negativeNaNAndInfiniteTimesAreRejected() throws Exception {
+        try (Simulation sim = SimFixtures.c1(1)) {
+            ViewCamera cam = SimFixtures.camera();
+            for (double dt : new double[] {-1e-9, -1, Double.NaN, Double.POSITIVE_INFINITY,
+                                           Double.NEGATIVE_INFINITY}) {
+                IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.step(dt, cam));
+                assertTrue(e.getMessage().contains("dt"), e.getMessage());
+            }
+            assertEquals(0, sim.steps());
+            assertEquals(0, sim.droppedSteps());
+        }
+    }
+
+    private static void assertFinite(AnimationView s) {
+        for (int c = 0; c < s.componentCount(); c++) {
+            assertTrue(Float.isFinite(s.deviationX(c)) && Float.isFinite(s.deviationZ(c))
+                    && Float.isFinite(s.velocityX(c)) && Float.isFinite(s.velocityZ(c))
+                    && Float.isFinite(s.poseCoordinate(c)) && Float.isFinite(s.azimuth(c)), "component " + c);
+        }
+    }
+}
