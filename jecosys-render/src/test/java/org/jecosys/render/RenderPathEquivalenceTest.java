@@ -1,0 +1,124 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInstance;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The plant renderer's output on C1 against images the previous renderer made of the same frames
+ * and views (test resources {@code reference/c1-*.png}, made by the renderer that resolved every
+ * component on the render thread): the mean colour difference stays within 2/255. Run with
+ * the environment variable {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class RenderPathEquivalenceTest {
+    private static final int W = 320;
+    private static final int H = 200;
+
+    private GlContext gl;
+    private GlFramebuffer fb;
+    private World world;
+    private SceneRenderer renderer;
+    private ByteBuffer px;
+
+    @BeforeAll
+    void setUp() {
+        gl = GlContext.headless(true);
+        fb = new GlFramebuffer(gl.tracker(), W, H);
+        world = RenderScenes.build(RenderScenes.load("c1.xml"));
+        renderer = new SceneRenderer(gl, world, new RenderSettings());
+        px = MemoryUtil.memAlloc(4 * W * H);
+    }
+
+    @AfterAll
+    void tearDown() {
+        MemoryUtil.memFree(px);
+        if (renderer != null) {
+            renderer.close();
+            fb.close();
+            gl.debug().check("the render path test");
+            gl.close();
+        }
+    }
+
+    /** The first plant of a species, by index. */
+    static int first(World world, int species) {
+        for (int p = 0; p < world.plantCount(); p++) {
+            if (world.plantSpecies(p) == species) {
+                return p;
+            }
+        }
+        throw new IllegalStateException("no plant of species " + species);
+    }
+
+    /**
+     * Views of C1, each filled with plants: 0.9 m from a yellow flower (attached heads and petals),
+     * 1.3 m from a purple flower, and looking down on a grass tuft from 16 m (the far levels, with
+     * the transition band).
+     */
+    static ViewCamera view(World world, int i) {
+        int p = first(world, i == 2 ? 0 : i + 1);
+        double d = i == 0 ? 0.35 : i == 1 ? 0.45 : 15;
+        double up = i == 2 ? 6 : 0.75;
+        double target = i == 2 ? 0 : 0.4;
+        ViewCamera c = new ViewCamera();
+        c.setPosition(world.plantX(p), world.plantY(p) + up, world.plantZ(p) + d);
+        c.setOrientation(0, -Math.atan2(up - target, d));
+        c.setLens(Math.toRadians(i == 2 ? 12 : 50), W / (double) H, 0.05, 200);
+        return c;
+    }
+
+    static Frame frame(World world, int i) {
+        return i == 0 ? TestFrames.rest(world) : TestFrames.wind(world, 0.35 * i);
+    }
+
+    private double meanDifference(int i) throws IOException {
+        fb.bind();
+        renderer.render(frame(world, i), view(world, i), W, H);
+        Pixels.read(W, H, px);
+        String out = System.getenv("JECOSYS_WRITE_RENDER_REFERENCE");
+        if (out != null) {
+            Pixels.writePng(Path.of(out, "c1-" + i + ".png"), px, W, H);
+            return 0;
+        }
+        BufferedImage ref;
+        try (InputStream in = RenderPathEquivalenceTest.class.getResourceAsStream("reference/c1-" + i + ".png")) {
+            assertTrue(in != null, "reference image c1-" + i + ".png");
+            ref = ImageIO.read(in);
+        }
+        assertEquals(W, ref.getWidth());
+        assertEquals(H, ref.getHeight());
+        long sum = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                int rgb = ref.getRGB(x, H - 1 - y);
+                sum += Math.abs(((rgb >> 16) & 255) - Pixels.red(px, W, x, y))
+                        + Math.abs(((rgb >> 8) & 255) - Pixels.green(px, W, x, y))
+                        + Math.abs((rgb & 255) - Pixels.blue(px, W, x, y));
+            }
+        }
+        return sum / (3.0 * W * H);
+    }
+
+    @Test
+    void theRendererDrawsWhatThePreviousRendererDrewOnC1() throws IOException {
+        for (int i = 0; i < 3; i++) {
+            double d = meanDifference(i);
+            assertTrue(d <= 2.0, "view " + i + ": mean colour difference " + d + " / 255");
+        }
+    }
+}
