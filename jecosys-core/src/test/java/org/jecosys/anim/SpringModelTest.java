@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.jecosys.field.DragLaw;
 import org.junit.jupiter.api.Test;
 
-/** The dynamic-constraint spring (paper eq. 5 as DESIGN.md resolves it): equilibrium, release, frame rate, stability. */
+/** The dynamic-constraint spring (paper eq. 5 as docs/ARCHITECTURE.md, "The model", resolves it): equilibrium, release, frame rate, stability. */
 class SpringModelTest {
     static final double[] STEPS = {1.0 / 30, 1.0 / 60, 1.0 / 144};
 

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Benchmark (not a timed test; runs only with {@code mvn -B verify -Pbench}): pre-computing every
- * library species (paper §4.1; DESIGN.md budget under 200 ms in all). Prints the median of several
+ * library species (paper §4.1; budget: under 200 ms in all). Prints the median of several
  * cold-model builds and writes {@code target/bench/plant.md}.
  */
 @Tag("benchmark")
