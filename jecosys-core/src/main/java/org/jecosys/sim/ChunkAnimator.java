@@ -165,5 +165,25 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         }
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
+        packVisible(f, visible[b], p0, p1, reset || stamp);
+    }
+
+    /**
+     * Packs the render states (the GPU's copy of pose and azimuth) of the chunk's visible plants, in
+     * runs of consecutive visible plants; of every plant when {@code all}. No allocation.
+     */
+    private void packVisible(Frame f, boolean[] vis, int p0, int p1, boolean all) {
+        int p = p0;
+        while (p < p1) {
+            if (!all && !vis[p]) {
+                p++;
+                continue;
+            }
+            int start = p;
+            while (p < p1 && (all || vis[p])) {
+                p++;
+            }
+            f.packRenderStates(state.firstComponent(start), state.firstComponent(p));
+        }
     }
 }

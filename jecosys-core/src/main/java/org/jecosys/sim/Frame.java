@@ -1,5 +1,7 @@
 package org.jecosys.sim;
 
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
 
 /**
@@ -15,7 +17,13 @@ import java.nio.FloatBuffer;
  * change until that reader asks for the next one. Accessors allocate nothing.
  */
 public final class Frame {
+    /** Bytes per component of {@link #renderStates()}: the pose coordinate and the azimuth, two floats. */
+    public static final int RENDER_STATE_BYTES = 8;
+
     final float[] poseCoord;
+    /** Per component, interleaved little-endian floats (pose coordinate, bend azimuth), for the GPU. */
+    private final FloatBuffer renderStates;
+    private final ByteBuffer renderStatesView;
     final float[] bendAzimuth;
     final boolean[] plantVisible;
     final byte[] plantLevel;
@@ -34,6 +42,10 @@ public final class Frame {
     public Frame(int plants, int components) {
         poseCoord = new float[components];
         bendAzimuth = new float[components];
+        ByteBuffer states = ByteBuffer.allocateDirect(Math.max(RENDER_STATE_BYTES, components * RENDER_STATE_BYTES))
+                .order(ByteOrder.LITTLE_ENDIAN);
+        renderStates = states.asFloatBuffer();
+        renderStatesView = states.asReadOnlyBuffer().order(ByteOrder.LITTLE_ENDIAN);
         plantVisible = new boolean[plants];
         plantLevel = new byte[plants];
     }
@@ -136,12 +148,42 @@ public final class Frame {
     public void set(int c, float poseCoord, float azimuth) {
         this.poseCoord[c] = poseCoord;
         this.bendAzimuth[c] = azimuth;
+        renderStates.put(2 * c, poseCoord).put(2 * c + 1, azimuth);
+    }
+
+    /**
+     * The compact render state of every component, {@link #RENDER_STATE_BYTES} bytes each, for upload
+     * to the GPU as it is: at byte {@code 8 c} the pose coordinate of component c and at {@code 8 c +
+     * 4} its bend azimuth (radians), little-endian floats. The simulation's workers write it as they
+     * animate: it is current for every plant the frame says is visible ({@link #plantVisible}); the
+     * entries of other plants may be older. A read-only view, direct (off the Java heap); its
+     * position and limit are not used. No allocation.
+     *
+     * @return the read-only view, {@code 8 * componentCount()} bytes
+     */
+    public ByteBuffer renderStates() {
+        return renderStatesView;
+    }
+
+    /**
+     * Writes the render states of components [c0, c1) from the pose and azimuth arrays. Worker
+     * threads, each on its own range; no allocation.
+     */
+    void packRenderStates(int c0, int c1) {
+        FloatBuffer d = renderStates;
+        float[] pose = poseCoord;
+        float[] az = bendAzimuth;
+        for (int c = c0; c < c1; c++) {
+            d.put(2 * c, pose[c]);
+            d.put(2 * c + 1, az[c]);
+        }
     }
 
     /** Copies everything from {@code src}, which must have the same sizes. No allocation. */
     void copyFrom(Frame src) {
         System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);
         System.arraycopy(src.bendAzimuth, 0, bendAzimuth, 0, bendAzimuth.length);
+        packRenderStates(0, poseCoord.length);
         System.arraycopy(src.plantVisible, 0, plantVisible, 0, plantVisible.length);
         System.arraycopy(src.plantLevel, 0, plantLevel, 0, plantLevel.length);
         number = src.number;

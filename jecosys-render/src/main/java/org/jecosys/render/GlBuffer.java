@@ -145,6 +145,25 @@ public final class GlBuffer extends GlResource {
         glBufferSubData(target, offset, data);
     }
 
+    /**
+     * Writes {@code bytes} bytes read from native memory at {@code address} to byte {@code offset}:
+     * for a range of a direct buffer without slicing it. Render thread; no heap allocation.
+     *
+     * @param offset  first byte written, &gt;= 0
+     * @param address native address of the first byte to read (e.g. {@code MemoryUtil.memAddress0(buf)
+     *                + start}); the caller keeps the memory alive and unchanged during the call
+     * @param bytes   bytes to write, &gt;= 0
+     * @throws IllegalArgumentException when the upload does not fit the capacity
+     */
+    public void upload(long offset, long address, long bytes) {
+        check(offset, bytes);
+        if (bytes == 0) {
+            return;
+        }
+        glBindBuffer(target, id());
+        org.lwjgl.opengl.GL15C.nglBufferSubData(target, offset, bytes, address);
+    }
+
     private void check(long offset, long bytes) {
         if (offset < 0 || offset + bytes > capacity) {
             throw new IllegalArgumentException("upload of " + bytes + " bytes at " + offset

@@ -44,21 +44,45 @@ public final class GlProgram extends GlResource {
      *                               resource is missing
      */
     public GlProgram(GlTracker tracker, String vertex, String fragment) {
+        this(tracker, vertex, fragment, new String[0]);
+    }
+
+    /**
+     * Compiles and links a program whose vertex shader's outputs are captured by transform feedback
+     * (OpenGL 3.0+), interleaved in the order given; with no fragment shader when {@code fragment}
+     * is null (the program is then used with rasterisation discarded). Render thread; allocates.
+     *
+     * @param tracker  counts the live GL objects
+     * @param vertex   vertex shader resource name
+     * @param fragment fragment shader resource name, or null for none
+     * @param captured names of the vertex outputs written to the transform feedback buffer, in order
+     *                 (none: an ordinary program)
+     * @throws IllegalStateException when a shader does not compile or the program does not link
+     */
+    public GlProgram(GlTracker tracker, String vertex, String fragment, String... captured) {
         super(tracker, glCreateProgram());
         this.name = vertex + "+" + fragment;
         int vs = 0;
         int fs = 0;
         try {
             vs = compile(GL_VERTEX_SHADER, vertex);
-            fs = compile(GL_FRAGMENT_SHADER, fragment);
             glAttachShader(id(), vs);
-            glAttachShader(id(), fs);
+            if (fragment != null) {
+                fs = compile(GL_FRAGMENT_SHADER, fragment);
+                glAttachShader(id(), fs);
+            }
+            if (captured.length > 0) {
+                org.lwjgl.opengl.GL30C.glTransformFeedbackVaryings(id(), captured,
+                        org.lwjgl.opengl.GL30C.GL_INTERLEAVED_ATTRIBS);
+            }
             org.lwjgl.opengl.GL20C.glLinkProgram(id());
             if (glGetProgrami(id(), GL_LINK_STATUS) == 0) {
                 throw new IllegalStateException("linking " + name + " failed: " + glGetProgramInfoLog(id()));
             }
             glDetachShader(id(), vs);
-            glDetachShader(id(), fs);
+            if (fs != 0) {
+                glDetachShader(id(), fs);
+            }
         } catch (RuntimeException e) {
             close();
             throw e;

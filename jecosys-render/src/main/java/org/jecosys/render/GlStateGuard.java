@@ -42,6 +42,15 @@ import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BINDING_BUFFER;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 import static org.lwjgl.opengl.GL11C.glBindTexture;
 
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_SIZE;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_START;
+import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+import static org.lwjgl.opengl.GL30C.glBindBufferRange;
+import static org.lwjgl.opengl.GL30C.glGetIntegeri;
+import static org.lwjgl.opengl.GL32C.glGetInteger64i;
+
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import org.lwjgl.system.MemoryUtil;
@@ -49,7 +58,8 @@ import org.lwjgl.system.MemoryUtil;
 /**
  * Saves, and puts back, every piece of GL state the scene renderer changes, so that it composes with a
  * host's own drawing: the program, vertex array and array-buffer bindings, the active texture unit and
- * the buffer textures of the units the renderer uses, the buffer bound to {@code GL_TEXTURE_BUFFER},
+ * the buffer textures of the units the renderer uses, the buffers bound to {@code GL_TEXTURE_BUFFER}
+ * and {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index 0), rasteriser discard,
  * the depth test, depth function and depth mask, face culling, blending (switch, factors, equations),
  * the scissor test and box, the clear colour and the viewport. The framebuffer binding is not changed
  * by the renderer and so not saved.
@@ -59,10 +69,14 @@ import org.lwjgl.system.MemoryUtil;
  * which drivers answer from client-side state.
  */
 final class GlStateGuard implements AutoCloseable {
-    /** The texture units whose buffer-texture binding the renderer changes (pose and component data). */
-    static final int UNITS = 2;
+    /**
+     * The texture units whose buffer-texture binding the renderer changes: 0 to 4 (poses, component
+     * records or instances, render states, static data, links).
+     */
+    static final int UNITS = 5;
 
-    private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST};
+    private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST,
+        org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD};
 
     private final IntBuffer ints = MemoryUtil.memAllocInt(32);
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);
@@ -72,6 +86,10 @@ final class GlStateGuard implements AutoCloseable {
     private int vertexArray;
     private int arrayBuffer;
     private int textureBuffer;
+    private int feedbackBuffer;
+    private int feedbackBuffer0;
+    private long feedbackStart0;
+    private long feedbackSize0;
     private int activeTexture;
     private int depthFunc;
     private boolean depthMask;
@@ -89,6 +107,10 @@ final class GlStateGuard implements AutoCloseable {
         vertexArray = glGetInteger(GL_VERTEX_ARRAY_BINDING);
         arrayBuffer = glGetInteger(GL_ARRAY_BUFFER_BINDING);
         textureBuffer = glGetInteger(GL_TEXTURE_BUFFER);
+        feedbackBuffer = glGetInteger(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING);
+        feedbackBuffer0 = glGetIntegeri(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0);
+        feedbackStart0 = glGetInteger64i(GL_TRANSFORM_FEEDBACK_BUFFER_START, 0);
+        feedbackSize0 = glGetInteger64i(GL_TRANSFORM_FEEDBACK_BUFFER_SIZE, 0);
         activeTexture = glGetInteger(GL_ACTIVE_TEXTURE);
         for (int u = 0; u < UNITS; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
@@ -139,6 +161,12 @@ final class GlStateGuard implements AutoCloseable {
         glBindVertexArray(vertexArray);
         glBindBuffer(GL_ARRAY_BUFFER, arrayBuffer);
         glBindBuffer(GL_TEXTURE_BUFFER, textureBuffer);
+        if (feedbackSize0 > 0) {
+            glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer0, feedbackStart0, feedbackSize0);
+        } else {
+            glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer0);
+        }
+        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer);
         for (int u = 0; u < UNITS; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_BUFFER, unitTextures[u]);

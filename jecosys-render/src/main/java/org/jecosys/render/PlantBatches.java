@@ -1,17 +1,13 @@
 package org.jecosys.render;
 
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.math.Camera;
-import org.jecosys.plant.InstanceLayout;
 import org.jecosys.plant.LodChooser;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesModel;
-import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.FrustumIntersection;
 import org.joml.Matrix4f;
@@ -34,8 +30,8 @@ import org.joml.Matrix4f;
  * primitive count.</li>
  * </ul>
  *
- * <p>Render thread (or any single thread); {@link #update}, {@link #writeInstances} and
- * {@link #writeComponents} allocate nothing. Lists are stored in preallocated arrays sized for
+ * <p>Render thread (or any single thread); {@link #update} and {@link #writeInstances} allocate
+ * nothing. Lists are stored in preallocated arrays sized for
  * every plant at every level.
  */
 public final class PlantBatches {
@@ -47,14 +43,15 @@ public final class PlantBatches {
     private final float[] radius;
     private final double[][] edges;
     private final LodChooser[] choosers;
+    private final int[] listSpecies;   // per list: its species
     private final int[] primitives;    // per list
     private final boolean[] lines;     // per list
     private final int[] listStart;     // per list: offset into plants[]
     private final int[] listCount;
     private final int[] plants;
+    private final int[] keeps;          // per list entry: the packed dither window of its level
     private final int[] instanceOffset; // per list: first instance record in the packed stream
-    private final int[] componentOffset; // per list: first (poseCoord, azimuth) pair
-    private final ByteBuffer records;
+    private final int[] componentOffset; // per list: first component record
     private final FrustumIntersection frustum = new FrustumIntersection();
     private final Matrix4f viewProj = new Matrix4f();
     private double bandWidth;
@@ -62,10 +59,11 @@ public final class PlantBatches {
     private long lineCount;
     private int instances;
     private int components;
+    private int firstListed;
+    private int endListed;
 
     /**
-     * Batches for a world. Build time; allocates the lists for every plant at every level and the
-     * plants' 16-byte {@link InstanceLayout} records.
+     * Batches for a world. Build time; allocates the lists for every plant at every level.
      *
      * @param world     the plants
      * @param bandWidth LOD transition band, metres, in [0, smallest gap between LOD edges]
@@ -95,6 +93,7 @@ public final class PlantBatches {
         }
         listBase[species] = lists;
         primitives = new int[lists];
+        listSpecies = new int[lists];
         lines = new boolean[lists];
         listStart = new int[lists + 1];
         listCount = new int[lists];
@@ -106,6 +105,7 @@ public final class PlantBatches {
             for (int l = 0; l < m.levels(); l++) {
                 int li = listBase[s] + l;
                 primitives[li] = m.primitiveCount(l);
+                listSpecies[li] = s;
                 lines[li] = m.mesh(l).primitive() == Primitive.LINES;
                 listStart[li] = at;
                 at += perSpecies[s];
@@ -113,12 +113,7 @@ public final class PlantBatches {
         }
         listStart[lists] = at;
         plants = new int[at];
-        records = ByteBuffer.allocateDirect(Math.max(1, world.plantCount()) * InstanceLayout.BYTES)
-                .order(ByteOrder.LITTLE_ENDIAN);
-        for (int p = 0; p < world.plantCount(); p++) {
-            InstanceLayout.put(records, p, world.plantX(p), world.plantY(p), world.plantZ(p),
-                    world.plantRestAzimuth(p), world.plantSpecies(p), world.plantVariant(p));
-        }
+        keeps = new int[at];
         this.bandWidth = bandWidth;
         for (int s = 0; s < species; s++) {
             List<LodDef> lods = models.get(s).def().lods();
@@ -207,6 +202,8 @@ public final class PlantBatches {
         double ex = camera.x();
         double ey = camera.y();
         double ez = camera.z();
+        firstListed = Integer.MAX_VALUE;
+        endListed = 0;
         for (int p = 0, n = world.plantCount(); p < n; p++) {
             int s = world.plantSpecies(p);
             float x = world.plantX(p);
@@ -221,10 +218,15 @@ public final class PlantBatches {
             double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             LodChooser ch = choosers[s];
             int l = ch.level(d);
-            add(listBase[s] + l, p);
+            add(listBase[s] + l, p, keep(s, l, levels[s], d));
             if (ch.fade(d) > 0) {
-                add(listBase[s] + l + 1, p);
+                add(listBase[s] + l + 1, p, keep(s, l + 1, levels[s], d));
             }
+            firstListed = Math.min(firstListed, world.firstComponent(p));
+            endListed = Math.max(endListed, world.firstComponent(p) + world.componentsOf(p));
+        }
+        if (endListed == 0) {
+            firstListed = 0;
         }
         triangles = 0;
         lineCount = 0;
@@ -246,49 +248,66 @@ public final class PlantBatches {
         }
     }
 
-    private void add(int list, int plant) {
-        plants[listStart[list] + listCount[list]++] = plant;
+    private void add(int list, int plant, int keep) {
+        int at = listStart[list] + listCount[list]++;
+        plants[at] = plant;
+        keeps[at] = keep;
     }
 
     /**
-     * Writes the {@link InstanceLayout} records of every listed plant, list after list, at the
-     * buffer's absolute positions from 0 ({@link #instanceOffset} records per list); sets the limit.
-     * No allocation.
-     *
-     * @param dest little-endian, at least {@code InstanceLayout.BYTES * maxInstances()} bytes; left at
-     *             position 0 with the limit after the last record
+     * The packed dither window of level {@code l} for a plant of species s at distance d, metres:
+     * level l keeps the bayer thresholds in {@code [handOver, received)} (both /255), where handOver
+     * is the share already given to level l + 1 and received the share taken over from level l - 1;
+     * packed as {@code 256 handOver + received}. Neighbouring levels' windows tile [0, 255]. No
+     * allocation.
      */
-    public void writeInstances(ByteBuffer dest) {
-        dest.clear();
-        int o = 0;
-        for (int li = 0, lists = listBase[species]; li < lists; li++) {
-            for (int i = 0, n = listCount[li], st = listStart[li]; i < n; i++) {
-                int src = plants[st + i] * InstanceLayout.BYTES;
-                dest.putLong(o, records.getLong(src));
-                dest.putLong(o + 8, records.getLong(src + 8));
-                o += InstanceLayout.BYTES;
-            }
+    int keep(int s, int l, int levels, double d) {
+        double band = choosers[s].bandWidth();
+        double handOver = l < levels - 1 ? fade(d, edges[s][l], band) : 0;
+        double received = l > 0 ? (d >= edges[s][l - 1] ? 1 : fade(d, edges[s][l - 1], band)) : 1;
+        return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
+    }
+
+    /** Fade across the band ending at {@code edge}: 0 before it, 1 at and beyond the edge. */
+    static double fade(double d, double edge, double band) {
+        if (band <= 0) {
+            return d >= edge ? 1 : 0;
         }
-        dest.position(0).limit(o);
+        return Math.max(0, Math.min(1, (d - (edge - band)) / band));
     }
 
     /**
-     * Writes the (pose coordinate, bend azimuth) pairs of every listed plant's components, list after
-     * list ({@link #componentOffset} pairs per list, {@code slots} per plant in slot order), with
-     * {@link Frame#putPoseAzimuth}; the buffer is rewound and flipped. No allocation.
+     * Writes the instance record of every listed plant for the last {@link #update}, list after list
+     * in {@link #instanceOffset} order: two ints, the plant's first component and its level's dither
+     * window ({@link #keep}). Writes from {@code dest}'s position 0 and flips it. No allocation.
      *
-     * @param frame the animation frame to draw
-     * @param dest  at least {@code 2 * maxComponents()} floats
+     * @param dest at least {@code 2 * maxInstances()} ints
+     * @return the number of records written
      */
-    public void writeComponents(Frame frame, FloatBuffer dest) {
+    public int writeInstances(IntBuffer dest) {
         dest.clear();
         for (int li = 0, lists = listBase[species]; li < lists; li++) {
             for (int i = 0, n = listCount[li], st = listStart[li]; i < n; i++) {
-                int p = plants[st + i];
-                frame.putPoseAzimuth(dest, world.firstComponent(p), world.componentsOf(p));
+                dest.put(world.firstComponent(plants[st + i])).put(keeps[st + i]);
             }
         }
         dest.flip();
+        return dest.limit() / 2;
+    }
+
+    /** {@return the packed dither window of the {@code i}-th plant of a list, as {@link #writeInstances} writes it} */
+    public int keepOf(int list, int i) {
+        return keeps[listStart[list] + i];
+    }
+
+    /** {@return the lowest component index of any plant listed by the last {@link #update} (0 when none)} */
+    public int firstListedComponent() {
+        return firstListed;
+    }
+
+    /** {@return one past the highest component index of any plant listed by the last {@link #update} (0 when none)} */
+    public int endListedComponent() {
+        return endListed;
     }
 
     /** {@return the number of species} */
@@ -349,7 +368,8 @@ public final class PlantBatches {
     }
 
     /**
-     * {@return the first component pair of the list in the {@link #writeComponents} stream}
+     * {@return the first component record of the list: the list's plants' components follow each
+     * other, plant after plant, slot after slot, list after list}
      *
      * @param list list index, in [0, listCount())
      */
@@ -449,9 +469,18 @@ public final class PlantBatches {
     }
 
     /**
-     * {@return the number of slots (components) per plant of species {@code s}}
+     * {@return the species a list draws}
      *
-     * @param s species index, in [0, speciesCount())
+     * @param list list index, in [0, listCount())
+     */
+    public int speciesOf(int list) {
+        return listSpecies[list];
+    }
+
+    /**
+     * {@return the components per plant (slots) of a species}
+     *
+     * @param s species index
      */
     public int slots(int s) {
         return slots[s];

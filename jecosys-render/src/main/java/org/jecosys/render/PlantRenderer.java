@@ -22,6 +22,16 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
+import static org.lwjgl.opengl.GL30C.GL_RG32F;
+import static org.lwjgl.opengl.GL30C.GL_RG32I;
+import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
+import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
+import static org.lwjgl.opengl.GL30C.glBeginTransformFeedback;
+import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+import static org.lwjgl.opengl.GL30C.glEndTransformFeedback;
+import static org.lwjgl.opengl.GL11C.GL_POINTS;
+import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
@@ -63,12 +73,15 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class PlantRenderer implements AutoCloseable {
     private static final int MAX_LEVELS = 8;
+    /** Floats per component record (2 RGBA32F texels), written by the resolve pass. */
+    static final int RECORD_FLOATS = 8;
+    /** Largest index a float holds exactly (texels and components passed as floats). */
+    static final int MAX_EXACT = 1 << 24;
     /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride. */
     private static final int VERTEX_FLOATS = 9;
 
     private final World world;
     private final PlantBatches batches;
-    private final ComponentStream stream;
     private final List<AutoCloseable> owned = new ArrayList<>();
     private final GlProgram program;
     private final GlProgram lineProgram;
@@ -76,9 +89,22 @@ public final class PlantRenderer implements AutoCloseable {
     private final GlBufferTexture poseTexture;
     private final GlBuffer componentBuffer;
     private final GlBufferTexture componentTexture;
+    private final GlProgram resolveProgram;
+    private final GlBuffer staticBuffer;
+    private final GlBufferTexture staticTexture;
+    private final GlBuffer linkBuffer;
+    private final GlBufferTexture linkTexture;
+    private final GlBuffer dynamicBuffer;
+    private final GlBufferTexture dynamicTexture;
+    private final GlBuffer instanceBuffer;
+    private final GlBufferTexture instanceTexture;
+    private final GlVertexArray pointsVao;
+    private final IntBuffer instanceStaging;
+    private final int uInstanceBase;
+    private final int uSlots;
+    private long uploadedBytes;
     private final GlVertexArray[] vaos;
     private final int[] indexCount;
-    private final FloatBuffer componentStaging;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
     private final Uniforms triangleUniforms;
@@ -119,23 +145,35 @@ public final class PlantRenderer implements AutoCloseable {
         }
         int[][][] poseTexel = new int[models.size()][][];
         long texels = poseTexelLayout(models, poseTexel);
-        this.stream = new ComponentStream(world, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
-        FloatBuffer staging = null;
+        int components = Math.max(1, world.componentCount());
+        IntBuffer instances = null;
         FloatBuffer mat = null;
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
-            checkTexels("pose tables", texels, Math.min(maxTexels, ComponentStream.MAX_EXACT));
-            checkTexels("components", 2 * maxComponents, maxTexels);
+            checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
+            checkTexels("component records", 2 * maxComponents, maxTexels);
+            checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
             lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
+            resolveProgram = own(new GlProgram(gl.tracker(), "plant_resolve.vert", null, "vRecord0", "vRecord1"));
             poseBuffer = own(uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
-            staging = MemoryUtil.memAllocFloat((int) (ComponentStream.FLOATS * maxComponents));
             mat = MemoryUtil.memAllocFloat(16);
-            componentBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER,
-                    4L * ComponentStream.FLOATS * maxComponents));
+            instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
+            componentBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER, 4L * RECORD_FLOATS * maxComponents));
             componentTexture = own(new GlBufferTexture(gl.tracker(), componentBuffer, GL_RGBA32F));
+            staticBuffer = own(uploadStatic(gl.tracker(), world, poseTexel));
+            staticTexture = own(new GlBufferTexture(gl.tracker(), staticBuffer, GL_RGBA32F));
+            linkBuffer = own(uploadLinks(gl.tracker(), world));
+            linkTexture = own(new GlBufferTexture(gl.tracker(), linkBuffer, GL_RGBA32I));
+            dynamicBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
+                    * components));
+            dynamicTexture = own(new GlBufferTexture(gl.tracker(), dynamicBuffer, GL_RG32F));
+            instanceBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER,
+                    8L * Math.max(1, batches.maxInstances())));
+            instanceTexture = own(new GlBufferTexture(gl.tracker(), instanceBuffer, GL_RG32I));
+            pointsVao = own(new GlVertexArray(gl.tracker()));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -148,13 +186,21 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         } catch (RuntimeException | Error e) {
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree(instances);
             MemoryUtil.memFree(mat);
             closeReverse(owned);
             throw e;
         }
-        componentStaging = staging;
+        instanceStaging = instances;
         matrix = mat;
+        resolveProgram.use();
+        glUniform1i(resolveProgram.uniform("uPoses"), 0);
+        glUniform1i(resolveProgram.uniform("uInstances"), 1);
+        glUniform1i(resolveProgram.uniform("uDynamic"), 2);
+        glUniform1i(resolveProgram.uniform("uStatic"), 3);
+        glUniform1i(resolveProgram.uniform("uLinks"), 4);
+        uInstanceBase = resolveProgram.uniform("uInstanceBase");
+        uSlots = resolveProgram.uniform("uSlots");
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
         uPixelScale = lineProgram.uniform("uPixelScale");
@@ -335,9 +381,8 @@ public final class PlantRenderer implements AutoCloseable {
         if (!pending) {
             return;
         }
-        stream.write(batches, frame, camera.x(), camera.y(), camera.z(), componentStaging);
-        componentBuffer.orphan();
-        componentBuffer.upload(0, componentStaging);
+        upload(frame);
+        resolve();
         camera.viewProjection(viewProj);
         viewProj.get(matrix);
         float ex = (float) camera.x();
@@ -394,6 +439,142 @@ public final class PlantRenderer implements AutoCloseable {
         glBindVertexArray(0);
     }
 
+    /**
+     * Uploads this frame's instance records (8 bytes per drawn plant and level) and the render states
+     * of the listed plants' components (8 bytes per component, {@link Frame#renderStates()}, as the
+     * workers wrote them): the contiguous component range that holds every listed plant, which the
+     * plants' spatial order keeps small. Render thread; no allocation.
+     */
+    private void upload(Frame frame) {
+        int n = batches.writeInstances(instanceStaging);
+        instanceBuffer.orphan();
+        instanceBuffer.upload(0, instanceStaging);
+        int c0 = batches.firstListedComponent();
+        int c1 = batches.endListedComponent();
+        long bytes = (long) Frame.RENDER_STATE_BYTES * (c1 - c0);
+        dynamicBuffer.upload((long) Frame.RENDER_STATE_BYTES * c0,
+                MemoryUtil.memAddress0(frame.renderStates()) + (long) Frame.RENDER_STATE_BYTES * c0, bytes);
+        uploadedBytes = 8L * n + bytes;
+    }
+
+    /**
+     * The per-component pass on the GPU: one point per drawn component through
+     * {@code plant_resolve.vert}, rasterisation discarded, its records captured by transform feedback
+     * into the component buffer in list order. Render thread; no allocation.
+     */
+    private void resolve() {
+        glEnable(GL_RASTERIZER_DISCARD);
+        resolveProgram.use();
+        poseTexture.bind(0);
+        instanceTexture.bind(1);
+        dynamicTexture.bind(2);
+        staticTexture.bind(3);
+        linkTexture.bind(4);
+        pointsVao.bind();
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
+        glBeginTransformFeedback(GL_POINTS);
+        for (int li = 0, lists = batches.listCount(); li < lists; li++) {
+            int n = batches.count(li);
+            if (n == 0) {
+                continue;
+            }
+            int slots = batches.slots(batches.speciesOf(li));
+            glUniform1i(uInstanceBase, batches.instanceOffset(li));
+            glUniform1i(uSlots, slots);
+            glDrawArrays(GL_POINTS, 0, n * slots);
+        }
+        glEndTransformFeedback();
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+        glDisable(GL_RASTERIZER_DISCARD);
+    }
+
+    /**
+     * Reads back the component records of the last {@link #drawNear} (tests). Render thread; waits
+     * for the GPU.
+     */
+    void readRecords(FloatBuffer dest) {
+        if (!dest.isDirect()) {
+            throw new IllegalArgumentException("dest must be a direct buffer");
+        }
+        dest.clear();
+        dest.limit(RECORD_FLOATS * batches.components());
+        componentBuffer.bind();
+        org.lwjgl.opengl.GL15C.glGetBufferSubData(GL_TEXTURE_BUFFER, 0, dest);
+    }
+
+    /** {@return bytes uploaded by the last {@link #drawNear}: instance records and component render states} */
+    public long uploadedBytes() {
+        return uploadedBytes;
+    }
+
+    /**
+     * Static per-component data for the resolve pass, one RGBA32F texel per component: the world
+     * position of a root component's base (its plant's base plus the slot's ground offset rotated by
+     * the plant's rest azimuth; 0 for attached components) and the texel of pose 0, point 0 of its
+     * pose table.
+     */
+    private static GlBuffer uploadStatic(GlTracker t, World world, int[][][] poseTexel) {
+        int n = Math.max(1, world.componentCount());
+        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int s = world.plantSpecies(p);
+                double rest = world.plantRestAzimuth(p);
+                double rc = Math.cos(rest);
+                double rs = Math.sin(rest);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    int o = 4 * (world.firstComponent(p) + slot);
+                    if (m.slotParent(slot) < 0) {
+                        double ox = m.slotBaseX(slot);
+                        double oz = m.slotBaseZ(slot);
+                        b.put(o, world.plantX(p) + (float) (ox * rc - oz * rs));
+                        b.put(o + 1, world.plantY(p));
+                        b.put(o + 2, world.plantZ(p) + (float) (ox * rs + oz * rc));
+                    } else {
+                        b.put(o, 0f).put(o + 1, 0f).put(o + 2, 0f);
+                    }
+                    b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
+    /**
+     * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
+     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
+     * tip point in a pose (where its children attach), and its pose count.
+     */
+    private static GlBuffer uploadLinks(GlTracker t, World world) {
+        int n = Math.max(1, world.componentCount());
+        IntBuffer b = MemoryUtil.memAllocInt(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int first = world.firstComponent(p);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    PoseTable pt = m.slotPoseTable(slot, v);
+                    int o = 4 * (first + slot);
+                    int parent = m.slotParent(slot);
+                    b.put(o, parent < 0 ? -1 : first + parent);
+                    b.put(o + 1, 3 * pt.points());
+                    b.put(o + 2, 3 * (pt.points() - 1));
+                    b.put(o + 3, pt.poses());
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
     /** Deletes every GL object and frees the staging memory. Render thread; idempotent. */
     @Override
     public void close() {
@@ -402,7 +583,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         closed = true;
         closeReverse(owned);
-        MemoryUtil.memFree(componentStaging);
+        MemoryUtil.memFree(instanceStaging);
         MemoryUtil.memFree(matrix);
     }
 

@@ -151,7 +151,12 @@ class HostCompositionTest {
             s.put("line width", Float.toString(f.get(0)));
         }
         int active = glGetInteger(GL_ACTIVE_TEXTURE);
-        for (int u = 0; u < 4; u++) {
+        s.put("transform feedback buffer", Integer.toString(glGetInteger(
+                org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING)));
+        s.put("transform feedback buffer 0", Integer.toString(org.lwjgl.opengl.GL30C.glGetIntegeri(
+                org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0)));
+        s.put("rasterizer discard", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD)));
+        for (int u = 0; u < 8; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             s.put("unit " + u + " buffer texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_BUFFER)));
             s.put("unit " + u + " 2D texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_2D)));
@@ -168,7 +173,8 @@ class HostCompositionTest {
         final int vbo = glGenBuffers();
         final int ebo = glGenBuffers();
         final int tbo = glGenBuffers();
-        final int[] textures = {glGenTextures(), glGenTextures()};
+        final int[] textures = {glGenTextures(), glGenTextures(), glGenTextures(), glGenTextures(), glGenTextures()};
+        final int feedback = glGenBuffers();
 
         HostState() {
             glBindVertexArray(vao);
@@ -176,7 +182,12 @@ class HostCompositionTest {
             glBufferData(GL_ELEMENT_ARRAY_BUFFER, 64, GL_STATIC_DRAW);
             glBindBuffer(GL_TEXTURE_BUFFER, tbo);
             glBufferData(GL_TEXTURE_BUFFER, 64, GL_STATIC_DRAW);
-            for (int u = 0; u < 2; u++) {
+            glBindBuffer(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, feedback);
+            glBufferData(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, 256, GL_STATIC_DRAW);
+            org.lwjgl.opengl.GL30C.glBindBufferRange(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, 0,
+                    feedback, 64, 128);
+            glBindBuffer(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, ebo);
+            for (int u = 0; u < textures.length; u++) {
                 glActiveTexture(GL_TEXTURE0 + u);
                 glBindTexture(GL_TEXTURE_BUFFER, textures[u]);
                 glTexBuffer(GL_TEXTURE_BUFFER, GL_R32F, tbo);
@@ -206,7 +217,7 @@ class HostCompositionTest {
             glBindVertexArray(0);
             program.close();
             glDeleteVertexArrays(vao);
-            glDeleteBuffers(new int[] {vbo, ebo, tbo});
+            glDeleteBuffers(new int[] {vbo, ebo, tbo, feedback});
             glDeleteTextures(textures);
             glDisable(GL_BLEND);
             glDisable(GL_CULL_FACE);

@@ -4,13 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
 import org.jecosys.math.ViewCamera;
-import org.jecosys.plant.InstanceLayout;
 import org.jecosys.plant.LodChooser;
-import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -134,33 +130,24 @@ class PlantBatchesTest {
         assertEquals(lines, b.lineCount());
         assertEquals(inst, b.instances());
 
-        ByteBuffer records = ByteBuffer.allocateDirect(b.maxInstances() * InstanceLayout.BYTES)
-                .order(ByteOrder.LITTLE_ENDIAN);
-        b.writeInstances(records);
-        b.writeInstances(records); // twice: a second frame must fit too
-        assertEquals(inst * InstanceLayout.BYTES, records.limit());
-        Frame frame = TestFrames.wind(world, 0.7);
-        FloatBuffer pairs = FloatBuffer.allocate((int) (2 * b.maxComponents()));
-        b.writeComponents(frame, pairs);
-        assertEquals(2 * b.components(), pairs.limit());
+        IntBuffer records = IntBuffer.allocate(2 * b.maxInstances());
+        assertEquals(inst, b.writeInstances(records));
+        assertEquals(inst, b.writeInstances(records)); // twice: a second frame must fit too
+        assertEquals(2 * inst, records.limit());
+        int lo = Integer.MAX_VALUE;
+        int hi = 0;
         for (int li = 0; li < b.listCount(); li++) {
             for (int i = 0; i < b.count(li); i++) {
                 int p = b.plant(li, i);
-                int o = (b.instanceOffset(li) + i) * InstanceLayout.BYTES;
-                assertEquals(world.plantX(p), records.getFloat(o + InstanceLayout.X));
-                assertEquals(world.plantZ(p), records.getFloat(o + InstanceLayout.Z));
-                int kind = records.getShort(o + InstanceLayout.KIND) & 0xFFFF;
-                assertEquals(world.plantSpecies(p), InstanceLayout.species(kind));
-                assertEquals(world.plantVariant(p), InstanceLayout.variant(kind));
-                int s = world.plantSpecies(p);
-                for (int slot = 0; slot < b.slots(s); slot++) {
-                    int pair = b.componentOffset(li) + i * b.slots(s) + slot;
-                    int c = world.firstComponent(p) + slot;
-                    assertEquals(frame.poseCoord(c), pairs.get(2 * pair));
-                    assertEquals(frame.bendAzimuth(c), pairs.get(2 * pair + 1));
-                }
+                int o = 2 * (b.instanceOffset(li) + i);
+                assertEquals(world.firstComponent(p), records.get(o), "first component of the listed plant");
+                assertEquals(b.keepOf(li, i), records.get(o + 1));
+                lo = Math.min(lo, world.firstComponent(p));
+                hi = Math.max(hi, world.firstComponent(p) + world.componentsOf(p));
             }
         }
+        assertEquals(lo, b.firstListedComponent());
+        assertEquals(hi, b.endListedComponent());
     }
 
     @Test

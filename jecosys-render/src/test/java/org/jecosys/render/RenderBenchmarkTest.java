@@ -154,7 +154,7 @@ class RenderBenchmarkTest {
                     }
                     long tri = r.triangles();
                     long lines = r.lines();
-                    try (Bare bare = new Bare(gl, world, r.plants().batches(), sim.latestFrame(), cam)) {
+                    try (Bare bare = new Bare(gl, world, r.plants(), cam)) {
                         assertEquals(tri, bare.triangles);
                         assertEquals(lines, bare.lines);
                         Runnable[] setup = {
@@ -347,18 +347,18 @@ class RenderBenchmarkTest {
         long lines;
         private boolean freed;
 
-        Bare(GlContext gl, World world, PlantBatches b, Frame frame, ViewCamera cam) {
+        /** From the records the renderer resolved for its last frame (read back from the GPU). */
+        Bare(GlContext gl, World world, PlantRenderer renderer, ViewCamera cam) {
             cam.viewProjection(new Matrix4f()).get(viewProj);
             GlTracker t = gl.tracker();
             prog = own(new GlProgram(t, "bare.vert", "bare.frag"));
             List<SpeciesModel> models = world.plants().species();
-            int[][][] zero = new int[models.size()][][];
-            for (int s = 0; s < models.size(); s++) {
-                zero[s] = new int[models.get(s).componentCount()][models.get(s).variants()];
-            }
-            FloatBuffer rec = MemoryUtil.memAllocFloat((int) (ComponentStream.FLOATS * Math.max(1, b.maxComponents())));
+            int[][][] firstTexel = new int[models.size()][][];
+            PlantRenderer.poseTexelLayout(models, firstTexel);
+            PlantBatches b = renderer.batches();
+            FloatBuffer rec = MemoryUtil.memAllocFloat(Math.max(1, PlantRenderer.RECORD_FLOATS * b.components()));
             try {
-                new ComponentStream(world, zero).write(b, frame, cam.x(), cam.y(), cam.z(), rec);
+                renderer.readRecords(rec);
                 terrain(t, world);
                 Vector3f p = new Vector3f();
                 Vector3f q = new Vector3f();
@@ -381,10 +381,11 @@ class RenderBenchmarkTest {
                         try {
                             for (int k = 0; k < mesh.vertexCount(); k++) {
                                 int slot = mesh.vertexSlot(k);
-                                int r = ComponentStream.FLOATS * (b.componentOffset(li) + slot);
+                                int r = PlantRenderer.RECORD_FLOATS * (b.componentOffset(li) + slot);
                                 PoseTable pt = m.slotPoseTable(slot, v0);
                                 int stride = 3 * pt.points();
-                                int pose = Math.round(rec.get(r + 4)) / stride;
+                                int first = firstTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v0)];
+                                int pose = (Math.round(rec.get(r + 4)) - first) / stride;
                                 float w = rec.get(r + 5);
                                 int pose1 = Math.min(pose + 1, pt.poses() - 1);
                                 int point = mesh.vertexPoint(k);

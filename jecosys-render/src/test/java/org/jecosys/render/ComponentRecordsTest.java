@@ -13,18 +13,23 @@ import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.Vector3f;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 
 /**
- * The per-frame component pass, without a GL context: every record is checked against an
- * independent derivation from the world, the pose tables and the frame (C1, whose flowers carry a
- * head and petals on the tip of their stalk).
+ * The per-frame component pass, which runs on the GPU ({@code plant_resolve.vert}, captured by
+ * transform feedback): every record the renderer reads back is checked against an independent
+ * derivation from the world, the pose tables and the frame (C1, whose flowers carry a head and
+ * petals on the tip of their stalk); drawing allocates nothing on the render thread.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
-class ComponentStreamTest {
-    private static final int F = ComponentStream.FLOATS;
+class ComponentRecordsTest {
+    private static final int F = PlantRenderer.RECORD_FLOATS;
+    private GlContext gl;
+    private GlFramebuffer fb;
+    private PlantRenderer renderer;
     private World world;
     private List<SpeciesModel> models;
     private int[][][] poseTexel;
@@ -50,10 +55,31 @@ class ComponentStreamTest {
         cam.setPosition(0, 6, 16);
         cam.setOrientation(0, -Math.atan2(6, 16));
         cam.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
-        batches = new PlantBatches(world, 1.0);
-        batches.update(cam);
-        rec = FloatBuffer.allocate((int) (F * batches.maxComponents()));
-        new ComponentStream(world, poseTexel).write(batches, frame, cam.x(), cam.y(), cam.z(), rec);
+        gl = GlContext.headless(true);
+        fb = new GlFramebuffer(gl.tracker(), 320, 180);
+        fb.bind();
+        renderer = new PlantRenderer(gl, world, 1.0);
+        draw();
+        batches = renderer.batches();
+        rec = org.lwjgl.system.MemoryUtil.memAllocFloat(F * batches.components());
+        renderer.readRecords(rec);
+    }
+
+    private static final org.jecosys.math.Rgb SKY = new org.jecosys.math.Rgb(0.6f, 0.7f, 0.9f);
+
+    private void draw() {
+        renderer.draw(frame, cam, 0.3f, 0.9f, 0.3f, SKY, 25f, 160f, 180);
+    }
+
+    @AfterAll
+    void close() {
+        org.lwjgl.system.MemoryUtil.memFree(rec);
+        if (renderer != null) {
+            renderer.close();
+            fb.close();
+            gl.debug().check("the component records test");
+            gl.close();
+        }
     }
 
     /** Record index of slot {@code slot} of the {@code i}-th plant of list {@code li}. */
@@ -74,6 +100,9 @@ class ComponentStreamTest {
         assertTrue(batches.instances() > 20, "the view holds a good part of C1");
         assertEquals(batches.components(), components);
         assertEquals(F * components, rec.limit());
+        assertEquals(8L * batches.instances() + Frame.RENDER_STATE_BYTES
+                * (batches.endListedComponent() - batches.firstListedComponent()), renderer.uploadedBytes(),
+                "8 bytes per drawn plant and level, 8 per component of the listed range");
     }
 
     @Test
@@ -169,7 +198,7 @@ class ComponentStreamTest {
             for (double d = 0; d <= far; d += 0.01) {
                 int prevLo = -1;
                 for (int l = 0; l < levels; l++) {
-                    int keep = (int) ComponentStream.keep(batches, s, l, levels, d);
+                    int keep = batches.keep(s, l, levels, d);
                     int lo = keep / 256;
                     int hi = keep % 256;
                     String at = "species " + s + " level " + l + " at " + d + " m";
@@ -181,26 +210,30 @@ class ComponentStreamTest {
             }
         }
         // and the records carry the window of the plant's own distance
-        forEachRecord((li, i, slot, r) -> assertTrue(rec.get(r + 7) >= 0 && rec.get(r + 7) <= 256 * 255 + 255));
+        forEachRecord((li, i, slot, r) -> assertEquals(batches.keepOf(li, i), rec.get(r + 7)));
     }
 
     @Test
-    void writingAllocatesNothing() {
-        ComponentStream stream = new ComponentStream(world, poseTexel);
-        FloatBuffer dest = FloatBuffer.allocate(rec.capacity());
+    void drawingAllocatesNothingOnTheRenderThread() {
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         long self = Thread.currentThread().getId();
         int zeroWindows = 0;
-        for (int window = 0; window < 50 && zeroWindows < 2; window++) {
+        for (int window = 0; window < 40 && zeroWindows < 2; window++) {
             long before = mx.getThreadAllocatedBytes(self);
-            for (int k = 0; k < 200; k++) {
-                stream.write(batches, frame, cam.x(), cam.y(), cam.z(), dest);
+            for (int k = 0; k < 20; k++) {
+                draw();
             }
             long bytes = mx.getThreadAllocatedBytes(self) - before;
             zeroWindows = bytes == 0 ? zeroWindows + 1 : 0;
         }
-        assertEquals(2, zeroWindows, "two consecutive windows of 200 writes with no allocation after warm-up");
-        assertEquals(rec, dest, "the same records as the first stream's");
+        assertEquals(2, zeroWindows, "two consecutive windows of 20 frames with no allocation after warm-up");
+        FloatBuffer again = org.lwjgl.system.MemoryUtil.memAllocFloat(rec.capacity());
+        try {
+            renderer.readRecords(again);
+            assertEquals(rec, again, "the same records every frame");
+        } finally {
+            org.lwjgl.system.MemoryUtil.memFree(again);
+        }
     }
 
     private interface RecordCheck {
