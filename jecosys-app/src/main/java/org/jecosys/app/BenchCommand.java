@@ -26,11 +26,27 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "bench-results",
             description = "Output folder (default: ${DEFAULT-VALUE}).")
     Path out;
+    @Option(names = "--only", paramLabel = "WORD", description = "Run only the sections whose name contains WORD "
+            + "(case-insensitive), e.g. --only \"render scale\".")
+    String only;
 
     @Override
     public Integer call() throws IOException {
+        OutputPaths.folder(spec.commandLine(), "--out", out);
         Path scenes = SceneArgs.resolve("scenes");
-        Report report = BenchSuite.standard(scenes).run(quick ? Mode.QUICK : Mode.FULL, out, System.err);
+        BenchSuite suite = BenchSuite.standard(scenes);
+        if (only != null) {
+            java.util.List<String> names = new java.util.ArrayList<>();
+            suite.sections().forEach(sec -> names.add(sec.name()));
+            suite.sections().removeIf(sec -> !sec.name().toLowerCase(java.util.Locale.ROOT)
+                    .contains(only.toLowerCase(java.util.Locale.ROOT)));
+            if (suite.sections().isEmpty()) {
+                spec.commandLine().getErr().println("bench: --only '" + only + "' matches no section; the sections "
+                        + "are: " + String.join("; ", names));
+                return ExitCodes.BAD_INPUT;
+            }
+        }
+        Report report = suite.run(quick ? Mode.QUICK : Mode.FULL, out, System.err);
         var o = spec.commandLine().getOut();
         o.println("wrote " + out.resolve("tables.md") + ", " + out.resolve("results.json") + " and "
                 + out.resolve("charts"));

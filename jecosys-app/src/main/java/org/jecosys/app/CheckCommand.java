@@ -33,7 +33,7 @@ final class CheckCommand implements Callable<Integer> {
                 bad++;
                 continue;
             }
-            int plants = scene.placements().size();
+            long plants = scene.placements().size(); // 256 distributions of 10,000,000 overflow an int
             for (var d : scene.distributions()) {
                 plants += Math.max(d.count(), 0);
             }

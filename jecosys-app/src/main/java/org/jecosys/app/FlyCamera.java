@@ -6,21 +6,35 @@ import org.jecosys.sim.CameraWalk;
 import org.jecosys.terrain.Heightfield;
 
 /**
- * The viewer's first-person camera: WASD moves in the view's heading, Q/E down/up, Shift four times
- * faster, mouse look; and playback of the scene's camera path (paper §5.2: the tests walked a path)
+ * The viewer's first-person camera: WASD moves in the view's heading, Q/E down/up, at a walking
+ * speed scaled to the terrain ({@link #walkSpeed}: 3.2 m/s on the 80 m meadow, 0.2 m/s on the 4 m
+ * rose), Shift four times faster, Ctrl four times slower, the mouse wheel scales it; mouse look; the
+ * camera stays over the terrain and above the ground ({@link #clamp}); {@link #frameScene} frames the
+ * whole terrain; and playback of the scene's camera path (paper §5.2: the tests walked a path)
  * through {@link CameraWalk}, the same walk {@code jecosys simulate} and the benchmarks use, so the
  * viewer and those runs see the path identically (time since P was pressed, the walk's pose copied
  * into this camera; at the end of a path that does not loop the camera stays there until P is
  * pressed again). Render thread; no allocation.
  */
 final class FlyCamera {
-    static final double SPEED = 3.0;
     static final double LOOK = 0.0025;
+    /** Speed factor while Shift is held. */
+    static final double FAST = 4;
+    /** Speed factor while Ctrl is held. */
+    static final double SLOW = 0.25;
+    /** Largest and smallest walking speed the terrain's size gives, m/s. */
+    static final double MAX_WALK = 4;
+    static final double MIN_WALK = 0.2;
+    /** Angle below the horizon at which the top of the view meets the far edge in {@link #frameScene}, radians. */
+    static final double FRAME_TOP = Math.toRadians(8);
 
     private final ViewCamera camera;
     private final Heightfield ground;
     private final CameraWalk walk;
     private final boolean hasPath;
+    private final double clearance;
+    private final double margin;
+    private double speed;
     private boolean playing;
     private double pathTime;
 
@@ -29,6 +43,72 @@ final class FlyCamera {
         this.ground = ground;
         this.walk = new CameraWalk(def, ground, camera.aspect());
         this.hasPath = def.path().size() >= 2;
+        this.speed = walkSpeed(ground);
+        double small = Math.min(ground.sizeX(), ground.sizeZ());
+        this.clearance = Math.max(0.05, Math.min(0.3, 0.02 * small));
+        this.margin = 0.01 * small;
+    }
+
+    /**
+     * The walking speed for a terrain: 4% of its larger side per second, in [{@link #MIN_WALK},
+     * {@link #MAX_WALK}] m/s, so crossing a terrain takes about 25 s whatever its size.
+     *
+     * @param ground the terrain
+     * @return m/s
+     */
+    static double walkSpeed(Heightfield ground) {
+        return Math.max(MIN_WALK, Math.min(MAX_WALK, 0.04 * Math.max(ground.sizeX(), ground.sizeZ())));
+    }
+
+    /** {@return the walking speed without Shift or Ctrl, m/s} */
+    double speed() {
+        return speed;
+    }
+
+    /** Scales the walking speed by 1.25 per mouse-wheel step (up: faster), within [1/16, 16] times the terrain's. */
+    void scaleSpeed(double steps) {
+        double base = walkSpeed(ground);
+        speed = Math.max(base / 16, Math.min(base * 16, speed * Math.pow(1.25, steps)));
+    }
+
+    /** {@return the lowest the eye may be above the ground, metres} */
+    double clearance() {
+        return clearance;
+    }
+
+    /**
+     * Keeps the eye over the terrain (X and Z within its bounds, less a margin of 1% of its smaller
+     * side), at least {@link #clearance()} above the ground and at most the terrain's larger side
+     * above its highest point. No allocation.
+     */
+    void clamp() {
+        double x = Math.max(ground.minX() + margin, Math.min(ground.maxX() - margin, camera.x()));
+        double z = Math.max(ground.minZ() + margin, Math.min(ground.maxZ() - margin, camera.z()));
+        double top = ground.maxHeight() + Math.max(ground.sizeX(), ground.sizeZ());
+        double y = Math.max(ground.height(x, z) + clearance, Math.min(top, camera.y()));
+        if (x != camera.x() || y != camera.y() || z != camera.z()) {
+            camera.setPosition(x, y, z);
+        }
+    }
+
+    /**
+     * Frames the whole terrain (the "frame the scene" key): stops the path, puts the eye over the
+     * middle of the terrain's south edge, looking north (-Z) and down so that the far edge is just
+     * below the top of the view, high enough to see over every hill. No allocation.
+     */
+    void frameScene() {
+        playing = false;
+        double half = camera.fovY() / 2;
+        double pitch = -(half + FRAME_TOP);
+        double z = ground.maxZ() - margin;
+        double depth = ground.sizeZ() - 2 * margin;
+        double x = 0.5 * (ground.minX() + ground.maxX());
+        // the far corners, even on the highest ground, 1.5 times FRAME_TOP below the horizon: inside the view
+        double far = Math.hypot(depth, 0.5 * ground.sizeX());
+        double y = ground.maxHeight() + far * Math.tan(1.5 * FRAME_TOP);
+        camera.setOrientation(0, pitch);
+        camera.setPosition(x, y, z);
+        clamp();
     }
 
     ViewCamera camera() {
@@ -55,25 +135,36 @@ final class FlyCamera {
     }
 
     /**
-     * Moves by the keys held: forward/right/up in [-1, 1] each; while the path plays, advances it
-     * instead.
+     * Moves by the keys held: forward/right/up in [-1, 1] each, Shift ({@code fast}) four times
+     * faster; while the path plays, advances it instead.
      *
      * @param dt seconds
      */
     void move(double dt, double forward, double right, double up, boolean fast) {
+        move(dt, forward, right, up, fast ? FAST : 1);
+    }
+
+    /**
+     * Moves by the keys held at {@code factor} times the walking speed ({@link #FAST}, {@link #SLOW}
+     * or 1), then {@link #clamp clamps}; while the path plays, advances it instead.
+     *
+     * @param dt     seconds
+     * @param factor speed factor, &gt; 0
+     */
+    void move(double dt, double forward, double right, double up, double factor) {
         if (playing) {
             pathTime += dt;
             follow(walk.at(pathTime));
             return;
         }
-        double v = SPEED * (fast ? 4 : 1) * dt;
+        double v = speed * factor * dt;
         double sy = Math.sin(camera.yaw());
         double cy = Math.cos(camera.yaw());
         double x = camera.x() + v * (forward * sy + right * cy);
         double z = camera.z() + v * (-forward * cy + right * sy);
         double y = camera.y() + v * up;
-        y = Math.max(y, ground.height(x, z) + 0.2);
         camera.setPosition(x, y, z);
+        clamp();
     }
 
     private void follow(ViewCamera walked) {

@@ -43,7 +43,7 @@ final class HeadlessRender {
             case NUTRIENTS -> TerrainTint.NUTRIENTS;
             default -> TerrainTint.NONE;
         };
-        return new RenderSettings().sky(def.sky()).lodTransition(def.lodTransition()).tint(tint)
+        return new RenderSettings().sky(def.sky()).tint(tint)
                 .showField(def.showField()).showWind(def.showWind());
     }
 
@@ -53,6 +53,7 @@ final class HeadlessRender {
         log.println("Building '" + def.name() + "' ...");
         log.flush();
         try (Simulation sim = Simulation.create(def.simulationDef(), baseDir, progress)) {
+            sim.setLodTransition(def.render().lodTransition());
             render(def, sim, frames, out, width, height, maps, log);
         }
     }

@@ -42,6 +42,10 @@ final class RenderCommand implements Callable<Integer> {
         if (frames < 1 || frames > 100_000) {
             throw new ParameterException(spec.commandLine(), "--frames must be in [1, 100000], got " + frames);
         }
+        OutputPaths.folder(spec.commandLine(), "--out", out);
+        if (gif != null) {
+            OutputPaths.file(spec.commandLine(), "--gif", gif);
+        }
         SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
         if (def == null) {
             return ExitCodes.BAD_INPUT;

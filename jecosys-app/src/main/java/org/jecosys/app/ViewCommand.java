@@ -23,6 +23,17 @@ final class ViewCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
+
+    /** The usage footer: the viewer's controls ({@link ViewerControls#CONTROLS}), one per line. */
+    static String[] controlsHelp() {
+        String[] out = new String[ViewerControls.CONTROLS.length + 2];
+        out[0] = "";
+        out[1] = "Controls in the viewer:";
+        for (int i = 0; i < ViewerControls.CONTROLS.length; i++) {
+            out[i + 2] = "  " + ViewerControls.CONTROLS[i];
+        }
+        return out;
+    }
     @Mixin
     Verbose verbose;
     @Parameters(arity = "0..1", paramLabel = "SCENE", defaultValue = SceneArgs.DEFAULT_SCENE,

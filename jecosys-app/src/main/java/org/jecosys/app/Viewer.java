@@ -1,28 +1,12 @@
 package org.jecosys.app;
 
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_A;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_D;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_E;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_F;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_F12;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_LEFT_SHIFT;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_P;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_Q;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_RIGHT_SHIFT;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_S;
-import static org.lwjgl.glfw.GLFW.GLFW_KEY_W;
-import static org.lwjgl.glfw.GLFW.GLFW_MOUSE_BUTTON_LEFT;
-import static org.lwjgl.glfw.GLFW.GLFW_MOUSE_BUTTON_RIGHT;
-import static org.lwjgl.glfw.GLFW.GLFW_PRESS;
 import static org.lwjgl.glfw.GLFW.glfwGetCursorPos;
 import static org.lwjgl.glfw.GLFW.glfwGetFramebufferSize;
-import static org.lwjgl.glfw.GLFW.glfwGetKey;
-import static org.lwjgl.glfw.GLFW.glfwGetMouseButton;
 import static org.lwjgl.glfw.GLFW.glfwGetTime;
 import static org.lwjgl.glfw.GLFW.glfwGetWindowSize;
 import static org.lwjgl.glfw.GLFW.glfwPollEvents;
 import static org.lwjgl.glfw.GLFW.glfwSetWindowShouldClose;
+import static org.lwjgl.glfw.GLFW.glfwSetWindowTitle;
 import static org.lwjgl.glfw.GLFW.glfwShowWindow;
 import static org.lwjgl.glfw.GLFW.glfwSwapBuffers;
 import static org.lwjgl.glfw.GLFW.glfwSwapInterval;
@@ -32,29 +16,29 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
+import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
+import org.jecosys.render.GizmoRenderer;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.Pixels;
+import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
 import org.jecosys.terrain.Heightfield;
-import org.jecosys.wind.ActivationDef;
-import org.jecosys.wind.FlowDef;
-import org.jecosys.wind.FlowKind;
-import org.jecosys.wind.MotionDef;
-import org.jecosys.wind.WindSource;
-import org.joml.Matrix4f;
-import org.joml.Vector4f;
 import org.lwjgl.opengl.GL11C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
  * {@code jecosys view}: the desktop viewer. One thread (the caller's) is the render thread and also
- * steps the {@link Simulation}; the window closes with Escape or its close button.
+ * steps the {@link Simulation}. Input arrives through GLFW's callbacks ({@link GlfwInput}) into a
+ * queue that {@link ViewerControls} handles once per frame, so no key tap is lost however slow the
+ * frame; the flows and agents are drawn as gizmos and the wind the plants feel as arrows on the
+ * terrain ({@link GizmoRenderer}); the window closes with Escape or its close button, asking first
+ * when the scene has unsaved changes.
  *
  * <p>Allocation: {@link org.jecosys.render.SceneRenderer#render} and its per-frame uploads allocate
  * nothing after warm-up (RenderResourcesTest measures it), but the interactive viewer does: the HUD
@@ -62,8 +46,6 @@ import org.lwjgl.system.MemoryUtil;
  * widgets' labels, a few kilobytes of short-lived garbage per frame. Headless rendering has no HUD.
  */
 final class Viewer {
-    static final String AGENT_ID = "cursor-agent";
-
     private final SceneDef def;
     private final Path file;
     private final Path base;
@@ -73,10 +55,6 @@ final class Viewer {
     private final int[] ih = new int[1];
     private final int[] ww = new int[1];
     private final int[] wh = new int[1];
-    private final double[] hit = new double[2];
-    private final Matrix4f inv = new Matrix4f();
-    private final Vector4f a = new Vector4f();
-    private final Vector4f b = new Vector4f();
 
     Viewer(SceneDef def, Path file, Path base) {
         this.def = def;
@@ -87,6 +65,7 @@ final class Viewer {
     void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
         try (Simulation sim = Simulation.create(def.simulationDef(), base, progress)) {
+            sim.setLodTransition(def.render().lodTransition());
             run(sim);
         }
     }
@@ -102,32 +81,46 @@ final class Viewer {
                 width / (double) height);
         FlyCamera fly = new FlyCamera(camera, def.camera(), ground);
         FrameTimes times = new FrameTimes();
-        try (GlContext gl = GlContext.windowed("JEcoSys - " + def.name(), width, height, false)) {
+        ViewerInput input = new ViewerInput();
+        RenderSettings settings = HeadlessRender.settings(def.render());
+        try (GlContext gl = GlContext.windowed(title(false), width, height, false)) {
             long window = gl.window();
             glfwSwapInterval(1);
             glfwShowWindow(window);
-            try (SceneRenderer renderer = new SceneRenderer(gl, world, HeadlessRender.settings(def.render()));
+            // the callbacks first: ImGui's backend chains to the callbacks it finds installed
+            try (GlfwInput callbacks = new GlfwInput(window, input);
+                 SceneRenderer renderer = new SceneRenderer(gl, world, settings);
+                 GizmoRenderer gizmos = new GizmoRenderer(gl, ground);
                  ImGuiLayer ui = new ImGuiLayer(gl, window)) {
                 renderer.setField(sim.forceField().debugView());
-                ViewerPanel panel = new ViewerPanel(def, file, sim, renderer);
-                loop(window, renderer, ui, panel, sim, fly, times, ground);
+                SceneEditor editor = new SceneEditor(def, sim, settings);
+                SceneSaver saver = new SceneSaver(file, SceneSaver.shippedFolder());
+                ViewerControls controls = new ViewerControls(def, sim, editor, saver, fly, input);
+                ViewerPanel panel = new ViewerPanel(def, controls, sim, renderer);
+                loop(window, renderer, gizmos, ui, panel, controls, sim, fly, times);
             }
         }
     }
 
-    private void loop(long window, SceneRenderer renderer, ImGuiLayer ui, ViewerPanel panel, Simulation sim,
-                      FlyCamera fly, FrameTimes times, Heightfield ground) throws IOException {
+    private String title(boolean dirty) {
+        return "JEcoSys - " + def.name() + (dirty ? " (unsaved changes)" : "");
+    }
+
+    private void loop(long window, SceneRenderer renderer, GizmoRenderer gizmoRenderer, ImGuiLayer ui,
+                      ViewerPanel panel, ViewerControls controls, Simulation sim, FlyCamera fly, FrameTimes times)
+            throws IOException {
         double last = glfwGetTime();
-        double lastX = 0;
-        double lastY = 0;
-        boolean prevP = false;
-        boolean prevF = false;
-        boolean prevF12 = false;
         int shots = 0;
-        WindSource agent = null;
+        boolean dirty = false;
+        WindLegend legend = new WindLegend();
+        FieldDebugView view = sim.forceField().debugView();
         ViewCamera camera = fly.camera();
-        while (!glfwWindowShouldClose(window)) {
+        while (!controls.quit()) {
             glfwPollEvents();
+            if (glfwWindowShouldClose(window)) {
+                glfwSetWindowShouldClose(window, false);
+                controls.requestQuit();
+            }
             double now = glfwGetTime();
             double dt = Math.min(0.1, Math.max(1e-4, now - last));
             last = now;
@@ -138,100 +131,38 @@ final class Viewer {
             int h = Math.max(1, ih[0]);
             camera.setLens(camera.fovY(), w / (double) h, camera.near(), camera.far());
             glfwGetCursorPos(window, cx, cy);
-            double dx = cx[0] - lastX;
-            double dy = cy[0] - lastY;
-            lastX = cx[0];
-            lastY = cy[0];
-            boolean mouseFree = !ui.wantsMouse();
-            boolean keysFree = !ui.wantsKeyboard();
-            if (keysFree && down(window, GLFW_KEY_ESCAPE)) {
-                glfwSetWindowShouldClose(window, true);
-            }
-            if (mouseFree && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) {
-                fly.look(dx, dy);
-            }
-            boolean p = keysFree && down(window, GLFW_KEY_P);
-            if (p && !prevP) {
-                fly.togglePath();
-            }
-            prevP = p;
-            if (keysFree) {
-                fly.move(dt, axis(window, GLFW_KEY_W, GLFW_KEY_S), axis(window, GLFW_KEY_D, GLFW_KEY_A),
-                        axis(window, GLFW_KEY_E, GLFW_KEY_Q),
-                        down(window, GLFW_KEY_LEFT_SHIFT) || down(window, GLFW_KEY_RIGHT_SHIFT));
-            }
             double sx = cx[0] * w / Math.max(1, ww[0]);
             double sy = cy[0] * h / Math.max(1, wh[0]);
-            boolean onGround = pick(camera, ground, sx, sy, w, h);
-            boolean f = keysFree && down(window, GLFW_KEY_F);
-            if (f && !prevF && onGround) {
-                panel.addFlow(hit[0], hit[1], camera.yaw());
-            }
-            prevF = f;
-            // dragging on the terrain: an agent (a repelling source) follows the cursor and pushes plants
-            boolean drag = mouseFree && onGround && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-            if (drag && agent == null) {
-                agent = sim.attachAgent(new FlowDef(AGENT_ID, FlowKind.SOURCE, true, hit[0], hit[1], 6, 0,
-                        0.3, 2.0, ActivationDef.ALWAYS, MotionDef.FIXED, FlowDef.DEFAULT_NOISE_SCALE,
-                        FlowDef.DEFAULT_NOISE_FREQUENCY, 0));
-            } else if (drag) {
-                sim.moveAgent(agent, hit[0], hit[1]);
-            } else if (agent != null) {
-                sim.removeFlow(agent);
-                agent = null;
+            controls.frame(dt, sx, sy, w, h, ui.wantsKeyboard(), ui.wantsMouse());
+            if (controls.quit()) {
+                break;
             }
             sim.step(dt, camera);
             Frame frame = sim.latestFrame();
+            FlowGizmos flows = controls.gizmos();
+            legend.update(legend.typical(view), dt);
+            long r0 = System.nanoTime();
             GL11C.glViewport(0, 0, w, h);
             renderer.render(frame, camera, w, h);
+            if (controls.showGizmos() || controls.showWind()) {
+                gizmoRenderer.render(controls.showGizmos() ? flows.gizmos() : null,
+                        controls.showWind() ? view : null, legend.scale(), camera);
+            }
+            double renderMs = (System.nanoTime() - r0) / 1e6;
             ui.begin(w, h, (float) dt);
-            panel.hud(times, fly.playing(), frame);
+            panel.hud(times, fly, frame, renderMs);
             panel.panel();
+            panel.overlays(w, h, controls.showGizmos() ? flows.gizmos() : null, legend);
             ui.end();
-            boolean f12 = down(window, GLFW_KEY_F12);
-            if (f12 && !prevF12) {
+            if (controls.takeScreenshot()) {
                 screenshot(Path.of(String.format("jecosys-screenshot-%03d.png", ++shots)), w, h);
             }
-            prevF12 = f12;
+            if (controls.editor().dirty() != dirty) {
+                dirty = controls.editor().dirty();
+                glfwSetWindowTitle(window, title(dirty));
+            }
             glfwSwapBuffers(window);
         }
-    }
-
-    private static boolean down(long window, int key) {
-        return glfwGetKey(window, key) == GLFW_PRESS;
-    }
-
-    private static double axis(long window, int plus, int minus) {
-        return (down(window, plus) ? 1 : 0) - (down(window, minus) ? 1 : 0);
-    }
-
-    /** The terrain point under pixel (sx, sy) (from the top-left) into {@link #hit}; false if none within 300 m. */
-    private boolean pick(ViewCamera camera, Heightfield ground, double sx, double sy, int w, int h) {
-        camera.viewProjection(inv).invert();
-        double nx = 2 * sx / w - 1;
-        double ny = 1 - 2 * sy / h;
-        inv.transform(a.set((float) nx, (float) ny, -1, 1));
-        inv.transform(b.set((float) nx, (float) ny, 1, 1));
-        a.div(a.w);
-        b.div(b.w);
-        double dx = b.x - a.x;
-        double dy = b.y - a.y;
-        double dz = b.z - a.z;
-        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        dx /= len;
-        dy /= len;
-        dz /= len;
-        for (double t = 0; t < 300; t += 0.05 + t * 0.01) {
-            double x = a.x + dx * t;
-            double y = a.y + dy * t;
-            double z = a.z + dz * t;
-            if (ground.contains(x, z) && y <= ground.height(x, z)) {
-                hit[0] = x;
-                hit[1] = z;
-                return true;
-            }
-        }
-        return false;
     }
 
     private static void screenshot(Path out, int w, int h) throws IOException {

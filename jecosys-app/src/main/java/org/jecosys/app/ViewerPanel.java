@@ -2,237 +2,185 @@ package org.jecosys.app;
 
 import imgui.ImGui;
 import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiTreeNodeFlags;
 import imgui.flag.ImGuiWindowFlags;
 import imgui.type.ImInt;
-import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import org.jecosys.anim.AnimationDef;
+import java.math.BigDecimal;
+import java.util.Locale;
 import org.jecosys.anim.AnimationMode;
-import org.jecosys.field.ForceFieldDef;
-import org.jecosys.plant.LodDef;
-import org.jecosys.plant.SpeciesDef;
-import org.jecosys.render.PlantBatches;
+import org.jecosys.render.Gizmos;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.TerrainTint;
-import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
-import org.jecosys.scene.SceneFiles;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
-import org.jecosys.wind.ActivationDef;
-import org.jecosys.wind.FlowDef;
-import org.jecosys.wind.FlowKind;
-import org.jecosys.wind.MotionDef;
-import org.jecosys.wind.WindField;
-import org.jecosys.wind.WindSource;
 
 /**
- * The viewer's HUD and ImGui panel: flows (enable, strength, radius, add at the cursor), animation
- * mode, force field, LOD distances, overlays, terrain tint, save. Render thread. The HUD builds a few
- * short strings per frame (imgui-java takes Java strings); edits allocate.
+ * The viewer's HUD and ImGui panel: flows ({@link FlowPanel}: every parameter of the selected flow,
+ * the flow F adds), animation mode, force field, LOD distances, overlays, terrain tint, Save and
+ * Save As ({@link SaveDialogs}); and the legends ({@link Legends}). Edits go through
+ * {@link SceneEditor}. Render thread. The HUD builds a few short strings per frame (imgui-java takes
+ * Java strings); edits allocate.
  */
 final class ViewerPanel {
-    static final String[] KINDS = {"uniform", "source", "sink", "vortex", "gust", "blast"};
-    static final FlowKind[] KIND_VALUES = {FlowKind.UNIFORM, FlowKind.SOURCE, FlowKind.SINK, FlowKind.VORTEX,
-        FlowKind.GUST, FlowKind.BLAST};
     private static final String[] MODES = {"static", "random", "constraint"};
     private static final String[] TINTS = {"none", "water", "nutrients"};
 
     private final SceneDef def;
-    private final Path file;
+    private final ViewerControls controls;
+    private final SceneEditor editor;
     private final Simulation sim;
     private final SceneRenderer renderer;
-    private final ImInt kind = new ImInt(1);
+    private final FlowPanel flows;
+    private final SaveDialogs saving;
+    private final Legends legends;
     private final ImInt mode = new ImInt();
     private final ImInt tint = new ImInt();
-    private final float[] strength = {4f};
-    private final float[] radius = {3f};
     private final float[] edit = new float[1];
-    private final float[] lod = new float[2];
     private final double[] fps = new double[2];
-    private final double[] edges = new double[2];
-    private String message = "";
-    private int added;
 
-    ViewerPanel(SceneDef def, Path file, Simulation sim, SceneRenderer renderer) {
+    ViewerPanel(SceneDef def, ViewerControls controls, Simulation sim, SceneRenderer renderer) {
         this.def = def;
-        this.file = file;
+        this.controls = controls;
+        this.editor = controls.editor();
         this.sim = sim;
         this.renderer = renderer;
-        mode.set(sim.mode().ordinal());
-        tint.set(renderer.settings().tint().ordinal());
+        this.flows = new FlowPanel(controls, sim.world().terrain().heightfield());
+        this.saving = new SaveDialogs(controls);
+        this.legends = new Legends(sim.world().terrain().heightfield());
     }
 
-    void hud(FrameTimes times, boolean playing, Frame frame) {
+    /**
+     * Text for ImGui's text calls, which read their string as a printf format: '%' doubled. Any thread.
+     *
+     * @param text any text (a path, a message)
+     * @return the text to pass to {@code ImGui.text} or {@code ImGui.textWrapped}
+     */
+    static String safe(String text) {
+        return text.replace("%", "%%");
+    }
+
+    /**
+     * A number as short as it reads: {@code 4}, {@code 0.5}, {@code 43.146}. Any thread.
+     *
+     * @param v a finite value
+     * @return its shortest decimal form, without trailing zeros
+     */
+    static String number(double v) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        String s = new BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
+        return s.equals("-0") ? "0" : s;
+    }
+
+    /**
+     * The HUD, top left: frame rate, walking speed, what was drawn, and the times of the force field,
+     * the animation and the rendering, each on its own.
+     *
+     * @param times    the frame times
+     * @param fly      the camera
+     * @param frame    the frame shown
+     * @param renderMs the time spent issuing this frame's draw calls (scene and gizmos), milliseconds
+     */
+    void hud(FrameTimes times, FlyCamera fly, Frame frame, double renderMs) {
         times.fps(fps);
         ImGui.setNextWindowPos(8, 8, ImGuiCond.Always);
         ImGui.setNextWindowBgAlpha(0.45f);
         ImGui.begin("hud", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
                 | ImGuiWindowFlags.NoInputs);
-        ImGui.text(String.format("%.1f fps (sd %.1f)", fps[0], fps[1]));
-        ImGui.text("triangles " + renderer.triangles() + "  lines " + renderer.lines());
-        ImGui.text("components animated " + frame.componentsAnimated());
-        ImGui.text(String.format("field %.2f ms  simulation %.2f ms", frame.fieldNanos() / 1e6,
-                frame.animationNanos() / 1e6));
-        ImGui.text(playing ? "camera path playing (P stops)" : "WASD QE Shift, right-drag look, P path, F12 shot");
+        ImGui.text(String.format(Locale.ROOT, "%.1f fps (sd %.1f)   walk %.2f m/s (Shift x4, Ctrl /4, wheel)",
+                fps[0], fps[1], fly.speed()));
+        ImGui.text("triangles " + renderer.triangles() + "  lines " + renderer.lines() + "  components animated "
+                + frame.componentsAnimated());
+        // Frame.animationNanos is the chunks' own span: it no longer includes the field update, which the
+        // stepping thread runs before helping the workers (side by side with several threads)
+        int threads = sim.workers();
+        ImGui.text(String.format(Locale.ROOT, "field %.2f ms  animation %.2f ms (%d thread%s%s)  render %.2f ms",
+                frame.fieldNanos() / 1e6, frame.animationNanos() / 1e6, threads, threads == 1 ? "" : "s",
+                threads == 1 ? ", one after the other" : ", side by side", renderMs));
+        ImGui.text(fly.playing() ? "camera path playing (P stops)"
+                : "WASD QE, right-drag look, H frame scene, F add flow, T agent, P path (view --help lists all)");
+        if (!controls.message().isEmpty()) {
+            ImGui.text(safe(controls.message()));
+        }
         ImGui.end();
     }
 
-    /** The panel; returns the flow kind index to add when the user presses F over the terrain. */
+    /**
+     * The legends and the confirmations, after the panel.
+     *
+     * @param width  framebuffer width, pixels
+     * @param height framebuffer height, pixels
+     * @param gizmos the gizmos drawn this frame, or null
+     * @param wind   the wind arrows' scale
+     */
+    void overlays(int width, int height, Gizmos gizmos, WindLegend wind) {
+        RenderSettings s = renderer.settings();
+        if (s.showField() || s.showWind()) {
+            legends.map(width, height, s.showField(), s.showWind(), gizmos);
+        }
+        if (controls.showWind()) {
+            legends.wind(wind.scale(), wind.speed());
+        }
+        saving.modals();
+    }
+
+    /** The panel. */
     void panel() {
-        ImGui.setNextWindowPos(8, 150, ImGuiCond.FirstUseEver);
-        ImGui.setNextWindowSize(330, 520, ImGuiCond.FirstUseEver);
+        ImGui.setNextWindowPos(8, 110, ImGuiCond.FirstUseEver);
+        ImGui.setNextWindowSize(440, Math.max(200, Math.min(640, ImGui.getIO().getDisplaySizeY() - 120)),
+                ImGuiCond.FirstUseEver);
         ImGui.begin("JEcoSys");
-        WindField wind = sim.windField();
-        if (ImGui.collapsingHeader("Flows")) {
-            for (int i = 0; i < wind.size(); i++) {
-                WindSource w = wind.get(i);
-                ImGui.pushID(i);
-                String kindName = w.def() == null ? "user flow" : w.kind().xmlName();
-                if (ImGui.checkbox(w.id() + " (" + kindName + ")", w.isEnabled())) {
-                    sim.setFlowEnabled(w, !w.isEnabled());
-                }
-                if (w.def() == null) {
-                    ImGui.popID();
-                    continue; // a program's own flow: only its switch is editable here
-                }
-                edit[0] = (float) w.def().strength();
-                if (ImGui.sliderFloat("strength", edit, 0, 20)) {
-                    replace(w, edit[0], w.def().influenceRadius());
-                }
-                double r = w.def().influenceRadius();
-                edit[0] = Double.isInfinite(r) ? 0 : (float) r;
-                if (ImGui.sliderFloat("radius (0 = unbounded)", edit, 0, 30)) {
-                    replace(w, w.def().strength(), edit[0] <= 0 ? Double.POSITIVE_INFINITY : edit[0]);
-                }
-                ImGui.popID();
-            }
-            ImGui.separator();
-            ImGui.combo("new flow", kind, KINDS);
-            ImGui.sliderFloat("new strength", strength, 0.1f, 20);
-            ImGui.sliderFloat("new radius", radius, 0.5f, 30);
-            ImGui.textWrapped("Press F with the pointer over the terrain to add it there; left-drag pushes plants.");
+        if (ImGui.collapsingHeader("Flows", ImGuiTreeNodeFlags.DefaultOpen)) {
+            flows.draw(sim.windField());
         }
         if (ImGui.collapsingHeader("Animation")) {
+            mode.set(editor.mode().ordinal());
             if (ImGui.combo("mode", mode, MODES)) {
-                sim.setMode(AnimationMode.values()[mode.get()]);
+                editor.setMode(AnimationMode.values()[mode.get()]);
             }
-            if (ImGui.checkbox("force field", sim.fieldEnabled())) {
-                sim.setFieldEnabled(!sim.fieldEnabled());
+            if (ImGui.checkbox("force field", editor.fieldEnabled())) {
+                editor.setFieldEnabled(!editor.fieldEnabled());
             }
         }
         RenderSettings s = renderer.settings();
         if (ImGui.collapsingHeader("Level of detail")) {
-            PlantBatches b = renderer.plants().batches();
-            for (int sp = 0; sp < b.speciesCount(); sp++) {
-                if (b.levels(sp) != 3) {
-                    continue;
-                }
-                lod[0] = (float) b.edge(sp, 0);
-                lod[1] = (float) b.edge(sp, 1);
-                if (ImGui.sliderFloat2(def.species().get(sp).id(), lod, 1, 60)) {
-                    edges[0] = Math.max(0.5, lod[0]);
-                    edges[1] = Math.max(edges[0] + 0.5, lod[1]);
-                    b.setLodDistances(sp, edges);
+            for (int sp = 0; sp < def.species().size(); sp++) {
+                for (int l = 0; l < editor.lodEdges(sp); l++) {
+                    edit[0] = (float) editor.lodEdge(sp, l);
+                    if (ImGui.sliderFloat(def.species().get(sp).id() + ": level " + l + " ends (m)", edit, 0.5f,
+                            (float) Math.max(60, 2 * editor.lodEdge(sp, l)), "%.3f")) {
+                        editor.setLodEdge(sp, l, edit[0]);
+                    }
                 }
             }
-            edit[0] = (float) s.lodTransition();
-            if (ImGui.sliderFloat("transition band (m)", edit, 0, 3)) {
-                s.lodTransition(edit[0]);
+            edit[0] = (float) editor.lodTransition();
+            if (ImGui.sliderFloat("transition band (m)", edit, 0, 3, "%.2f")) {
+                editor.setLodTransition(edit[0]);
             }
         }
         if (ImGui.collapsingHeader("Overlays")) {
-            if (ImGui.checkbox("force-field quadtree (Fig. 2)", s.showField())) {
-                s.showField(!s.showField());
+            if (ImGui.checkbox("wind arrows on the terrain (V)", controls.showWind())) {
+                controls.showWind(!controls.showWind());
             }
-            if (ImGui.checkbox("wind vectors (Fig. 3)", s.showWind())) {
-                s.showWind(!s.showWind());
+            if (ImGui.checkbox("flow and agent gizmos (G)", controls.showGizmos())) {
+                controls.showGizmos(!controls.showGizmos());
             }
+            if (ImGui.checkbox("map: force-field quadtree (Fig. 2)", s.showField())) {
+                editor.setShowField(!s.showField());
+            }
+            if (ImGui.checkbox("map: wind vectors (Fig. 3)", s.showWind())) {
+                editor.setShowWind(!s.showWind());
+            }
+            tint.set(s.tint().ordinal());
             if (ImGui.combo("terrain tint", tint, TINTS)) {
-                s.tint(TerrainTint.values()[tint.get()]);
+                editor.setTint(TerrainTint.values()[tint.get()]);
             }
         }
-        if (ImGui.button("Save scene")) {
-            save();
-        }
-        if (!message.isEmpty()) {
-            ImGui.textWrapped(message);
-        }
+        ImGui.separator();
+        saving.section();
         ImGui.end();
-    }
-
-    /** Replaces a flow by one with a new strength and radius (applied at the next step). */
-    private void replace(WindSource w, double strength, double radius) {
-        FlowDef d = w.def();
-        FlowDef n = new FlowDef(d.id(), d.kind(), w.isEnabled(), w.centreX(), w.centreZ(), strength, d.direction(),
-                d.coreRadius(), radius, d.activation(), d.motion(), d.noiseScale(), d.noiseFrequency(), d.seed());
-        sim.removeFlow(w);
-        sim.addFlow(n);
-    }
-
-    /** Adds the selected kind of flow at (x, z) metres; the uniform and gust blow along {@code heading}. */
-    void addFlow(double x, double z, double heading) {
-        FlowKind k = KIND_VALUES[kind.get()];
-        String id = k.xmlName() + "-" + (++added);
-        try {
-            if (k == FlowKind.BLAST) {
-                sim.blast(id, x, z, strength[0] * 4, 1.5);
-            } else {
-                // heading: yaw 0 looks along -Z; FlowDef direction is radians from +X toward +Z
-                double dir = Math.atan2(-Math.cos(heading), Math.sin(heading));
-                sim.addFlow(new FlowDef(id, k, true, x, z, strength[0], dir, FlowDef.DEFAULT_CORE_RADIUS, radius[0],
-                        ActivationDef.ALWAYS, MotionDef.FIXED, FlowDef.DEFAULT_NOISE_SCALE,
-                        FlowDef.DEFAULT_NOISE_FREQUENCY, added));
-            }
-            message = "added " + id + String.format(" at (%.1f, %.1f)", x, z);
-        } catch (RuntimeException e) {
-            message = "cannot add " + id + ": " + e.getMessage();
-        }
-    }
-
-    private void save() {
-        WindField wind = sim.windField();
-        List<FlowDef> flows = new ArrayList<>();
-        for (int i = 0; i < wind.size(); i++) {
-            WindSource w = wind.get(i);
-            if (w.def() == null || w.kind() == FlowKind.BLAST || w.id().startsWith(Viewer.AGENT_ID)) {
-                continue; // a program's own flow, a blast or the drag agent is not part of the scene file
-            }
-            FlowDef d = w.def();
-            flows.add(new FlowDef(d.id(), d.kind(), w.isEnabled(), d.x(), d.z(), d.strength(), d.direction(),
-                    d.coreRadius(), d.influenceRadius(), d.activation(), d.motion(), d.noiseScale(),
-                    d.noiseFrequency(), d.seed()));
-        }
-        PlantBatches b = renderer.plants().batches();
-        List<SpeciesDef> species = new ArrayList<>();
-        for (int sp = 0; sp < def.species().size(); sp++) {
-            SpeciesDef sd = def.species().get(sp);
-            List<LodDef> lods = new ArrayList<>();
-            for (int l = 0; l < sd.lods().size(); l++) {
-                double max = l < sd.lods().size() - 1 ? b.edge(sp, l) : Double.POSITIVE_INFINITY;
-                lods.add(new LodDef(max, sd.lods().get(l).primitive()));
-            }
-            species.add(new SpeciesDef(sd.id(), sd.name(), sd.poses(), sd.maxBend(), sd.components(), lods,
-                    sd.variation()));
-        }
-        RenderSettings s = renderer.settings();
-        RenderDef r = def.render();
-        RenderDef nr = new RenderDef(r.width(), r.height(), s.sky(), s.lodTransition(),
-                RenderDef.Tint.values()[s.tint().ordinal()], s.showField(), s.showWind());
-        AnimationDef a = def.animation();
-        AnimationDef na = new AnimationDef(sim.mode(), a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
-                a.seed());
-        ForceFieldDef f = def.field();
-        ForceFieldDef nf = new ForceFieldDef(sim.fieldEnabled(), f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
-        SceneDef out = new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),
-                def.placements(), flows, nf, def.camera(), na, nr);
-        try {
-            SceneFiles.save(file, out);
-            message = "saved " + file;
-        } catch (Exception e) {
-            message = "cannot save " + file + ": " + e.getMessage();
-        }
     }
 }

@@ -21,6 +21,7 @@ public final class BenchSuite {
         s.add(new FieldScaleSection());
         s.add(new PaperScenesSection(scenes));
         s.add(new ScaleSection(scenes));
+        s.add(new RenderScaleSection(scenes));
         return s;
     }
 

@@ -115,8 +115,7 @@ final class FieldScaleSection implements Section {
                 + "1M plants in at most 2 ms on one core; at least 10x fewer flow evaluations with LOD.");
         report.add(t);
         report.raw("fieldScale", raw);
-        Charts.lines("Force-field update time", "plants", "median ms per update", List.of("one thread"),
-                List.of(xs), List.of(ys), true, true, report.chartDir().resolve("field-scale.png"));
-        report.chart("field-scale.png");
+        report.saveChart("field-scale.png", png -> Charts.lines("Force-field update time", "plants", "median ms per update", List.of("one thread"),
+                List.of(xs), List.of(ys), true, true, png));
     }
 }

@@ -63,6 +63,7 @@ final class FrameRun {
             for (int c = 0; c < n; c++) {
                 runs[c] = new FrameRun(frames);
                 sims[c] = Simulation.of(world, variant(scene, modes[c], fields[c]), 0);
+                sims[c].setLodTransition(scene.render().lodTransition());
             }
             CameraWalk walk = new CameraWalk(scene.camera(), world.terrain().heightfield(), width / (double) height);
             Turns.run(n, warm + frames, block,

@@ -25,10 +25,8 @@ final class ModelSection implements Section {
         report.add(t2);
         report.add(m.table3());
         report.add(m.table4());
-        Charts.bars(t2, 0, List.of("LOD1 paper", "LOD1 here", "LOD2 paper", "LOD2 here", "LOD3 paper", "LOD3 here"),
-                "primitives", report.chartDir().resolve("table2.png"));
-        report.chart("table2.png");
-        Charts.bars(t1, 0, List.of("paper", "here"), "primitives", report.chartDir().resolve("table1.png"));
-        report.chart("table1.png");
+        report.saveChart("table2.png", png -> Charts.bars(t2, 0, List.of("LOD1 paper", "LOD1 here", "LOD2 paper", "LOD2 here", "LOD3 paper", "LOD3 here"),
+                "primitives", png));
+        report.saveChart("table1.png", png -> Charts.bars(t1, 0, List.of("paper", "here"), "primitives", png));
     }
 }

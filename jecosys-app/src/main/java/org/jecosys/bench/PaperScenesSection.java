@@ -72,8 +72,7 @@ final class PaperScenesSection implements Section {
             try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), WIDTH, HEIGHT)) {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
-                    RenderSettings settings = new RenderSettings().sky(scene.render().sky())
-                            .lodTransition(scene.render().lodTransition());
+                    RenderSettings settings = new RenderSettings().sky(scene.render().sky());
                     try (SceneRenderer renderer = new SceneRenderer(gl, worlds.get(s), settings)) {
                         fb.bind();
                         int frames = s == 3 ? Math.max(2, renderFrames / 4) : renderFrames;
@@ -204,8 +203,6 @@ final class PaperScenesSection implements Section {
             t.row(NAMES[s], PaperNumbers.TABLE7[s][0], rendered.get(s).s1().fpsMean(), PaperNumbers.TABLE7[s][4],
                     rendered.get(s).s3().fpsMean());
         }
-        Charts.bars(t, 0, List.of("paper S1", "here S1", "paper S3", "here S3"), "frames per second",
-                report.chartDir().resolve("table7.png"));
-        report.chart("table7.png");
+        report.saveChart("table7.png", png -> Charts.bars(t, 0, List.of("paper S1", "here S1", "paper S3", "here S3"), "frames per second", png));
     }
 }

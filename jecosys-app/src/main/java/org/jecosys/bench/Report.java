@@ -20,6 +20,7 @@ public final class Report {
     private final List<Table> tables = new ArrayList<>();
     private final Map<String, Object> raw = new LinkedHashMap<>();
     private final List<String> charts = new ArrayList<>();
+    private final List<String> skippedCharts = new ArrayList<>();
     private final List<String> failures = new ArrayList<>();
     private String glRenderer;
 
@@ -45,6 +46,75 @@ public final class Report {
     /** Records a chart written to {@code charts/name}. */
     public void chart(String name) {
         charts.add(name);
+    }
+
+    /** Writes one chart into a PNG file. */
+    @FunctionalInterface
+    public interface ChartWriter {
+        /**
+         * Draws the chart into {@code png}.
+         *
+         * @param png the file to write
+         * @throws IOException when it cannot be written
+         */
+        void write(Path png) throws IOException;
+    }
+
+    /**
+     * Draws chart {@code charts/name} and records it; on a machine without fonts (a headless server:
+     * Java's AWT finds no fontconfig or no font) the chart is skipped instead, and the report says once
+     * which packages provide fonts. The section's numbers are kept either way. Allocates.
+     *
+     * @param name   the chart's file name
+     * @param writer draws it
+     * @throws IOException when the file cannot be written for another reason
+     */
+    public void saveChart(String name, ChartWriter writer) throws IOException {
+        Path png = chartDir().resolve(name);
+        try {
+            writer.write(png);
+            charts.add(name);
+        } catch (RuntimeException | Error e) {
+            if (!isFontProblem(e)) {
+                throw e;
+            }
+            if (skippedCharts.isEmpty()) {
+                System.err.println("bench: charts skipped: " + NO_FONTS);
+            }
+            skippedCharts.add(name);
+        }
+    }
+
+    /** What a machine without fonts lacks, and where to get it. */
+    static final String NO_FONTS = "this machine has no fonts for Java's AWT (install fontconfig and a font, "
+            + "e.g. on Debian/Ubuntu: apt-get install fontconfig fonts-dejavu-core); every number is in the tables";
+
+    /** {@return the charts skipped because the machine has no fonts} */
+    public List<String> skippedCharts() {
+        return skippedCharts;
+    }
+
+    /**
+     * {@return whether a failure to draw a chart comes from missing fonts (fontconfig, the font
+     * manager or a font file), anywhere in its chain of causes}
+     *
+     * @param e the failure
+     */
+    static boolean isFontProblem(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            String m = String.valueOf(t.getMessage()).toLowerCase(java.util.Locale.ROOT);
+            if (m.contains("fontconfig") || m.contains("font")) {
+                return true;
+            }
+            for (StackTraceElement f : t.getStackTrace()) {
+                String c = f.getClassName();
+                if (c.startsWith("sun.font.") || c.startsWith("sun.awt.FontConfiguration")
+                        || c.startsWith("sun.awt.X11FontManager") || c.startsWith("java.awt.Font")) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     public void failure(String section, Throwable t) {
@@ -82,6 +152,10 @@ public final class Report {
             for (String c : charts) {
                 md.append("![").append(c).append("](charts/").append(c).append(")\n\n");
             }
+        }
+        if (!skippedCharts.isEmpty()) {
+            md.append("Charts not drawn (").append(String.join(", ", skippedCharts)).append("): ").append(NO_FONTS)
+                    .append(".\n\n");
         }
         if (!failures.isEmpty()) {
             md.append("## Sections that failed\n\n");

@@ -142,11 +142,7 @@ final class ScaleSection implements Section {
                 + "at least 1.8x one.");
         report.add(t);
         report.raw("scale", raw);
-        Charts.lines("Component updates per second", "components", "updates per second", names, xs, ups, true, true,
-                report.chartDir().resolve("scale-updates.png"));
-        report.chart("scale-updates.png");
-        Charts.lines("Step time", "components", "ms per step", names, xs, ms, true, true,
-                report.chartDir().resolve("scale-step.png"));
-        report.chart("scale-step.png");
+        report.saveChart("scale-updates.png", png -> Charts.lines("Component updates per second", "components", "updates per second", names, xs, ups, true, true, png));
+        report.saveChart("scale-step.png", png -> Charts.lines("Step time", "components", "ms per step", names, xs, ms, true, true, png));
     }
 }

@@ -34,7 +34,7 @@ class ImGuiLayerTest {
              GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
              SceneRenderer renderer = new SceneRenderer(gl, world, new RenderSettings())) {
             fb.bind();
-            renderer.render(TestFrames.rest(world), cam, W, H);
+            renderer.render(TestFrames.rest(world, cam), cam, W, H);
             Pixels.read(W, H, other);
             GlCensus before = GlCensus.take();
             GlCensus during;
@@ -43,7 +43,7 @@ class ImGuiLayerTest {
                 closed = ui;
                 for (int i = 0; i < 2; i++) {
                     fb.bind();
-                    renderer.render(TestFrames.rest(world), cam, W, H);
+                    renderer.render(TestFrames.rest(world, cam), cam, W, H);
                     ui.begin(W, H, 1 / 60f);
                     ImGui.setNextWindowPos(10, 10);
                     ImGui.setNextWindowSize(180, 120);

@@ -64,17 +64,18 @@ class SimulateCliTest {
     }
 
     @Test
-    void anUnwritableOutputFileExits1WithAClearMessageAndNoStackTrace() {
+    void anUnwritableOutputFileIsBadInputFoundBeforeTheRun() {
         Path bad = dir.resolve("no/such/folder/x.csv");
         CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--dump", bad.toString());
-        assertEquals(1, r.code());
-        assertTrue(r.err().contains("cannot write " + bad), r.err());
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("--dump " + bad + ": cannot write it: no such folder"), r.err());
         assertFalse(r.err().contains("\tat "), r.err());
+        assertFalse(r.out().contains("state hash"), "nothing ran: " + r.out());
         CliTest.Result v = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--json", dir.toString(),
                 "--verbose");
-        assertEquals(1, v.code());
-        assertTrue(v.err().contains("cannot write " + dir), v.err());
-        assertTrue(v.err().contains("\tat "), "stack trace with --verbose: " + v.err());
+        assertEquals(2, v.code());
+        assertTrue(v.err().contains("--json " + dir + ": is a folder"), v.err());
+        assertFalse(v.out().contains("state hash"), "nothing ran: " + v.out());
     }
 
     @Test

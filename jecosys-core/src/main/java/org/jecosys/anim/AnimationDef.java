@@ -8,7 +8,8 @@ import org.jecosys.math.Require;
  * @param mode         static, random or constraint (paper Table 7's S1, S2, S3)
  * @param fixedStep    the simulation's fixed step, seconds, in [1e-5, 1]
  * @param maxSubSteps  cap on fixed steps taken in one call to step(dt), in [1, 1000]
- * @param subIntervals sub-intervals of each step in the spring update (paper §4.2.1), in [1, 64]
+ * @param subIntervals sub-intervals of each step in the spring update (paper §4.2.1), in [1, 64]: a flow
+ *                     switched inside a step acts from the next sub-interval boundary ({@link SpringKinds})
  * @param threads      animation workers, in [0, 256]; 0 means the available processors
  * @param seed         seed of the random mode and of any other randomness in animation
  */

@@ -9,7 +9,9 @@ import org.jecosys.math.Require;
  * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
  * function of D and the component's constants, written by {@link #animate} into the caller's arrays
  * (the simulation's back frame) and computed on demand by the accessors. Per plant: the force input
- * of the last update and the level of detail. Sized at construction; nothing grows.
+ * of the last update, the level of detail, its response variant and compliance (the seeded
+ * variation of response time and stiffness between plants, {@link SpringKinds}), and whether its
+ * state follows the wind (see "Start"). Sized at construction; nothing grows.
  *
  * <h2>Bend</h2>
  * A component's rest shape (pose 0) leans toward its rest heading h (plant rest azimuth + slot
@@ -20,14 +22,26 @@ import org.jecosys.math.Require;
  * <ul>
  * <li>azimuth = direction of T ({@code atan2(Tz, Tx)}): at D = 0 it is the rest heading, so a
  * component at rest keeps its heading and never flips at zero wind;</li>
- * <li>the extra bend is {@code max(0, |T| - l)} metres, computed as {@code (2 L.D + |D|^2) / (|T| + l)}
- * (exactly 0 at D = 0), mapped to the pose coordinate as {@code PoseMapping.poseCoordinate} does:
- * {@code min(K - 1, atan(extra / length) (K - 1) / maxBend)}. A wind against the lean first turns
- * the component (azimuth) and then bends it the other way: its tip follows D to first order.</li>
+ * <li>the extra tip offset is {@code e = max(0, |T| - l)} metres, computed as
+ * {@code (2 L.D + |D|^2) / (|T| + l)} (exactly 0 at D = 0); the component keeps its length, so the
+ * extra bend is the angle whose sine is {@code e / length}, mapped to the pose coordinate as
+ * {@code PoseMapping.poseCoordinate} does: {@code min(K - 1, asin(e / length) (K - 1) / maxBend)}.
+ * The spring keeps |D| below {@code length sin(maxBend)} ({@link SpringKinds#bendLimit}), so the last
+ * pose is approached, not clamped. A wind against the lean first turns the component (azimuth) and
+ * then bends it the other way: its tip follows D to first order.</li>
  * </ul>
  * Arc tangents use a polynomial with error below 5e-7 rad, in the branch-free forms of
- * {@code Trig.poseAngle} and {@code Trig.azimuth} (the arc tangent of the extra bend is taken as
- * {@code atan2(num, (|T| + l) length)} with {@code num = max(0, 2 L.D + |D|^2)}, one division).
+ * {@code Trig.poseAngle} and {@code Trig.azimuth} (the extra bend is taken as
+ * {@code atan2(num, sqrt(d^2 - num^2))} with {@code num = max(0, 2 L.D + |D|^2)} and
+ * {@code d = (|T| + l) length}, one division).
+ *
+ * <h2>Start</h2>
+ * A plant's state follows the wind once it has been animated and as long as it stays visible. A
+ * plant that does not (new, or invisible at the last update, or in RANDOM mode) starts its next
+ * CONSTRAINT update at the equilibrium of that update's wind, at zero velocity: the field does not
+ * lean in from upright at start-up, and a plant coming into view is already bent by the wind.
+ * {@link #settle} does the same for the wind at a given time (the simulation's first sample, at
+ * t = 0), and {@link #resetToRest} puts plants at rest as a state that does follow (STATIC mode).
  * The output loops and the scalar forms live in {@code BendOutputs}; the spring runs and their step
  * in {@code SpringRuns}.
  *
@@ -36,9 +50,10 @@ import org.jecosys.math.Require;
  * consecutive components with the same spring coefficients ({@link SpringKinds#springClass}: the
  * shape variants of one component type share them, so a 25-leaf tuft is one run) and the same
  * level-of-detail mask. {@link #animate} first advances D and v over segments of contiguous runs of
- * one class, across plants: the homogeneous part of eq. 5's map in one loop that C2 vectorises, then
- * each run's force terms (computed once per run from the plant's force), added in the same order as
- * the fused formula, so the bits do not depend on how runs are grouped. It then computes the outputs
+ * one coefficient row (spring class and response variant), across plants: per run its rest points
+ * (computed once per run from the plant's force), then one short branch-free loop over its
+ * components that C2 vectorises; each component's result depends on its own values only, so the
+ * bits do not depend on how runs are grouped. It then computes the outputs
  * in a second, branch-free loop over contiguous component ranges, also vectorised. A range may
  * also cover components that were not advanced (a short gap of invisible plants, components outside
  * the level of detail): their outputs are recomputed from their unchanged D and come out
@@ -78,6 +93,11 @@ public final class AnimationState implements AnimationView {
     private final float[] compLength;
     private final float[] compScale;
     private final float[] compPoseMax;
+    private final float[] compInvLimit;
+    private final byte[] plantResponse;
+    private final float[] plantCompliance;
+    /** Per plant, whether its state follows the wind (see "Start" in the class comment). */
+    private final boolean[] live;
     final float[] devX;
     final float[] devZ;
     final float[] velX;
@@ -89,7 +109,9 @@ public final class AnimationState implements AnimationView {
     private final long[] plantVersion;
 
     /**
-     * State at rest for a set of plants. Build time; allocates. Arrays are copied.
+     * State for a set of plants, all in their nominal response variant with their species' stiffness:
+     * {@link #AnimationState(SpringKinds, double[][], int[], int[], float[], float[], float[], int[], float[],
+     * byte[], float[])} without variation between plants. Build time; allocates. Arrays are copied.
      *
      * @param kinds          the component kinds
      * @param lodEdges       per species, the ascending distances (metres) where its levels of detail end,
@@ -104,6 +126,34 @@ public final class AnimationState implements AnimationView {
      */
     public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
                           float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, float[] restHeading) {
+        this(kinds, lodEdges, plantSpecies, firstComponent, plantX, plantY, plantZ, componentKind, restHeading,
+                null, null);
+    }
+
+    /**
+     * State for a set of plants: D = v = 0 (pose 0), every plant to start at the equilibrium of the
+     * wind of its first update (see "Start" in the class comment). Build time; allocates. Arrays are
+     * copied.
+     *
+     * @param kinds          the component kinds
+     * @param lodEdges       per species, the ascending distances (metres) where its levels of detail end,
+     *                       the last (unbounded) level left out
+     * @param plantSpecies   per plant, its species index into {@code lodEdges}
+     * @param firstComponent per plant its first component, plus the total at the end (length plants + 1)
+     * @param plantX         per plant X, metres
+     * @param plantY         per plant base height, metres
+     * @param plantZ         per plant Z, metres
+     * @param componentKind  per component its kind
+     * @param restHeading    per component its rest heading h, radians (plant rest azimuth + slot azimuth)
+     * @param response       per plant its response variant, in [0, {@link SpringKinds#RESPONSE_VARIANTS}),
+     *                       or null for {@link SpringKinds#NOMINAL_VARIANT} everywhere
+     * @param compliance     per plant the factor on its equilibrium deviation (1 / its stiffness factor),
+     *                       in [0.5, 10], or null for 1 everywhere
+     * @throws IllegalArgumentException when an array has the wrong length or a value is out of range
+     */
+    public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
+                          float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, float[] restHeading,
+                          byte[] response, float[] compliance) {
         this.kinds = Require.nonNull("kinds", kinds);
         plants = Require.nonNull("plantSpecies", plantSpecies).length;
         if (firstComponent.length != plants + 1 || plantX.length != plants || plantY.length != plants
@@ -135,6 +185,7 @@ public final class AnimationState implements AnimationView {
         compLength = new float[components];
         compScale = new float[components];
         compPoseMax = new float[components];
+        compInvLimit = new float[components];
         for (int c = 0; c < components; c++) {
             int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
             kind[c] = (short) k;
@@ -145,7 +196,21 @@ public final class AnimationState implements AnimationView {
             compLength[c] = kinds.length[k];
             compScale[c] = kinds.poseScale[k];
             compPoseMax[c] = kinds.poseMax[k];
+            compInvLimit[c] = 1 / kinds.dMax[k];
         }
+        plantResponse = new byte[plants];
+        plantCompliance = new float[plants];
+        if ((response != null && response.length != plants) || (compliance != null && compliance.length != plants)) {
+            throw new IllegalArgumentException("response and compliance must hold one value per plant (" + plants
+                    + ")");
+        }
+        for (int p = 0; p < plants; p++) {
+            plantResponse[p] = (byte) (response == null ? SpringKinds.NOMINAL_VARIANT
+                    : Require.range("response[" + p + "]", response[p], 0, SpringKinds.RESPONSE_VARIANTS - 1));
+            plantCompliance[p] = compliance == null ? 1f
+                    : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
+        }
+        live = new boolean[plants];
         SpringRuns springRuns = new SpringRuns(kinds, kind, this.firstComponent);
         runStart = springRuns.start;
         runClass = springRuns.springClass;
@@ -161,6 +226,7 @@ public final class AnimationState implements AnimationView {
         level = new byte[plants];
         plantVersion = new long[plants];
         resetToRest(0, plants);
+        java.util.Arrays.fill(live, false);
     }
 
     /** The kinds. */
@@ -199,9 +265,36 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
+     * Where level l of species s ends, metres, with the LOD scale applied: a plant is at level l when
+     * its distance to the eye is at least {@code lodEdge(s, l - 1)} and below {@code lodEdge(s, l)}.
+     * Any thread between updates; no allocation.
+     *
+     * @param species species index
+     * @param l       level, below the species' last
+     * @return the distance, metres
+     */
+    public double lodEdge(int species, int l) {
+        return lod.edge(species, l);
+    }
+
+    /**
+     * Replaces the level-of-detail distances of one species (the viewer's sliders). Between updates
+     * only; allocates a copy.
+     *
+     * @param species      species index
+     * @param maxDistances ascending distances where each level but the last ends, metres, &gt; 0
+     * @throws IllegalArgumentException when the count is not the species' levels - 1 or the
+     *                                  distances do not ascend
+     */
+    public void setLodDistances(int species, double[] maxDistances) {
+        lod.setEdges(species, maxDistances);
+    }
+
+    /**
      * Puts plants {@code first .. end-1} and their components back at rest: D = v = 0 (hence pose 0
-     * and the rest heading), no remembered force. Outputs already written elsewhere (a frame) are not
-     * touched: write them again with {@link #copyOutputs}. No allocation.
+     * and the rest heading), no remembered force, as a state that the next CONSTRAINT update
+     * continues from (the plants lean into the wind from upright). Outputs already written elsewhere
+     * (a frame) are not touched: write them again with {@link #copyOutputs}. No allocation.
      *
      * @param first first plant reset
      * @param end   one past the last plant reset; {@code first <= end}
@@ -210,6 +303,7 @@ public final class AnimationState implements AnimationView {
         for (int p = first; p < end; p++) {
             pressX[p] = 0;
             pressZ[p] = 0;
+            live[p] = true;
             plantVersion[p]++;
         }
         for (int c = firstComponent[first], e = firstComponent[end]; c < e; c++) {
@@ -221,6 +315,61 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
+     * Puts the visible plants of {@code first .. end-1} ({@code step}'s visibility) at the equilibrium
+     * of {@code step}'s wind, at zero velocity, and makes it the force their next update starts from:
+     * the state of a field that has been in this wind for ever (the simulation calls it with the wind
+     * at t = 0 before its first step). Every component of a plant is set, whatever its level of
+     * detail; other plants are not touched. The step's mode and outputs are not used. Any thread that
+     * owns the range (as {@link #animate}); no allocation.
+     *
+     * @param first first plant
+     * @param end   end of the range (exclusive)
+     * @param step  the wind (m/s) and visibility per plant
+     * @return plants settled
+     */
+    public int settle(int first, int end, AnimationStep step) {
+        int settled = 0;
+        for (int p = first; p < end; p++) {
+            if (step.visible[p]) {
+                settle(p, step.windX[p], step.windZ[p]);
+                settled++;
+            }
+        }
+        return settled;
+    }
+
+    /** Puts plant p at the equilibrium of wind (ux, uz), m/s, remembered as its force; it then follows the wind. */
+    private void settle(int p, float ux, float uz) {
+        ux = finiteWind(ux);
+        uz = finiteWind(uz);
+        float speed = (float) Math.sqrt(ux * ux + uz * uz);
+        float px = speed * ux;
+        float pz = speed * uz;
+        double compliance = plantCompliance[p];
+        for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
+            SpringRuns.setForce(r, kinds.gain(runClass[r]) * compliance, runForce, px, pz, px, pz);
+            int f = r * SpringRuns.FORCE_STRIDE;
+            SpringRuns.settle(runStart[r], runStart[r + 1], runForce[f], runForce[f + 1], runForce[f + 4],
+                    compInvLimit, devX, devZ, velX, velZ);
+        }
+        pressX[p] = px;
+        pressZ[p] = pz;
+        live[p] = true;
+        plantVersion[p]++;
+    }
+
+    /**
+     * A wind component made safe for the spring: NaN (from a user force field) becomes 0 and the
+     * magnitude is capped at {@link #MAX_WIND} m/s, so that {@code |u| u} stays finite in float.
+     */
+    private static float finiteWind(float u) {
+        return u == u ? Math.max(-MAX_WIND, Math.min(MAX_WIND, u)) : 0f;
+    }
+
+    /** Largest wind component the spring takes, m/s: far beyond any real wind, and |u|^2 stays finite. */
+    public static final float MAX_WIND = 1e9f;
+
+    /**
      * Advances plants {@code first .. end-1} by one step of the length last given to
      * {@link SpringKinds#prepare} (paper §4.2.2) and, if {@code step} has output arrays, writes the
      * outputs of all their components. Only plants with {@code visible[p]} are updated (the others
@@ -229,7 +378,8 @@ public final class AnimationState implements AnimationView {
      *
      * <ul>
      * <li>CONSTRAINT: the spring of {@link SpringKinds}, driven from the force at the previous update
-     * to the force of wind {@code (windX[p], windZ[p])} (m/s) now;</li>
+     * to the force of wind {@code (windX[p], windZ[p])} (m/s) now; a plant that did not follow the
+     * wind starts at the equilibrium of that wind (see "Start" in the class comment);</li>
      * <li>RANDOM: each updated component takes a random deviation in a disc of radius 0.3 length
      * (paper Table 7's S2), from the step's random source;</li>
      * <li>STATIC: nothing moves (see {@link #resetToRest}).</li>
@@ -264,7 +414,11 @@ public final class AnimationState implements AnimationView {
         int updated = 0;
         for (int p = first; p < end; p++) {
             int l = updateLevel(p, eyeX, eyeY, eyeZ);
-            if (!visible[p] || mode == AnimationMode.STATIC) {
+            if (!visible[p]) {
+                live[p] = false; // its state stops following the wind: it starts afresh when seen again
+                continue;
+            }
+            if (mode == AnimationMode.STATIC) {
                 continue;
             }
             int bit = 1 << l;
@@ -274,6 +428,7 @@ public final class AnimationState implements AnimationView {
             if (mode == AnimationMode.RANDOM) {
                 updated += SpringRuns.randomise(c0, c1, bit, kind, kinds.lodMask, kinds.length, step.rng, devX, devZ,
                         velX, velZ);
+                live[p] = false;
             } else {
                 updated += queueSpringRuns(p, bit, step.windX[p], step.windZ[p], cursor);
             }
@@ -303,37 +458,46 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
-     * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: each of its spring runs drawn
-     * at that level gets its force terms ({@link SpringRuns#setForce}) from the plant's force at its
-     * last update to the force of wind {@code (ux, uz)} (m/s) now, and is queued on the cursor to be
-     * advanced (in segments, see the class comment); the plant then remembers the new force.
+     * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
+     * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
+     * runs drawn at that level gets its rest points ({@link SpringRuns#setForce}) from the plant's
+     * force at its last update to the force of that wind, and is queued on the cursor with its
+     * coefficient row (spring class and the plant's response variant) to be advanced (in segments,
+     * see the class comment); the plant then remembers the new force.
      *
      * @return components queued
      */
     private int queueSpringRuns(int p, int bit, float ux, float uz, StepCursor cursor) {
+        if (!live[p]) {
+            settle(p, ux, uz);
+        }
+        ux = finiteWind(ux);
+        uz = finiteWind(uz);
         float speed = (float) Math.sqrt(ux * ux + uz * uz);
         float p1x = speed * ux;
         float p1z = speed * uz;
         float p0x = pressX[p];
         float p0z = pressZ[p];
+        double compliance = plantCompliance[p];
+        int variant = plantResponse[p];
         int queued = 0;
         for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
             if ((runMask[r] & bit) == 0) {
                 continue;
             }
             int cls = runClass[r];
-            SpringRuns.setForce(r, cls, kinds.coef, runForce, p0x, p0z, p1x, p1z);
+            SpringRuns.setForce(r, kinds.gain(cls) * compliance, runForce, p0x, p0z, p1x, p1z);
             queued += runStart[r + 1] - runStart[r];
-            cursor.queueRun(this, r, cls, runStart);
+            cursor.queueRun(this, r, SpringKinds.row(cls, variant), runStart);
         }
         pressX[p] = p1x;
         pressZ[p] = p1z;
         return queued;
     }
 
-    /** Advances runs {@code r0 .. r1-1} (contiguous, all of spring class cls): {@link SpringRuns#spring}. */
-    void spring(int r0, int r1, int cls) {
-        SpringRuns.spring(r0, r1, cls, kinds.coef, runStart, runForce, devX, devZ, velX, velZ);
+    /** Advances runs {@code r0 .. r1-1} (contiguous, all of coefficient row {@code row}): {@link SpringRuns#spring}. */
+    void spring(int r0, int r1, int row) {
+        SpringRuns.spring(r0, r1, row, kinds.coef, runStart, runForce, compInvLimit, devX, devZ, velX, velZ);
     }
 
     /**

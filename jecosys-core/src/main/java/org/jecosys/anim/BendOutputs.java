@@ -50,11 +50,12 @@ final class BendOutputs {
             float tz = leanZ[c] + devZ[c];
             azimuth[c] = (float) Math.sqrt(tx * tx + tz * tz);
         }
-        for (int c = c0; c < c1; c++) { // extra bend: atan2(num, (|T| + l) length)
+        for (int c = c0; c < c1; c++) { // extra bend: asin(e / length) = atan2(num, sqrt(d^2 - num^2))
             float x = devX[c];
             float z = devZ[c];
             float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
-            pose[c] = Trig.poseArgument(num, (azimuth[c] + lean[c]) * len[c]);
+            float d = (azimuth[c] + lean[c]) * len[c];
+            pose[c] = Trig.poseArgument(num, (float) Math.sqrt(Math.max(0f, (d - num) * (d + num))));
         }
         for (int c = c0; c < c1; c++) { // azimuth: half angle about the z axis
             azimuth[c] = Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], azimuth[c]);
@@ -85,7 +86,8 @@ final class BendOutputs {
         float tz = leanZ[c] + z;
         float t = (float) Math.sqrt(tx * tx + tz * tz);
         float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
-        float u = Trig.poseArgument(num, (t + lean[c]) * len[c]);
+        float d = (t + lean[c]) * len[c];
+        float u = Trig.poseArgument(num, (float) Math.sqrt(Math.max(0f, (d - num) * (d + num))));
         return Math.max(0f, Math.min(poseMax[c], Trig.poseAngle(u) * scale[c]));
     }
 

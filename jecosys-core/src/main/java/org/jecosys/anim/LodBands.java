@@ -43,6 +43,27 @@ final class LodBands {
         return scale;
     }
 
+    /** Scaled edge l of species s, metres (where level l ends). */
+    double edge(int species, int l) {
+        return edges[species][l] * scale;
+    }
+
+    /** Replaces species s's unscaled edges (ascending, one fewer than its levels). */
+    void setEdges(int species, double[] maxDistances) {
+        Require.nonNull("maxDistances", maxDistances);
+        if (maxDistances.length != edges[species].length) {
+            throw new IllegalArgumentException("species " + species + " has " + (edges[species].length + 1)
+                    + " levels, so " + edges[species].length + " distances, got " + maxDistances.length);
+        }
+        double prev = 0;
+        for (int i = 0; i < maxDistances.length; i++) {
+            Require.range("maxDistances[" + i + "]", maxDistances[i], Math.nextUp(prev), 1e6);
+            prev = maxDistances[i];
+        }
+        edges[species] = maxDistances.clone();
+        setScale(scale);
+    }
+
     /** The level of a plant of {@code species} at squared distance {@code d2} from the eye (0 = nearest). */
     int level(int species, double d2) {
         double[] e = edges2[species];

@@ -37,27 +37,56 @@ import org.joml.Vector3f;
  * gravity (§4.1) and is kept here for reports.</li>
  * </ul>
  * The force is the drag law of the field ({@link DragLaw}): {@code F = 0.5 rho dragArea |u| u}, so
- * the equilibrium deviation is {@code gain |u| u} with {@code gain = 0.5 rho dragArea / PC}.
+ * the linear equilibrium deviation is {@code gain |u| u} with {@code gain = 0.5 rho dragArea / PC}.
  *
- * <h2>Closed form, sub-intervals and cached constants</h2>
- * A step of length h is split into S sub-intervals ({@link AnimationDef#subIntervals()}, §4.2.1).
- * Over a sub-interval of length s with the force held at its value at the sub-interval's middle
- * (linearly interpolated between the force at the start and at the end of the step), the exact
- * solution with {@code x = s/tau}, {@code E = e^-x} and {@code e = D - F/PC} is
+ * <h2>Bounded bend: the spring stiffens toward maxBend</h2>
+ * A component of length l cannot move its tip further than {@code dMax = l sin(maxBend)} (its last
+ * pose, with the length kept: see "Bend" in {@link AnimationState}). The spring's rest point is
+ * therefore the linear target {@code T = gain |u| u} passed through a smooth saturation: with
+ * {@code x = |T| / dMax} and the knee {@link #KNEE},
  * <pre>
- *   e' = E (1 + x) e + E s v          v' = -E x/tau e + E (1 - x) v
+ *   sigma(x) = x                                          for x &lt;= KNEE  (exactly F/PC)
+ *   sigma(x) = KNEE + (1 - KNEE) y / (1 + y),  y = (x - KNEE) / (1 - KNEE)   above it
  * </pre>
- * exact for any s, so the update is stable for every step and independent of frame rate up to the
- * O(s^2) error of interpolating the force. The map is linear, so the S sub-intervals compose into
- * one affine map per kind, computed once when the step length changes ({@link #prepare}):
+ * and the rest point is {@code dMax sigma(x) T / |T|}: equal to F/PC up to half the bend limit,
+ * then stiffer and stiffer (sigma is continuous with its slope at the knee), never reaching dMax.
+ * As the spring is critically damped and starts at a rest point, |D| stays below dMax, so no bend is
+ * clamped, a stronger wind still shows as more bend and a released component comes back within a
+ * few tau. The saturation is computed per component ({@code SpringRuns.spring}).
+ *
+ * <h2>Closed form over the step, exact at every step size</h2>
+ * Over a step of length h the target moves linearly from its value T0 at the start of the step (the
+ * field at that time) to T1 at the end (the field then). For a target linear in time the spring
+ * has an exact solution; with {@code x = h/tau}, {@code E = e^-x} and the lower incomplete gamma
+ * functions {@code g2 = 1 - E (1 + x)} and {@code g3 = 2 - E (x^2 + 2x + 2)} (by series for small x):
  * <pre>
- *   D' = aDD D + aDv v + bD P0 + cD P1        v' = aVD D + aVv v + bV P0 + cV P1
+ *   D' = aDD D + aDv v + bD T0 + cD T1       aDD = E (1 + x)   aDv = E h   bD = g3 / x    cD = g2 - g3 / x
+ *   v' = aVD D + aVv v + bV T0 + cV T1       aVD = -E x / tau  aVv = E (1 - x)
+ *                                            bV = (x E - g2 / x) / tau                    cV = g2 / (x tau)
  * </pre>
- * where P0 and P1 are the plant's {@code |u| u} at the start and end of the step. These eight
- * numbers are what eq. 5's cached constants {@code 1/mu} (the force gain, here bD + cD = 1 - aDD
- * times gain) and {@code 2m/(tau mu)} (the velocity gain, here aDv) become when the constraint
- * equation is integrated exactly rather than by the paper's one-step balance, whose equilibrium
- * {@code F/(PC + m/tau^2)} moved with the frame interval.
+ * so a constant force settles at exactly its rest point and a force switched at a step boundary
+ * gives the closed-form response (1 - (1 + t/tau) e^(-t/tau)) exactly, whatever h. These eight
+ * numbers are what eq. 5's cached constants {@code 1/mu} (the force gain, here {@code bD + cD = 1 - aDD})
+ * and {@code 2m/(tau mu)} (the velocity gain, here aDv) become when the constraint equation is
+ * integrated exactly rather than by the paper's one-step balance, whose equilibrium
+ * {@code F/(PC + m/tau^2)} moved with the frame interval. The update uses them in the form
+ * {@code D' = T0 + aDD (D - T0) + aDv v + cD (T1 - T0)}, {@code v' = aVD (D - T0) + aVv v + cV (T1 - T0)}
+ * (the same map, as {@code bD + cD = 1 - aDD} and {@code bV + cV = -aVD}), which keeps a component
+ * at rest exactly at its rest point in float arithmetic.
+ *
+ * <h2>Sub-intervals: switches at their exact time</h2>
+ * A step is split into S sub-intervals ({@link AnimationDef#subIntervals()}, §4.2.1). When a flow is
+ * switched within the step (its activation window opens or closes without a ramp, it is added,
+ * removed, enabled or disabled: {@code WindField.lastEdge}), the force is T0 up to the first
+ * sub-interval boundary at or after that time and T1 from there ({@link #prepare(double, int, int)}'s
+ * {@code edge}): the two exact constant-force maps composed. A switch at a step boundary is thus
+ * exact, one inside a step is honoured at the next sub-interval boundary.
+ *
+ * <h2>Per-plant response variants</h2>
+ * A species may vary its response time from plant to plant ({@code VariationDef.responseTime}): each
+ * kind has {@link #RESPONSE_VARIANTS} coefficient rows, row v for the response time
+ * {@code tau (1 + f (v - NOMINAL) / NOMINAL)} with f the species' fraction and
+ * NOMINAL = {@link #NOMINAL_VARIANT} (tau itself). A plant uses one row for all its components.
  *
  * <p>Build time allocates; {@link #prepare} and every accessor allocate nothing. Not thread-safe:
  * the stepping thread calls {@link #prepare} while the workers are idle; workers then only read.
@@ -65,6 +94,12 @@ import org.joml.Vector3f;
 public final class SpringKinds {
     /** Coefficients per kind in {@link #coefficients(int, float[], int)}. */
     public static final int STRIDE = 8;
+    /** Response-time variants (coefficient rows) per kind; see the class comment. */
+    public static final int RESPONSE_VARIANTS = 9;
+    /** The variant whose response time is the kind's own tau. */
+    public static final int NOMINAL_VARIANT = 4;
+    /** Where the stiffening starts, as a fraction of the bend limit dMax (see the class comment). */
+    public static final float KNEE = 0.5f;
 
     private final int count;
     private final double[] stiffness;
@@ -72,6 +107,7 @@ public final class SpringKinds {
     private final double[] mass;
     private final double[] dragArea;
     private final double[] gain;
+    private final double[] responseVariation;
     final float[] leanMag;
     final float[] invLength;
     final float[] poseScale;
@@ -79,12 +115,16 @@ public final class SpringKinds {
     final float[] maxBend;
     final float[] length;
     final int[] lodMask;
+    /** Per kind, {@code l sin(maxBend)}: the tip offset of the last pose with the length kept, metres. */
+    final float[] dMax;
+    /** Coefficient rows, {@link #STRIDE} per row, row {@code k * RESPONSE_VARIANTS + v}. */
     final float[] coef;
     private final int[] springClass;
     private final int[] speciesBase;
     private final int[] speciesVariants;
     private double preparedStep = Double.NaN;
     private int preparedSub = -1;
+    private int preparedEdge = -1;
 
     private SpringKinds(Builder b, int[] speciesBase, int[] speciesVariants) {
         count = b.n;
@@ -100,7 +140,9 @@ public final class SpringKinds {
         maxBend = new float[count];
         length = new float[count];
         lodMask = Arrays.copyOf(b.lodMask, count);
-        coef = new float[count * STRIDE];
+        responseVariation = Arrays.copyOf(b.responseVariation, count);
+        dMax = new float[count];
+        coef = new float[count * RESPONSE_VARIANTS * STRIDE];
         for (int k = 0; k < count; k++) {
             gain[k] = 0.5 * DragLaw.AIR_DENSITY * dragArea[k] / stiffness[k];
             // a floor on the lean keeps the rest heading defined for an upright component
@@ -110,11 +152,12 @@ public final class SpringKinds {
             maxBend[k] = (float) b.maxBend[k];
             poseMax[k] = b.poses[k] - 1;
             poseScale[k] = (float) ((b.poses[k] - 1) / b.maxBend[k]);
+            dMax[k] = (float) (b.length[k] * Math.sin(b.maxBend[k]));
         }
         springClass = new int[count];
         java.util.Map<java.util.List<Double>, Integer> classes = new java.util.HashMap<>();
         for (int k = 0; k < count; k++) {
-            Integer prev = classes.putIfAbsent(java.util.List.of(responseTime[k], gain[k]), k);
+            Integer prev = classes.putIfAbsent(java.util.List.of(responseTime[k], gain[k], responseVariation[k]), k);
             springClass[k] = prev != null ? prev : k;
         }
         this.speciesBase = speciesBase;
@@ -150,7 +193,7 @@ public final class SpringKinds {
                     PoseTable t = cm.poseTable(v);
                     t.position(0, t.points() - 1, tip);
                     b.add(cm.stiffness(), cm.responseTime(), cm.mass(v), cm.dragArea(), cm.length(v),
-                            Math.abs(tip.x), t.maxBend(), t.poses(), mask);
+                            Math.abs(tip.x), t.maxBend(), t.poses(), mask, sm.def().variation().responseTime());
                 }
             }
         }
@@ -255,9 +298,10 @@ public final class SpringKinds {
     }
 
     /**
-     * The spring class of kind k: the first kind with the same response time and gain (the only
-     * constants the step coefficients depend on), so kinds of one class always have bit-identical
-     * coefficients. The shape variants of one component type share their class.
+     * The spring class of kind k: the first kind with the same response time, gain and response-time
+     * variation (the constants the step coefficients and the per-run rest point depend on), so kinds
+     * of one class always have bit-identical coefficients. The shape variants of one component type
+     * share their class.
      *
      * @param k kind, in [0, count())
      * @return the class's first kind, in [0, k]
@@ -275,15 +319,46 @@ public final class SpringKinds {
         return lodMask[k];
     }
 
+    /**
+     * {@return the bend limit of kind k: {@code length sin(maxBend)}, metres, the tip offset of its last
+     * pose with the length kept; the rest point of the spring stays below it (see the class comment)}
+     *
+     * @param k kind, in [0, count())
+     */
+    public float bendLimit(int k) {
+        return dMax[k];
+    }
+
+    /**
+     * {@return the relative response-time variation of kind k's species (0 for none)}
+     *
+     * @param k kind, in [0, count())
+     */
+    public double responseVariation(int k) {
+        return responseVariation[k];
+    }
+
+    /**
+     * {@return the response time of kind k in response variant v, seconds:
+     * {@code tau (1 + f (v - NOMINAL_VARIANT) / NOMINAL_VARIANT)} with f its {@link #responseVariation}}
+     *
+     * @param k kind, in [0, count())
+     * @param v response variant, in [0, RESPONSE_VARIANTS)
+     */
+    public double responseTime(int k, int v) {
+        return responseTime[k] * (1 + responseVariation[k] * (v - NOMINAL_VARIANT) / NOMINAL_VARIANT);
+    }
+
     /** {@return the step length the coefficients were last prepared for, seconds (NaN before the first)} */
     public double preparedStep() {
         return preparedStep;
     }
 
     /**
-     * Copies the cached coefficients of kind k, {@link #STRIDE} of them in the order aDD, aDv, bD, cD,
-     * aVD, aVv, bV, cV (see the class comment), into {@code dest} from {@code offset}. Any thread
-     * while no {@link #prepare} runs; no allocation.
+     * Copies the cached coefficients of kind k in its nominal response variant, {@link #STRIDE} of
+     * them in the order aDD, aDv, bD, cD, aVD, aVv, bV, cV (see the class comment; bD, cD, bV and cV
+     * weigh rest points in metres), into {@code dest} from {@code offset}. Any thread while no
+     * {@link #prepare} runs; no allocation.
      *
      * @param k      kind, in [0, count())
      * @param dest   where to write, at least {@code offset + STRIDE} long
@@ -298,7 +373,7 @@ public final class SpringKinds {
             throw new IllegalArgumentException("dest must hold " + STRIDE + " values from offset " + offset
                     + ", its length is " + dest.length);
         }
-        System.arraycopy(coef, k * STRIDE, dest, offset, STRIDE);
+        System.arraycopy(coef, row(k, NOMINAL_VARIANT) * STRIDE, dest, offset, STRIDE);
         return dest;
     }
 
@@ -310,79 +385,171 @@ public final class SpringKinds {
      * @return the coefficient (NaN-free after {@link #prepare}; 0 before)
      */
     public float coefficient(int k, int i) {
-        Require.range("k", k, 0, count - 1);
-        Require.range("i", i, 0, STRIDE - 1);
-        return coef[k * STRIDE + i];
+        return coefficient(k, NOMINAL_VARIANT, i);
     }
 
     /**
-     * Computes the step coefficients of every kind for steps of {@code step} seconds split into
-     * {@code subIntervals}; does nothing when both are unchanged. Stepping thread, workers idle.
+     * One cached coefficient of kind k in response variant v (see {@link #coefficients(int, float[], int)}).
      * No allocation.
+     *
+     * @param k kind, in [0, count())
+     * @param v response variant, in [0, RESPONSE_VARIANTS)
+     * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
+     * @return the coefficient (0 before {@link #prepare})
+     */
+    public float coefficient(int k, int v, int i) {
+        Require.range("k", k, 0, count - 1);
+        Require.range("v", v, 0, RESPONSE_VARIANTS - 1);
+        Require.range("i", i, 0, STRIDE - 1);
+        return coef[row(k, v) * STRIDE + i];
+    }
+
+    /** The coefficient row of kind k in response variant v. */
+    static int row(int k, int v) {
+        return k * RESPONSE_VARIANTS + v;
+    }
+
+    /**
+     * Computes the step coefficients of every kind for steps of {@code step} seconds with a force
+     * linear over the step (no switch inside it); does nothing when nothing changed. Stepping thread,
+     * workers idle. No allocation.
      *
      * @param step         seconds, in [1e-6, 10]
      * @param subIntervals in [1, 64]
      */
     public void prepare(double step, int subIntervals) {
+        prepare(step, subIntervals, -1);
+    }
+
+    /**
+     * Computes the step coefficients of every kind and response variant for steps of {@code step}
+     * seconds split into {@code subIntervals}, with a switch of the force at sub-interval boundary
+     * {@code edge} (the force is the start's before it and the end's from it), or none for -1 (the
+     * force linear over the step); see the class comment. Does nothing when all three are unchanged.
+     * Stepping thread, workers idle. No allocation.
+     *
+     * @param step         seconds, in [1e-6, 10]
+     * @param subIntervals in [1, 64]
+     * @param edge         -1, or the boundary of the switch, in [0, subIntervals]
+     * @throws IllegalArgumentException when a value is out of range
+     */
+    public void prepare(double step, int subIntervals, int edge) {
         Require.range("step", step, 1e-6, 10);
         Require.range("subIntervals", subIntervals, 1, 64);
-        if (step == preparedStep && subIntervals == preparedSub) {
+        Require.range("edge", edge, -1, subIntervals);
+        if (step == preparedStep && subIntervals == preparedSub && edge == preparedEdge) {
             return;
         }
         for (int k = 0; k < count; k++) {
-            compose(k, step, subIntervals);
+            for (int v = 0; v < RESPONSE_VARIANTS; v++) {
+                compose(k, v, step, subIntervals, edge);
+            }
         }
         preparedStep = step;
         preparedSub = subIntervals;
+        preparedEdge = edge;
     }
 
-    private void compose(int k, double h, int sub) {
-        double tau = responseTime[k];
-        double s = h / sub;
-        double x = s / tau;
-        double e = StrictMath.exp(-x);
-        double p = e * (1 + x);
-        double q = e * s;
-        double r = -e * x / tau;
-        double w = e * (1 - x);
-        double uD = (1 - p) * gain[k];
-        double uV = -r * gain[k];
-        double m11 = 1;
-        double m12 = 0;
-        double m21 = 0;
-        double m22 = 1;
-        double bD = 0;
-        double bV = 0;
-        double cD = 0;
-        double cV = 0;
-        for (int i = 0; i < sub; i++) {
-            double lambda = (i + 0.5) / sub;
-            double n11 = p * m11 + q * m21;
-            double n12 = p * m12 + q * m22;
-            double n21 = r * m11 + w * m21;
-            double n22 = r * m12 + w * m22;
-            m11 = n11;
-            m12 = n12;
-            m21 = n21;
-            m22 = n22;
-            double nbD = p * bD + q * bV + uD * (1 - lambda);
-            double nbV = r * bD + w * bV + uV * (1 - lambda);
-            bD = nbD;
-            bV = nbV;
-            double ncD = p * cD + q * cV + uD * lambda;
-            double ncV = r * cD + w * cV + uV * lambda;
-            cD = ncD;
-            cV = ncV;
+    /**
+     * The sub-interval boundary at which a switch at wind time {@code edgeTime} takes effect in the
+     * step that ends at {@code stepEnd}: the first boundary at or after it, allowing for rounding of
+     * the accumulated time (a millionth of a sub-interval), clamped to [0, subIntervals]; -1 when
+     * {@code edgeTime} is NaN (no switch). Any thread; no allocation.
+     *
+     * @param edgeTime     seconds, or NaN
+     * @param stepEnd      seconds, the time at the end of the step
+     * @param step         the step length, seconds, &gt; 0
+     * @param subIntervals in [1, 64]
+     * @return -1 or the boundary, in [0, subIntervals]
+     */
+    public static int edgeBoundary(double edgeTime, double stepEnd, double step, int subIntervals) {
+        if (Double.isNaN(edgeTime)) {
+            return -1;
         }
-        int o = k * STRIDE;
-        coef[o] = (float) m11;
-        coef[o + 1] = (float) m12;
+        double s = step / subIntervals;
+        double i = Math.ceil((edgeTime - (stepEnd - step)) / s - 1e-6);
+        return (int) Math.max(0, Math.min(subIntervals, i));
+    }
+
+    private void compose(int k, int v, double h, int sub, int edge) {
+        double tau = responseTime(k, v);
+        double aDD;
+        double aDv;
+        double bD;
+        double cD;
+        double aVD;
+        double aVv;
+        double bV;
+        double cV;
+        if (edge < 0) {
+            double x = h / tau;
+            double e = StrictMath.exp(-x);
+            double g2 = gamma2(x, e);
+            double g3 = gamma3(x, e);
+            aDD = e * (1 + x);
+            aDv = e * h;
+            aVD = -e * x / tau;
+            aVv = e * (1 - x);
+            bD = g3 / x;
+            cD = g2 - bD;
+            cV = g2 / (x * tau);
+            bV = x * e / tau - cV;
+        } else {
+            // the force T0 over [0, a], then T1 over [a, h]: two exact constant-force maps composed
+            double a = h * edge / sub;
+            double x1 = a / tau;
+            double x2 = (h - a) / tau;
+            double e1 = StrictMath.exp(-x1);
+            double e2 = StrictMath.exp(-x2);
+            double p1 = e1 * (1 + x1);
+            double q1 = e1 * a;
+            double r1 = -e1 * x1 / tau;
+            double w1 = e1 * (1 - x1);
+            double g1 = gamma2(x1, e1);
+            double p2 = e2 * (1 + x2);
+            double q2 = e2 * (h - a);
+            double r2 = -e2 * x2 / tau;
+            double w2 = e2 * (1 - x2);
+            aDD = p2 * p1 + q2 * r1;
+            aDv = p2 * q1 + q2 * w1;
+            bD = p2 * g1 - q2 * r1;
+            cD = gamma2(x2, e2);
+            aVD = r2 * p1 + w2 * r1;
+            aVv = r2 * q1 + w2 * w1;
+            bV = r2 * g1 - w2 * r1;
+            cV = -r2;
+        }
+        int o = row(k, v) * STRIDE;
+        coef[o] = (float) aDD;
+        coef[o + 1] = (float) aDv;
         coef[o + 2] = (float) bD;
         coef[o + 3] = (float) cD;
-        coef[o + 4] = (float) m21;
-        coef[o + 5] = (float) m22;
+        coef[o + 4] = (float) aVD;
+        coef[o + 5] = (float) aVv;
         coef[o + 6] = (float) bV;
         coef[o + 7] = (float) cV;
+    }
+
+    /** {@code 1 - e^-x (1 + x)}, the lower incomplete gamma function of order 2, for x &gt;= 0 and e = e^-x. */
+    static double gamma2(double x, double e) {
+        return x < 1 ? lowerGammaSeries(2, x, e) : 1 - e * (1 + x);
+    }
+
+    /** {@code 2 - e^-x (x^2 + 2x + 2)}, the lower incomplete gamma function of order 3, for x &gt;= 0. */
+    static double gamma3(double x, double e) {
+        return x < 1 ? lowerGammaSeries(3, x, e) : 2 - e * (x * x + 2 * x + 2);
+    }
+
+    /** {@code x^n e^-x sum_k x^k / (n (n+1) ... (n+k))} for x in [0, 1): no cancellation. */
+    private static double lowerGammaSeries(int n, double x, double e) {
+        double term = 1.0 / n;
+        double sum = term;
+        for (int k = 1; k < 30; k++) {
+            term *= x / (n + k);
+            sum += term;
+        }
+        double xn = n == 2 ? x * x : x * x * x;
+        return xn * e * sum;
     }
 
     /** Collects kinds one by one (tests, games with their own components). Build time; allocates. */
@@ -397,6 +564,7 @@ public final class SpringKinds {
         private double[] maxBend = new double[8];
         private int[] poses = new int[8];
         private int[] lodMask = new int[8];
+        private double[] responseVariation = new double[8];
 
         /** An empty builder, room for 8 kinds before it grows (doubling). Allocates. */
         public Builder() {
@@ -420,12 +588,46 @@ public final class SpringKinds {
          */
         public int add(double stiffness, double responseTime, double mass, double dragArea, double length,
                        double restLean, double maxBend, int poses, int lodMask) {
+            return add(stiffness, responseTime, mass, dragArea, length, restLean, maxBend, poses, lodMask, 0);
+        }
+
+        /** Smallest scale of a variant's length (1 - the largest variation), with a margin for rounding. */
+        private static final double VARIANT_MIN = (1 - org.jecosys.plant.VariationDef.MAX_FRACTION) * (1 - 1e-9);
+        /** Largest scale of a variant's length (1 + the largest variation), with a margin for rounding. */
+        private static final double VARIANT_MAX = (1 + org.jecosys.plant.VariationDef.MAX_FRACTION) * (1 + 1e-9);
+
+        /**
+         * Adds a kind whose response time varies from plant to plant (see the class comment); returns
+         * its index.
+         *
+         * @param stiffness         PC, N/m, in [1e-9, 1e6]
+         * @param responseTime      tau, seconds, in [1e-3, 10]
+         * @param mass              kg, the def's range widened by the variation: [1e-11, 36.1]
+         * @param dragArea          m^2, in [0, 10]
+         * @param length            skeleton length, metres, the def's range widened by the variation:
+         *                          [1e-7, 19]
+         * @param restLean          horizontal tip offset of the rest pose, metres, in [0, 19]
+         * @param maxBend           bend of the last pose, radians, in [1e-3, pi/2]
+         * @param poses             pose count K, in [2, 64]
+         * @param lodMask           bit l set when drawn at level l
+         * @param responseVariation relative response-time variation between plants, in [0, 0.9]
+         * @return the new kind's index
+         * @throws IllegalArgumentException when a value is out of range or there are already
+         *                                  {@code Short.MAX_VALUE} kinds
+         */
+        public int add(double stiffness, double responseTime, double mass, double dragArea, double length,
+                       double restLean, double maxBend, int poses, int lodMask, double responseVariation) {
+            Require.range("responseVariation", responseVariation, 0, 0.9);
             Require.range("stiffness", stiffness, 1e-9, 1e6);
             Require.range("responseTime", responseTime, 1e-3, 10);
-            Require.range("mass", mass, 1e-9, 10);
+            // a kind is one shape variant: its length is the def's times up to 1 +- the largest variation
+            // (org.jecosys.plant.VariationDef), its mass that squared
+            Require.range("mass", mass, VARIANT_MIN * VARIANT_MIN * org.jecosys.plant.ComponentDef.MIN_MASS,
+                    VARIANT_MAX * VARIANT_MAX * org.jecosys.plant.ComponentDef.MAX_MASS);
             Require.range("dragArea", dragArea, 0, 10);
-            Require.range("length", length, 1e-6, 10);
-            Require.range("restLean", restLean, 0, 10);
+            Require.range("length", length, VARIANT_MIN * org.jecosys.plant.ComponentDef.MIN_LENGTH,
+                    VARIANT_MAX * org.jecosys.plant.ComponentDef.MAX_LENGTH);
+            Require.range("restLean", restLean, 0, VARIANT_MAX * org.jecosys.plant.ComponentDef.MAX_LENGTH);
             Require.range("maxBend", maxBend, 1e-3, Math.PI / 2);
             Require.range("poses", poses, 2, 64);
             if (n == Short.MAX_VALUE) {
@@ -442,6 +644,7 @@ public final class SpringKinds {
                 this.maxBend = Arrays.copyOf(this.maxBend, c);
                 this.poses = Arrays.copyOf(this.poses, c);
                 this.lodMask = Arrays.copyOf(this.lodMask, c);
+                this.responseVariation = Arrays.copyOf(this.responseVariation, c);
             }
             this.stiffness[n] = stiffness;
             this.responseTime[n] = responseTime;
@@ -452,6 +655,7 @@ public final class SpringKinds {
             this.maxBend[n] = maxBend;
             this.poses[n] = poses;
             this.lodMask[n] = lodMask;
+            this.responseVariation[n] = responseVariation;
             return n++;
         }
 

@@ -9,12 +9,20 @@ import org.jecosys.math.Rng;
  * ({@link SpringKinds#springClass}) and their level-of-detail mask. Run r covers components
  * {@code start[r] .. start[r + 1] - 1} (no run is empty); plant p owns runs {@code plantRun[p] ..
  * plantRun[p + 1] - 1}. The arrays are built once (allocates) and then read in place by the caller;
- * the steps ({@link #setForce}, {@link #spring}, and RANDOM mode's {@link #randomise}) are static
- * over the caller's arrays and allocate nothing.
+ * the steps ({@link #setForce}, {@link #spring}, {@link #settle}, and RANDOM mode's {@link #randomise})
+ * are static over the caller's arrays and allocate nothing.
  */
 final class SpringRuns {
-    /** Force terms per run in {@code runForce}: bD P0x, cD P1x, bD P0z, cD P1z, bV P0x, cV P1x, bV P0z, cV P1z. */
-    static final int FORCE_STRIDE = 8;
+    /**
+     * Values per run in {@code runForce}: the linear rest points (metres) at the start and the end of
+     * the step, T0x, T0z, T1x, T1z, and their magnitudes |T0|, |T1|.
+     */
+    static final int FORCE_STRIDE = 6;
+    /** Largest linear rest point kept, metres: far beyond every bend limit, so saturation is complete. */
+    static final double MAX_TARGET = 1e20;
+    private static final float KNEE = SpringKinds.KNEE;
+    private static final float SPAN = 1 - KNEE;
+    private static final float INV_SPAN = 1 / SPAN;
 
     /** Per run its first component, plus the component count at the end (length runs + 1). */
     final int[] start;
@@ -66,24 +74,60 @@ final class SpringRuns {
     }
 
     /**
-     * Writes run r's {@value #FORCE_STRIDE} force terms into {@code runForce} from the plant's force
-     * before ({@code p0}) and now ({@code p1}), with the coefficients of its spring class cls.
+     * Writes run r's {@value #FORCE_STRIDE} values into {@code runForce}: the linear rest points
+     * {@code gain P} of the plant's {@code P = |u| u} at the start ({@code p0}) and the end ({@code p1})
+     * of the step, m^2/s^2, with {@code gain} the run's equilibrium deviation per unit P (metres per
+     * (m/s)^2, the plant's compliance included), and their magnitudes, capped at {@link #MAX_TARGET}.
      */
-    static void setForce(int r, int cls, float[] co, float[] runForce, float p0x, float p0z, float p1x, float p1z) {
-        int o = cls * SpringKinds.STRIDE;
-        float bD = co[o + 2];
-        float cD = co[o + 3];
-        float bV = co[o + 6];
-        float cV = co[o + 7];
+    static void setForce(int r, double gain, float[] runForce, float p0x, float p0z, float p1x, float p1z) {
         int f = r * FORCE_STRIDE;
-        runForce[f] = bD * p0x;
-        runForce[f + 1] = cD * p1x;
-        runForce[f + 2] = bD * p0z;
-        runForce[f + 3] = cD * p1z;
-        runForce[f + 4] = bV * p0x;
-        runForce[f + 5] = cV * p1x;
-        runForce[f + 6] = bV * p0z;
-        runForce[f + 7] = cV * p1z;
+        target(gain, p0x, p0z, runForce, f, f + 4);
+        target(gain, p1x, p1z, runForce, f + 2, f + 5);
+    }
+
+    private static void target(double gain, float px, float pz, float[] out, int o, int om) {
+        double tx = gain * px;
+        double tz = gain * pz;
+        double m = Math.sqrt(tx * tx + tz * tz);
+        if (m > MAX_TARGET) {
+            double k = MAX_TARGET / m;
+            tx *= k;
+            tz *= k;
+            m = MAX_TARGET;
+        }
+        out[o] = (float) tx;
+        out[o + 1] = (float) tz;
+        out[om] = (float) m;
+    }
+
+    /**
+     * The factor that turns a linear rest point into the stiffened one (see "Bounded bend" in
+     * {@link SpringKinds}): {@code sigma(x) / x} for {@code x = |T| / dMax}; exactly 1 up to the knee,
+     * then decreasing so that {@code x} times it stays below 1. Branch-free; no allocation.
+     *
+     * @param x the linear rest point over the bend limit, finite, &gt;= 0
+     * @return the factor, in (0, 1]
+     */
+    static float saturation(float x) {
+        float u = Math.max(0f, (x - KNEE) * INV_SPAN);
+        return (Math.min(x, KNEE) + SPAN * (u / (1f + u))) / Math.max(x, Float.MIN_NORMAL);
+    }
+
+    /**
+     * Puts the components {@code c0 .. c1-1} at the rest point of the linear rest point (tx, tz) of
+     * magnitude m (metres), at zero velocity: the equilibrium of that force.
+     *
+     * @param invLimit per component, 1 / its bend limit, 1/m
+     */
+    static void settle(int c0, int c1, float tx, float tz, float m, float[] invLimit, float[] devX, float[] devZ,
+                       float[] velX, float[] velZ) {
+        for (int c = c0; c < c1; c++) {
+            float k = saturation(m * invLimit[c]);
+            devX[c] = k * tx;
+            devZ[c] = k * tz;
+            velX[c] = 0;
+            velZ[c] = 0;
+        }
     }
 
     /**
@@ -113,47 +157,52 @@ final class SpringRuns {
     }
 
     /**
-     * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of spring class cls) by
-     * eq. 5's affine map: first the part common to the class ({@code aDD D + aDv v},
-     * {@code aVD D + aVv v}) in one loop over the whole segment that C2 vectorises, then each run's
-     * force terms, added in the order {@code (aDD D + aDv v) + bD P0 + cD P1}.
+     * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of coefficient row
+     * {@code row}) by the step's affine map (eq. 5 integrated exactly, see {@link SpringKinds}) in the
+     * form {@code D' = A + aDD (D - A) + aDv v + cD (B - A)}, {@code v' = aVD (D - A) + aVv v + cV (B - A)},
+     * where A and B are the component's stiffened rest points at the start and the end of the step
+     * (its run's linear rest points times {@link #saturation} of their size over its bend limit). One
+     * short branch-free loop per run, over arrays indexed by component; each component's result
+     * depends on its own values only.
      *
-     * @param co       the spring coefficients ({@link SpringKinds#coef}, {@link SpringKinds#STRIDE} per class)
+     * @param co       the spring coefficients ({@link SpringKinds#coef}, {@link SpringKinds#STRIDE} per row)
      * @param runStart per run its first component, as {@link #start}
-     * @param runForce per run its {@value #FORCE_STRIDE} force terms
+     * @param runForce per run its {@value #FORCE_STRIDE} values ({@link #setForce})
+     * @param invLimit per component, 1 / its bend limit, 1/m
      */
-    static void spring(int r0, int r1, int cls, float[] co, int[] runStart, float[] runForce, float[] devX,
-                       float[] devZ, float[] velX, float[] velZ) {
-        final int o = cls * SpringKinds.STRIDE;
+    static void spring(int r0, int r1, int row, float[] co, int[] runStart, float[] runForce, float[] invLimit,
+                       float[] devX, float[] devZ, float[] velX, float[] velZ) {
+        final int o = row * SpringKinds.STRIDE;
         final float aDD = co[o];
         final float aDv = co[o + 1];
+        final float cD = co[o + 3];
         final float aVD = co[o + 4];
         final float aVv = co[o + 5];
-        for (int c = runStart[r0], e = runStart[r1]; c < e; c++) {
-            float x = devX[c];
-            float z = devZ[c];
-            float vx = velX[c];
-            float vz = velZ[c];
-            devX[c] = aDD * x + aDv * vx;
-            devZ[c] = aDD * z + aDv * vz;
-            velX[c] = aVD * x + aVv * vx;
-            velZ[c] = aVD * z + aVv * vz;
-        }
+        final float cV = co[o + 7];
         for (int r = r0; r < r1; r++) {
             int f = r * FORCE_STRIDE;
-            float dx0 = runForce[f];
-            float dx1 = runForce[f + 1];
-            float dz0 = runForce[f + 2];
-            float dz1 = runForce[f + 3];
-            float vx0 = runForce[f + 4];
-            float vx1 = runForce[f + 5];
-            float vz0 = runForce[f + 6];
-            float vz1 = runForce[f + 7];
+            float t0x = runForce[f];
+            float t0z = runForce[f + 1];
+            float t1x = runForce[f + 2];
+            float t1z = runForce[f + 3];
+            float m0 = runForce[f + 4];
+            float m1 = runForce[f + 5];
             for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
-                devX[c] = devX[c] + dx0 + dx1;
-                devZ[c] = devZ[c] + dz0 + dz1;
-                velX[c] = velX[c] + vx0 + vx1;
-                velZ[c] = velZ[c] + vz0 + vz1;
+                float q = invLimit[c];
+                float k0 = saturation(m0 * q);
+                float k1 = saturation(m1 * q);
+                float ax = k0 * t0x;
+                float az = k0 * t0z;
+                float dx = k1 * t1x - ax;
+                float dz = k1 * t1z - az;
+                float ex = devX[c] - ax;
+                float ez = devZ[c] - az;
+                float vx = velX[c];
+                float vz = velZ[c];
+                devX[c] = ax + aDD * ex + aDv * vx + cD * dx;
+                devZ[c] = az + aDD * ez + aDv * vz + cD * dz;
+                velX[c] = aVD * ex + aVv * vx + cV * dx;
+                velZ[c] = aVD * ez + aVv * vz + cV * dz;
             }
         }
     }

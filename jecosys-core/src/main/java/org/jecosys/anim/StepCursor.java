@@ -38,9 +38,9 @@ final class StepCursor {
     }
 
     /**
-     * Queues spring run {@code r} of class {@code cls}: it extends the pending segment if it
-     * continues it (same class, next component), otherwise the pending segment is advanced and r
-     * starts a new one.
+     * Queues spring run {@code r} of coefficient row {@code cls} ({@link SpringKinds#row}): it extends
+     * the pending segment if it continues it (same row, next component), otherwise the pending segment
+     * is advanced and r starts a new one.
      *
      * @param runStart per run its first component (length runs + 1)
      */

@@ -83,8 +83,9 @@ public interface ForceField {
     int depth(int plant);
 
     /**
-     * Writes the wind velocity (m/s; x = X, y = Z) at the plant's effective node into dest; (0, 0)
-     * when the plant is not visible. No allocation.
+     * Writes the wind velocity (m/s; x = X, y = Z) at the plant into dest: its effective node's wind
+     * (the quadtree field refines it inside the node by the node's wind gradient); (0, 0) when the
+     * plant is not visible. No allocation.
      *
      * @param plant plant id, in [0, plantCount())
      * @param dest  where to write

@@ -15,23 +15,34 @@ import org.jecosys.math.Require;
 public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
     /** Largest allowed {@link #maxDepth()}. */
     public static final int MAX_DEPTH = 16;
+    /** Largest {@link #maxObjectsPerNode()} (the scene schema's range and the API's). */
+    public static final int MAX_OBJECTS_PER_NODE = 1_000_000;
+    /** Most {@link #lodDistances()}. */
+    public static final int MAX_LOD_DISTANCES = 16;
+    /** Largest LOD distance, metres. */
+    public static final double MAX_LOD_DISTANCE = 1e6;
 
     /**
      * Checks the components and copies the distances.
      *
      * @param enabled           whether the field evaluates flows
-     * @param maxObjectsPerNode split threshold, in [1, 1000000]
+     * @param maxObjectsPerNode split threshold, in [1, {@link #MAX_OBJECTS_PER_NODE}]
      * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
-     * @param lodDistances      strictly ascending positive distances, metres
+     * @param lodDistances      at most {@link #MAX_LOD_DISTANCES} strictly ascending distances, metres, each
+     *                          in (0, {@link #MAX_LOD_DISTANCE}]
      * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
      */
     public ForceFieldDef {
-        Require.range("maxObjectsPerNode", maxObjectsPerNode, 1, 1_000_000);
+        Require.range("maxObjectsPerNode", maxObjectsPerNode, 1, MAX_OBJECTS_PER_NODE);
         Require.range("maxDepth", maxDepth, 0, MAX_DEPTH);
         lodDistances = List.copyOf(Require.nonNull("lodDistances", lodDistances));
+        if (lodDistances.size() > MAX_LOD_DISTANCES) {
+            throw new IllegalArgumentException("lodDistances holds at most " + MAX_LOD_DISTANCES + " distances, got "
+                    + lodDistances.size());
+        }
         double prev = 0;
         for (int i = 0; i < lodDistances.size(); i++) {
-            double d = Require.positive("lodDistances[" + i + "]", lodDistances.get(i));
+            double d = Require.above("lodDistances[" + i + "]", lodDistances.get(i), 0, MAX_LOD_DISTANCE);
             if (d <= prev) {
                 throw new IllegalArgumentException("lodDistances must be strictly ascending, got "
                         + lodDistances);

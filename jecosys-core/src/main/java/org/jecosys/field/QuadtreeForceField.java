@@ -3,6 +3,7 @@ package org.jecosys.field;
 import java.util.Arrays;
 import org.jecosys.math.Require;
 import org.jecosys.math.Camera;
+import org.jecosys.math.Noise;
 import org.jecosys.wind.WindField;
 import org.joml.FrustumIntersection;
 import org.joml.Matrix4f;
@@ -25,9 +26,22 @@ import org.joml.Vector2d;
  * it (no leaf is represented by an ancestor more than L levels up). A collapsed full subtree of
  * height h spares 4^h - 1 evaluations.</li>
  * <li>Wind: each effective node holding plants evaluates the sum of all active flows once, at the
- * centre of gravity of the plants of its subtree (§3.2), and stores the velocity (m/s). A field
- * whose def is disabled evaluates nothing and stores zero wind.</li>
+ * centre of gravity of the plants of its subtree (§3.2), and stores the velocity (m/s), NaN as 0 and
+ * each component within +-{@link #MAX_WIND}. A field whose def is disabled evaluates nothing and
+ * stores zero wind.</li>
+ * <li>Gradient: each effective node holding plants fits the wind's gradient to the winds of its
+ * (up to four) edge neighbours among the effective nodes, by least squares over their centres of
+ * gravity, with no further flow evaluation; the gradient is scaled down where it would change the
+ * wind inside the node by more than twice the largest difference to a neighbour.</li>
  * </ol>
+ * A plant's wind ({@link #wind}, {@link #gather}) is its effective node's wind plus the gradient
+ * times the plant's offset from the node's centre of gravity: it varies smoothly inside a node (and
+ * is exact for a wind linear in space) instead of being one value for every plant in it. To that
+ * the field adds the small eddies that the flows declare ({@link WindField#eddySpeed}: a gust's
+ * turbulence) and that nodes a few metres wide cannot resolve, as a per-plant flutter: seeded value
+ * noise in time ({@link Noise#value1}, {@value #EDDY_FREQUENCY} Hz, one pattern per plant and wind
+ * component) of amplitude {@value #EDDY_GAIN} x the eddy speed. Without turbulence there is no
+ * flutter, and a plant's wind is the interpolated field's exactly.
  * Visibility is stamped per node with the update number, so invisible subtrees cost nothing:
  * the update's cost follows the visible nodes, not the size of the world.
  *
@@ -46,6 +60,20 @@ public final class QuadtreeForceField implements ForceField {
     private int[] rep;
     private float[] windX;
     private float[] windZ;
+    /** Per effective node, its plants' centre of gravity (metres) and the wind gradient (1/s). */
+    private float[] centX;
+    private float[] centZ;
+    private float[] gradXX;
+    private float[] gradXZ;
+    private float[] gradZX;
+    private float[] gradZZ;
+    /** The flutter's amplitude (m/s) and noise coordinate at the last update. */
+    private float eddy;
+    private double eddyTime;
+    /** The effective nodes of the last update, in visiting order. */
+    private int[] effective;
+    private int effectiveCount;
+    private final int[] probe = new int[4];
     private int current;
 
     private final FieldCounters counters = new FieldCounters();
@@ -127,7 +155,21 @@ public final class QuadtreeForceField implements ForceField {
         rep = rep == null ? new int[n] : Arrays.copyOf(rep, n);
         windX = windX == null ? new float[n] : Arrays.copyOf(windX, n);
         windZ = windZ == null ? new float[n] : Arrays.copyOf(windZ, n);
+        centX = centX == null ? new float[n] : Arrays.copyOf(centX, n);
+        centZ = centZ == null ? new float[n] : Arrays.copyOf(centZ, n);
+        gradXX = gradXX == null ? new float[n] : Arrays.copyOf(gradXX, n);
+        gradXZ = gradXZ == null ? new float[n] : Arrays.copyOf(gradXZ, n);
+        gradZX = gradZX == null ? new float[n] : Arrays.copyOf(gradZX, n);
+        gradZZ = gradZZ == null ? new float[n] : Arrays.copyOf(gradZZ, n);
+        effective = effective == null ? new int[n] : Arrays.copyOf(effective, n);
     }
+
+    /** Largest wind component stored, m/s: far beyond any real wind (a faster flow is capped). */
+    public static final float MAX_WIND = 1e9f;
+    /** Frequency of the per-plant flutter (unresolved eddies), Hz. */
+    public static final double EDDY_FREQUENCY = 1.5;
+    /** Flutter amplitude per m/s of the flows' eddy speed (dimensionless). */
+    public static final double EDDY_GAIN = 0.5;
 
     /** {@return the settings} */
     public ForceFieldDef def() {
@@ -189,7 +231,13 @@ public final class QuadtreeForceField implements ForceField {
         c.visibleLeaves = 0;
         c.effectiveNodes = 0;
         c.flowEvaluations = 0;
+        effectiveCount = 0;
+        eddyTime = wind.time() * EDDY_FREQUENCY;
+        eddy = def.enabled() ? finite(EDDY_GAIN * wind.eddySpeed()) : 0f;
         visit(0, false, -1);
+        for (int i = 0; i < effectiveCount; i++) {
+            gradient(effective[i]);
+        }
     }
 
     private void visit(int n, boolean inside, int r) {
@@ -208,6 +256,7 @@ public final class QuadtreeForceField implements ForceField {
         if (r < 0 && (fc < 0 || (lod2.length > 0 && t.height[n] <= lodLevel(n)))) {
             r = n;
             counters.effectiveNodes++;
+            effective[effectiveCount++] = n;
             evaluate(n);
         }
         rep[n] = r;
@@ -243,15 +292,116 @@ public final class QuadtreeForceField implements ForceField {
     private void evaluate(int n) {
         Quadtree t = tree;
         int cnt = t.count[n];
+        centX[n] = (float) t.centroidX(n);
+        centZ[n] = (float) t.centroidZ(n);
+        gradXX[n] = 0;
+        gradXZ[n] = 0;
+        gradZX[n] = 0;
+        gradZZ[n] = 0;
         if (!def.enabled() || cnt == 0) {
             windX[n] = 0;
             windZ[n] = 0;
             return;
         }
         wind.velocity(t.sumX[n] / cnt, t.sumZ[n] / cnt, tmp);
-        windX[n] = (float) tmp.x;
-        windZ[n] = (float) tmp.y;
+        windX[n] = finite(tmp.x);
+        windZ[n] = finite(tmp.y);
         counters.flowEvaluations++;
+    }
+
+    private static float finite(double v) {
+        return v == v ? (float) Math.max(-MAX_WIND, Math.min(MAX_WIND, v)) : 0f;
+    }
+
+    /**
+     * Fits effective node n's wind gradient to its edge neighbours (see the class comment). No flow
+     * evaluation; no allocation.
+     */
+    private void gradient(int n) {
+        Quadtree t = tree;
+        if (!def.enabled() || t.count[n] == 0) {
+            return;
+        }
+        float cx = centX[n];
+        float cz = centZ[n];
+        double ex = 1e-4 * (t.maxX[n] - t.minX[n]);
+        double ez = 1e-4 * (t.maxZ[n] - t.minZ[n]);
+        probe[0] = neighbour(t.maxX[n] + ex, cz);
+        probe[1] = neighbour(t.minX[n] - ex, cz);
+        probe[2] = neighbour(cx, t.maxZ[n] + ez);
+        probe[3] = neighbour(cx, t.minZ[n] - ez);
+        double sxx = 0;
+        double sxz = 0;
+        double szz = 0;
+        double bxx = 0;
+        double bxz = 0;
+        double bzx = 0;
+        double bzz = 0;
+        double maxDiff2 = 0;
+        for (int i = 0; i < 4; i++) {
+            int m = probe[i];
+            if (m < 0 || m == n || t.count[m] == 0 || (i > 0 && m == probe[i - 1]) || (i > 1 && m == probe[i - 2])
+                    || (i > 2 && m == probe[0])) {
+                continue;
+            }
+            double dx = centX[m] - cx;
+            double dz = centZ[m] - cz;
+            double du = windX[m] - windX[n];
+            double dv = windZ[m] - windZ[n];
+            sxx += dx * dx;
+            sxz += dx * dz;
+            szz += dz * dz;
+            bxx += dx * du;
+            bxz += dz * du;
+            bzx += dx * dv;
+            bzz += dz * dv;
+            maxDiff2 = Math.max(maxDiff2, du * du + dv * dv);
+        }
+        double lambda = 1e-3 * (sxx + szz);
+        double a = sxx + lambda;
+        double d = szz + lambda;
+        double det = a * d - sxz * sxz;
+        if (!(det > 0)) {
+            return;
+        }
+        double gxx = (d * bxx - sxz * bxz) / det;
+        double gxz = (a * bxz - sxz * bxx) / det;
+        double gzx = (d * bzx - sxz * bzz) / det;
+        double gzz = (a * bzz - sxz * bzx) / det;
+        // the largest change inside the node is at a corner; keep it within twice the largest difference
+        double hx = Math.max(t.maxX[n] - cx, cx - t.minX[n]);
+        double hz = Math.max(t.maxZ[n] - cz, cz - t.minZ[n]);
+        double cu = Math.abs(gxx) * hx + Math.abs(gxz) * hz;
+        double cv = Math.abs(gzx) * hx + Math.abs(gzz) * hz;
+        double most = Math.sqrt(cu * cu + cv * cv);
+        double cap = 2 * Math.sqrt(maxDiff2);
+        double k = most > cap ? cap / most : 1;
+        gradXX[n] = (float) (gxx * k);
+        gradXZ[n] = (float) (gxz * k);
+        gradZX[n] = (float) (gzx * k);
+        gradZZ[n] = (float) (gzz * k);
+    }
+
+    /** The effective node of the last update holding ground point (x, z), metres, or -1 (outside, invisible). */
+    private int neighbour(double x, double z) {
+        Quadtree t = tree;
+        if (!(x >= t.minX[0] && x <= t.maxX[0] && z >= t.minZ[0] && z <= t.maxZ[0])) {
+            return -1;
+        }
+        int m = 0;
+        while (stamp[m] == current) {
+            if (rep[m] >= 0) {
+                return rep[m];
+            }
+            int fc = t.firstChild[m];
+            if (fc < 0) {
+                return -1;
+            }
+            float mx = (t.minX[m] + t.maxX[m]) * 0.5f;
+            float mz = (t.minZ[m] + t.maxZ[m]) * 0.5f;
+            m = fc + (x >= mx ? 1 : 0) + (z >= mz ? 2 : 0);
+        }
+        return -1;
     }
 
     /** Whether node n passed the frustum test at the last update. */
@@ -297,7 +447,29 @@ public final class QuadtreeForceField implements ForceField {
     @Override
     public Vector2d wind(int plant, Vector2d dest) {
         int r = effectiveNode(plant);
-        return r < 0 ? dest.set(0, 0) : dest.set(windX[r], windZ[r]);
+        return r < 0 ? dest.set(0, 0) : dest.set(plantWindX(r, plant), plantWindZ(r, plant));
+    }
+
+    /**
+     * Wind X at a plant of effective node r: the node's wind plus its gradient times the offset, plus
+     * the plant's flutter, m/s.
+     */
+    private float plantWindX(int r, int plant) {
+        float dx = (float) (tree.plantX(plant) - centX[r]);
+        float dz = (float) (tree.plantZ(plant) - centZ[r]);
+        return windX[r] + gradXX[r] * dx + gradXZ[r] * dz + flutter(plant, 0x3C6EF372FE94F82BL);
+    }
+
+    private float plantWindZ(int r, int plant) {
+        float dx = (float) (tree.plantX(plant) - centX[r]);
+        float dz = (float) (tree.plantZ(plant) - centZ[r]);
+        return windZ[r] + gradZX[r] * dx + gradZZ[r] * dz + flutter(plant, 0xA54FF53A5F1D36F1L);
+    }
+
+    /** One component of a plant's flutter (see the class comment); 0 without turbulence. */
+    private float flutter(int plant, long salt) {
+        float a = eddy;
+        return a == 0 ? 0 : a * (float) Noise.value1(salt + plant * 0x9E3779B97F4A7C15L, eddyTime);
     }
 
     @Override
@@ -316,8 +488,8 @@ public final class QuadtreeForceField implements ForceField {
             visible[i] = v;
             if (v) {
                 int r = rep[leaf];
-                wx[i] = windX[r];
-                wz[i] = windZ[r];
+                wx[i] = plantWindX(r, first + i);
+                wz[i] = plantWindZ(r, first + i);
             }
         }
     }

@@ -9,6 +9,21 @@ public final class Noise {
     }
 
     /**
+     * Smooth value noise along one axis, period-free, in [-1, 1]: a seeded value at every integer,
+     * blended with a quintic fade (continuous value, slope and curvature).
+     *
+     * @param seed selects the noise pattern
+     * @param x    coordinate, in lattice cells (one cell per unit)
+     * @return the noise value, in [-1, 1]
+     */
+    public static double value1(long seed, double x) {
+        long xi = (long) Math.floor(x);
+        double a = lattice(seed, xi, 0, 0);
+        double b = lattice(seed, xi + 1, 0, 0);
+        return a + (b - a) * fade(x - xi);
+    }
+
+    /**
      * Smooth value noise at (x, y), period-free, in [-1, 1].
      *
      * @param seed selects the noise pattern

@@ -90,6 +90,75 @@ public final class Require {
     }
 
     /**
+     * A finite value in (min, max]: above {@code min}, at most {@code max} (a scene schema range
+     * whose minimum is excluded, e.g. a length that must be positive).
+     *
+     * @param name the argument's name, for the message
+     * @param v    the value to check
+     * @param min  the excluded lower bound
+     * @param max  largest allowed value (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is not finite or lies outside (min, max]
+     */
+    public static double above(String name, double v, double min, double max) {
+        finite(name, v);
+        if (!(v > min) || v > max) {
+            throw new IllegalArgumentException(name + " must be in (" + min + ", " + max + "], got " + v);
+        }
+        return v;
+    }
+
+    /**
+     * A value in (min, max] or {@link Double#POSITIVE_INFINITY} (meaning "unbounded" or "forever").
+     *
+     * @param name the argument's name, for the message
+     * @param v    the value to check
+     * @param min  the excluded lower bound
+     * @param max  largest finite value allowed (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is NaN, negative infinity, or a finite value
+     *                                  outside (min, max]
+     */
+    public static double aboveOrInfinite(String name, double v, double min, double max) {
+        if (v == Double.POSITIVE_INFINITY) {
+            return v;
+        }
+        if (!Double.isFinite(v) || !(v > min) || v > max) {
+            throw new IllegalArgumentException(name + " must be in (" + min + ", " + max + "] or +Infinity, got " + v);
+        }
+        return v;
+    }
+
+    /**
+     * An angle given in radians whose allowed range is stated in degrees (as in scene files):
+     * {@code v} must be finite and in [toRadians(minDegrees), toRadians(maxDegrees)]. The message
+     * gives both units, e.g. "maxBend must be in [0.1, 90] degrees, got 120 degrees (2.0943951023931953 radians)".
+     *
+     * @param name       the argument's name, for the message
+     * @param v          the value to check, radians
+     * @param minDegrees smallest allowed value, degrees (inclusive)
+     * @param maxDegrees largest allowed value, degrees (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is not finite or lies outside the range
+     */
+    public static double degrees(String name, double v, double minDegrees, double maxDegrees) {
+        if (!Double.isFinite(v) || v < Math.toRadians(minDegrees) || v > Math.toRadians(maxDegrees)) {
+            throw new IllegalArgumentException(name + " must be in [" + number(minDegrees) + ", " + number(maxDegrees)
+                    + "] degrees, got " + (Double.isFinite(v) ? number(Math.toDegrees(v)) + " degrees ("
+                    + v + " radians)" : v));
+        }
+        return v;
+    }
+
+    /** A short decimal form: at most 6 significant digits, no trailing zeros, e.g. 0.1, 90, 401.07. */
+    private static String number(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            return String.valueOf((long) v);
+        }
+        return new java.math.BigDecimal(v).round(new java.math.MathContext(6)).stripTrailingZeros().toPlainString();
+    }
+
+    /**
      * An int in [min, max].
      *
      * @param name the argument's name, for the message

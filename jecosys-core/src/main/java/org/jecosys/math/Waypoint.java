@@ -12,14 +12,22 @@ public record Waypoint(double x, double y, double z) {
     /**
      * Checks the coordinates.
      *
-     * @param x world X, metres (finite)
-     * @param y height above the terrain, metres (finite)
-     * @param z world Z, metres (finite)
-     * @throws IllegalArgumentException when a coordinate is not finite
+     * @param x world X, metres, in [-{@link #MAX_COORDINATE}, {@link #MAX_COORDINATE}]
+     * @param y height above the terrain, metres, in [-{@link #MAX_HEIGHT}, {@link #MAX_HEIGHT}]
+     * @param z world Z, metres, in [-{@link #MAX_COORDINATE}, {@link #MAX_COORDINATE}]
+     * @throws IllegalArgumentException when a coordinate is not finite or out of range
      */
     public Waypoint {
-        Require.finite("x", x);
-        Require.finite("y", y);
-        Require.finite("z", z);
+        Require.range("x", x, -MAX_COORDINATE, MAX_COORDINATE);
+        Require.range("y", y, -MAX_HEIGHT, MAX_HEIGHT);
+        Require.range("z", z, -MAX_COORDINATE, MAX_COORDINATE);
     }
+
+    /**
+     * Largest |X| or |Z| of any point of a scene (plants, flow centres, waypoints, the camera),
+     * metres: the scene schema's range and the API's.
+     */
+    public static final double MAX_COORDINATE = 1e6;
+    /** Largest |height| above the terrain of a waypoint or the camera, metres (scene schema and API). */
+    public static final double MAX_HEIGHT = 1e5;
 }

@@ -63,24 +63,57 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         }
         Require.nonNull("type", type);
         Require.nonNull("shape", shape);
-        Require.range("count", count, 1, 256);
-        Require.range("segments", segments, 1, 32);
-        Require.range("length", length, 1e-6, 10);
-        Require.range("baseWidth", baseWidth, 1e-6, 1);
-        Require.range("tipWidth", tipWidth, 0, 1);
-        Require.range("curvature", curvature, -Math.PI, Math.PI);
-        Require.range("twist", twist, -2 * Math.PI, 2 * Math.PI);
-        Require.range("tilt", tilt, 0, Math.PI / 2);
-        Require.range("mass", mass, 1e-9, 10);
-        Require.range("stiffness", stiffness, 1e-9, 1e6);
-        Require.range("responseTime", responseTime, 1e-3, 10);
-        Require.range("dragArea", dragArea, 0, 10);
+        Require.range("count", count, 1, MAX_COUNT);
+        Require.range("segments", segments, 1, MAX_SEGMENTS);
+        Require.range("length", length, MIN_LENGTH, MAX_LENGTH);
+        Require.range("baseWidth", baseWidth, MIN_WIDTH, MAX_WIDTH);
+        Require.range("tipWidth", tipWidth, 0, MAX_WIDTH);
+        Require.degrees("curvature", curvature, -MAX_CURVATURE_DEGREES, MAX_CURVATURE_DEGREES);
+        Require.degrees("twist", twist, -MAX_TWIST_DEGREES, MAX_TWIST_DEGREES);
+        Require.degrees("tilt", tilt, 0, MAX_TILT_DEGREES);
+        Require.range("mass", mass, MIN_MASS, MAX_MASS);
+        Require.range("stiffness", stiffness, MIN_STIFFNESS, MAX_STIFFNESS);
+        Require.range("responseTime", responseTime, MIN_RESPONSE_TIME, MAX_RESPONSE_TIME);
+        Require.range("dragArea", dragArea, 0, MAX_DRAG_AREA);
         Require.nonNull("colour", colour);
         lodSegments = List.copyOf(Require.nonNull("lodSegments", lodSegments));
         for (int i = 0; i < lodSegments.size(); i++) {
             Require.range("lodSegments[" + i + "]", lodSegments.get(i), 0, segments);
         }
     }
+
+    /** Most components of one type per plant (the scene schema's range and the API's). */
+    public static final int MAX_COUNT = 256;
+    /** Most skeleton segments of a component. */
+    public static final int MAX_SEGMENTS = 32;
+    /** Shortest component, metres. */
+    public static final double MIN_LENGTH = 1e-6;
+    /** Longest component, metres. */
+    public static final double MAX_LENGTH = 10;
+    /** Narrowest base width, metres. */
+    public static final double MIN_WIDTH = 1e-6;
+    /** Widest base or tip, metres. */
+    public static final double MAX_WIDTH = 1;
+    /** Largest |rest curvature|, degrees (the API takes radians). */
+    public static final double MAX_CURVATURE_DEGREES = 180;
+    /** Largest |twist|, degrees. */
+    public static final double MAX_TWIST_DEGREES = 360;
+    /** Largest tilt of the base from vertical, degrees. */
+    public static final double MAX_TILT_DEGREES = 90;
+    /** Lightest component, kilograms. */
+    public static final double MIN_MASS = 1e-9;
+    /** Heaviest component, kilograms. */
+    public static final double MAX_MASS = 10;
+    /** Softest spring constant PC, N/m. */
+    public static final double MIN_STIFFNESS = 1e-9;
+    /** Stiffest spring constant PC, N/m. */
+    public static final double MAX_STIFFNESS = 1e6;
+    /** Shortest response time tau, seconds. */
+    public static final double MIN_RESPONSE_TIME = 1e-3;
+    /** Longest response time tau, seconds. */
+    public static final double MAX_RESPONSE_TIME = 10;
+    /** Largest drag area, m^2. */
+    public static final double MAX_DRAG_AREA = 10;
 
     /** Default {@link #shape()} (the scene schema's default too): a strip. */
     public static final ComponentShape DEFAULT_SHAPE = ComponentShape.STRIP;

@@ -14,12 +14,15 @@ public record LodDef(double maxDistance, Primitive primitive) {
     /**
      * Checks the components.
      *
-     * @param maxDistance farthest viewer distance, metres, &gt; 0, or +Infinity
+     * @param maxDistance farthest viewer distance, metres, in (0, {@link #MAX_DISTANCE}], or +Infinity
      * @param primitive   triangles or lines, not null
      * @throws IllegalArgumentException when maxDistance is not positive or primitive is null
      */
     public LodDef {
-        Require.positiveOrInfinite("maxDistance", maxDistance);
+        Require.aboveOrInfinite("maxDistance", maxDistance, 0, MAX_DISTANCE);
         Require.nonNull("primitive", primitive);
     }
+
+    /** Largest finite {@link #maxDistance()}, metres (the scene schema's range and the API's). */
+    public static final double MAX_DISTANCE = 1e6;
 }

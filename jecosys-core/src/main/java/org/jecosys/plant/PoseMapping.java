@@ -3,7 +3,8 @@ package org.jecosys.plant;
 /**
  * Maps a component's deviation (from the animation layer, paper §4.2) to a continuous coordinate in
  * its pose table (§4.1). The bend angle of a deviation {@code |D|} (metres, in the ground plane, of a
- * component of skeleton length {@code L}) is {@code atan(|D| / L)}; it maps linearly onto
+ * component of skeleton length {@code L}) is {@code asin(min(1, |D| / L))}: the component keeps its
+ * length, so its tip moves by {@code L sin(angle)}; it maps linearly onto
  * [0, maxBend] → [0, K - 1] and saturates at the last pose. The integer part is the pose index
  * {@code k}, the fraction the blend weight toward {@code k + 1}; the renderer rotates the blended
  * pose about Y by the deviation's azimuth.
@@ -15,14 +16,15 @@ public final class PoseMapping {
     }
 
     /**
-     * Bend angle of a deviation: {@code atan(|deviation| / length)}.
+     * Bend angle of a deviation, the length kept: {@code asin(min(1, |deviation| / length))}.
      *
      * @param deviation deviation magnitude, metres (its absolute value is used)
      * @param length    component skeleton length, metres, &gt; 0
-     * @return radians, in [0, pi/2)
+     * @return radians, in [0, pi/2]; 0 for a NaN deviation
      */
     public static double bendAngle(double deviation, double length) {
-        return Math.atan(Math.abs(deviation) / length);
+        double s = Math.abs(deviation) / length;
+        return s > 0 ? Math.asin(Math.min(1, s)) : 0;
     }
 
     /**
@@ -32,7 +34,7 @@ public final class PoseMapping {
      * @param length    component skeleton length, metres, &gt; 0
      * @param maxBend   bend of the last pose, radians, &gt; 0
      * @param poses     pose count K, &gt;= 2
-     * @return {@code min(1, atan(|D|/L) / maxBend) (K - 1)}; 0 for a NaN deviation
+     * @return {@code min(1, asin(min(1, |D|/L)) / maxBend) (K - 1)}; 0 for a NaN deviation
      */
     public static double poseCoordinate(double deviation, double length, double maxBend, int poses) {
         double t = bendAngle(deviation, length) / maxBend;

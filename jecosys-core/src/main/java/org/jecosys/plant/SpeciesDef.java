@@ -19,6 +19,12 @@ import org.jecosys.math.Require;
  */
 public record SpeciesDef(String id, String name, int poses, double maxBend, List<ComponentDef> components,
                          List<LodDef> lods, VariationDef variation) {
+    /** Largest pose-table size K (the scene schema's range and the API's). */
+    public static final int MAX_POSES = 64;
+    /** Smallest {@link #maxBend()}, degrees (the API takes radians). */
+    public static final double MIN_MAX_BEND_DEGREES = 0.1;
+    /** Largest {@link #maxBend()}, degrees. */
+    public static final double MAX_MAX_BEND_DEGREES = 90;
     /** Default pose-table size K: 16 poses from rest to {@code maxBend}. */
     public static final int DEFAULT_POSES = 16;
 
@@ -27,8 +33,9 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
      *
      * @param id         unique within the scene, not empty
      * @param name       human-readable name, not null
-     * @param poses      pose-table size, in [2, 64]
-     * @param maxBend    bend of the last pose, radians, in [1e-3, pi/2]
+     * @param poses      pose-table size, in [2, {@link #MAX_POSES}]
+     * @param maxBend    bend of the last pose, radians, in [{@link #MIN_MAX_BEND_DEGREES},
+     *                   {@link #MAX_MAX_BEND_DEGREES}] degrees
      * @param components at least one; unique ids, one lodSegments value per level, attachTo naming
      *                   another component
      * @param lods       at least one, maxDistance ascending, only the last one unbounded
@@ -41,8 +48,8 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
             throw new IllegalArgumentException("id must not be empty");
         }
         Require.nonNull("name", name);
-        Require.range("poses", poses, 2, 64);
-        Require.range("maxBend", maxBend, 1e-3, Math.PI / 2);
+        Require.range("poses", poses, 2, MAX_POSES);
+        Require.degrees("maxBend", maxBend, MIN_MAX_BEND_DEGREES, MAX_MAX_BEND_DEGREES);
         components = List.copyOf(Require.nonNull("components", components));
         lods = List.copyOf(Require.nonNull("lods", lods));
         Require.nonNull("variation", variation);

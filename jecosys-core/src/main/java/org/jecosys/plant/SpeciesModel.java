@@ -456,8 +456,13 @@ public final class SpeciesModel {
                 throw new IllegalArgumentException(what + ": pose table " + v + " must have the species' "
                         + def.poses() + " poses and segments + 1 = " + (cd.segments() + 1) + " points");
             }
-            Require.range(what + ": length(" + v + ")", pc.length(v), 1e-6, 10);
-            Require.range(what + ": mass(" + v + ")", pc.mass(v), 1e-9, 10);
+            // a variant scales the def's length by up to 1 +- the largest variation, its mass by that squared
+            double lo = (1 - VariationDef.MAX_FRACTION) * (1 - 1e-9);
+            double hi = (1 + VariationDef.MAX_FRACTION) * (1 + 1e-9);
+            Require.range(what + ": length(" + v + ")", pc.length(v), ComponentDef.MIN_LENGTH * lo,
+                    ComponentDef.MAX_LENGTH * hi);
+            Require.range(what + ": mass(" + v + ")", pc.mass(v), ComponentDef.MIN_MASS * lo * lo,
+                    ComponentDef.MAX_MASS * hi * hi);
         }
         Require.range(what + ": stiffness()", pc.stiffness(), 1e-9, 1e6);
         Require.range(what + ": responseTime()", pc.responseTime(), 1e-3, 10);

@@ -13,8 +13,12 @@ import org.jecosys.math.Require;
  * @param width     relative width variation, in [0, 0.9]
  * @param curvature relative curvature variation, in [0, 0.9]
  * @param tilt      extra tilt from vertical, radians, in [0, pi/4]
+ * @param responseTime relative variation of the response time tau from plant to plant (paper §4.2),
+ *                  in [0, 0.9]; neighbours then move alike but not in lockstep
+ * @param stiffness relative variation of the spring constant PC from plant to plant, in [0, 0.9]
  */
-public record VariationDef(int variants, double length, double width, double curvature, double tilt) {
+public record VariationDef(int variants, double length, double width, double curvature, double tilt,
+                           double responseTime, double stiffness) {
     /**
      * Checks the components.
      *
@@ -23,15 +27,41 @@ public record VariationDef(int variants, double length, double width, double cur
      * @param width     relative width variation, in [0, 0.9]
      * @param curvature relative curvature variation, in [0, 0.9]
      * @param tilt      extra tilt, radians, in [0, pi/4]
+     * @param responseTime relative response-time variation, in [0, 0.9]
+     * @param stiffness relative stiffness variation, in [0, 0.9]
      * @throws IllegalArgumentException when a component is out of range
      */
     public VariationDef {
-        Require.range("variants", variants, 1, 64);
-        Require.range("length", length, 0, 0.9);
-        Require.range("width", width, 0, 0.9);
-        Require.range("curvature", curvature, 0, 0.9);
-        Require.range("tilt", tilt, 0, Math.PI / 4);
+        Require.range("variants", variants, 1, MAX_VARIANTS);
+        Require.range("length", length, 0, MAX_FRACTION);
+        Require.range("width", width, 0, MAX_FRACTION);
+        Require.range("curvature", curvature, 0, MAX_FRACTION);
+        Require.degrees("tilt", tilt, 0, MAX_TILT_DEGREES);
+        Require.range("responseTime", responseTime, 0, MAX_FRACTION);
+        Require.range("stiffness", stiffness, 0, MAX_FRACTION);
     }
+
+    /**
+     * Shape variation only: no response-time or stiffness variation between plants. Any thread;
+     * allocates.
+     *
+     * @param variants  shape variants, in [1, 64]
+     * @param length    relative length variation, in [0, 0.9]
+     * @param width     relative width variation, in [0, 0.9]
+     * @param curvature relative curvature variation, in [0, 0.9]
+     * @param tilt      extra tilt, radians, in [0, pi/4]
+     * @throws IllegalArgumentException when a component is out of range
+     */
+    public VariationDef(int variants, double length, double width, double curvature, double tilt) {
+        this(variants, length, width, curvature, tilt, 0, 0);
+    }
+
+    /** Most shape variants (the scene schema's range and the API's). */
+    public static final int MAX_VARIANTS = 64;
+    /** Largest relative variation of length, width, curvature, response time and stiffness. */
+    public static final double MAX_FRACTION = 0.9;
+    /** Largest extra tilt, degrees (the API takes radians). */
+    public static final double MAX_TILT_DEGREES = 45;
 
     /** No variation: one variant. */
     public static final VariationDef NONE = new VariationDef(1, 0, 0, 0, 0);

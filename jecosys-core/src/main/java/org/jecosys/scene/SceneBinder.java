@@ -24,6 +24,7 @@ import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesDef;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.terrain.DistributionDef;
+import org.jecosys.terrain.ImageFiles;
 import org.jecosys.terrain.PlacementDef;
 import org.jecosys.terrain.ResourceMapDef;
 import org.jecosys.terrain.TerrainDef;
@@ -42,6 +43,8 @@ final class SceneBinder {
     private final SceneValidator out;
     /** Folder relative paths are resolved against, or null when loading from bytes. */
     private final Path baseDir;
+    /** The images the scene names, with their sizes (from their headers). */
+    final List<SceneBudget.Image> images = new ArrayList<>();
 
     SceneBinder(SceneValidator out, Path baseDir) {
         this.out = out;
@@ -53,12 +56,21 @@ final class SceneBinder {
         out.problem(w[0], w[1], message);
     }
 
-    /** Runs a Def constructor; a check it makes that the schema missed is reported at the element. */
+    /**
+     * Runs a Def constructor; a check it makes that the schema missed is reported at the attribute
+     * its message names first (e.g. "maxAltitude must be ..."), else at the element.
+     */
     private <T> T make(Values v, Supplier<T> ctor) {
         try {
             return ctor.get();
         } catch (IllegalArgumentException e) {
-            out.problem(v.node.line, v.node.column, "<" + v.node.name + ">: " + e.getMessage());
+            String m = String.valueOf(e.getMessage());
+            int end = 0;
+            while (end < m.length() && Character.isJavaIdentifierPart(m.charAt(end))) {
+                end++;
+            }
+            int[] w = v.where(m.substring(0, end));
+            out.problem(w[0], w[1], "<" + v.node.name + ">: " + m);
             return null;
         }
     }
@@ -93,6 +105,10 @@ final class SceneBinder {
         List<PlacementDef> placements = new ArrayList<>();
         for (Values p : root.children("plant")) {
             checkSpeciesRef(p, speciesIds, known);
+            if (terrain != null) {
+                insideTerrain(p, "x", terrain.sizeX());
+                insideTerrain(p, "z", terrain.sizeZ());
+            }
             PlacementDef def = make(p, () -> new PlacementDef(p.str("species"), p.num("x"), p.num("z"),
                     p.num("azimuth")));
             if (def != null) {
@@ -126,6 +142,16 @@ final class SceneBinder {
         }
         return make(root, () -> new SceneDef(root.integer("version"), root.str("name"), root.longValue("seed"),
                 terrain, species, distributions, placements, flows, field, camera, animation, render));
+    }
+
+    /** A hand-placed plant stands on the terrain, which spans [-size/2, size/2] (as floats, like the layout). */
+    private void insideTerrain(Values p, String attr, double size) {
+        float c = (float) p.num(attr);
+        if (c < -size / 2 || c > size / 2) {
+            problem(p, attr, "attribute '" + attr + "' of <plant>: " + SceneWriter.formatNumber(p.num(attr))
+                    + " lies outside the terrain, which spans [" + SceneWriter.formatNumber(-size / 2) + ", "
+                    + SceneWriter.formatNumber(size / 2) + "] metres along " + attr.toUpperCase(java.util.Locale.ROOT));
+        }
     }
 
     private void checkSpeciesRef(Values v, Map<String, Values> ids, List<String> known) {
@@ -177,6 +203,13 @@ final class SceneBinder {
             if (!Files.isRegularFile(p)) {
                 problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: file '" + path
                         + "' not found (looked at " + p.toAbsolutePath().normalize() + ")");
+                return;
+            }
+            try {
+                // the size from the header, bounded before decoding; then the data, at reduced resolution
+                images.add(new SceneBudget.Image(v, attr, ImageFiles.verify(p)));
+            } catch (java.io.IOException e) {
+                problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: " + e.getMessage());
             }
         } catch (InvalidPathException e) {
             problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: '" + path + "' is not a valid path");
@@ -206,7 +239,7 @@ final class SceneBinder {
         Values varV = s.child("variation");
         VariationDef variation = varV == null ? VariationDef.NONE : make(varV, () -> new VariationDef(
                 varV.integer("variants"), varV.num("length"), varV.num("width"), varV.num("curvature"),
-                varV.num("tilt")));
+                varV.num("tilt"), varV.num("responseTime"), varV.num("stiffness")));
         List<Values> compValues = s.children("component");
         Set<String> compIds = new HashSet<>();
         for (Values c : compValues) {
@@ -330,7 +363,9 @@ final class SceneBinder {
                 f.num("strength"), numOr(f, "direction", FlowDef.DEFAULT_DIRECTION), f.num("coreRadius"),
                 f.num("influenceRadius"), activation, m, numOr(f, "noiseScale", FlowDef.DEFAULT_NOISE_SCALE),
                 numOr(f, "noiseFrequency", FlowDef.DEFAULT_NOISE_FREQUENCY),
-                f.values.containsKey("seed") ? f.longValue("seed") : FlowDef.DEFAULT_SEED));
+                f.values.containsKey("seed") ? f.longValue("seed") : FlowDef.DEFAULT_SEED,
+                numOr(f, "gustStrength", FlowDef.DEFAULT_GUST_STRENGTH),
+                numOr(f, "turbulence", FlowDef.DEFAULT_TURBULENCE)));
     }
 
     private static double numOr(Values v, String name, double fallback) {

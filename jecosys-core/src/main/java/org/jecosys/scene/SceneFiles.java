@@ -13,11 +13,15 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.Set;
 import java.util.function.UnaryOperator;
 
 /**
@@ -44,7 +48,9 @@ public final class SceneFiles {
      *
      * @param file the scene file; its name as given appears in every problem
      * @return the complete scene
-     * @throws SceneLoadException if the file cannot be read or is not a valid scene
+     * @throws SceneLoadException if the file cannot be read, is not a valid scene, names an image that
+     *                            is missing, too large ({@link org.jecosys.terrain.ImageFiles#MAX_SIDE})
+     *                            or corrupt, or needs more memory than this JVM's heap allows
      */
     public static SceneDef load(Path file) throws SceneLoadException {
         String name = file.toString();
@@ -80,7 +86,9 @@ public final class SceneFiles {
      * @param baseDir  folder that relative paths resolve against and must exist in, or null to skip
      *                 the existence checks
      * @return the complete scene
-     * @throws SceneLoadException if the bytes are not a valid scene
+     * @throws SceneLoadException if the bytes are not a valid scene, or the scene needs more memory
+     *                            than this JVM's heap allows (plants, components, pose tables, grids
+     *                            and, with a baseDir, images, estimated before anything is built)
      */
     public static SceneDef parse(byte[] bytes, String fileName, Path baseDir) throws SceneLoadException {
         if (bytes.length > MAX_FILE_BYTES) {
@@ -98,8 +106,13 @@ public final class SceneFiles {
         if (values == null || !validator.problems().isEmpty()) {
             throw new SceneLoadException(validator.problems());
         }
-        SceneDef scene = new SceneBinder(validator, baseDir).bind(values);
+        SceneBinder binder = new SceneBinder(validator, baseDir);
+        SceneDef scene = binder.bind(values);
         if (scene == null || !validator.problems().isEmpty()) {
+            throw new SceneLoadException(validator.problems());
+        }
+        // accepted means runnable: refuse what cannot fit in this JVM's heap, before anything is built
+        if (!new SceneBudget(validator, Runtime.getRuntime().maxMemory()).check(scene, values, binder.images)) {
             throw new SceneLoadException(validator.problems());
         }
         return scene;
@@ -118,11 +131,15 @@ public final class SceneFiles {
     /**
      * Saves a scene atomically: the bytes go to a temporary file in the target's folder, are forced
      * to disk, and the temporary file is then moved over the target in one step. On any failure the
-     * target keeps its previous content and the temporary file is removed.
+     * target keeps its previous content and the temporary file is removed. An existing target keeps
+     * its permissions (POSIX mode); a symbolic link is followed, so the file it points to is replaced
+     * and the link stays; a target that exists but is not a regular file (a folder, a device such as
+     * {@code /dev/null}, a pipe) is refused. Temporary files of earlier saves of this target whose
+     * process is gone (killed during a save) are removed. Any thread; allocates.
      *
      * @param target the scene file to write (replaced if it exists)
      * @param scene  the scene
-     * @throws IOException naming the target when the save failed
+     * @throws IOException naming the target when the save failed or the target is not a regular file
      */
     public static void save(Path target, SceneDef scene) throws IOException {
         save(target, scene, UnaryOperator.identity());
@@ -131,11 +148,25 @@ public final class SceneFiles {
     /** {@link #save(Path, SceneDef)} with the output stream wrapped, for failure-injection tests. */
     static void save(Path target, SceneDef scene, UnaryOperator<OutputStream> wrap) throws IOException {
         byte[] bytes = toXml(scene).getBytes(StandardCharsets.UTF_8);
-        Path abs = target.toAbsolutePath();
+        Path abs = followLinks(target);
+        if (Files.exists(abs) && !Files.isRegularFile(abs)) {
+            throw new IOException("cannot save " + target + ": " + (target.equals(abs) ? "it" : abs)
+                    + " is not a regular file (" + (Files.isDirectory(abs) ? "a folder" : "a device, pipe or socket")
+                    + "); choose a file name");
+        }
         Path dir = abs.getParent();
+        removeStaleTemporaries(dir, abs.getFileName().toString());
+        Set<PosixFilePermission> mode = null;
+        try {
+            if (Files.exists(abs)) {
+                mode = Files.getPosixFilePermissions(abs);
+            }
+        } catch (UnsupportedOperationException | IOException e) {
+            mode = null; // not a POSIX file system, or unreadable attributes: the new file gets the defaults
+        }
         Path tmp;
         try {
-            tmp = Files.createTempFile(dir, "." + abs.getFileName() + ".", ".tmp");
+            tmp = createTemporary(dir, abs.getFileName().toString());
         } catch (IOException e) {
             throw new IOException("cannot save " + target + ": cannot create a file in " + dir + " (" + e + ")", e);
         }
@@ -146,6 +177,9 @@ public final class SceneFiles {
                 out.write(bytes);
                 out.flush();
                 ch.force(true);
+            }
+            if (mode != null) {
+                Files.setPosixFilePermissions(tmp, mode);
             }
             try {
                 Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
@@ -160,6 +194,81 @@ public final class SceneFiles {
             if (!moved) {
                 Files.deleteIfExists(tmp);
             }
+        }
+    }
+
+    /** Most symbolic links followed from a save's target. */
+    private static final int MAX_LINKS = 40;
+    /** A temporary file left by a live process is stale after this long anyway, milliseconds. */
+    static final long STALE_TEMPORARY_MILLIS = 60L * 60 * 1000;
+
+    /** The absolute path a save writes: {@code target} with every symbolic link followed (the last may dangle). */
+    private static Path followLinks(Path target) throws IOException {
+        Path p = target.toAbsolutePath();
+        for (int i = 0; Files.isSymbolicLink(p); i++) {
+            if (i == MAX_LINKS) {
+                throw new IOException("cannot save " + target + ": more than " + MAX_LINKS + " symbolic links");
+            }
+            Path link = Files.readSymbolicLink(p);
+            p = p.getParent().resolve(link).normalize();
+        }
+        return p;
+    }
+
+    /** {@code .NAME.PID.RANDOM.tmp} in {@code dir}, created empty with the default permissions. */
+    private static Path createTemporary(Path dir, String name) throws IOException {
+        long pid = ProcessHandle.current().pid();
+        for (int attempt = 0; ; attempt++) {
+            Path tmp = dir.resolve("." + name + "." + pid + "." + Long.toUnsignedString(RANDOM.nextLong(), 36) + ".tmp");
+            try {
+                Files.newByteChannel(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+                return tmp;
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                if (attempt == 10) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    private static final java.security.SecureRandom RANDOM = new java.security.SecureRandom();
+
+    /**
+     * Deletes temporary files of earlier saves of {@code name} in {@code dir} ({@code .NAME.DIGITS.*tmp})
+     * whose process no longer runs or that are older than {@link #STALE_TEMPORARY_MILLIS}; errors are
+     * ignored (another save may be removing them too).
+     */
+    private static void removeStaleTemporaries(Path dir, String name) {
+        String prefix = "." + name + ".";
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, p -> {
+            String f = p.getFileName().toString();
+            return f.startsWith(prefix) && f.endsWith(".tmp") && f.length() > prefix.length() + 4;
+        })) {
+            long now = System.currentTimeMillis();
+            for (Path p : files) {
+                String rest = p.getFileName().toString().substring(prefix.length());
+                int dot = rest.indexOf('.');
+                String digits = rest.substring(0, Math.max(dot, 0));
+                if (digits.isEmpty() || !digits.chars().allMatch(Character::isDigit) || digits.length() > 20) {
+                    continue;
+                }
+                // before 0.1.0 the number was random (File.createTempFile), not a process id: such a
+                // file names no live process and is removed too
+                long pid = new java.math.BigInteger(digits).bitLength() > 62 ? -1 : Long.parseLong(digits);
+                boolean gone = pid < 0 || ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true);
+                try {
+                    if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
+                        continue;
+                    }
+                    if (gone || now - Files.getLastModifiedTime(p).toMillis() > STALE_TEMPORARY_MILLIS) {
+                        Files.deleteIfExists(p);
+                    }
+                } catch (IOException ignored) {
+                    // removed by someone else, or not ours to remove
+                }
+            }
+        } catch (IOException | RuntimeException ignored) {
+            // the folder cannot be listed: the save itself will report what is wrong
         }
     }
 

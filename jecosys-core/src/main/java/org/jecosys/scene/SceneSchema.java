@@ -100,11 +100,12 @@ final class SceneSchema {
                         "How the map is made: uniform level, seeded noise, valleys (water gathers in low ground), "
                                 + "or a greyscale image.").def("uniform")
                         .get(d -> pick.apply(d).source().xmlName()))
-                .attr(integer("resolution", "Cells per side.").range(2, 1024).def(64)
+                .attr(integer("resolution", "Cells per side.").range(2, ResourceMapDef.MAX_RESOLUTION).def(64)
                         .get(d -> pick.apply(d).resolution()))
                 .attr(num("amount", "", "Overall level multiplier.").range(0, 1).def(1.0)
                         .get(d -> pick.apply(d).amount()))
-                .attr(num("scale", "metres", "Feature size of noise maps.").rangeAbove(0, 100_000).def(8.0)
+                .attr(num("scale", "metres", "Feature size of noise maps.")
+                        .range(ResourceMapDef.MIN_SCALE, ResourceMapDef.MAX_SCALE).def(8.0)
                         .get(d -> pick.apply(d).scale()))
                 .attr(AttrSpec.of("image", PATH, "", "Greyscale PNG, relative to the scene file; required exactly "
                         + "when source is image.").get(d -> pick.apply(d).image()));
@@ -114,14 +115,18 @@ final class SceneSchema {
                                     Function<Object, List<Waypoint>> waypoints,
                                     Function<Object, Object> speed, Function<Object, Object> loop) {
         ElementSpec wp = new ElementSpec("waypoint", "A point of the path.")
-                .attr(num("x", "metres", "X.").range(-1e6, 1e6).required().get(d -> ((Waypoint) d).x()))
-                .attr(num("z", "metres", "Z.").range(-1e6, 1e6).required().get(d -> ((Waypoint) d).z()));
+                .attr(num("x", "metres", "X.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).required()
+                        .get(d -> ((Waypoint) d).x()))
+                .attr(num("z", "metres", "Z.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).required()
+                        .get(d -> ((Waypoint) d).z()));
         if (withY) {
-            wp.attr(num("y", "metres", "Eye height above the terrain.").range(-1e5, 1e5).def(1.7)
+            wp.attr(num("y", "metres", "Eye height above the terrain.").range(-Waypoint.MAX_HEIGHT, Waypoint.MAX_HEIGHT)
+                    .def(1.7)
                     .get(d -> ((Waypoint) d).y()));
         }
         return new ElementSpec("path", doc)
-                .attr(num("speed", "m/s", "Speed along the path.").rangeAbove(0, 10_000).def(defaultSpeed).get(speed))
+                .attr(num("speed", "m/s", "Speed along the path.").range(CameraDef.MIN_PATH_SPEED, CameraDef.MAX_PATH_SPEED)
+                        .def(defaultSpeed).get(speed))
                 .attr(bool("loop", "Start again at the first waypoint after the last.").def(defaultLoop).get(loop))
                 .child(wp, 2, MAX_WAYPOINTS, d -> waypoints.apply(d));
     }
@@ -131,8 +136,10 @@ final class SceneSchema {
                 .attr(AttrSpec.of("id", ID, "", "Unique name of the flow.").required().get(d -> f(d).id()))
                 .attr(bool("enabled", "Whether the flow starts enabled.").def(FlowDef.DEFAULT_ENABLED)
                         .get(d -> f(d).enabled()))
-                .attr(num("x", "metres", "Centre X.").range(-1e6, 1e6).def(FlowDef.DEFAULT_X).get(d -> f(d).x()))
-                .attr(num("z", "metres", "Centre Z.").range(-1e6, 1e6).def(FlowDef.DEFAULT_Z).get(d -> f(d).z()));
+                .attr(num("x", "metres", "Centre X.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE)
+                        .def(FlowDef.DEFAULT_X).get(d -> f(d).x()))
+                .attr(num("z", "metres", "Centre Z.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE)
+                        .def(FlowDef.DEFAULT_Z).get(d -> f(d).z()));
         String strengthDoc = switch (kind) {
             case UNIFORM -> "Wind speed, m/s.";
             case GUST -> "Mean wind speed, m/s.";
@@ -144,42 +151,59 @@ final class SceneSchema {
             case RAIN -> "Strength of each drop's radial burst, m^2/s.";
         };
         e.attr(num("strength", (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) ? "m/s" : "m^2/s", strengthDoc)
-                .range(kind == FlowKind.VORTEX ? -1e6 : 0, 1e6).required().get(d -> f(d).strength()));
+                .range(kind == FlowKind.VORTEX ? -FlowDef.MAX_STRENGTH : 0, FlowDef.MAX_STRENGTH).required()
+                .get(d -> f(d).strength()));
         if (kind == FlowKind.UNIFORM || kind == FlowKind.GUST) {
-            e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.").range(-360, 360)
+            e.attr(angle("direction", "Heading of the wind: 0 is +X, 90 is +Z.")
+                    .range(-FlowDef.MAX_DIRECTION_DEGREES, FlowDef.MAX_DIRECTION_DEGREES)
                     .def(FlowDef.DEFAULT_DIRECTION).get(d -> f(d).direction()));
         }
         e.attr(num("coreRadius", "metres", "Within this distance of the centre a singular flow tapers linearly to 0.")
-                .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_CORE_RADIUS).get(d -> f(d).coreRadius()));
+                .range(FlowDef.MIN_CORE_RADIUS, FlowDef.MAX_CORE_RADIUS).def(FlowDef.DEFAULT_CORE_RADIUS)
+                .get(d -> f(d).coreRadius()));
         AttrSpec influence = num("influenceRadius", "metres",
                 "Beyond this distance from the centre the flow is 0; absent means unbounded.")
-                .rangeAbove(0, 1e6).def(FlowDef.DEFAULT_INFLUENCE_RADIUS).get(d -> f(d).influenceRadius());
+                .rangeAbove(0, FlowDef.MAX_INFLUENCE_RADIUS).def(FlowDef.DEFAULT_INFLUENCE_RADIUS)
+                .get(d -> f(d).influenceRadius());
         if (kind == FlowKind.RAIN) {
-            influence = num("influenceRadius", "metres", "Radius of the rain disc.").rangeAbove(0, 1e6).required()
+            influence = num("influenceRadius", "metres", "Radius of the rain disc.")
+                    .rangeAbove(0, FlowDef.MAX_INFLUENCE_RADIUS).required()
                     .get(d -> f(d).influenceRadius());
         }
         e.attr(influence);
-        e.attr(num("start", "seconds", "Simulation time the flow begins.").range(0, 1e9)
+        e.attr(num("start", "seconds", "Simulation time the flow begins.").range(0, ActivationDef.MAX_TIME)
                 .def(ActivationDef.DEFAULT_START).get(d -> f(d).activation().start()));
         double defaultDuration = FlowDef.defaultDuration(kind);
         e.attr(num("duration", "seconds", kind == FlowKind.BLAST ? "Length of the pulse."
                         : "How long the flow lasts; absent means forever.")
-                .rangeAbove(0, 1e9).def(defaultDuration).get(d -> f(d).activation().duration()));
-        e.attr(num("rampIn", "seconds", "Time to reach full strength.").range(0, 1e9).def(ActivationDef.DEFAULT_RAMP_IN)
+                .rangeAbove(0, ActivationDef.MAX_TIME).def(defaultDuration).get(d -> f(d).activation().duration()));
+        e.attr(num("rampIn", "seconds", "Time to reach full strength.").range(0, ActivationDef.MAX_TIME)
+                .def(ActivationDef.DEFAULT_RAMP_IN)
                 .get(d -> f(d).activation().rampIn()));
-        e.attr(num("rampOut", "seconds", "Time to fade out before the end.").range(0, 1e9)
+        e.attr(num("rampOut", "seconds", "Time to fade out before the end.").range(0, ActivationDef.MAX_TIME)
                 .def(ActivationDef.DEFAULT_RAMP_OUT).get(d -> f(d).activation().rampOut()));
         e.attr(bool("advected", "Whether the centre moves with the other active flows (paper section 3.2); "
                 + "not together with a path.").def(false).get(d -> f(d).motion().kind() == MotionDef.Kind.ADVECTED));
         if (kind == FlowKind.GUST || kind == FlowKind.RAIN) {
-            e.attr(num("noiseScale", "metres", kind == FlowKind.GUST ? "Spatial size of gusts."
+            e.attr(num("noiseScale", "metres", kind == FlowKind.GUST ? "Spatial size of gusts; the gust pattern travels with the mean wind."
                             : "Radius of one drop's burst.")
-                    .rangeAbove(0, 100_000).def(FlowDef.DEFAULT_NOISE_SCALE).get(d -> f(d).noiseScale()));
+                    .range(FlowDef.MIN_NOISE_SCALE, FlowDef.MAX_NOISE_SCALE).def(FlowDef.DEFAULT_NOISE_SCALE)
+                    .get(d -> f(d).noiseScale()));
             e.attr(num("noiseFrequency", kind == FlowKind.GUST ? "Hz" : "drops/(s m^2)",
-                            kind == FlowKind.GUST ? "How often gusts come." : "Drops per second per square metre.")
-                    .rangeAbove(0, 10_000).def(FlowDef.DEFAULT_NOISE_FREQUENCY).get(d -> f(d).noiseFrequency()));
+                            kind == FlowKind.GUST ? "How fast the gust pattern changes as it travels (a fixed point sees gusts "
+                                    + "about strength / noiseScale times per second)." : "Drops per second per square metre.")
+                    .rangeAbove(0, FlowDef.MAX_NOISE_FREQUENCY).def(FlowDef.DEFAULT_NOISE_FREQUENCY)
+                    .get(d -> f(d).noiseFrequency()));
             e.attr(AttrSpec.of("seed", LONG, "", "Seed of the noise or drops.").def(FlowDef.DEFAULT_SEED)
                     .get(d -> f(d).seed()));
+        }
+        if (kind == FlowKind.GUST) {
+            e.attr(num("gustStrength", "", "Relative strength of the gusts along and across the mean wind "
+                    + "(0.5: the speed varies by up to about half the mean).").range(0, FlowDef.MAX_GUST_STRENGTH)
+                    .def(FlowDef.DEFAULT_GUST_STRENGTH).get(d -> f(d).gustStrength()));
+            e.attr(num("turbulence", "", "Relative strength of small eddies a quarter of the gust size; 0 for "
+                    + "none.").range(0, FlowDef.MAX_TURBULENCE).def(FlowDef.DEFAULT_TURBULENCE)
+                    .get(d -> f(d).turbulence()));
         }
         e.child(path("A scripted path the centre walks along.", MotionDef.DEFAULT_PATH_SPEED,
                         MotionDef.DEFAULT_PATH_LOOP, false,
@@ -211,13 +235,14 @@ final class SceneSchema {
     static {
         ElementSpec terrain = new ElementSpec("terrain", "The terrain: a heightfield centred on the origin "
                 + "(paper section 4.3).")
-                .attr(num("sizeX", "metres", "Extent along X.").rangeAbove(0, 100_000).required()
+                .attr(num("sizeX", "metres", "Extent along X.").range(TerrainDef.MIN_SIZE, TerrainDef.MAX_SIZE).required()
                         .get(d -> ((TerrainDef) d).sizeX()))
-                .attr(num("sizeZ", "metres", "Extent along Z.").rangeAbove(0, 100_000).required()
+                .attr(num("sizeZ", "metres", "Extent along Z.").range(TerrainDef.MIN_SIZE, TerrainDef.MAX_SIZE).required()
                         .get(d -> ((TerrainDef) d).sizeZ()))
-                .attr(integer("resolution", "Heightfield vertices per side.").range(2, 2049).def(65)
+                .attr(integer("resolution", "Heightfield vertices per side.").range(2, TerrainDef.MAX_RESOLUTION).def(65)
                         .get(d -> ((TerrainDef) d).resolution()))
-                .attr(num("heightScale", "metres", "Highest point above the lowest.").range(0, 10_000).def(0.0)
+                .attr(num("heightScale", "metres", "Highest point above the lowest.").range(0, TerrainDef.MAX_HEIGHT_SCALE)
+                        .def(0.0)
                         .get(d -> ((TerrainDef) d).heightScale()))
                 .attr(num("roughness", "", "Fractal roughness of the generated relief.").range(0, 1).def(0.5)
                         .get(d -> ((TerrainDef) d).roughness()))
@@ -232,21 +257,27 @@ final class SceneSchema {
         ElementSpec lod = new ElementSpec("lod", "A level of detail (paper section 4.1, Table 3), in ascending "
                 + "distance; the last has no maxDistance.")
                 .attr(num("maxDistance", "metres", "Farthest viewer distance of this level; absent for the last.")
-                        .rangeAbove(0, 1e6).def(INF).get(d -> ((LodDef) d).maxDistance()))
+                        .rangeAbove(0, LodDef.MAX_DISTANCE).def(INF).get(d -> ((LodDef) d).maxDistance()))
                 .attr(enumeration("primitive", words(Primitive.values(), Primitive::xmlName), "What it draws with.")
                         .def("triangles").get(d -> ((LodDef) d).primitive().xmlName()));
         ElementSpec variation = new ElementSpec("variation", "Per-instance variation (paper section 4.1); "
                 + "fractions are relative.")
-                .attr(integer("variants", "Pre-computed shape variants sharing pose tables.").range(1, 64).def(1)
+                .attr(integer("variants", "Pre-computed shape variants sharing pose tables.")
+                        .range(1, VariationDef.MAX_VARIANTS).def(1)
                         .get(d -> ((VariationDef) d).variants()))
-                .attr(num("length", "", "Relative length variation.").range(0, 0.9).def(0.0)
+                .attr(num("length", "", "Relative length variation.").range(0, VariationDef.MAX_FRACTION).def(0.0)
                         .get(d -> ((VariationDef) d).length()))
-                .attr(num("width", "", "Relative width variation.").range(0, 0.9).def(0.0)
+                .attr(num("width", "", "Relative width variation.").range(0, VariationDef.MAX_FRACTION).def(0.0)
                         .get(d -> ((VariationDef) d).width()))
-                .attr(num("curvature", "", "Relative curvature variation.").range(0, 0.9).def(0.0)
+                .attr(num("curvature", "", "Relative curvature variation.").range(0, VariationDef.MAX_FRACTION).def(0.0)
                         .get(d -> ((VariationDef) d).curvature()))
-                .attr(angle("tilt", "Extra tilt from vertical.").range(0, 45).def(0.0)
-                        .get(d -> ((VariationDef) d).tilt()));
+                .attr(angle("tilt", "Extra tilt from vertical.").range(0, VariationDef.MAX_TILT_DEGREES).def(0.0)
+                        .get(d -> ((VariationDef) d).tilt()))
+                .attr(num("responseTime", "", "Relative variation of the response time from plant to plant "
+                        + "(seeded): neighbours move alike but not in lockstep.").range(0, VariationDef.MAX_FRACTION)
+                        .def(0.0).get(d -> ((VariationDef) d).responseTime()))
+                .attr(num("stiffness", "", "Relative variation of the stiffness from plant to plant (seeded).")
+                        .range(0, VariationDef.MAX_FRACTION).def(0.0).get(d -> ((VariationDef) d).stiffness()));
         ElementSpec component = new ElementSpec("component", "A component type: skeleton shape (paper section 4.1) "
                 + "and dynamic-constraint spring (section 4.2, equations 4-5).")
                 .attr(AttrSpec.of("id", ID, "", "Unique within the species.").required().get(d -> c(d).id()))
@@ -255,45 +286,55 @@ final class SceneSchema {
                 .attr(enumeration("shape", words(ComponentShape.values(), ComponentShape::xmlName),
                         "How primitives are generated from the skeleton.").def(ComponentDef.DEFAULT_SHAPE.xmlName())
                         .get(d -> c(d).shape().xmlName()))
-                .attr(integer("count", "How many a plant has.").range(1, 256).def(ComponentDef.DEFAULT_COUNT)
+                .attr(integer("count", "How many a plant has.").range(1, ComponentDef.MAX_COUNT).def(ComponentDef.DEFAULT_COUNT)
                         .get(d -> c(d).count()))
                 .attr(AttrSpec.of("attachTo", ID, "", "Id of the component at whose tip these sit; absent for the "
                         + "ground.").get(d -> c(d).attachTo()))
-                .attr(integer("segments", "Skeleton segments (points = segments + 1).").range(1, 32).required()
+                .attr(integer("segments", "Skeleton segments (points = segments + 1).").range(1, ComponentDef.MAX_SEGMENTS)
+                        .required()
                         .get(d -> c(d).segments()))
-                .attr(num("length", "metres", "Skeleton length.").rangeAbove(0, 10).required()
+                .attr(num("length", "metres", "Skeleton length.").range(ComponentDef.MIN_LENGTH, ComponentDef.MAX_LENGTH)
+                        .required()
                         .get(d -> c(d).length()))
-                .attr(num("baseWidth", "metres", "Width at the base.").rangeAbove(0, 1).required()
+                .attr(num("baseWidth", "metres", "Width at the base.").range(ComponentDef.MIN_WIDTH, ComponentDef.MAX_WIDTH)
+                        .required()
                         .get(d -> c(d).baseWidth()))
-                .attr(num("tipWidth", "metres", "Width at the tip.").range(0, 1)
+                .attr(num("tipWidth", "metres", "Width at the tip.").range(0, ComponentDef.MAX_WIDTH)
                         .def(ComponentDef.DEFAULT_TIP_WIDTH).get(d -> c(d).tipWidth()))
-                .attr(angle("curvature", "Rest curvature over the whole length, before gravity.").range(-180, 180)
+                .attr(angle("curvature", "Rest curvature over the whole length, before gravity.")
+                        .range(-ComponentDef.MAX_CURVATURE_DEGREES, ComponentDef.MAX_CURVATURE_DEGREES)
                         .def(ComponentDef.DEFAULT_CURVATURE).get(d -> c(d).curvature()))
-                .attr(angle("twist", "Twist around the skeleton over the whole length.").range(-360, 360)
+                .attr(angle("twist", "Twist around the skeleton over the whole length.")
+                        .range(-ComponentDef.MAX_TWIST_DEGREES, ComponentDef.MAX_TWIST_DEGREES)
                         .def(ComponentDef.DEFAULT_TWIST).get(d -> c(d).twist()))
-                .attr(angle("tilt", "Angle of the base from vertical.").range(0, 90)
+                .attr(angle("tilt", "Angle of the base from vertical.").range(0, ComponentDef.MAX_TILT_DEGREES)
                         .def(ComponentDef.DEFAULT_TILT).get(d -> c(d).tilt()))
-                .attr(num("mass", "kg", "Mass.").rangeAbove(0, 10).required().get(d -> c(d).mass()))
-                .attr(num("stiffness", "N/m", "Spring constant PC of equation 4.").rangeAbove(0, 1e6).required()
+                .attr(num("mass", "kg", "Mass.").range(ComponentDef.MIN_MASS, ComponentDef.MAX_MASS).required()
+                        .get(d -> c(d).mass()))
+                .attr(num("stiffness", "N/m", "Spring constant PC of equation 4.")
+                        .range(ComponentDef.MIN_STIFFNESS, ComponentDef.MAX_STIFFNESS).required()
                         .get(d -> c(d).stiffness()))
-                .attr(num("responseTime", "seconds", "Response time tau of the spring.").range(0.001, 10)
+                .attr(num("responseTime", "seconds", "Response time tau of the spring.")
+                        .range(ComponentDef.MIN_RESPONSE_TIME, ComponentDef.MAX_RESPONSE_TIME)
                         .def(ComponentDef.DEFAULT_RESPONSE_TIME)
                         .get(d -> c(d).responseTime()))
                 .attr(num("dragArea", "m^2", "Drag coefficient times area: force = 0.5 rho dragArea |u| u.")
-                        .range(0, 10).def(ComponentDef.DEFAULT_DRAG_AREA).get(d -> c(d).dragArea()))
+                        .range(0, ComponentDef.MAX_DRAG_AREA).def(ComponentDef.DEFAULT_DRAG_AREA)
+                        .get(d -> c(d).dragArea()))
                 .attr(AttrSpec.of("colour", COLOUR, "", "Base colour.").def(ComponentDef.DEFAULT_COLOUR)
                         .get(d -> c(d).colour()))
                 .attr(AttrSpec.of("lodSegments", INT_LIST, "", "Per level of detail of the species, segments used "
-                        + "there (0 = not drawn); one value per lod, each at most segments.").range(0, 32)
+                        + "there (0 = not drawn); one value per lod, each at most segments.").range(0, ComponentDef.MAX_SEGMENTS)
                         .items(1, MAX_LODS).required().get(d -> c(d).lodSegments()));
         ElementSpec species = new ElementSpec("species", "A plant species (paper section 4.1, Tables 1-3).")
                 .attr(AttrSpec.of("id", ID, "", "Unique species id; distributions refer to it.").required()
                         .get(d -> ((SpeciesDef) d).id()))
                 .attr(AttrSpec.of("name", TEXT, "", "Human-readable name.").def("")
                         .get(d -> ((SpeciesDef) d).name()))
-                .attr(integer("poses", "Pose-table size K, from rest to maxBend.").range(2, 64)
+                .attr(integer("poses", "Pose-table size K, from rest to maxBend.").range(2, SpeciesDef.MAX_POSES)
                         .def(SpeciesDef.DEFAULT_POSES).get(d -> ((SpeciesDef) d).poses()))
-                .attr(angle("maxBend", "Bend of the last pose beyond the rest shape.").rangeAbove(0, 90)
+                .attr(angle("maxBend", "Bend of the last pose beyond the rest shape.")
+                        .range(SpeciesDef.MIN_MAX_BEND_DEGREES, SpeciesDef.MAX_MAX_BEND_DEGREES)
                         .def(SpeciesDef.DEFAULT_MAX_BEND).get(d -> ((SpeciesDef) d).maxBend()))
                 .child(lod, 1, MAX_LODS, d -> ((SpeciesDef) d).lods())
                 .child(variation, 0, 1, d -> List.of(((SpeciesDef) d).variation()))
@@ -306,7 +347,8 @@ final class SceneSchema {
                         .range(-1, DistributionDef.MAX_COUNT).def(DistributionDef.DEFAULT_COUNT)
                         .get(d -> dist(d).count()))
                 .attr(num("density", "plants/m^2", "Plants per square metre where conditions hold (count -1).")
-                        .range(0, 10_000).def(DistributionDef.DEFAULT_DENSITY).get(d -> dist(d).density()))
+                        .range(0, DistributionDef.MAX_DENSITY).def(DistributionDef.DEFAULT_DENSITY)
+                        .get(d -> dist(d).density()))
                 .attr(num("minWater", "", "Lowest water level accepted.").range(0, 1)
                         .def(DistributionDef.DEFAULT_MIN_WATER)
                         .get(d -> dist(d).minWater()))
@@ -319,13 +361,16 @@ final class SceneSchema {
                 .attr(num("maxNutrients", "", "Highest nutrient level accepted.").range(0, 1)
                         .def(DistributionDef.DEFAULT_MAX_NUTRIENTS)
                         .get(d -> dist(d).maxNutrients()))
-                .attr(angle("maxSlope", "Steepest ground accepted.").range(0, 90)
+                .attr(angle("maxSlope", "Steepest ground accepted.").range(0, DistributionDef.MAX_SLOPE_DEGREES)
                         .def(DistributionDef.DEFAULT_MAX_SLOPE).get(d -> dist(d).maxSlope()))
-                .attr(num("minAltitude", "metres", "Lowest terrain height accepted.").range(-1e5, 1e5)
+                .attr(num("minAltitude", "metres", "Lowest terrain height accepted.")
+                        .range(-DistributionDef.MAX_ALTITUDE, DistributionDef.MAX_ALTITUDE)
                         .def(DistributionDef.DEFAULT_MIN_ALTITUDE).get(d -> dist(d).minAltitude()))
-                .attr(num("maxAltitude", "metres", "Highest terrain height accepted.").range(-1e5, 1e5)
+                .attr(num("maxAltitude", "metres", "Highest terrain height accepted.")
+                        .range(-DistributionDef.MAX_ALTITUDE, DistributionDef.MAX_ALTITUDE)
                         .def(DistributionDef.DEFAULT_MAX_ALTITUDE).get(d -> dist(d).maxAltitude()))
-                .attr(num("footprint", "metres", "Radius of ground a plant takes.").rangeAbove(0, 100)
+                .attr(num("footprint", "metres", "Radius of ground a plant takes.")
+                        .range(DistributionDef.MIN_FOOTPRINT, DistributionDef.MAX_FOOTPRINT)
                         .def(DistributionDef.DEFAULT_FOOTPRINT).get(d -> dist(d).footprint()))
                 .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1)
                         .def(DistributionDef.DEFAULT_WATER_USE).get(d -> dist(d).waterUse()))
@@ -334,9 +379,12 @@ final class SceneSchema {
         ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
                         .get(d -> ((PlacementDef) d).species()))
-                .attr(num("x", "metres", "X.").range(-1e6, 1e6).required().get(d -> ((PlacementDef) d).x()))
-                .attr(num("z", "metres", "Z.").range(-1e6, 1e6).required().get(d -> ((PlacementDef) d).z()))
-                .attr(angle("azimuth", "Rest azimuth.").range(-360, 360).def(0.0)
+                .attr(num("x", "metres", "X.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).required()
+                        .get(d -> ((PlacementDef) d).x()))
+                .attr(num("z", "metres", "Z.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).required()
+                        .get(d -> ((PlacementDef) d).z()))
+                .attr(angle("azimuth", "Rest azimuth.")
+                        .range(-PlacementDef.MAX_AZIMUTH_DEGREES, PlacementDef.MAX_AZIMUTH_DEGREES).def(0.0)
                         .get(d -> ((PlacementDef) d).azimuth()));
 
         ElementSpec wind = new ElementSpec("wind", "The wind flows (paper section 3.2), in any order.");
@@ -349,7 +397,8 @@ final class SceneSchema {
                 case SOURCE -> "A source: flow away from its centre, falling off as 1/r.";
                 case SINK -> "A sink: flow toward its centre, falling off as 1/r.";
                 case VORTEX -> "A vortex: flow around its centre, falling off as 1/r.";
-                case GUST -> "Turbulent wind: a mean speed modulated by seeded noise in space and time.";
+                case GUST -> "Turbulent wind: a mean speed with seeded gusts and eddies that travel with it (frozen "
+                        + "turbulence).";
                 case BLAST -> "A short radial pulse, for explosions.";
                 case RAIN -> "Rain over a disc: short seeded radial impulses.";
             };
@@ -360,28 +409,34 @@ final class SceneSchema {
                 .attr(bool("enabled", "When false no flow is evaluated and plants get no force.").def(true)
                         .get(d -> ((ForceFieldDef) d).enabled()))
                 .attr(integer("maxObjectsPerNode", "A leaf splits into four when it would hold more plants.")
-                        .range(1, 1_000_000).def(8).get(d -> ((ForceFieldDef) d).maxObjectsPerNode()))
+                        .range(1, ForceFieldDef.MAX_OBJECTS_PER_NODE).def(8)
+                        .get(d -> ((ForceFieldDef) d).maxObjectsPerNode()))
                 .attr(integer("maxDepth", "Deepest node level (root is 0).").range(0, ForceFieldDef.MAX_DEPTH).def(8)
                         .get(d -> ((ForceFieldDef) d).maxDepth()))
                 .attr(AttrSpec.of("lodDistances", DOUBLE_LIST, "metres", "Ascending distances: beyond the i-th, "
                         + "i levels collapse into their ancestor; empty for no distance LOD.")
-                        .rangeAbove(0, 1e6).items(0, 16).def(List.of(15.0, 30.0))
+                        .rangeAbove(0, ForceFieldDef.MAX_LOD_DISTANCE).items(0, ForceFieldDef.MAX_LOD_DISTANCES)
+                        .def(List.of(15.0, 30.0))
                         .get(d -> ((ForceFieldDef) d).lodDistances()));
 
         ElementSpec camera = new ElementSpec("camera", "The viewer's start pose and optional path (paper section "
                 + "5.2).")
-                .attr(num("x", "metres", "Eye X.").range(-1e6, 1e6).def(0.0).get(d -> cam(d).x()))
-                .attr(num("y", "metres", "Eye height above the terrain.").range(-1e5, 1e5).def(1.7)
-                        .get(d -> cam(d).y()))
-                .attr(num("z", "metres", "Eye Z.").range(-1e6, 1e6).def(0.0).get(d -> cam(d).z()))
-                .attr(angle("yaw", "Heading: 0 looks along -Z, positive turns toward +X.").range(-360, 360)
-                        .def(0.0).get(d -> cam(d).yaw()))
-                .attr(angle("pitch", "Positive looks up.").range(-90, 90).def(0.0).get(d -> cam(d).pitch()))
-                .attr(angle("fovY", "Vertical field of view.").range(1, 179).def(Math.toRadians(60))
-                        .get(d -> cam(d).fovY()))
-                .attr(num("near", "metres", "Near clip distance.").rangeAbove(0, 10_000).def(0.1)
+                .attr(num("x", "metres", "Eye X.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).def(0.0)
+                        .get(d -> cam(d).x()))
+                .attr(num("y", "metres", "Eye height above the terrain.").range(-Waypoint.MAX_HEIGHT, Waypoint.MAX_HEIGHT)
+                        .def(1.7).get(d -> cam(d).y()))
+                .attr(num("z", "metres", "Eye Z.").range(-Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE).def(0.0)
+                        .get(d -> cam(d).z()))
+                .attr(angle("yaw", "Heading: 0 looks along -Z, positive turns toward +X.")
+                        .range(-CameraDef.MAX_YAW_DEGREES, CameraDef.MAX_YAW_DEGREES).def(0.0).get(d -> cam(d).yaw()))
+                .attr(angle("pitch", "Positive looks up.").range(-CameraDef.MAX_PITCH_DEGREES, CameraDef.MAX_PITCH_DEGREES)
+                        .def(0.0).get(d -> cam(d).pitch()))
+                .attr(angle("fovY", "Vertical field of view.").range(CameraDef.MIN_FOV_DEGREES, CameraDef.MAX_FOV_DEGREES)
+                        .def(Math.toRadians(60)).get(d -> cam(d).fovY()))
+                .attr(num("near", "metres", "Near clip distance.").range(CameraDef.MIN_NEAR, CameraDef.MAX_NEAR).def(0.1)
                         .get(d -> cam(d).near()))
-                .attr(num("far", "metres", "Far clip distance, greater than near.").rangeAbove(0, 1e7).def(500.0)
+                .attr(num("far", "metres", "Far clip distance, greater than near.").rangeAbove(0, CameraDef.MAX_FAR)
+                        .def(500.0)
                         .get(d -> cam(d).far()))
                 .child(path("The path the viewer walks (key P in the viewer; benchmarks).", 1.4, true, true,
                                 d -> cam(d).path(), d -> cam(d).pathSpeed(), d -> cam(d).pathLoop()),
@@ -395,7 +450,8 @@ final class SceneSchema {
                         .get(d -> ((AnimationDef) d).fixedStep()))
                 .attr(integer("maxSubSteps", "Cap on fixed steps per step(dt) call.").range(1, 1000).def(8)
                         .get(d -> ((AnimationDef) d).maxSubSteps()))
-                .attr(integer("subIntervals", "Sub-intervals of each step in the spring update (section 4.2.1).")
+                .attr(integer("subIntervals", "Sub-intervals of each step in the spring update (section 4.2.1): a flow "
+                        + "switched inside a step acts from the next sub-interval boundary.")
                         .range(1, 64).def(4).get(d -> ((AnimationDef) d).subIntervals()))
                 .attr(integer("threads", "Animation workers; 0 means the available processors.").range(0, 256)
                         .def(0).get(d -> ((AnimationDef) d).threads()))

@@ -16,7 +16,7 @@ final class SceneValidator {
     private static final Pattern INTEGER = Pattern.compile(AttrType.INT_PATTERN);
     private static final Pattern ID = Pattern.compile(AttrType.ID_PATTERN);
     private static final Pattern COLOUR = Pattern.compile(AttrType.COLOUR_PATTERN);
-    /** Stop collecting after this many problems. */
+    /** Stop collecting after this many problems; one more entry then says that the list stopped. */
     static final int MAX_PROBLEMS = 50;
 
     private final String file;
@@ -33,6 +33,9 @@ final class SceneValidator {
     void problem(int line, int column, String message) {
         if (problems.size() < MAX_PROBLEMS) {
             problems.add(new SceneProblem(file, line, column, message));
+        } else if (problems.size() == MAX_PROBLEMS) {
+            problems.add(new SceneProblem(file, line, column, "stopped after " + MAX_PROBLEMS
+                    + " problems (the limit); there are more from here on: fix these and check again"));
         }
     }
 

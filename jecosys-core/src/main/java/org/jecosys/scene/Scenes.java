@@ -27,7 +27,9 @@ public final class Scenes {
     public static Simulation simulation(Path file, Progress progress) throws SceneLoadException, IOException {
         Require.nonNull("file", file);
         SceneDef def = SceneFiles.load(file);
-        return Simulation.create(def.simulationDef(), baseDir(file), progress);
+        Simulation sim = Simulation.create(def.simulationDef(), baseDir(file), progress);
+        sim.setLodTransition(def.render().lodTransition());
+        return sim;
     }
 
     /**

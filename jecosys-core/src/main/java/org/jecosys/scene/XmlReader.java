@@ -22,6 +22,9 @@ final class XmlReader {
     /** One factory, built and hardened by Jackson; XMLInputFactory is thread-safe once configured. */
     private static final XMLInputFactory FACTORY = new XmlFactory().getXMLInputFactory();
     private static final String XSI = XMLConstants.W3C_XML_SCHEMA_INSTANCE_NS_URI;
+    /** The parser's limits: nesting depth (group 1 set) or attributes per element, with the limit (group 2). */
+    private static final java.util.regex.Pattern LIMIT = java.util.regex.Pattern.compile(
+            "(?i)(?:(Maximum Element Depth)|Attribute) limit \\((\\d+)\\)");
 
     private final String file;
     private final String text;
@@ -75,7 +78,27 @@ final class XmlReader {
             return root;
         } catch (XMLStreamException e) {
             Location loc = e.getLocation();
-            throw problem(loc, "malformed XML: " + cleanMessage(e));
+            if (loc == null || loc.getLineNumber() < 1) {
+                // the parser's own limits (nesting depth, attributes per element) carry no location:
+                // report where the reader stopped
+                loc = r == null ? null : r.getLocation();
+            }
+            String m = cleanMessage(e);
+            java.util.regex.Matcher limit = LIMIT.matcher(m);
+            if (limit.find()) {
+                int n = Integer.parseInt(limit.group(2));
+                if (limit.group(1) != null) {
+                    throw problem(loc, "elements are nested more than " + n + " levels deep (the limit)");
+                }
+                int at = loc == null ? -1 : nthAttributeOffset(loc.getCharacterOffset(), n);
+                if (at >= 0) {
+                    int line = lineOf(at);
+                    throw new SceneLoadException(new SceneProblem(file, line, at - lineStarts[line - 1] + 1,
+                            "more than " + n + " attributes on one element (the limit)"));
+                }
+                throw problem(loc, "more than " + n + " attributes on one element (the limit)");
+            }
+            throw problem(loc, "malformed XML: " + m);
         } finally {
             if (r != null) {
                 try {
@@ -113,6 +136,43 @@ final class XmlReader {
             n.attrs.put(local, new XmlNode.Attr(local, r.getAttributeValue(i), line, col));
         }
         return n;
+    }
+
+    /**
+     * The char offset of the attribute at index {@code n} (0-based) of the start tag beginning at
+     * {@code tagStart}, scanning names and quoted values; -1 if the tag has no such attribute.
+     */
+    private int nthAttributeOffset(int tagStart, int n) {
+        if (tagStart < 0 || tagStart >= text.length() || text.charAt(tagStart) != '<') {
+            return -1;
+        }
+        int i = tagStart + 1;
+        int len = text.length();
+        while (i < len && !isSpace(text.charAt(i)) && text.charAt(i) != '>' && text.charAt(i) != '/') {
+            i++;
+        }
+        for (int k = 0; i < len; k++) {
+            while (i < len && isSpace(text.charAt(i))) {
+                i++;
+            }
+            if (i >= len || text.charAt(i) == '>' || text.charAt(i) == '/') {
+                return -1;
+            }
+            if (k == n) {
+                return i;
+            }
+            while (i < len && text.charAt(i) != '"' && text.charAt(i) != '\'' && text.charAt(i) != '>') {
+                i++;
+            }
+            if (i < len && text.charAt(i) != '>') {
+                char q = text.charAt(i++);
+                while (i < len && text.charAt(i) != q) {
+                    i++;
+                }
+                i++;
+            }
+        }
+        return -1;
     }
 
     private static String qualified(String prefix, String local) {

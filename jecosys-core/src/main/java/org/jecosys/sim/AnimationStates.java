@@ -4,7 +4,9 @@ import java.util.List;
 import org.jecosys.anim.AnimationState;
 import org.jecosys.anim.SpringKinds;
 import org.jecosys.plant.LodDef;
+import org.jecosys.math.Rng;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.plant.VariationDef;
 
 /** The {@link AnimationState} of a {@link World}: its plants and components laid out as the animation reads them. */
 final class AnimationStates {
@@ -12,12 +14,17 @@ final class AnimationStates {
     }
 
     /**
-     * Builds the state of every component of {@code world} at rest. Build time; allocates; any thread.
+     * Builds the state of every component of {@code world} at rest, each plant with its seeded response
+     * variant and compliance (its species' {@code VariationDef.responseTime} and {@code stiffness}:
+     * a response variant uniform over {@link SpringKinds#RESPONSE_VARIANTS}, a stiffness factor
+     * {@code 1 + f u} with u uniform in [-1, 1]). Build time; allocates; any thread.
      *
      * @param first  per plant its first component, and the component count at index plantCount
      * @param xs     plant base x, metres (likewise ys, zs)
+     * @param seed   the scene's master seed
      */
-    static AnimationState of(World world, SpringKinds kinds, int[] first, float[] xs, float[] ys, float[] zs) {
+    static AnimationState of(World world, SpringKinds kinds, int[] first, float[] xs, float[] ys, float[] zs,
+                             long seed) {
         List<SpeciesModel> species = world.plants().species();
         double[][] edges = new double[species.size()][];
         for (int s = 0; s < species.size(); s++) {
@@ -31,9 +38,17 @@ final class AnimationStates {
         int[] sp = new int[plants];
         int[] kind = new int[world.componentCount()];
         float[] heading = new float[world.componentCount()];
+        byte[] response = new byte[plants];
+        float[] compliance = new float[plants];
         for (int p = 0; p < plants; p++) {
             sp[p] = world.plantSpecies(p);
             SpeciesModel sm = species.get(sp[p]);
+            VariationDef var = sm.def().variation();
+            long h = Rng.mix(seed ^ Rng.mix(0x5EED_5EEDL + p));
+            response[p] = (byte) (var.responseTime() > 0 ? Long.remainderUnsigned(h, SpringKinds.RESPONSE_VARIANTS)
+                    : SpringKinds.NOMINAL_VARIANT);
+            double u = (Rng.mix(h) >>> 11) * 0x1.0p-53 * 2 - 1;
+            compliance[p] = (float) (1 / (1 + var.stiffness() * u));
             int v = world.plantVariant(p);
             for (int s = 0; s < sm.slotCount(); s++) {
                 int c = first[p] + s;
@@ -41,6 +56,6 @@ final class AnimationStates {
                 heading[c] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
             }
         }
-        return new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading);
+        return new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading, response, compliance);
     }
 }

@@ -1,5 +1,7 @@
 package org.jecosys.sim;
 
+import org.joml.FrustumIntersection;
+
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
 import org.jecosys.anim.AnimationStep;
@@ -22,6 +24,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final int[] chunkFirstPlant;
     private final int[] chunkCount;
     private final boolean[] chunkAtRest;
+    private final DrawDecision draw;
+    private final FrustumIntersection[] frustum;
     /*
      * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
      * none). A plant whose outputs in the back frame are current is not written at all; stale ones
@@ -53,8 +57,11 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * @param seed    the animation seed of the chunks' random streams
      */
     ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, float[][] windX,
-                  float[][] windZ, boolean[][] visible, double[][] eye, long seed) {
+                  float[][] windZ, boolean[][] visible, double[][] eye, long seed, DrawDecision draw,
+                  FrustumIntersection[] frustum) {
         this.state = state;
+        this.draw = draw;
+        this.frustum = frustum;
         this.windX = windX;
         this.windZ = windZ;
         this.visible = visible;
@@ -166,6 +173,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
         packVisible(f, visible[b], p0, p1, reset || stamp);
+        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], frustum[b], f);
     }
 
     /**

@@ -27,6 +27,8 @@ public final class Frame {
     final float[] bendAzimuth;
     final boolean[] plantVisible;
     final byte[] plantLevel;
+    final byte[] drawLevel;
+    final int[] drawKeep;
     long number;
     double time;
     int componentsAnimated;
@@ -48,6 +50,9 @@ public final class Frame {
         renderStatesView = states.asReadOnlyBuffer().order(ByteOrder.LITTLE_ENDIAN);
         plantVisible = new boolean[plants];
         plantLevel = new byte[plants];
+        drawLevel = new byte[plants];
+        java.util.Arrays.fill(drawLevel, (byte) -1);
+        drawKeep = new int[plants];
     }
 
     /** {@return the frame number, counting published frames from 1; 0 before the first step} */
@@ -116,7 +121,12 @@ public final class Frame {
         return fieldNanos;
     }
 
-    /** {@return the time the animation update took in the last step, nanoseconds} */
+    /**
+     * {@return the time the animation update took in the last step, nanoseconds: from the start of its
+     * first chunk to the end of its last, so it does not include the force-field update, which the
+     * stepping thread runs before it helps the workers (with one thread, the two run one after the
+     * other; with several, side by side)}
+     */
     public long animationNanos() {
         return animationNanos;
     }
@@ -149,6 +159,43 @@ public final class Frame {
         this.poseCoord[c] = poseCoord;
         this.bendAzimuth[c] = azimuth;
         renderStates.put(2 * c, poseCoord).put(2 * c + 1, azimuth);
+    }
+
+    /**
+     * {@return the level of detail plant p is drawn at, or -1 when it is not drawn: the frame's one
+     * visibility and level decision ({@link DrawDecision}), which the renderer follows as it is}
+     *
+     * @param p plant index
+     */
+    public int drawLevel(int p) {
+        return drawLevel[p];
+    }
+
+    /**
+     * {@return the screen-door dither windows plant p is drawn with: bits 0-15 the packed window of
+     * {@link #drawLevel} ({@code 256 lo + hi}: fragments with {@code lo <= bayer < hi}, /255, are
+     * kept), bits 16-31 that of the next level when the plant is in the transition band before its
+     * level's end (0: not drawn at the next level); see {@link DrawDecision#keep(int, int, double)}}
+     *
+     * @param p plant index
+     */
+    public int drawKeep(int p) {
+        return drawKeep[p];
+    }
+
+    /**
+     * Sets plant p's drawing decision (see {@link #drawLevel}, {@link #drawKeep}): for tools and
+     * tests that build frames without the animation engine, like {@link #set}. Only on a frame the
+     * caller owns. No allocation.
+     *
+     * @param p     plant index
+     * @param level level of detail to draw it at, or -1 for not drawn
+     * @param keep  packed dither windows, as {@link #drawKeep} returns them ({@code 255}: level
+     *              {@code level} alone, every fragment kept)
+     */
+    public void setDraw(int p, int level, int keep) {
+        drawLevel[p] = (byte) level;
+        drawKeep[p] = keep;
     }
 
     /**
@@ -186,6 +233,8 @@ public final class Frame {
         packRenderStates(0, poseCoord.length);
         System.arraycopy(src.plantVisible, 0, plantVisible, 0, plantVisible.length);
         System.arraycopy(src.plantLevel, 0, plantLevel, 0, plantLevel.length);
+        System.arraycopy(src.drawLevel, 0, drawLevel, 0, drawLevel.length);
+        System.arraycopy(src.drawKeep, 0, drawKeep, 0, drawKeep.length);
         number = src.number;
         time = src.time;
         componentsAnimated = src.componentsAnimated;

@@ -2,7 +2,9 @@ package org.jecosys.sim;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
@@ -11,6 +13,8 @@ import org.jecosys.anim.SpringKinds;
 import org.jecosys.field.FieldBounds;
 import org.jecosys.field.FieldCounters;
 import org.jecosys.field.ForceField;
+import org.joml.FrustumIntersection;
+import org.joml.Matrix4f;
 import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
@@ -45,6 +49,17 @@ import org.jecosys.wind.WindSource;
  * With the field off ({@link #setFieldEnabled}) no flow is evaluated and no culling is done: every
  * plant is visible and feels no wind (paper Table 6's "Force field disabled").
  *
+ * <h2>Start</h2>
+ * In CONSTRAINT mode with the field on, the constructor puts every plant at the equilibrium of the
+ * flows at its position at t = 0 (one evaluation per plant, once), so the frames before the first
+ * step already show the meadow in the wind. The first step samples the field at t = 0 as well (the
+ * force its spring update starts from; when the plants were not settled at construction, the plants
+ * it sees are settled on it), then for the end of the step as usual. A plant that comes into view
+ * later starts at the equilibrium of the wind it then feels ({@code AnimationState}). When the flows
+ * switch within a step (a window opens or closes, a flow is added, removed or switched:
+ * {@link WindField#lastEdge}), that step's spring update changes the force at the sub-interval
+ * boundary of the switch instead of spreading it over the step ({@code SpringKinds.prepare}).
+ *
  * <h2>Determinism</h2>
  * Chunks are fixed by the world (about {@value #CHUNK_COMPONENTS} components each), random mode uses
  * one random stream per chunk, and nothing sums floating-point values across chunks, so the state
@@ -55,18 +70,35 @@ import org.jecosys.wind.WindSource;
  * <li>{@link #step}, {@link #stepFixed}, {@link #stateHash}, {@link #state}, {@link #forceField},
  * {@link #windX}/{@link #windZ} and the other inspection methods: one <em>stepping thread</em> at a
  * time (the game loop), never concurrently with a step.</li>
- * <li>{@link #latestFrame()}: one reader thread (the renderer), concurrently with steps; it never
- * blocks and never sees a frame being written.</li>
+ * <li>{@link #latestFrame()}: one reader thread (the renderer, the first thread that calls it),
+ * concurrently with steps; it never blocks and never sees a frame being written. Another thread that
+ * calls it while the reader lives gets an IllegalStateException. {@link #copyLatestFrame(Frame)}:
+ * any number of threads, concurrently with steps and the reader; each gets a complete copy.</li>
  * <li>Commands ({@link #addFlow}, {@link #removeFlow}, {@link #attachAgent}, {@link #moveAgent},
- * {@link #setFlowEnabled}, {@link #setMode}, {@link #setFieldEnabled}, {@link #setLodScale}): any
- * thread; queued and applied at the start of the next fixed step. They allocate a small command;
- * steps allocate nothing after warm-up, on the stepping thread and on every worker.</li>
+ * {@link #blast}, {@link #setFlowEnabled}, {@link #setMode}, {@link #setFieldEnabled},
+ * {@link #setLodScale}): any thread; checked by the call (the same ranges as the scene schema;
+ * duplicate flow ids and more than {@link #MAX_FLOWS} flows are refused there), queued and applied
+ * at the start of the next fixed step. A step applies at most the commands queued when it started,
+ * so producers can never keep it from returning; at most {@link #MAX_PENDING_COMMANDS} wait at a
+ * time, and a command past that is refused with an IllegalStateException (back-pressure: step more
+ * often or send fewer). They allocate a small command; steps allocate nothing after warm-up, on the
+ * stepping thread and on every worker.</li>
  * <li>{@link #close()}: stops the workers; call it once no step runs. Idempotent.</li>
  * </ul>
  */
 public final class Simulation implements AutoCloseable {
     /** Target components per fixed chunk of plants. */
     public static final int CHUNK_COMPONENTS = 8192;
+    /**
+     * Most commands waiting for the next step; a command method called past it throws
+     * IllegalStateException and queues nothing.
+     */
+    public static final int MAX_PENDING_COMMANDS = 16_384;
+    /**
+     * Most flows a simulation holds at once: the scene's, agents, blasts and a game's own flows
+     * together, queued ones included (the scene format allows 256).
+     */
+    public static final int MAX_FLOWS = 1024;
 
     private final World world;
     private final SimulationDef def;
@@ -81,7 +113,22 @@ public final class Simulation implements AutoCloseable {
     private final float[][] windZ = new float[2][];
     private final boolean[][] visible = new boolean[2][];
     private final double[][] eye = new double[2][3];
+    /** Per buffer, the sub-interval boundary of a switch of the flows in its step, or -1 (SpringKinds.prepare). */
+    private final int[] edge = {-1, -1};
+    private final FrustumIntersection[] frustum = {new FrustumIntersection(), new FrustumIntersection()};
+    private final Matrix4f viewProjection = new Matrix4f();
+    private final DrawDecision draw;
     private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
+    /** Commands queued and not yet taken by a step; at most {@link #MAX_PENDING_COMMANDS}. */
+    private final AtomicInteger pendingCommands = new AtomicInteger();
+    /** Every flow id held or queued, with its owner (the source, or a blast's token). */
+    private final ConcurrentHashMap<String, Object> flowIds = new ConcurrentHashMap<>();
+    /** Flows held or queued; at most {@link #MAX_FLOWS}. */
+    private final AtomicInteger flowsReserved = new AtomicInteger();
+    /** Blasts made by {@link #blast}, with their id tokens, until they expire. Stepping thread. */
+    private WindSource[] blasts = new WindSource[4];
+    private Object[] blastTokens = new Object[4];
+    private int blastCount;
     private final double fixedStep;
     private final int maxSubSteps;
     private final int subIntervals;
@@ -90,6 +137,8 @@ public final class Simulation implements AutoCloseable {
     private boolean fieldEnabled;
     private double accumulator;
     private boolean primed;
+    /** Whether the constructor put the plants at the equilibrium of the wind at t = 0. */
+    private boolean settledAtBuild;
     private int current;
     private long steps;
     private double time;
@@ -108,6 +157,14 @@ public final class Simulation implements AutoCloseable {
         mode = ad.mode();
         fieldEnabled = def.field().enabled();
         wind = WindField.of(def.flows());
+        if (wind.size() > MAX_FLOWS) {
+            throw new IllegalArgumentException("a simulation holds at most " + MAX_FLOWS + " flows, the def has "
+                    + wind.size());
+        }
+        for (int i = 0; i < wind.size(); i++) {
+            flowIds.put(wind.get(i).id(), wind.get(i));
+        }
+        flowsReserved.set(wind.size());
         Heightfield hf = world.terrain().heightfield();
         int plants = world.plantCount();
         float[] xs = new float[plants];
@@ -140,19 +197,32 @@ public final class Simulation implements AutoCloseable {
             first[p] = world.firstComponent(p);
         }
         first[plants] = comps;
-        state = AnimationStates.of(world, kinds, first, xs, ys, zs);
+        state = AnimationStates.of(world, kinds, first, xs, ys, zs, def.seed());
         for (int b = 0; b < 2; b++) {
             windX[b] = new float[plants];
             windZ[b] = new float[plants];
             visible[b] = new boolean[plants];
         }
+        settleEverywhere(xs, zs);
         exchange = new FrameExchange(plants, comps);
         for (int i = 0; i < 3; i++) {
             Frame f = exchange.frame(i);
             state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
+            f.packRenderStates(0, comps);
         }
+        draw = new DrawDecision(world, new DrawDecision.Edges() {
+            @Override
+            public int levels(int sp) {
+                return world.plants().species().get(sp).levels();
+            }
+
+            @Override
+            public double edge(int sp, int l) {
+                return state.lodEdge(sp, l);
+            }
+        });
         chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, windX, windZ, visible, eye,
-                ad.seed());
+                ad.seed(), draw, frustum);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 
@@ -163,7 +233,7 @@ public final class Simulation implements AutoCloseable {
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param baseDir  folder that relative image paths resolve against
      * @param progress receives the long generation steps
-     * @return the simulation, at rest, time 0; the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress) throws IOException {
@@ -178,7 +248,7 @@ public final class Simulation implements AutoCloseable {
      * @param baseDir  folder that relative image paths resolve against
      * @param progress receives the long generation steps
      * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
-     * @return the simulation, at rest, time 0; the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress, int threads)
@@ -196,7 +266,7 @@ public final class Simulation implements AutoCloseable {
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
      * @param threads animation workers in [0, 256]; 0 keeps the def's setting
-     * @return the simulation, at rest, time 0; the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      */
     public static Simulation of(World world, SimulationDef def, int threads) {
         return of(world, def, threads, ForceFieldFactory.QUADTREE);
@@ -214,7 +284,7 @@ public final class Simulation implements AutoCloseable {
      * @param threads animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
      *                available processors)
      * @param fields  builds the force field, called once on this thread
-     * @return the simulation, at rest, time 0
+     * @return the simulation at time 0, in the wind of t = 0 (see "Start")
      * @throws IllegalArgumentException on null arguments, a bad thread count, or a field that does
      *                                  not hold exactly the world's plants
      */
@@ -285,19 +355,19 @@ public final class Simulation implements AutoCloseable {
         }
         steppingThread = Thread.currentThread().getId();
         drainCommands();
-        kinds.prepare(fixedStep, subIntervals);
         if (!primed) {
-            updateField(camera, current);
+            prime(camera);
             primed = true;
         }
+        kinds.prepare(fixedStep, subIntervals, edge[current]);
         Frame f = exchange.back();
+        exchange.beginWrite();
         chunkAnimator.prepare(mode, current, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
         long t0 = System.nanoTime();
         pool.start();
         updateField(camera, 1 - current);
         long fieldNanos = System.nanoTime() - t0;
         pool.await();
-        long animNanos = System.nanoTime() - t0;
         current = 1 - current;
         steps++;
         time += fixedStep;
@@ -305,16 +375,71 @@ public final class Simulation implements AutoCloseable {
         f.time = time;
         f.componentsAnimated = chunkAnimator.animated();
         f.fieldNanos = fieldNanos;
-        f.animationNanos = animNanos;
+        f.animationNanos = pool.animationNanos(); // the chunks' own span, beside or after the field
         exchange.publish();
     }
 
-    /** Advances the wind one fixed step and writes the field's result for its end into buffer b. */
+    /**
+     * At construction, in CONSTRAINT mode with the field on: puts every plant at the equilibrium of
+     * the flows at its own position at t = 0 (one evaluation per plant, once), so that the frames a
+     * reader sees before the first step already show the meadow in the wind. The first step then
+     * settles the plants it sees on the field's own wind at t = 0 ({@link #prime}). Build time;
+     * allocates.
+     */
+    private void settleEverywhere(float[] xs, float[] zs) {
+        if (mode != AnimationMode.CONSTRAINT || !fieldEnabled) {
+            return;
+        }
+        settledAtBuild = true;
+        int n = xs.length;
+        float[] wx = new float[n];
+        float[] wz = new float[n];
+        boolean[] all = new boolean[n];
+        org.joml.Vector2d u = new org.joml.Vector2d();
+        for (int p = 0; p < n; p++) {
+            wind.velocity(xs[p], zs[p], u);
+            wx[p] = (float) u.x;
+            wz[p] = (float) u.y;
+            all[p] = true;
+        }
+        state.settle(0, n, org.jecosys.anim.AnimationStep.of(mode, wx, wz, all));
+    }
+
+    /**
+     * Before the first step: samples the field at t = 0 and, in CONSTRAINT mode, puts the plants
+     * visible then at the equilibrium of that wind (the force each starts its first step from),
+     * unless the constructor already put every plant at the equilibrium of the flows at t = 0 and
+     * the field is still on (the first step then leads from that wind to the field's without a jump);
+     * then advances to the end of the first step. A plant seen later starts at the equilibrium of the wind
+     * when it comes into view ({@link AnimationState}).
+     */
+    private void prime(Camera camera) {
+        int b = 1 - current;
+        sampleField(camera, b);
+        if (mode == AnimationMode.CONSTRAINT && !(settledAtBuild && fieldEnabled)) {
+            state.settle(0, world.plantCount(),
+                    org.jecosys.anim.AnimationStep.of(mode, windX[b], windZ[b], visible[b]));
+        }
+        updateField(camera, current);
+    }
+
+    /**
+     * Advances the wind one fixed step, notes where in the step the flows switched (if they did), and
+     * writes the field's result for its end into buffer b.
+     */
     private void updateField(Camera camera, int b) {
         wind.advance(fixedStep);
+        edge[b] = SpringKinds.edgeBoundary(wind.lastEdge(), wind.time(), fixedStep, subIntervals);
+        releaseExpiredBlasts();
+        sampleField(camera, b);
+    }
+
+    /** Writes the field's result for the wind's current time into buffer b. */
+    private void sampleField(Camera camera, int b) {
         eye[b][0] = camera.x();
         eye[b][1] = camera.y();
         eye[b][2] = camera.z();
+        frustum[b].set(camera.viewProjection(viewProjection), false);
         int n = world.plantCount();
         if (fieldEnabled) {
             field.update(camera);
@@ -326,27 +451,137 @@ public final class Simulation implements AutoCloseable {
         }
     }
 
+    /** Applies the commands queued when it starts, no more (later ones wait for the next step). */
     private void drainCommands() {
-        for (Runnable r = commands.poll(); r != null; r = commands.poll()) {
+        for (int n = pendingCommands.get(); n > 0; n--) {
+            Runnable r = commands.poll();
+            if (r == null) {
+                return; // counted but not yet in the queue: the next step takes it
+            }
+            pendingCommands.decrementAndGet();
             r.run();
         }
     }
 
+    /** Queues a command, or refuses it past {@link #MAX_PENDING_COMMANDS}. */
+    private void enqueue(Runnable command) {
+        if (pendingCommands.incrementAndGet() > MAX_PENDING_COMMANDS) {
+            pendingCommands.decrementAndGet();
+            throw new IllegalStateException("the simulation's command queue is full: " + MAX_PENDING_COMMANDS
+                    + " commands wait for the next step (Simulation.MAX_PENDING_COMMANDS); step more often or "
+                    + "send fewer commands");
+        }
+        commands.add(command);
+    }
+
+    /** {@return the commands queued and not yet applied, at most {@link #MAX_PENDING_COMMANDS}} Any thread. */
+    public int pendingCommands() {
+        return Math.min(pendingCommands.get(), MAX_PENDING_COMMANDS);
+    }
+
+    /**
+     * {@return the flows held or queued: the scene's, agents, blasts and user flows, at most
+     * {@link #MAX_FLOWS}} Any thread.
+     */
+    public int flowCount() {
+        return flowsReserved.get();
+    }
+
+    /** Reserves a flow id for {@code owner}, refusing a duplicate or a flow past {@link #MAX_FLOWS}. */
+    private void reserveFlow(String id, Object owner) {
+        Require.nonNull("id", id);
+        if (id.isEmpty()) {
+            throw new IllegalArgumentException("a flow id must not be empty");
+        }
+        if (flowsReserved.incrementAndGet() > MAX_FLOWS) {
+            flowsReserved.decrementAndGet();
+            throw new IllegalStateException("the simulation holds " + MAX_FLOWS + " flows (Simulation.MAX_FLOWS, "
+                    + "queued ones included): remove one before adding '" + id + "'");
+        }
+        if (flowIds.putIfAbsent(id, owner) != null) {
+            flowsReserved.decrementAndGet();
+            throw new IllegalArgumentException("a flow with id '" + id + "' is already in the simulation (or "
+                    + "queued): flow ids are unique");
+        }
+    }
+
+    private void releaseFlow(String id, Object owner) {
+        if (id != null && flowIds.remove(id, owner)) {
+            flowsReserved.decrementAndGet();
+        }
+    }
+
+    /** Queues a command for a flow whose id was just reserved; releases the id when it is refused. */
+    private void enqueueReserved(String id, Object owner, Runnable command) {
+        try {
+            enqueue(command);
+        } catch (RuntimeException e) {
+            releaseFlow(id, owner);
+            throw e;
+        }
+    }
+
+    /** Frees the ids of blasts the wind field removed at their end. Stepping thread; no allocation. */
+    private void releaseExpiredBlasts() {
+        double now = wind.time();
+        for (int i = blastCount - 1; i >= 0; i--) {
+            if (blasts[i].expired(now)) {
+                releaseFlow(blasts[i].id(), blastTokens[i]);
+                blastCount--;
+                blasts[i] = blasts[blastCount];
+                blastTokens[i] = blastTokens[blastCount];
+                blasts[blastCount] = null;
+                blastTokens[blastCount] = null;
+            }
+        }
+    }
+
+    private void trackBlast(WindSource b, Object token) {
+        if (blastCount == blasts.length) {
+            blasts = java.util.Arrays.copyOf(blasts, 2 * blastCount);
+            blastTokens = java.util.Arrays.copyOf(blastTokens, 2 * blastCount);
+        }
+        blasts[blastCount] = b;
+        blastTokens[blastCount++] = token;
+    }
+
     /**
      * The newest published frame (complete; unchanged until this reader calls again). Before the
-     * first step: the rest state, number 0. One reader thread. No allocation.
+     * first step: the rest state, number 0. One reader thread: the first thread that calls it (the
+     * renderer, or the game loop); once that thread has ended another may take over. Other threads
+     * read with {@link #copyLatestFrame(Frame)}. No allocation.
      *
      * @return the frame; read it until the next call
+     * @throws IllegalStateException when called from a second thread while the reader thread lives
      */
     public Frame latestFrame() {
         return exchange.latest();
     }
 
     /**
+     * Copies the newest published frame into the caller's {@code dest}: for any number of reader
+     * threads besides the one of {@link #latestFrame()} (tools, recorders, a second view). The copy is
+     * complete, never torn, and frame numbers a thread copies never go back; it never blocks the
+     * step. Any thread; no allocation (copies every component: about 1 ms per million components).
+     *
+     * @param dest a frame of {@link #plantCount()} plants and {@link #componentCount()} components
+     *             ({@code new Frame(sim.plantCount(), sim.componentCount())}), owned by the caller
+     * @return {@code dest}
+     * @throws IllegalArgumentException when {@code dest} is null or of other sizes
+     */
+    public Frame copyLatestFrame(Frame dest) {
+        return exchange.copyLatest(dest);
+    }
+
+    /**
      * Queues a new flow built from {@code def}. Any thread; allocates.
      *
-     * @param def the flow; its id must not be in use when the command runs
+     * @param def the flow (its values are checked by {@link FlowDef}: the scene schema's ranges); its
+     *            id must not be held or queued
      * @return its handle, for {@link #removeFlow}, {@link #setFlowEnabled} and {@link #moveAgent}
+     * @throws IllegalArgumentException when {@code def} is null or its id is already in use
+     * @throws IllegalStateException    when {@link #MAX_FLOWS} flows or {@link #MAX_PENDING_COMMANDS}
+     *                                  commands are already there
      */
     public WindSource addFlow(FlowDef def) {
         return addFlow(WindSource.of(def));
@@ -360,24 +595,32 @@ public final class Simulation implements AutoCloseable {
      * this call the flow belongs to the stepping thread: switch it with {@link #setFlowEnabled}, move
      * it with {@link #moveAgent}, remove it with {@link #removeFlow}. Any thread; allocates a command.
      *
-     * @param source the flow; its id must not be in use when the command runs (else the step that runs
-     *               it throws IllegalArgumentException)
+     * @param source the flow; its id must not be held or queued (checked by this call)
      * @return {@code source}, the handle
+     * @throws IllegalArgumentException when {@code source} is null, its id is null or empty, or a flow
+     *                                  with its id is already held or queued
+     * @throws IllegalStateException    when {@link #MAX_FLOWS} flows or {@link #MAX_PENDING_COMMANDS}
+     *                                  commands are already there
      */
     public WindSource addFlow(WindSource source) {
         Require.nonNull("source", source);
-        commands.add(() -> wind.add(source));
+        String id = source.id();
+        reserveFlow(id, source);
+        enqueueReserved(id, source, () -> wind.add(source));
         return source;
     }
 
     /**
      * Queues the removal of a flow or agent. Any thread; allocates a command.
      *
-     * @param source the handle {@link #addFlow} or {@link #attachAgent} returned (a flow not held is ignored)
+     * @param source the handle {@link #addFlow} or {@link #attachAgent} returned (a flow not held is
+     *               ignored); its id is free again when this call returns
+     * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void removeFlow(WindSource source) {
         Require.nonNull("source", source);
-        commands.add(() -> wind.remove(source));
+        enqueue(() -> wind.remove(source));
+        releaseFlow(source.id(), source);
     }
 
     /**
@@ -403,33 +646,39 @@ public final class Simulation implements AutoCloseable {
      * @param agent the flow's handle: a built-in flow, or a user flow with a movable centre (an
      *              {@link org.jecosys.wind.AbstractWindSource}; the interface's default
      *              {@link WindSource#setCentre} throws, in the step that runs the command)
-     * @param x     new centre X, metres (finite)
-     * @param z     new centre Z, metres (finite)
+     * @param x     new centre X, metres, |x| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @param z     new centre Z, metres, |z| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @throws IllegalArgumentException when the agent is null or a coordinate is out of range
+     * @throws IllegalStateException    when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void moveAgent(WindSource agent, double x, double z) {
         Require.nonNull("agent", agent);
-        Require.finite("x", x);
-        Require.finite("z", z);
-        commands.add(() -> agent.setCentre(x, z));
+        Require.range("x", x, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
+        Require.range("z", z, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
+        enqueue(() -> agent.setCentre(x, z));
     }
 
     /**
      * Queues a blast: a short radial pulse at (x, z) metres of peak strength {@code strength} m^2/s
      * lasting {@code duration} s, removed once over ({@link WindField#blast}). Any thread; allocates.
      *
-     * @param id       unique flow id while the blast lasts
-     * @param x        centre X, metres (finite)
-     * @param z        centre Z, metres (finite)
-     * @param strength peak strength, m^2/s, &gt; 0
-     * @param duration seconds, &gt; 0
+     * @param id       unique flow id while the blast lasts (free again once it is over)
+     * @param x        centre X, metres, |x| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @param z        centre Z, metres, |z| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @param strength peak strength, m^2/s, in (0, {@link FlowDef#MAX_STRENGTH}]
+     * @param duration seconds, in (0, {@link org.jecosys.wind.ActivationDef#MAX_TIME}]
+     * @throws IllegalArgumentException when a value is out of range or a flow with this id is held or
+     *                                  queued
+     * @throws IllegalStateException    when {@link #MAX_FLOWS} flows or {@link #MAX_PENDING_COMMANDS}
+     *                                  commands are already there
      */
     public void blast(String id, double x, double z, double strength, double duration) {
-        Require.nonNull("id", id);
-        Require.finite("x", x);
-        Require.finite("z", z);
         Require.positive("strength", strength);
-        Require.positive("duration", duration);
-        commands.add(() -> wind.blast(id, x, z, strength, duration));
+        FlowDef.builder(id, org.jecosys.wind.FlowKind.BLAST).centre(x, z).strength(strength).duration(duration)
+                .build(); // checks every value with the scene schema's ranges
+        Object token = new Object();
+        reserveFlow(id, token);
+        enqueueReserved(id, token, () -> trackBlast(wind.blast(id, x, z, strength, duration), token));
     }
 
     /**
@@ -437,29 +686,81 @@ public final class Simulation implements AutoCloseable {
      *
      * @param source  the flow's handle
      * @param enabled whether it acts
+     * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setFlowEnabled(WindSource source, boolean enabled) {
         Require.nonNull("source", source);
-        commands.add(() -> source.setEnabled(enabled));
+        enqueue(() -> source.setEnabled(enabled));
     }
 
     /**
      * Queues a change of animation mode (paper Table 7). Any thread; allocates a command.
      *
      * @param mode static, random or constraint
+     * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setMode(AnimationMode mode) {
         Require.nonNull("mode", mode);
-        commands.add(() -> this.mode = mode);
+        enqueue(() -> this.mode = mode);
     }
 
     /**
      * Queues switching the force field on or off (see the class comment). Any thread; allocates a command.
      *
      * @param enabled whether the field evaluates flows and culls plants
+     * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setFieldEnabled(boolean enabled) {
-        commands.add(() -> fieldEnabled = enabled);
+        enqueue(() -> fieldEnabled = enabled);
+    }
+
+    /**
+     * Sets the width of the band before each level of detail's end over which a plant is drawn at
+     * both levels, dithered (the scene's {@code <render lodTransition>}); see {@link DrawDecision}.
+     * Any thread; applied at the next fixed step. No allocation.
+     *
+     * @param metres band width, in [0, 10]
+     * @throws IllegalArgumentException when out of range
+     */
+    public void setLodTransition(double metres) {
+        Require.range("lodTransition", metres, 0, 10);
+        enqueue(() -> draw.setTransition(metres));
+    }
+
+    /**
+     * Replaces the level-of-detail distances of one species, for the animation and the drawing alike
+     * (one set of bands). Any thread; applied at the next fixed step. Allocates a copy.
+     *
+     * @param species      species index, in [0, species count)
+     * @param maxDistances ascending distances where each level but the last ends, metres, &gt; 0,
+     *                     one fewer than the species' levels
+     * @throws IllegalArgumentException when the species or the distances are out of range
+     */
+    public void setLodDistances(int species, double[] maxDistances) {
+        Require.range("species", species, 0, world.plants().species().size() - 1);
+        int levels = world.plants().species().get(species).levels();
+        Require.nonNull("maxDistances", maxDistances);
+        if (maxDistances.length != levels - 1) {
+            throw new IllegalArgumentException("species " + species + " has " + levels + " levels, so "
+                    + (levels - 1) + " distances, got " + maxDistances.length);
+        }
+        double prev = 0;
+        for (int i = 0; i < maxDistances.length; i++) {
+            Require.range("maxDistances[" + i + "]", maxDistances[i], Math.nextUp(prev), 1e6);
+            prev = maxDistances[i];
+        }
+        double[] copy = maxDistances.clone();
+        enqueue(() -> state.setLodDistances(species, copy));
+    }
+
+    /**
+     * The frame's visibility and level decision, read only: its bands, transition and bounding radii.
+     * Any thread (values set by the stepping thread).
+     *
+     * @return the decision the workers apply
+     */
+    public DrawDecision drawDecision() {
+        return draw;
     }
 
     /**
@@ -467,10 +768,11 @@ public final class Simulation implements AutoCloseable {
      * twice as far). Any thread; allocates a command.
      *
      * @param scale factor on every level-of-detail distance, in [0.01, 100]
+     * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setLodScale(double scale) {
         Require.range("scale", scale, 0.01, 100);
-        commands.add(() -> state.setLodScale(scale));
+        enqueue(() -> state.setLodScale(scale));
     }
 
     /** {@return the animation mode of the last step} Stepping thread. */
@@ -562,7 +864,11 @@ public final class Simulation implements AutoCloseable {
         return field.counters();
     }
 
-    /** {@return the wind flows} Stepping thread (add flows through {@link #addFlow} from other threads). */
+    /**
+     * {@return the wind flows} Stepping thread. Add and remove flows through {@link #addFlow} and
+     * {@link #removeFlow}: flows added here directly are not counted in {@link #MAX_FLOWS}, and their
+     * ids are not known to the duplicate check of the command methods.
+     */
     public WindField windField() {
         return wind;
     }

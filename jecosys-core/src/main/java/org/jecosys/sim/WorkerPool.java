@@ -1,6 +1,7 @@
 package org.jecosys.sim;
 
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import org.jecosys.math.Require;
 
@@ -35,6 +36,9 @@ final class WorkerPool implements AutoCloseable {
     private final int chunks;
     private final AtomicInteger next = new AtomicInteger();
     private final AtomicInteger pending = new AtomicInteger();
+    /** System.nanoTime() at which the step's first chunk started and its last chunk ended, any thread. */
+    private final AtomicLong firstChunk = new AtomicLong();
+    private final AtomicLong lastChunk = new AtomicLong();
     private volatile int generation;
     private volatile boolean stopped;
     private volatile Thread owner;
@@ -98,6 +102,8 @@ final class WorkerPool implements AutoCloseable {
             throw new IllegalStateException("the worker pool is closed");
         }
         owner = Thread.currentThread();
+        firstChunk.set(Long.MAX_VALUE);
+        lastChunk.set(Long.MIN_VALUE);
         next.set(0);
         if (chunks <= 1 || threads.length == 0) {
             // one chunk (waking a worker costs more) or no pool threads: the owner runs them in await()
@@ -118,9 +124,7 @@ final class WorkerPool implements AutoCloseable {
     void await() {
         // the caller helps: it runs every chunk no worker has claimed yet (each chunk is claimed once,
         // whoever runs it, so results do not depend on which thread did the work)
-        for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
-            task.runChunk(c);
-        }
+        runChunks();
         int spins = 0;
         while (pending.get() != 0) {
             if (spins < SPINS) {
@@ -135,6 +139,31 @@ final class WorkerPool implements AutoCloseable {
             failure = null;
             throw new IllegalStateException("an animation worker failed: " + f, f);
         }
+    }
+
+    /** Runs unclaimed chunks until none is left, recording when this thread's first started and last ended. */
+    private void runChunks() {
+        int c = next.getAndIncrement();
+        if (c >= chunks) {
+            return;
+        }
+        firstChunk.accumulateAndGet(System.nanoTime(), Math::min);
+        for (; c < chunks; c = next.getAndIncrement()) {
+            task.runChunk(c);
+        }
+        lastChunk.accumulateAndGet(System.nanoTime(), Math::max);
+    }
+
+    /**
+     * The animation's own time in the step that {@link #await()} finished: from the start of its
+     * first chunk to the end of its last, on whichever threads ran them, nanoseconds (0 when no chunk
+     * ran). With one thread it excludes the owner's work before {@link #await()} (the force field);
+     * with several it is the animation's wall time beside it. Owner thread, after await; no allocation.
+     */
+    long animationNanos() {
+        long first = firstChunk.get();
+        long last = lastChunk.get();
+        return last >= first ? last - first : 0;
     }
 
     private void loop() {
@@ -154,9 +183,7 @@ final class WorkerPool implements AutoCloseable {
             }
             seen = generation;
             try {
-                for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
-                    task.runChunk(c);
-                }
+                runChunks();
             } catch (Throwable t) {
                 failure = t;
                 next.set(chunks);

@@ -37,6 +37,7 @@
  * ComponentFactories)}, then {@code Simulation.of(world, def, threads)}.</li>
  * </ul>
  * Reading the state: {@code sim.state()} is a read-only {@code AnimationView}; {@code latestFrame()}
- * is what a render thread reads.
+ * is what one render thread reads (a second thread calling it is refused); any other thread copies
+ * frames with {@code copyLatestFrame(frame)}. Frames are never torn.
  */
 package org.jecosys.sim;

@@ -65,6 +65,26 @@ public final class CompetitiveDistributor implements TerrainDistributor {
     /** Mask cells per side, at most. */
     public static final int MASK_MAX_RESOLUTION = 512;
 
+    /** Densest packing of equal discs in the plane (hexagonal), as a share of the area. */
+    static final double PACKING = Math.PI / (2 * Math.sqrt(3));
+
+    /**
+     * The most plants of footprint radius {@code footprint} whose discs fit, without overlapping, on a
+     * terrain of {@code sizeX} by {@code sizeZ} metres (centres inside it): the hexagonal packing
+     * density over the terrain grown by the radius on every side. A distribution's target beyond it
+     * cannot be reached; its attempts are budgeted for this many. Any thread; no allocation.
+     *
+     * @param sizeX     terrain extent along X, metres, &gt; 0
+     * @param sizeZ     terrain extent along Z, metres, &gt; 0
+     * @param footprint footprint radius, metres, &gt; 0
+     * @return plants, at least 1, at most {@link Long#MAX_VALUE}
+     */
+    public static long capacity(double sizeX, double sizeZ, double footprint) {
+        double r = footprint;
+        double n = Math.ceil(PACKING * (sizeX + 2 * r) * (sizeZ + 2 * r) / (Math.PI * r * r));
+        return n >= Long.MAX_VALUE ? Long.MAX_VALUE : Math.max(1, (long) n);
+    }
+
     /** A distributor; it holds no state. */
     public CompetitiveDistributor() {
     }

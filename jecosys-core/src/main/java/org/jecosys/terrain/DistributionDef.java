@@ -25,21 +25,32 @@ public record DistributionDef(String species, int count, double density, double 
                               double maxAltitude, double footprint, double waterUse, double nutrientUse) {
     /** Largest exact count. */
     public static final int MAX_COUNT = 10_000_000;
+    /** Largest density, plants per square metre (the scene schema's range and the API's). */
+    public static final double MAX_DENSITY = 10_000;
+    /** Steepest maxSlope, degrees (the API takes radians). */
+    public static final double MAX_SLOPE_DEGREES = 90;
+    /** Largest |altitude| bound, metres. */
+    public static final double MAX_ALTITUDE = 1e5;
+    /** Smallest footprint radius, metres. */
+    public static final double MIN_FOOTPRINT = 1e-3;
+    /** Largest footprint radius, metres. */
+    public static final double MAX_FOOTPRINT = 100;
 
     /**
      * Checks the components.
      *
      * @param species      species id, not null
      * @param count        exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
-     * @param density      plants per square metre, in [0, 10000]
+     * @param density      plants per square metre, in [0, {@link #MAX_DENSITY}]
      * @param minWater     lowest water level, in [0, 1]
      * @param maxWater     highest water level, in [minWater, 1]
      * @param minNutrients lowest nutrient level, in [0, 1]
      * @param maxNutrients highest nutrient level, in [minNutrients, 1]
-     * @param maxSlope     steepest ground, radians, in [0, pi/2]
-     * @param minAltitude  lowest terrain height, metres (finite)
-     * @param maxAltitude  highest terrain height, metres, &gt;= minAltitude
-     * @param footprint    radius of ground a plant takes, metres, in [1e-6, 100]
+     * @param maxSlope     steepest ground, radians, in [0, {@link #MAX_SLOPE_DEGREES}] degrees
+     * @param minAltitude  lowest terrain height, metres, |minAltitude| &lt;= {@link #MAX_ALTITUDE}
+     * @param maxAltitude  highest terrain height, metres, &gt;= minAltitude and &lt;= {@link #MAX_ALTITUDE}
+     * @param footprint    radius of ground a plant takes, metres, in [{@link #MIN_FOOTPRINT},
+     *                     {@link #MAX_FOOTPRINT}]
      * @param waterUse     water level a plant consumes, in [0, 1]
      * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
      * @throws IllegalArgumentException when a component is out of range or species is null
@@ -47,18 +58,18 @@ public record DistributionDef(String species, int count, double density, double 
     public DistributionDef {
         Require.nonNull("species", species);
         Require.range("count", count, -1, MAX_COUNT);
-        Require.range("density", density, 0, 10_000);
+        Require.range("density", density, 0, MAX_DENSITY);
         Require.range("minWater", minWater, 0, 1);
         Require.range("maxWater", maxWater, minWater, 1);
         Require.range("minNutrients", minNutrients, 0, 1);
         Require.range("maxNutrients", maxNutrients, minNutrients, 1);
-        Require.range("maxSlope", maxSlope, 0, Math.PI / 2);
-        Require.finite("minAltitude", minAltitude);
-        Require.finite("maxAltitude", maxAltitude);
+        Require.degrees("maxSlope", maxSlope, 0, MAX_SLOPE_DEGREES);
+        Require.range("minAltitude", minAltitude, -MAX_ALTITUDE, MAX_ALTITUDE);
+        Require.range("maxAltitude", maxAltitude, -MAX_ALTITUDE, MAX_ALTITUDE);
         if (maxAltitude < minAltitude) {
             throw new IllegalArgumentException("maxAltitude must be >= minAltitude");
         }
-        Require.range("footprint", footprint, 1e-6, 100);
+        Require.range("footprint", footprint, MIN_FOOTPRINT, MAX_FOOTPRINT);
         Require.range("waterUse", waterUse, 0, 1);
         Require.range("nutrientUse", nutrientUse, 0, 1);
     }

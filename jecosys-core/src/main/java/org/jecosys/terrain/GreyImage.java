@@ -30,7 +30,8 @@ final class GreyImage {
      * Reads the image at {@code path}.
      *
      * @param name argument name used in error messages
-     * @throws IOException              when the file cannot be read
+     * @throws IOException              naming the file when it cannot be read or decoded, or a side
+     *                                  is above {@link ImageFiles#MAX_SIDE}
      * @throws IllegalArgumentException when the path is null or the file is not an image
      */
     static GreyImage read(String name, Path path) throws IOException {
@@ -38,7 +39,19 @@ final class GreyImage {
         if (!Files.isRegularFile(path)) {
             throw new IllegalArgumentException(name + " is not a readable file: " + path);
         }
-        BufferedImage img = ImageIO.read(path.toFile());
+        try {
+            ImageFiles.header(path); // the size is bounded before anything is decoded
+        } catch (ImageFiles.NotAnImage e) {
+            throw new IllegalArgumentException(name + " is not an image ImageIO can read: " + path, e);
+        }
+        BufferedImage img;
+        try {
+            img = ImageIO.read(path.toFile());
+        } catch (IOException e) {
+            throw ImageFiles.named(path, e);
+        } catch (RuntimeException e) {
+            throw new IOException("image " + path + ": cannot decode its data (" + e + ")", e);
+        }
         if (img == null) {
             throw new IllegalArgumentException(name + " is not an image ImageIO can read: " + path);
         }

@@ -57,7 +57,11 @@ final class Rounds {
         this.cseed = new long[nd][];
         this.cok = new boolean[nd][];
         for (int d = 0; d < nd; d++) {
-            budget[d] = CompetitiveDistributor.ATTEMPTS_BASE + (long) CompetitiveDistributor.ATTEMPTS_PER_PLANT * target[d];
+            // a target beyond what the footprints can ever pack is never reached: spend attempts only on
+            // what fits, so an impossible density (10000 per m^2) ends in seconds with a shortfall
+            long reachable = Math.min(target[d], CompetitiveDistributor.capacity(hf.sizeX(), hf.sizeZ(),
+                    defs.get(d).footprint()));
+            budget[d] = CompetitiveDistributor.ATTEMPTS_BASE + CompetitiveDistributor.ATTEMPTS_PER_PLANT * reachable;
             int cap = (int) Math.min(CompetitiveDistributor.BATCH_MAX, budget[d]);
             if (target[d] == 0 || masks[d].suitable == 0) {
                 cap = 0;
@@ -117,8 +121,15 @@ final class Rounds {
             int[] ci = chunkIndex;
             long r = round;
             workers.run(chunks, k -> generate(r, cd[k], ci[k]));
-            done += accept();
+            accept();
             if (total > 0) {
+                // a distribution that has spent its attempts is done: progress never stalls on a shortfall
+                done = 0;
+                for (int d = 0; d < nd; d++) {
+                    if (masks[d].suitable > 0) {
+                        done += examined[d] >= budget[d] ? target[d] : placed[d];
+                    }
+                }
                 progress.report("distribution", Math.min(done, total), total);
             }
         }

@@ -17,23 +17,26 @@ public record ActivationDef(double start, double duration, double rampIn, double
     /**
      * Checks the components.
      *
-     * @param start    start time, seconds, &gt;= 0
-     * @param duration seconds, &gt; 0, or +Infinity
-     * @param rampIn   seconds, &gt;= 0
-     * @param rampOut  seconds, &gt;= 0; {@code rampIn + rampOut <= duration} for a finite duration
+     * @param start    start time, seconds, in [0, {@link #MAX_TIME}]
+     * @param duration seconds, in (0, {@link #MAX_TIME}], or +Infinity
+     * @param rampIn   seconds, in [0, {@link #MAX_TIME}]
+     * @param rampOut  seconds, in [0, {@link #MAX_TIME}]; {@code rampIn + rampOut <= duration} for a
+     *                 finite duration
      * @throws IllegalArgumentException when a value is out of range or the ramps exceed the duration
      */
     public ActivationDef {
-        Require.nonNegative("start", start);
-        Require.positiveOrInfinite("duration", duration);
-        Require.nonNegative("rampIn", rampIn);
-        Require.nonNegative("rampOut", rampOut);
+        Require.range("start", start, 0, MAX_TIME);
+        Require.aboveOrInfinite("duration", duration, 0, MAX_TIME);
+        Require.range("rampIn", rampIn, 0, MAX_TIME);
+        Require.range("rampOut", rampOut, 0, MAX_TIME);
         if (duration != Double.POSITIVE_INFINITY && rampIn + rampOut > duration) {
             throw new IllegalArgumentException("rampIn + rampOut must be <= duration, got "
                     + rampIn + " + " + rampOut + " > " + duration);
         }
     }
 
+    /** Latest start, longest finite duration and longest ramp, seconds (scene schema and API). */
+    public static final double MAX_TIME = 1e9;
     /** Default {@link #start()}: the beginning of the simulation, seconds (the scene schema's default too). */
     public static final double DEFAULT_START = 0;
     /** Default {@link #duration()}: forever (the scene schema's default for every kind but BLAST). */

@@ -24,27 +24,35 @@ import org.jecosys.math.Waypoint;
  * @param noiseScale      GUST and RAIN: spatial scale of the noise / drop spacing, metres, &gt; 0
  * @param noiseFrequency  GUST: temporal frequency of gusts, Hz; RAIN: drops per second per m^2; &gt; 0
  * @param seed            seed of the GUST noise and RAIN drops
+ * @param gustStrength    GUST: relative strength of the gusts along and across the mean wind, dimensionless
+ *                        (0.5: the speed varies by up to about half the mean)
+ * @param turbulence      GUST: relative strength of the small eddies (a quarter of the gust size),
+ *                        dimensionless; 0 for none
  */
 public record FlowDef(String id, FlowKind kind, boolean enabled, double x, double z, double strength,
                       double direction, double coreRadius, double influenceRadius, ActivationDef activation,
-                      MotionDef motion, double noiseScale, double noiseFrequency, long seed) {
+                      MotionDef motion, double noiseScale, double noiseFrequency, long seed, double gustStrength,
+                      double turbulence) {
     /**
      * Checks the components.
      *
      * @param id              not empty
      * @param kind            not null
      * @param enabled         whether it starts enabled
-     * @param x               centre X, metres (finite)
-     * @param z               centre Z, metres (finite)
-     * @param strength        m/s or m^2/s (see {@link FlowKind}); &gt;= 0 except for VORTEX (finite)
-     * @param direction       radians (finite)
-     * @param coreRadius      metres, &gt; 0
-     * @param influenceRadius metres, &gt; 0, or +Infinity (finite for RAIN)
+     * @param x               centre X, metres, |x| &lt;= {@link Waypoint#MAX_COORDINATE}
+     * @param z               centre Z, metres, |z| &lt;= {@link Waypoint#MAX_COORDINATE}
+     * @param strength        m/s or m^2/s (see {@link FlowKind}); in [0, {@link #MAX_STRENGTH}], for
+     *                        VORTEX in [-{@link #MAX_STRENGTH}, {@link #MAX_STRENGTH}]
+     * @param direction       radians, within +-{@link #MAX_DIRECTION_DEGREES} degrees
+     * @param coreRadius      metres, in [{@link #MIN_CORE_RADIUS}, {@link #MAX_CORE_RADIUS}]
+     * @param influenceRadius metres, in (0, {@link #MAX_INFLUENCE_RADIUS}], or +Infinity (finite for RAIN)
      * @param activation      not null
      * @param motion          not null
-     * @param noiseScale      metres, &gt; 0
-     * @param noiseFrequency  Hz or drops per second per m^2, &gt; 0
+     * @param noiseScale      metres, in [{@link #MIN_NOISE_SCALE}, {@link #MAX_NOISE_SCALE}]
+     * @param noiseFrequency  Hz or drops per second per m^2, in (0, {@link #MAX_NOISE_FREQUENCY}]
      * @param seed            any value
+     * @param gustStrength    dimensionless, in [0, {@link #MAX_GUST_STRENGTH}]
+     * @param turbulence      dimensionless, in [0, {@link #MAX_TURBULENCE}]
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public FlowDef {
@@ -53,24 +61,82 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
             throw new IllegalArgumentException("id must not be empty");
         }
         Require.nonNull("kind", kind);
-        Require.finite("x", x);
-        Require.finite("z", z);
-        if (kind == FlowKind.VORTEX) {
-            Require.finite("strength", strength);
-        } else {
-            Require.nonNegative("strength", strength);
-        }
-        Require.finite("direction", direction);
-        Require.positive("coreRadius", coreRadius);
-        Require.positiveOrInfinite("influenceRadius", influenceRadius);
+        Require.range("x", x, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
+        Require.range("z", z, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
+        Require.range("strength", strength, kind == FlowKind.VORTEX ? -MAX_STRENGTH : 0, MAX_STRENGTH);
+        Require.degrees("direction", direction, -MAX_DIRECTION_DEGREES, MAX_DIRECTION_DEGREES);
+        Require.range("coreRadius", coreRadius, MIN_CORE_RADIUS, MAX_CORE_RADIUS);
+        Require.aboveOrInfinite("influenceRadius", influenceRadius, 0, MAX_INFLUENCE_RADIUS);
         Require.nonNull("activation", activation);
         Require.nonNull("motion", motion);
-        Require.positive("noiseScale", noiseScale);
-        Require.positive("noiseFrequency", noiseFrequency);
+        Require.range("noiseScale", noiseScale, MIN_NOISE_SCALE, MAX_NOISE_SCALE);
+        Require.above("noiseFrequency", noiseFrequency, 0, MAX_NOISE_FREQUENCY);
         if (kind == FlowKind.RAIN && influenceRadius == Double.POSITIVE_INFINITY) {
             throw new IllegalArgumentException("a rain flow needs a finite influenceRadius (the radius of the rain disc)");
         }
+        Require.range("gustStrength", gustStrength, 0, MAX_GUST_STRENGTH);
+        Require.range("turbulence", turbulence, 0, MAX_TURBULENCE);
     }
+
+    /**
+     * A def with the default gust strength and no turbulence ({@link #DEFAULT_GUST_STRENGTH},
+     * {@link #DEFAULT_TURBULENCE}): the components before those two, as the canonical constructor
+     * checks them. Any thread; allocates.
+     *
+     * @param id              not empty
+     * @param kind            not null
+     * @param enabled         whether it starts enabled
+     * @param x               centre X, metres
+     * @param z               centre Z, metres
+     * @param strength        m/s or m^2/s (see {@link FlowKind})
+     * @param direction       radians
+     * @param coreRadius      metres
+     * @param influenceRadius metres, or +Infinity
+     * @param activation      not null
+     * @param motion          not null
+     * @param noiseScale      metres
+     * @param noiseFrequency  Hz or drops per second per m^2
+     * @param seed            any value
+     * @throws IllegalArgumentException when a component is null, empty or out of range
+     */
+    public FlowDef(String id, FlowKind kind, boolean enabled, double x, double z, double strength, double direction,
+                   double coreRadius, double influenceRadius, ActivationDef activation, MotionDef motion,
+                   double noiseScale, double noiseFrequency, long seed) {
+        this(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius, activation, motion, noiseScale,
+                noiseFrequency, seed, DEFAULT_GUST_STRENGTH, DEFAULT_TURBULENCE);
+    }
+
+    /** Default {@link #gustStrength()}: gusts vary the speed by up to about half the mean (dimensionless). */
+    public static final double DEFAULT_GUST_STRENGTH = 0.5;
+    /** Largest {@link #gustStrength()} (dimensionless). */
+    public static final double MAX_GUST_STRENGTH = 4;
+    /** Default {@link #turbulence()}: no small eddies (dimensionless). */
+    public static final double DEFAULT_TURBULENCE = 0;
+    /** Largest {@link #turbulence()} (dimensionless). */
+    public static final double MAX_TURBULENCE = 4;
+
+    /**
+     * Largest |strength|: m/s for UNIFORM and GUST, m^2/s for the others (scene schema and API). A
+     * stronger flow would overflow the force on a component.
+     */
+    public static final double MAX_STRENGTH = 1e6;
+    /** Largest |direction|, degrees (the API takes radians). */
+    public static final double MAX_DIRECTION_DEGREES = 360;
+    /** Smallest core radius, metres: the flows of sources, sinks and vortices stay finite. */
+    public static final double MIN_CORE_RADIUS = 1e-3;
+    /** Largest core radius, metres. */
+    public static final double MAX_CORE_RADIUS = 10_000;
+    /** Largest finite influence radius, metres. */
+    public static final double MAX_INFLUENCE_RADIUS = 1e6;
+    /**
+     * Smallest noise scale (gust size, rain drop spacing), metres: a smaller one puts the gust noise
+     * beyond double precision (1e-100 gave NaN).
+     */
+    public static final double MIN_NOISE_SCALE = 1e-3;
+    /** Largest noise scale, metres. */
+    public static final double MAX_NOISE_SCALE = 100_000;
+    /** Largest noise frequency: Hz for GUST, drops per second per m^2 for RAIN. */
+    public static final double MAX_NOISE_FREQUENCY = 10_000;
 
     /** Default core radius, metres. */
     public static final double DEFAULT_CORE_RADIUS = 0.5;
@@ -159,7 +225,8 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
     public Builder toBuilder() {
         return new Builder(id, kind).enabled(enabled).centre(x, z).strength(strength).direction(direction)
                 .coreRadius(coreRadius).influenceRadius(influenceRadius).activation(activation).motion(motion)
-                .noiseScale(noiseScale).noiseFrequency(noiseFrequency).seed(seed);
+                .noiseScale(noiseScale).noiseFrequency(noiseFrequency).seed(seed).gustStrength(gustStrength)
+                .turbulence(turbulence);
     }
 
     /**
@@ -185,6 +252,8 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         private double noiseScale = DEFAULT_NOISE_SCALE;
         private double noiseFrequency = DEFAULT_NOISE_FREQUENCY;
         private long seed = DEFAULT_SEED;
+        private double gustStrength = DEFAULT_GUST_STRENGTH;
+        private double turbulence = DEFAULT_TURBULENCE;
 
         private Builder(String id, FlowKind kind) {
             this.id = id;
@@ -379,6 +448,28 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         }
 
         /**
+         * Sets the relative strength of a GUST flow's gusts along and across its mean wind.
+         *
+         * @param gustStrength dimensionless, in [0, {@link FlowDef#MAX_GUST_STRENGTH}]
+         * @return this builder
+         */
+        public Builder gustStrength(double gustStrength) {
+            this.gustStrength = gustStrength;
+            return this;
+        }
+
+        /**
+         * Sets the relative strength of a GUST flow's small eddies (a quarter of its gust size).
+         *
+         * @param turbulence dimensionless, in [0, {@link FlowDef#MAX_TURBULENCE}]; 0 for none
+         * @return this builder
+         */
+        public Builder turbulence(double turbulence) {
+            this.turbulence = turbulence;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -395,7 +486,8 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
                         + "disc; no default in the scene schema)");
             }
             return new FlowDef(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius,
-                    new ActivationDef(start, duration, rampIn, rampOut), motion, noiseScale, noiseFrequency, seed);
+                    new ActivationDef(start, duration, rampIn, rampOut), motion, noiseScale, noiseFrequency, seed,
+                    gustStrength, turbulence);
         }
     }
 }

@@ -4,26 +4,35 @@ import org.jecosys.math.Noise;
 import org.joml.Vector2d;
 
 /**
- * Gusty, turbulent wind: a mean flow {@code U} (|U| = strength m/s, heading direction) modulated
- * by seeded value noise ({@link Noise#value3}) in space and time. With s = noiseScale (m),
- * f = noiseFrequency (Hz), A = {@link #AMPLITUDE}, and q = (p - U t) / s (the gust pattern drifts
- * downwind with the mean flow):
+ * Gusty, turbulent wind as frozen turbulence (Taylor's hypothesis): a mean flow {@code U} (|U| =
+ * strength m/s, heading direction) modulated by a seeded value-noise pattern ({@link Noise#value3})
+ * that travels downwind with the mean flow, so gust fronts cross the ground at the wind's speed, and
+ * changes slowly as it goes. With s = noiseScale (m), f = noiseFrequency (Hz, how fast the pattern
+ * changes as it travels; a fixed point sees gusts about |U| / s times per second), A = gustStrength
+ * and T = turbulence (dimensionless), q = (p - U t) / s the point in the travelling pattern:
  * <pre>
- *   n1 = value3(seed,     q.x, q.z, f t)     n2 = value3(seed + 1, q.x, q.z, f t)
- *   u  = U (1 + A n1) + A |U| n2 * perp(U^)      perp(U^) = U^ turned +90 degrees (-U^z, U^x)
+ *   n1 = value3(seed,     q.x,   q.z,   f t)     n2 = value3(seed + 1, q.x,   q.z,   f t)
+ *   m1 = value3(seed + 2, 4 q.x, 4 q.z, 2 f t)   m2 = value3(seed + 3, 4 q.x, 4 q.z, 2 f t)
+ *   u  = U (1 + A n1 + T m1) + |U| (A n2 + T m2) perp(U^)      perp(U^) = U^ turned +90 degrees (-U^z, U^x)
  * </pre>
- * Deterministic for a seed; |u| &lt;= |U| (1 + sqrt(2) A). Centre and influence radius are unused.
+ * The second octave (eddies a quarter of the gust size, changing twice as fast) is skipped when T is
+ * 0, which gives the gusts of earlier versions exactly. Deterministic for a seed; a pure function of
+ * position and time; |u| &lt;= |U| (1 + sqrt(2) (A + T)). Centre and influence radius are unused.
  * Single owner thread; no allocation after construction.
  */
 public final class GustFlow extends FlowBase {
-    /** Relative strength of the gusts (along and across the mean flow), dimensionless. */
-    public static final double AMPLITUDE = 0.5;
+    /** The default relative strength of the gusts ({@link FlowDef#DEFAULT_GUST_STRENGTH}), dimensionless. */
+    public static final double AMPLITUDE = FlowDef.DEFAULT_GUST_STRENGTH;
+    /** Size of the turbulent eddies relative to the gusts' ({@code noiseScale}), dimensionless. */
+    public static final double EDDY_SCALE = 0.25;
 
     private final double ux;
     private final double uz;
     private final double invScale;
     private final double freq;
     private final long seed;
+    private final double amplitude;
+    private final double turbulence;
 
     /**
      * A gust flow from its def (kind GUST). Allocates.
@@ -41,6 +50,19 @@ public final class GustFlow extends FlowBase {
         invScale = 1.0 / def.noiseScale();
         freq = def.noiseFrequency();
         seed = def.seed();
+        amplitude = def.gustStrength();
+        turbulence = def.turbulence();
+    }
+
+    /**
+     * The speed of this flow's small eddies at {@code time}: {@code turbulence x strength x weight},
+     * m/s (0 when disabled, outside its window or without turbulence). Owner thread; no allocation.
+     *
+     * @param time simulation time, seconds
+     * @return m/s, &gt;= 0
+     */
+    public double eddySpeed(double time) {
+        return turbulence * def.strength() * weight(time);
     }
 
     @Override
@@ -48,10 +70,14 @@ public final class GustFlow extends FlowBase {
         double qx = (x - ux * time) * invScale;
         double qz = (z - uz * time) * invScale;
         double ft = freq * time;
-        double n1 = Noise.value3(seed, qx, qz, ft);
-        double n2 = Noise.value3(seed + 1, qx, qz, ft);
-        double along = 1 + AMPLITUDE * n1;
-        double across = AMPLITUDE * n2;
+        double along = 1 + amplitude * Noise.value3(seed, qx, qz, ft);
+        double across = amplitude * Noise.value3(seed + 1, qx, qz, ft);
+        if (turbulence > 0) {
+            double ex = qx / EDDY_SCALE;
+            double ez = qz / EDDY_SCALE;
+            along += turbulence * Noise.value3(seed + 2, ex, ez, 2 * ft);
+            across += turbulence * Noise.value3(seed + 3, ex, ez, 2 * ft);
+        }
         // perp(U) * |U| * across / |U| = (-uz, ux) * across
         dest.set(ux * along - uz * across, uz * along + ux * across);
     }

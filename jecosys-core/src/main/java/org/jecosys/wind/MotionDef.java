@@ -29,7 +29,8 @@ public record MotionDef(Kind kind, List<Waypoint> waypoints, double speed, boole
      *
      * @param kind      not null
      * @param waypoints not null; at least 2 for PATH
-     * @param speed     m/s, &gt; 0 (even when unused)
+     * @param speed     m/s, in [{@link org.jecosys.math.CameraDef#MIN_PATH_SPEED},
+     *                  {@link org.jecosys.math.CameraDef#MAX_PATH_SPEED}] (even when unused)
      * @param loop      PATH only: whether the path repeats
      * @throws IllegalArgumentException when a component is null or out of range, or a path has fewer
      *                                  than 2 waypoints
@@ -37,7 +38,8 @@ public record MotionDef(Kind kind, List<Waypoint> waypoints, double speed, boole
     public MotionDef {
         Require.nonNull("kind", kind);
         waypoints = List.copyOf(Require.nonNull("waypoints", waypoints));
-        Require.positive("speed", speed);
+        Require.range("speed", speed, org.jecosys.math.CameraDef.MIN_PATH_SPEED,
+                org.jecosys.math.CameraDef.MAX_PATH_SPEED);
         if (kind == Kind.PATH && waypoints.size() < 2) {
             throw new IllegalArgumentException("a path needs at least 2 waypoints, got " + waypoints.size());
         }

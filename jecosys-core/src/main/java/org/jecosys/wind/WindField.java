@@ -11,6 +11,13 @@ import org.joml.Vector2d;
  * agents (a flow attached to a moving entity), blasts, rain showers and a game's own
  * {@link WindSource} implementations, which are summed, switched and advanced like the built-ins.
  *
+ * <p>Switches: the sum of the flows jumps when a flow is added, removed, enabled or disabled, or when
+ * its activation window opens or closes without a ramp. {@link #advance} reports the earliest such
+ * time within the step it made ({@link #lastEdge}), so that the animation can switch the force at
+ * that time instead of spreading the jump over the step (a user flow's own jumps inside
+ * {@link WindSource#velocity} are not known). Changes made before the first advance (building the
+ * field) are not switches: nothing was sampled before them.
+ *
  * <p>Threads: owned by one thread (the simulation's); not thread-safe. Flows and agents may be
  * added or removed by that thread between updates. {@link #velocity} and {@link #advance} do not
  * allocate; adding flows allocates (and may grow the internal array).
@@ -20,8 +27,13 @@ public final class WindField {
     private boolean[] oneShot;
     private double[] advX;
     private double[] advZ;
+    private boolean[] wasEnabled;
     private int count;
     private double time;
+    private boolean advanced;
+    /** The earliest switch since the last advance (add, remove, enable), or NaN. */
+    private double pendingEdge = Double.NaN;
+    private double lastEdge = Double.NaN;
     private final Vector2d tmp = new Vector2d();
     private final Vector2d adv = new Vector2d();
 
@@ -31,6 +43,7 @@ public final class WindField {
         oneShot = new boolean[8];
         advX = new double[8];
         advZ = new double[8];
+        wasEnabled = new boolean[8];
     }
 
     /**
@@ -120,12 +133,17 @@ public final class WindField {
             oneShot = java.util.Arrays.copyOf(oneShot, n);
             advX = java.util.Arrays.copyOf(advX, n);
             advZ = java.util.Arrays.copyOf(advZ, n);
+            wasEnabled = java.util.Arrays.copyOf(wasEnabled, n);
         }
         if (source instanceof FlowBase f && f.hasPath()) {
             f.placeOnPath(time);
         }
         flows[count] = source;
         oneShot[count] = removeWhenExpired;
+        wasEnabled[count] = source.isEnabled();
+        if (source.weight(time) > 0) {
+            noteSwitch();
+        }
         count++;
         return source;
     }
@@ -147,9 +165,13 @@ public final class WindField {
     }
 
     private void removeAt(int i) {
+        if (flows[i].weight(time) > 0) {
+            noteSwitch();
+        }
         int tail = count - i - 1;
         System.arraycopy(flows, i + 1, flows, i, tail);
         System.arraycopy(oneShot, i + 1, oneShot, i, tail);
+        System.arraycopy(wasEnabled, i + 1, wasEnabled, i, tail);
         count--;
         flows[count] = null;
     }
@@ -230,6 +252,16 @@ public final class WindField {
      */
     public void advance(double dt) {
         Require.nonNegative("dt", dt);
+        double t0 = time;
+        double edge = advanced ? pendingEdge : Double.NaN;
+        pendingEdge = Double.NaN;
+        for (int i = 0; i < count; i++) {
+            boolean on = flows[i].isEnabled();
+            if (on != wasEnabled[i] && advanced) {
+                edge = earliest(edge, t0);
+            }
+            wasEnabled[i] = on;
+        }
         for (int i = 0; i < count; i++) {
             if (flows[i] instanceof FlowBase f && f.def.motion().kind() == MotionDef.Kind.ADVECTED) {
                 velocityExcept(f.cx, f.cz, f, adv);
@@ -249,12 +281,59 @@ public final class WindField {
                 }
             }
             flows[i].onAdvance(time, dt);
+            if (wasEnabled[i]) {
+                edge = windowEdge(flows[i], t0, time, edge);
+            }
         }
+        lastEdge = edge;
+        advanced = true;
         for (int i = count - 1; i >= 0; i--) {
             if (oneShot[i] && flows[i].expired(time)) {
                 removeAt(i);
             }
         }
+    }
+
+    /**
+     * The earliest time within the last {@link #advance}, from the time before it to the time after
+     * it, at which the sum of the flows may jump: a flow added, removed, enabled or disabled since the
+     * advance before (reported at the time before this one), or an activation window of a built-in
+     * flow or an {@link AbstractWindSource} opening or closing without a ramp. NaN when there was
+     * none, and before the first advance. Owner thread; no allocation.
+     *
+     * @return seconds of simulation time, or NaN
+     */
+    public double lastEdge() {
+        return lastEdge;
+    }
+
+    /** Notes that the sum changes now (a flow added or removed), once the field has been advanced. */
+    private void noteSwitch() {
+        if (advanced) {
+            pendingEdge = earliest(pendingEdge, time);
+        }
+    }
+
+    private static double earliest(double a, double b) {
+        return Double.isNaN(a) ? b : Math.min(a, b);
+    }
+
+    /** The earlier of {@code edge} and an unramped opening or closing of the flow's window in (t0, t1]. */
+    private static double windowEdge(WindSource f, double t0, double t1, double edge) {
+        ActivationDef a = f instanceof FlowBase b ? b.def.activation()
+                : f instanceof AbstractWindSource u ? u.activation() : null;
+        if (a == null) {
+            return edge;
+        }
+        double start = a.start();
+        if (a.rampIn() == 0 && start > t0 && start <= t1) {
+            edge = earliest(edge, start);
+        }
+        double end = start + a.duration();
+        if (a.duration() != Double.POSITIVE_INFINITY && a.rampOut() == 0 && end > t0 && end <= t1) {
+            edge = earliest(edge, end);
+        }
+        return edge;
     }
 
     /**
@@ -297,6 +376,24 @@ public final class WindField {
             sz += t.y;
         }
         return dest.set(sx, sz);
+    }
+
+    /**
+     * The speed of the small eddies the flows declare now, m/s: the sum over GUST flows of
+     * {@code turbulence x strength x weight} (see {@link GustFlow}). A force field that samples the
+     * wind at nodes wider than these eddies may add them per plant (the quadtree field's flutter).
+     * Owner thread; no allocation.
+     *
+     * @return m/s, &gt;= 0
+     */
+    public double eddySpeed() {
+        double s = 0;
+        for (int i = 0; i < count; i++) {
+            if (flows[i] instanceof GustFlow g) {
+                s += g.eddySpeed(time);
+            }
+        }
+        return s;
     }
 
     /** {@return the number of flows enabled and inside their activation window now (weight &gt; 0)} No allocation. */

@@ -203,7 +203,7 @@ class UserForceFieldTest {
             long rest = sim.stateHash();
             Meadows.run(sim, camera, 1);
             Meadows.run(reference, camera, 1);
-            assertEquals(sim.steps() + 1, made[0].updates, "updated once per step, one step ahead");
+            assertEquals(sim.steps() + 2, made[0].updates, "updated at t = 0, then once per step, one step ahead");
             assertSame(FieldCounters.NONE, sim.fieldCounters());
             assertEquals(0, sim.forceField().debugView().nodeCount());
             assertNotEquals(rest, sim.stateHash(), "the field's wind moves the meadow");

@@ -66,6 +66,7 @@ class BendTest {
         float[] w = {5};
         assertEquals(0, s.animate(0, 1, AnimationStep.of(AnimationMode.CONSTRAINT, w, w, new boolean[] {false})));
         assertEquals(0, s.deviationX(0));
+        s.resetToRest(0, 1); // at rest, and following the wind from there on
         // 20 m away: level 2, where this kind is not drawn
         AnimationStep step = AnimationStep.of(AnimationMode.CONSTRAINT, w, w, new boolean[] {true});
         assertEquals(0, s.animate(0, 1, step.eye(20, 0, 0)));

@@ -21,12 +21,21 @@ class SpringModelTest {
         final int sub;
 
         One(double pc, double tau, double mass, double dragArea, int sub) {
-            SpringKinds.Builder b = new SpringKinds.Builder();
-            b.add(pc, tau, mass, dragArea, 0.4, 0.05, 1.2, 16, 0xFF);
-            s = new AnimationState(b.build(), new double[][] {{}}, new int[1], new int[] {0, 1}, new float[1],
+            this(kinds(pc, tau, mass, dragArea), dragArea, sub);
+        }
+
+        /** One plant of one component of kind 0 of {@code kinds}, rest heading 0.3 rad. */
+        One(SpringKinds kinds, double dragArea, int sub) {
+            s = new AnimationState(kinds, new double[][] {{}}, new int[1], new int[] {0, 1}, new float[1],
                     new float[1], new float[1], new int[1], new float[] {0.3f});
             this.dragArea = dragArea;
             this.sub = sub;
+        }
+
+        private static SpringKinds kinds(double pc, double tau, double mass, double dragArea) {
+            SpringKinds.Builder b = new SpringKinds.Builder();
+            b.add(pc, tau, mass, dragArea, 0.4, 0.05, 1.2, 16, 0xFF);
+            return b.build();
         }
 
         /** Sets the wind so that the drag force is (fx, fz) newtons. */
@@ -107,6 +116,9 @@ class SpringModelTest {
             double h = STEPS[r];
             int perSample = (int) Math.round((duration / samples) / h);
             One o = new One(0.2, 0.3, 0.0004, 0.002, 4);
+            o.wx[0] = (float) windX(0);
+            o.wz[0] = (float) windZ(0);
+            o.s.settle(0, 1, o.step); // as the simulation does with its sample at t = 0
             int k = 0;
             for (int i = 0; i < samples; i++) {
                 for (int j = 0; j < perSample; j++) {

@@ -34,7 +34,7 @@ class AllocationTest {
         WindField wind = WindField.of(List.of(
                 FlowDef.uniform("u", 2, 0.3),
                 new FlowDef("g", FlowKind.GUST, true, 0, 0, 4, 1.0, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1),
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1, 0.6, 0.5),
                 new FlowDef("v", FlowKind.VORTEX, true, 50, 50, 20, 0, 0.5, 40,
                         new ActivationDef(0.5, 100, 1, 1), path, 8, 0.25, 0),
                 new FlowDef("s", FlowKind.SOURCE, true, 30, 70, 10, 0, 0.5, Double.POSITIVE_INFINITY,

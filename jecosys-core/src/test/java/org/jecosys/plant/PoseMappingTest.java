@@ -13,10 +13,12 @@ class PoseMappingTest {
     }
 
     @Test
-    void mapsAtanLinearlyAndSaturates() {
+    void mapsTheLengthKeepingAngleLinearlyAndSaturates() {
         double l = 0.5;
         double maxBend = 1.0;
-        double d = l * Math.tan(0.5);
+        double d = l * Math.sin(0.5); // the tip of a 0.5 m component turned by 0.5 rad
+        assertEquals(15, PoseMapping.poseCoordinate(l * Math.sin(maxBend), l, maxBend, 16), 1e-12);
+        assertEquals(15, PoseMapping.poseCoordinate(l, l, maxBend, 16), 0);
         assertEquals(7.5, PoseMapping.poseCoordinate(d, l, maxBend, 16), 1e-12);
         assertEquals(7.5, PoseMapping.poseCoordinate(-d, l, maxBend, 16), 1e-12);
         assertEquals(15, PoseMapping.poseCoordinate(100, l, maxBend, 16), 0);

@@ -77,8 +77,8 @@ class SceneFilesTest {
     @Test
     void xsdDocumentsEveryAttributeWithItsUnitsAndRange() throws Exception {
         String xsd = Files.readString(XSD, StandardCharsets.UTF_8);
-        assertTrue(xsd.contains("Spring constant PC of equation 4. Units: N/m. Allowed: a finite number in (0, "
-                + "1000000] N/m."));
+        assertTrue(xsd.contains("Spring constant PC of equation 4. Units: N/m. Allowed: a finite number in "
+                + "[0.000000001, 1000000] N/m."));
         assertTrue(xsd.contains("<xs:element name=\"vortex\">"));
         checkDocumented(SceneSchema.ROOT, xsd);
     }

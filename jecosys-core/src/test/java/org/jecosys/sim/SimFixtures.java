@@ -38,6 +38,19 @@ final class SimFixtures {
         return Simulation.of(world(), scene().simulationDef(), workers, CHUNK);
     }
 
+    private static SceneDef turbulentScene;
+    private static World turbulentWorld;
+
+    /** C1's plants in a turbulent, travelling wind with a vortex, and plants varying in response. */
+    static synchronized Simulation turbulent(int workers) throws Exception {
+        if (turbulentScene == null) {
+            turbulentScene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/"
+                    + "turbulent-fixture.xml"));
+            turbulentWorld = World.build(turbulentScene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
+        }
+        return Simulation.of(turbulentWorld, turbulentScene.simulationDef(), workers, CHUNK);
+    }
+
     /** The scene's start camera. */
     static ViewCamera camera() throws Exception {
         return ViewCamera.of(scene().camera(), world().terrain().heightfield().height(0, 14), 16.0 / 9);

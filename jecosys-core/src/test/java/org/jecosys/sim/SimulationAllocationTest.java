@@ -34,8 +34,11 @@ class SimulationAllocationTest {
     void noStepAllocatesAfterWarmUp() throws Exception {
         assertTrue(MX.isThreadAllocatedMemorySupported());
         MX.setThreadAllocatedMemoryEnabled(true);
-        for (AnimationMode mode : AnimationMode.values()) {
-            try (Simulation sim = SimFixtures.c1(2)) {
+        for (int run = 0; run <= AnimationMode.values().length; run++) {
+            // every mode on C1, then CONSTRAINT in a turbulent wind with plants varying in response
+            boolean turbulent = run == AnimationMode.values().length;
+            AnimationMode mode = turbulent ? AnimationMode.CONSTRAINT : AnimationMode.values()[run];
+            try (Simulation sim = turbulent ? SimFixtures.turbulent(2) : SimFixtures.c1(2)) {
                 sim.setMode(mode);
                 ViewCamera cam = SimFixtures.camera();
                 double yaw = cam.yaw();

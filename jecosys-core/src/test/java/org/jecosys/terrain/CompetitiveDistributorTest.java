@@ -151,7 +151,7 @@ class CompetitiveDistributorTest {
     @Test
     void handPlacementsComeFirstTakeGroundAndConsume() throws IOException {
         Terrain t = meadow(6);
-        List<PlacementDef> hand = List.of(new PlacementDef("C", 0, 0, -1), new PlacementDef("A", 5, 5, 7));
+        List<PlacementDef> hand = List.of(new PlacementDef("C", 0, 0, -1), new PlacementDef("A", 5, 5, 6));
         List<DistributionDef> defs = List.of(tuft(400));
         PlantLayout l = DISTRIBUTOR.distribute(t, SPECIES, defs, hand, 2, 1, Progress.NONE);
         assertEquals(402, l.count());

@@ -91,6 +91,22 @@ public final class FieldOverlay implements AutoCloseable {
         glBindVertexArray(0);
     }
 
+    /** Gap between the map and the viewport's top and right edges, pixels. */
+    public static final int MAP_MARGIN = 10;
+
+    /**
+     * The side of the square map for a viewport: 38% of its smaller side. The map's top-left corner
+     * is {@link #MAP_MARGIN} pixels from the viewport's top and right edges, north (-Z) up, so an
+     * application can draw a legend and markers around it. Pure; any thread.
+     *
+     * @param width  viewport width, pixels
+     * @param height viewport height, pixels
+     * @return the map's side, pixels
+     */
+    public static int mapSide(int width, int height) {
+        return (int) (0.38f * Math.min(width, height));
+    }
+
     /**
      * Grey level of a leaf cell (Figure 2). Pure; any thread.
      *
@@ -166,8 +182,8 @@ public final class FieldOverlay implements AutoCloseable {
         b.flip();
         vertices.orphan();
         vertices.upload(0, b);
-        int side = (int) (0.38f * Math.min(width, height));
-        glViewport(x + width - side - 10, y + height - side - 10, side, side);
+        int side = mapSide(width, height);
+        glViewport(x + width - side - MAP_MARGIN, y + height - side - MAP_MARGIN, side, side);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         program.use();

@@ -3,36 +3,24 @@ package org.jecosys.render;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
-import org.jecosys.math.Camera;
-import org.jecosys.plant.LodChooser;
-import org.jecosys.plant.LodDef;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
-import org.joml.FrustumIntersection;
-import org.joml.Matrix4f;
 
 /**
  * The GL-free half of plant rendering: per frame, which plants are drawn, at which level of detail,
  * in which instanced draw (one <em>list</em> per species and level, paper §4.1 and Table 3), and how
- * many primitives that submits. Pure functions of the world, the camera and the LOD settings, tested
- * without a GL context.
- *
- * <ul>
- * <li><b>Culling</b>: a plant is drawn when its bounding sphere (centre at its base, radius
- * {@link #radius(int)} of its species: every pose and attachment fits) intersects the view
- * frustum.</li>
- * <li><b>Level of detail</b>: distance = |eye - plant base| (metres); level and fade from the
- * species' {@link LodChooser}. A plant inside a transition band (fade &gt; 0) is put in both
- * lists, level L and L + 1; the shader keeps complementary screen-door (dither) pixels of the two so
- * the switch is gradual and never pops ({@code plant.frag}).</li>
- * <li><b>Counters</b>: triangles and lines submitted = sum over lists of instances × that level's
- * primitive count.</li>
- * </ul>
+ * many primitives that submits. It follows the frame's one visibility and level decision
+ * ({@link Frame#drawLevel}, {@link Frame#drawKeep}, made by the simulation's workers with the same
+ * bands the animation used, see {@link org.jecosys.sim.DrawDecision}) without deciding anything
+ * itself: a plant in a transition band is put in both lists, level L and L + 1, each with its share of
+ * the screen-door dither thresholds ({@code plant.frag}), so the switch is gradual and never pops.
+ * Counters: triangles and lines submitted = sum over lists of instances × that level's primitive
+ * count.
  *
  * <p>Render thread (or any single thread); {@link #update} and {@link #writeInstances} allocate
- * nothing. Lists are stored in preallocated arrays sized for
- * every plant at every level.
+ * nothing. Lists are stored in preallocated arrays sized for every plant at every level.
  */
 public final class PlantBatches {
     private final World world;
@@ -40,9 +28,6 @@ public final class PlantBatches {
     private final int[] listBase;      // first list of species s (lists = species x levels)
     private final int[] levels;
     private final int[] slots;
-    private final float[] radius;
-    private final double[][] edges;
-    private final LodChooser[] choosers;
     private final int[] listSpecies;   // per list: its species
     private final int[] primitives;    // per list
     private final boolean[] lines;     // per list
@@ -52,32 +37,28 @@ public final class PlantBatches {
     private final int[] keeps;          // per list entry: the packed dither window of its level
     private final int[] instanceOffset; // per list: first instance record in the packed stream
     private final int[] componentOffset; // per list: first component record
-    private final FrustumIntersection frustum = new FrustumIntersection();
-    private final Matrix4f viewProj = new Matrix4f();
-    private double bandWidth;
     private long triangles;
     private long lineCount;
     private int instances;
     private int components;
-    private int firstListed;
-    private int endListed;
+    private final int[] runStart;       // component ranges holding the listed plants, gaps under GAP merged
+    private final int[] runEnd;
+    private int runs;
+    /** Gaps between listed plants' components up to this many are uploaded rather than split. */
+    static final int GAP = 64;
 
     /**
      * Batches for a world. Build time; allocates the lists for every plant at every level.
      *
-     * @param world     the plants
-     * @param bandWidth LOD transition band, metres, in [0, smallest gap between LOD edges]
+     * @param world the plants
      */
-    public PlantBatches(World world, double bandWidth) {
+    public PlantBatches(World world) {
         this.world = world;
         List<SpeciesModel> models = world.plants().species();
         species = models.size();
         listBase = new int[species + 1];
         levels = new int[species];
         slots = new int[species];
-        radius = new float[species];
-        edges = new double[species][];
-        choosers = new LodChooser[species];
         int[] perSpecies = new int[species];
         for (int p = 0; p < world.plantCount(); p++) {
             perSpecies[world.plantSpecies(p)]++;
@@ -88,7 +69,6 @@ public final class PlantBatches {
             listBase[s] = lists;
             levels[s] = m.levels();
             slots[s] = m.slotCount();
-            radius[s] = boundingRadius(m);
             lists += m.levels();
         }
         listBase[species] = lists;
@@ -114,119 +94,46 @@ public final class PlantBatches {
         listStart[lists] = at;
         plants = new int[at];
         keeps = new int[at];
-        this.bandWidth = bandWidth;
-        for (int s = 0; s < species; s++) {
-            List<LodDef> lods = models.get(s).def().lods();
-            double[] e = new double[lods.size() - 1];
-            for (int l = 0; l < e.length; l++) {
-                e[l] = lods.get(l).maxDistance();
-            }
-            setLodDistances(s, e);
-        }
+        runStart = new int[Math.max(1, world.plantCount())];
+        runEnd = new int[Math.max(1, world.plantCount())];
     }
 
     /**
-     * A conservative bounding radius of a species' plant about its base, metres: the largest base
-     * offset plus the lengths of every component type (an upper bound of any attachment chain) plus
-     * the widths. Pure; build time.
-     */
-    static float boundingRadius(SpeciesModel m) {
-        double r = 0;
-        double base = 0;
-        for (int s = 0; s < m.slotCount(); s++) {
-            base = Math.max(base, Math.hypot(m.slotBaseX(s), m.slotBaseZ(s)));
-        }
-        for (int c = 0; c < m.componentCount(); c++) {
-            double longest = 0;
-            for (int v = 0; v < m.component(c).variants(); v++) {
-                longest = Math.max(longest, m.component(c).poseTable(v).length());
-            }
-            r += longest + Math.max(m.component(c).def().baseWidth(), m.component(c).def().tipWidth());
-        }
-        return (float) (r + base);
-    }
-
-    /**
-     * Sets the LOD edges of a species (the {@code maxDistance} of each level but the last, ascending,
-     * metres) — the viewer's "edit LOD distances". Allocates; not per frame.
+     * Builds the lists from {@code frame}'s decision: every plant it draws, at its level, and at the
+     * next level too when it is in a transition band. No allocation.
      *
-     * @param species      species index, in [0, speciesCount())
-     * @param maxDistances {@code levels(species) - 1} ascending distances, metres, &gt; 0
-     * @throws IllegalArgumentException when the count is wrong or the distances do not ascend
+     * @param frame a frame of this world, decided ({@link Frame#drawLevel})
+     * @throws IllegalArgumentException when the frame's plant count is not the world's
      */
-    public void setLodDistances(int species, double[] maxDistances) {
-        if (maxDistances.length != levels[species] - 1) {
-            throw new IllegalArgumentException("species " + species + " has " + levels[species] + " levels, so "
-                    + (levels[species] - 1) + " distances, got " + maxDistances.length);
+    public void update(Frame frame) {
+        if (frame.plantCount() != world.plantCount()) {
+            throw new IllegalArgumentException("frame has " + frame.plantCount() + " plants, the world "
+                    + world.plantCount());
         }
-        List<LodDef> lods = new ArrayList<>();
-        for (int l = 0; l < maxDistances.length; l++) {
-            lods.add(new LodDef(maxDistances[l], Primitive.TRIANGLES));
-        }
-        lods.add(new LodDef(Double.POSITIVE_INFINITY, Primitive.LINES));
-        double gap = Double.POSITIVE_INFINITY;
-        double prev = 0;
-        for (double e : maxDistances) {
-            gap = Math.min(gap, e - prev);
-            prev = e;
-        }
-        choosers[species] = new LodChooser(lods, Math.min(bandWidth, gap));
-        edges[species] = maxDistances.clone();
-    }
-
-    /**
-     * Sets the transition band width of every species. Allocates; not per frame.
-     *
-     * @param bandWidth metres, &gt;= 0; clamped to each species' smallest gap between LOD edges
-     */
-    public void setBandWidth(double bandWidth) {
-        this.bandWidth = bandWidth;
-        for (int s = 0; s < species; s++) {
-            setLodDistances(s, edges[s]);
-        }
-    }
-
-    /**
-     * Recomputes the lists for a camera: culling, level choice, dithering membership and counters.
-     * No allocation.
-     *
-     * @param camera the viewer: its frustum culls, its eye sets the distances
-     */
-    public void update(Camera camera) {
-        camera.viewProjection(viewProj);
-        frustum.set(viewProj, false);
         int lists = listBase[species];
         for (int li = 0; li < lists; li++) {
             listCount[li] = 0;
         }
-        double ex = camera.x();
-        double ey = camera.y();
-        double ez = camera.z();
-        firstListed = Integer.MAX_VALUE;
-        endListed = 0;
+        runs = 0;
         for (int p = 0, n = world.plantCount(); p < n; p++) {
-            int s = world.plantSpecies(p);
-            float x = world.plantX(p);
-            float y = world.plantY(p);
-            float z = world.plantZ(p);
-            if (!frustum.testSphere(x, y, z, radius[s])) {
+            int l = frame.drawLevel(p);
+            if (l < 0) {
                 continue;
             }
-            double dx = x - ex;
-            double dy = y - ey;
-            double dz = z - ez;
-            double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            LodChooser ch = choosers[s];
-            int l = ch.level(d);
-            add(listBase[s] + l, p, keep(s, l, levels[s], d));
-            if (ch.fade(d) > 0) {
-                add(listBase[s] + l + 1, p, keep(s, l + 1, levels[s], d));
+            int c0 = world.firstComponent(p);
+            int c1 = c0 + world.componentsOf(p);
+            if (runs > 0 && c0 - runEnd[runs - 1] <= GAP) {
+                runEnd[runs - 1] = c1;
+            } else {
+                runStart[runs] = c0;
+                runEnd[runs++] = c1;
             }
-            firstListed = Math.min(firstListed, world.firstComponent(p));
-            endListed = Math.max(endListed, world.firstComponent(p) + world.componentsOf(p));
-        }
-        if (endListed == 0) {
-            firstListed = 0;
+            int s = world.plantSpecies(p);
+            int keep = frame.drawKeep(p);
+            add(listBase[s] + l, p, keep & 0xFFFF);
+            if (keep >>> 16 != 0 && l + 1 < levels[s]) {
+                add(listBase[s] + l + 1, p, keep >>> 16);
+            }
         }
         triangles = 0;
         lineCount = 0;
@@ -254,32 +161,11 @@ public final class PlantBatches {
         keeps[at] = keep;
     }
 
-    /**
-     * The packed dither window of level {@code l} for a plant of species s at distance d, metres:
-     * level l keeps the bayer thresholds in {@code [handOver, received)} (both /255), where handOver
-     * is the share already given to level l + 1 and received the share taken over from level l - 1;
-     * packed as {@code 256 handOver + received}. Neighbouring levels' windows tile [0, 255]. No
-     * allocation.
-     */
-    int keep(int s, int l, int levels, double d) {
-        double band = choosers[s].bandWidth();
-        double handOver = l < levels - 1 ? fade(d, edges[s][l], band) : 0;
-        double received = l > 0 ? (d >= edges[s][l - 1] ? 1 : fade(d, edges[s][l - 1], band)) : 1;
-        return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
-    }
-
-    /** Fade across the band ending at {@code edge}: 0 before it, 1 at and beyond the edge. */
-    static double fade(double d, double edge, double band) {
-        if (band <= 0) {
-            return d >= edge ? 1 : 0;
-        }
-        return Math.max(0, Math.min(1, (d - (edge - band)) / band));
-    }
 
     /**
      * Writes the instance record of every listed plant for the last {@link #update}, list after list
      * in {@link #instanceOffset} order: two ints, the plant's first component and its level's dither
-     * window ({@link #keep}). Writes from {@code dest}'s position 0 and flips it. No allocation.
+     * window ({@link Frame#drawKeep}). Writes from {@code dest}'s position 0 and flips it. No allocation.
      *
      * @param dest at least {@code 2 * maxInstances()} ints
      * @return the number of records written
@@ -295,20 +181,43 @@ public final class PlantBatches {
         return dest.limit() / 2;
     }
 
-    /** {@return the packed dither window of the {@code i}-th plant of a list, as {@link #writeInstances} writes it} */
+    /**
+     * {@return the packed dither window of the {@code i}-th plant of a list, as {@link #writeInstances}
+     * writes it}
+     *
+     * @param list list index, in [0, listCount())
+     * @param i    position in the list, in [0, count(list))
+     */
     public int keepOf(int list, int i) {
         return keeps[listStart[list] + i];
     }
 
-    /** {@return the lowest component index of any plant listed by the last {@link #update} (0 when none)} */
-    public int firstListedComponent() {
-        return firstListed;
+    /** {@return the number of component ranges that hold the plants listed by the last {@link #update}} */
+    public int runs() {
+        return runs;
     }
 
-    /** {@return one past the highest component index of any plant listed by the last {@link #update} (0 when none)} */
-    public int endListedComponent() {
-        return endListed;
+    /**
+     * {@return the first component of range {@code i}: the listed plants' components lie in the
+     * ranges, which are ascending and disjoint; a gap of at most {@link #GAP} components between two
+     * listed plants is part of a range}
+     *
+     * @param i range index, in [0, runs())
+     */
+    public int runStart(int i) {
+        return runStart[i];
     }
+
+    /**
+     * {@return one past the last component of range {@code i}}
+     *
+     * @param i range index, in [0, runs())
+     */
+    public int runEnd(int i) {
+        return runEnd[i];
+    }
+
+
 
     /** {@return the number of species} */
     public int speciesCount() {
@@ -395,42 +304,9 @@ public final class PlantBatches {
         return primitives[list];
     }
 
-    /**
-     * {@return the bounding radius of species {@code s} about a plant's base, metres}
-     *
-     * @param s species index, in [0, speciesCount())
-     */
-    public float radius(int s) {
-        return radius[s];
-    }
 
-    /**
-     * {@return LOD edge {@code l} of species {@code s}: where level l ends, metres}
-     *
-     * @param s species index, in [0, speciesCount())
-     * @param l edge index, in [0, levels(s) - 1)
-     */
-    public double edge(int s, int l) {
-        return edges[s][l];
-    }
 
-    /**
-     * {@return the level chooser of species {@code s}}
-     *
-     * @param s species index, in [0, speciesCount())
-     */
-    public LodChooser chooser(int s) {
-        return choosers[s];
-    }
 
-    /**
-     * {@return the transition band width of species {@code s}, metres}
-     *
-     * @param s species index, in [0, speciesCount())
-     */
-    public double bandWidth(int s) {
-        return choosers[s].bandWidth();
-    }
 
     /** {@return the number of triangles submitted by the last {@link #update}} */
     public long triangles() {

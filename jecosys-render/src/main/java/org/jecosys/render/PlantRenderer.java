@@ -58,10 +58,13 @@ import org.lwjgl.system.MemoryUtil;
  * docs/ARCHITECTURE.md, "Rendering").
  * At construction every pose table goes to the GPU once (a buffer texture, 3 RGBA32F texels per
  * skeleton point) with one mesh per species and level (the component colour and the fraction along
- * the component baked into each vertex). Per frame, {@link #draw} uploads only per-instance data into
- * a preallocated buffer: the {@link ComponentStream} record (2 texels) of each drawn plant's
- * components, with the base and the cos/sin of the bend azimuth already resolved on the CPU, then
- * issues one instanced draw per species and level (triangles near, lines far: Table 3). Triangle
+ * the component baked into each vertex), and static per-component data (root bases, pose texels,
+ * parents). Per frame, {@link #draw} draws what the frame's decision lists ({@link PlantBatches}),
+ * uploads only the render states the animation workers wrote for the drawn plants (8 bytes per
+ * component) and 8 bytes per drawn plant and level, resolves on the GPU (transform feedback,
+ * {@code plant_resolve.vert}) each drawn component's record (2 texels: base, cos/sin of the bend
+ * azimuth, pose texel and weight, dither window), then issues one instanced draw per species and
+ * level (triangles near, lines far: Table 3). Triangle
  * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
  * and lights the same vertices and writes one flat colour per segment, with the share of a pixel the
  * leaf's true width covers as opacity: the line levels are drawn last, blended
@@ -73,6 +76,13 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class PlantRenderer implements AutoCloseable {
     private static final int MAX_LEVELS = 8;
+    /**
+     * The rendering path, for the HUD and benchmark reports: OpenGL 3.3 core; the animation workers
+     * write 8 bytes per visible component; a transform-feedback pass on the GPU resolves them into
+     * the records the instanced draws read.
+     */
+    public static final String PATH = "GL 3.3 core: worker-written states, GPU resolve (transform feedback), "
+            + "instanced draws";
     /** Floats per component record (2 RGBA32F texels), written by the resolve pass. */
     static final int RECORD_FLOATS = 8;
     /** Largest index a float holds exactly (texels and components passed as floats). */
@@ -122,12 +132,11 @@ public final class PlantRenderer implements AutoCloseable {
      *
      * @param gl        the render context, current on this thread
      * @param world     the plants: species models (pose tables, meshes) and positions
-     * @param bandWidth LOD transition band, metres (RenderDef.lodTransition)
      */
-    public PlantRenderer(GlContext gl, World world, double bandWidth) {
+    public PlantRenderer(GlContext gl, World world) {
         gl.checkThread();
         this.world = world;
-        this.batches = new PlantBatches(world, bandWidth);
+        this.batches = new PlantBatches(world);
         List<SpeciesModel> models = world.plants().species();
         for (SpeciesModel m : models) {
             if (m.levels() > MAX_LEVELS) {
@@ -375,7 +384,7 @@ public final class PlantRenderer implements AutoCloseable {
                     + world.componentCount());
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
-        batches.update(camera);
+        batches.update(frame);
         draws = 0;
         pending = batches.instances() > 0;
         if (!pending) {
@@ -441,19 +450,22 @@ public final class PlantRenderer implements AutoCloseable {
 
     /**
      * Uploads this frame's instance records (8 bytes per drawn plant and level) and the render states
-     * of the listed plants' components (8 bytes per component, {@link Frame#renderStates()}, as the
-     * workers wrote them): the contiguous component range that holds every listed plant, which the
-     * plants' spatial order keeps small. Render thread; no allocation.
+     * of the drawn plants' components (8 bytes per component, {@link Frame#renderStates()}, as the
+     * workers wrote them), in the few ranges that hold them ({@link PlantBatches#runStart}; the
+     * plants' spatial order keeps them few). Render thread; no allocation.
      */
     private void upload(Frame frame) {
         int n = batches.writeInstances(instanceStaging);
         instanceBuffer.orphan();
         instanceBuffer.upload(0, instanceStaging);
-        int c0 = batches.firstListedComponent();
-        int c1 = batches.endListedComponent();
-        long bytes = (long) Frame.RENDER_STATE_BYTES * (c1 - c0);
-        dynamicBuffer.upload((long) Frame.RENDER_STATE_BYTES * c0,
-                MemoryUtil.memAddress0(frame.renderStates()) + (long) Frame.RENDER_STATE_BYTES * c0, bytes);
+        long base = MemoryUtil.memAddress0(frame.renderStates());
+        long bytes = 0;
+        for (int i = 0, runs = batches.runs(); i < runs; i++) {
+            long c0 = batches.runStart(i);
+            long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
+            dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
+            bytes += size;
+        }
         uploadedBytes = 8L * n + bytes;
     }
 

@@ -10,7 +10,6 @@ import org.jecosys.math.Rgb;
  */
 public final class RenderSettings {
     private Rgb sky = new Rgb(0.62f, 0.76f, 0.92f);
-    private double lodTransition = 1;
     private TerrainTint tint = TerrainTint.NONE;
     private boolean showField;
     private boolean showWind;
@@ -42,21 +41,6 @@ public final class RenderSettings {
         return this;
     }
 
-    /** {@return the LOD transition band width, metres} */
-    public double lodTransition() {
-        return lodTransition;
-    }
-
-    /**
-     * Sets the width of the band over which two levels of detail are dithered.
-     *
-     * @param metres in [0, 10]; 0 switches levels abruptly
-     * @return this settings object
-     */
-    public RenderSettings lodTransition(double metres) {
-        this.lodTransition = Require.range("lodTransition", metres, 0, 10);
-        return this;
-    }
 
     /** {@return the terrain tint} */
     public TerrainTint tint() {

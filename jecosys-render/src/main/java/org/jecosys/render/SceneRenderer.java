@@ -38,10 +38,10 @@ public final class SceneRenderer implements AutoCloseable {
 
     private final GlContext gl;
     private final RenderSettings settings;
+    private final World world;
     private final TerrainRenderer terrain;
     private final PlantRenderer plants;
     private final FieldOverlay overlay;
-    private double band;
     private FieldDebugView field;
     private final GlStateGuard state;
     private boolean closed;
@@ -60,13 +60,13 @@ public final class SceneRenderer implements AutoCloseable {
         gl.checkThread();
         this.gl = gl;
         this.settings = settings;
-        this.band = settings.lodTransition();
+        this.world = world;
         TerrainRenderer t = null;
         PlantRenderer p = null;
         GlStateGuard g = new GlStateGuard();
         try {
             t = new TerrainRenderer(gl, world.terrain(), settings.tint());
-            p = new PlantRenderer(gl, world, band);
+            p = new PlantRenderer(gl, world);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
             PlantRenderer.closeAll(p, t, g);
@@ -75,6 +75,11 @@ public final class SceneRenderer implements AutoCloseable {
         terrain = t;
         plants = p;
         state = g;
+    }
+
+    /** {@return the world this renderer draws} */
+    public World world() {
+        return world;
     }
 
     /** {@return the settings this renderer reads} */
@@ -164,10 +169,6 @@ public final class SceneRenderer implements AutoCloseable {
     private void draw(Frame frame, Camera camera, int vx, int vy, int width, int height) {
         if (width <= 0 || height <= 0) {
             return;
-        }
-        if (settings.lodTransition() != band) {
-            band = settings.lodTransition();
-            plants.batches().setBandWidth(band);
         }
         terrain.setTint(settings.tint());
         Rgb sky = settings.sky();

@@ -7,8 +7,8 @@
  * Figures 2 and 3 ({@link org.jecosys.render.FieldOverlay}), and the whole frame
  * ({@link org.jecosys.render.SceneRenderer}, which puts back every GL state it changes, so it
  * composes with a game's own drawing). The GL-free parts that choose what is drawn
- * ({@link org.jecosys.render.PlantBatches}, {@link org.jecosys.render.ComponentStream}) are tested
- * without a context.
+ * ({@link org.jecosys.render.PlantBatches}, which follows the frame's one decision) are tested
+ * without a context; the per-component records the GPU resolves are read back and checked in tests.
  *
  * <p>Threads: everything that touches GL runs on the <em>render thread</em>, the one on which the
  * {@link org.jecosys.render.GlContext} was made or wrapped (a game's current context, a headless EGL

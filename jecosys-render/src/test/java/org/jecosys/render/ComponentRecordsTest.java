@@ -10,6 +10,7 @@ import java.util.SplittableRandom;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.DrawDecision;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.Vector3f;
@@ -30,6 +31,7 @@ class ComponentRecordsTest {
     private GlContext gl;
     private GlFramebuffer fb;
     private PlantRenderer renderer;
+    private DrawDecision decision;
     private World world;
     private List<SpeciesModel> models;
     private int[][][] poseTexel;
@@ -58,7 +60,9 @@ class ComponentRecordsTest {
         gl = GlContext.headless(true);
         fb = new GlFramebuffer(gl.tracker(), 320, 180);
         fb.bind();
-        renderer = new PlantRenderer(gl, world, 1.0);
+        renderer = new PlantRenderer(gl, world);
+        decision = DrawDecision.of(world);
+        decision.decideAll(cam, frame);
         draw();
         batches = renderer.batches();
         rec = org.lwjgl.system.MemoryUtil.memAllocFloat(F * batches.components());
@@ -100,9 +104,20 @@ class ComponentRecordsTest {
         assertTrue(batches.instances() > 20, "the view holds a good part of C1");
         assertEquals(batches.components(), components);
         assertEquals(F * components, rec.limit());
-        assertEquals(8L * batches.instances() + Frame.RENDER_STATE_BYTES
-                * (batches.endListedComponent() - batches.firstListedComponent()), renderer.uploadedBytes(),
-                "8 bytes per drawn plant and level, 8 per component of the listed range");
+        long states = 0;
+        int drawnComponents = 0;
+        for (int p = 0; p < world.plantCount(); p++) {
+            drawnComponents += frame.drawLevel(p) >= 0 ? world.componentsOf(p) : 0;
+        }
+        for (int i = 0; i < batches.runs(); i++) {
+            assertTrue(batches.runEnd(i) > batches.runStart(i));
+            assertTrue(i == 0 || batches.runStart(i) - batches.runEnd(i - 1) > PlantBatches.GAP, "ranges merged");
+            states += batches.runEnd(i) - batches.runStart(i);
+        }
+        assertTrue(states >= drawnComponents, "every drawn component's state is uploaded");
+        assertTrue(states <= drawnComponents + (long) PlantBatches.GAP * batches.runs(), "and little else");
+        assertEquals(8L * batches.instances() + Frame.RENDER_STATE_BYTES * states, renderer.uploadedBytes(),
+                "8 bytes per drawn plant and level, 8 per component of the uploaded ranges");
     }
 
     @Test
@@ -194,11 +209,11 @@ class ComponentRecordsTest {
         // every fragment of a plant inside a band is drawn by exactly one of the two levels
         for (int s = 0; s < batches.speciesCount(); s++) {
             int levels = batches.levels(s);
-            double far = batches.edge(s, levels - 2) + 2;
+            double far = decision.edge(s, levels - 2) + 2;
             for (double d = 0; d <= far; d += 0.01) {
                 int prevLo = -1;
                 for (int l = 0; l < levels; l++) {
-                    int keep = batches.keep(s, l, levels, d);
+                    int keep = decision.keep(s, l, d);
                     int lo = keep / 256;
                     int hi = keep % 256;
                     String at = "species " + s + " level " + l + " at " + d + " m";

@@ -242,9 +242,9 @@ class HostCompositionTest {
                 assertEquals("40,30,200,120", before.get("viewport"), "the host's state is in place");
                 for (boolean clear : new boolean[] {true, false}) {
                     settings.clear(clear);
-                    renderer.render(TestFrames.wind(world, 0.4), camera(200, 120));
+                    renderer.render(TestFrames.wind(world, 0.4, camera(200, 120)), camera(200, 120));
                     assertEquals(before, census(), "render(frame, camera), clear " + clear);
-                    renderer.render(TestFrames.wind(world, 0.4), camera(W, H), W, H);
+                    renderer.render(TestFrames.wind(world, 0.4, camera(W, H)), camera(W, H), W, H);
                     assertEquals(before, census(), "render(frame, camera, w, h), clear " + clear);
                 }
                 assertTrue(renderer.triangles() > 0, "something was drawn");
@@ -265,7 +265,7 @@ class HostCompositionTest {
             int vw = 200;
             int vh = 140;
             glViewport(vx, vy, vw, vh);
-            renderer.render(TestFrames.rest(world), camera(vw, vh));
+            renderer.render(TestFrames.rest(world, camera(vw, vh)), camera(vw, vh));
             glViewport(0, 0, W, H);
             Pixels.read(W, H, px);
             int outsideChanged = 0;
@@ -298,7 +298,7 @@ class HostCompositionTest {
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             ViewCamera vc = camera(W, H);
             fb.bind();
-            renderer.render(TestFrames.wind(world, 0.7), vc, W, H);
+            renderer.render(TestFrames.wind(world, 0.7, vc), vc, W, H);
             Pixels.read(W, H, other);
             // the same pose built with JOML by a game: lookAt along the camera's forward, perspective
             Matrix4f view = new Matrix4f().setLookAt(0f, 1.6f, 9f, 0f, 1.6f - (float) Math.sin(0.2),
@@ -309,7 +309,7 @@ class HostCompositionTest {
             assertEquals(vc.y(), mc.y(), 1e-5);
             assertEquals(vc.z(), mc.z(), 1e-5);
             assertEquals(vc.viewHeightPerMetre(), mc.viewHeightPerMetre(), 1e-5);
-            renderer.render(TestFrames.wind(world, 0.7), mc, W, H);
+            renderer.render(TestFrames.wind(world, 0.7, mc), mc, W, H);
             Pixels.read(W, H, px);
             long diff = 0;
             for (int i = 0; i < W * H * 4; i++) {
@@ -319,7 +319,7 @@ class HostCompositionTest {
             assertTrue(mean < 0.5, "mean difference per channel " + mean);
             // a rolled camera sees another image: the host's matrices are used, not re-derived
             Matrix4f rolled = new Matrix4f().rotateZ(0.5f).mul(view);
-            renderer.render(TestFrames.wind(world, 0.7), new MatrixCamera(rolled, proj), W, H);
+            renderer.render(TestFrames.wind(world, 0.7, new MatrixCamera(rolled, proj)), new MatrixCamera(rolled, proj), W, H);
             Pixels.read(W, H, px);
             int changed = 0;
             for (int i = 0; i < W * H; i++) {
@@ -332,7 +332,7 @@ class HostCompositionTest {
             float pz0 = world.plantZ(0);
             Matrix4f top = new Matrix4f().setLookAt(px0, py0 + 5f, pz0, px0, py0, pz0, 0f, 0f, -1f);
             Matrix4f ortho = new Matrix4f().setOrtho(-1.2f, 1.2f, -0.75f, 0.75f, 0.1f, 20f);
-            renderer.render(TestFrames.rest(world), new MatrixCamera(top, ortho), W, H);
+            renderer.render(TestFrames.rest(world, new MatrixCamera(top, ortho)), new MatrixCamera(top, ortho), W, H);
             Pixels.read(W, H, px);
             int green = 0;
             for (int y = 0; y < H; y++) {
@@ -343,7 +343,7 @@ class HostCompositionTest {
                 }
             }
             renderer.drawPlants = false;
-            renderer.render(TestFrames.rest(world), new MatrixCamera(top, ortho), W, H);
+            renderer.render(TestFrames.rest(world, new MatrixCamera(top, ortho)), new MatrixCamera(top, ortho), W, H);
             renderer.drawPlants = true;
             Pixels.read(W, H, other);
             int plantPixels = 0;

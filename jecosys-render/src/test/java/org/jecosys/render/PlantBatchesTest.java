@@ -7,12 +7,17 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.IntBuffer;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.plant.LodChooser;
+import org.jecosys.sim.DrawDecision;
+import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 
-/** Level-of-detail choice, culling, instance packing and counters: pure functions, no GL context. */
+/**
+ * The lists the renderer builds from a frame's decision ({@link DrawDecision}: culling, level of
+ * detail, transition bands), instance packing and counters: pure functions, no GL context.
+ */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class PlantBatchesTest {
     private World world;
@@ -28,6 +33,13 @@ class PlantBatchesTest {
         c.setOrientation(yaw, 0);
         c.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
         return c;
+    }
+
+    /** The batches of a frame decided for {@code cam} with a transition band of {@code band} metres. */
+    private void update(PlantBatches b, double band, ViewCamera cam) {
+        DrawDecision d = DrawDecision.of(world);
+        d.setTransition(band);
+        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.componentCount())));
     }
 
     private static int levelsHolding(PlantBatches b, int s, int plant, boolean[] at) {
@@ -47,17 +59,17 @@ class PlantBatchesTest {
 
     @Test
     void eachVisiblePlantIsInItsDistanceLevelAndInBothLevelsInsideABand() {
-        PlantBatches b = new PlantBatches(world, 1.0);
+        PlantBatches b = new PlantBatches(world);
         ViewCamera cam = looking(0, 40, 60, 0);
         cam.setOrientation(0, -Math.atan2(40, 60));
-        b.update(cam);
+        update(b, 1.0, cam);
         boolean[] at = new boolean[8];
         int checked = 0;
         for (int p = 0; p < world.plantCount(); p++) {
             int s = world.plantSpecies(p);
             double d = Math.sqrt(Math.pow(world.plantX(p) - cam.x(), 2) + Math.pow(world.plantY(p) - cam.y(), 2)
                     + Math.pow(world.plantZ(p) - cam.z(), 2));
-            LodChooser ch = b.chooser(s);
+            LodChooser ch = LodChooser.of(world.plants().species().get(s).def(), 1.0);
             int n = levelsHolding(b, s, p, at);
             if (n == 0) {
                 continue;
@@ -71,9 +83,9 @@ class PlantBatchesTest {
 
     @Test
     void nearPlantsAreTrianglesAndFarOnesLines() {
-        PlantBatches b = new PlantBatches(world, 0.0);
+        PlantBatches b = new PlantBatches(world);
         ViewCamera cam = looking(0, 1.7, 14, 0);
-        b.update(cam);
+        update(b, 0.0, cam);
         assertFalse(b.lines(b.list(0, 0)));
         assertFalse(b.lines(b.list(0, 1)));
         assertTrue(b.lines(b.list(0, 2)));
@@ -93,26 +105,26 @@ class PlantBatchesTest {
 
     @Test
     void plantsOutsideTheFrustumAreCulled() {
-        PlantBatches b = new PlantBatches(world, 1.0);
-        b.update(looking(0, 1.7, 30, Math.PI)); // 18 m south of the terrain, looking south
+        PlantBatches b = new PlantBatches(world);
+        update(b, 1.0, looking(0, 1.7, 30, Math.PI)); // 18 m south of the terrain, looking south
         assertEquals(0, b.instances());
         assertEquals(0, b.triangles() + b.lineCount());
-        b.update(looking(0, 1.7, 30, 0));
+        update(b, 1.0, looking(0, 1.7, 30, 0));
         assertTrue(b.instances() > 0);
         // a plant straight behind the camera is never listed, one straight ahead is
         ViewCamera side = looking(world.plantX(0), world.plantY(0) + 1, world.plantZ(0) + 3, 0);
-        b.update(side);
+        update(b, 1.0, side);
         boolean[] at = new boolean[8];
         assertTrue(levelsHolding(b, world.plantSpecies(0), 0, at) > 0);
         side.setOrientation(Math.PI, 0);
-        b.update(side);
+        update(b, 1.0, side);
         assertEquals(0, levelsHolding(b, world.plantSpecies(0), 0, at));
     }
 
     @Test
     void countersAreInstancesTimesPrimitivesAndPackingFollowsTheLists() {
-        PlantBatches b = new PlantBatches(world, 1.0);
-        b.update(looking(0, 1.7, 14, 0));
+        PlantBatches b = new PlantBatches(world);
+        update(b, 1.0, looking(0, 1.7, 14, 0));
         long tri = 0;
         long lines = 0;
         int inst = 0;
@@ -146,21 +158,7 @@ class PlantBatchesTest {
                 hi = Math.max(hi, world.firstComponent(p) + world.componentsOf(p));
             }
         }
-        assertEquals(lo, b.firstListedComponent());
-        assertEquals(hi, b.endListedComponent());
-    }
-
-    @Test
-    void editedLodDistancesMoveTheBands() {
-        PlantBatches b = new PlantBatches(world, 0.0);
-        ViewCamera cam = looking(0, 1.7, 14, 0);
-        b.update(cam);
-        long linesBefore = b.lineCount();
-        for (int s = 0; s < b.speciesCount(); s++) {
-            b.setLodDistances(s, new double[] {2, 3});
-        }
-        b.update(cam);
-        assertTrue(b.lineCount() > linesBefore);
-        assertEquals(2.0, b.edge(0, 0));
+        assertEquals(lo, b.runStart(0), "the first range starts at the lowest listed component");
+        assertEquals(hi, b.runEnd(b.runs() - 1), "the last ends after the highest");
     }
 }

@@ -259,10 +259,11 @@ class RenderBenchmarkTest {
         }
         r.plants().levelMask = ~0;
         r.drawTerrain = true;
-        double band = r.settings().lodTransition();
-        r.settings().lodTransition(0);
-        double noBand = ms(r, frame, cam, W, H);
-        r.settings().lodTransition(band);
+        // the same view decided with no transition band (rest poses: drawing cost does not depend on them)
+        org.jecosys.sim.DrawDecision noBandDecision = org.jecosys.sim.DrawDecision.of(r.world());
+        noBandDecision.setTransition(0);
+        Frame noBandFrame = noBandDecision.decideAll(cam, TestFrames.rest(r.world()));
+        double noBand = ms(r, noBandFrame, cam, W, H);
         return String.format("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %s | %.1f | %.1f |",
                 name, full, clear, terrain, plants, upload, byLevel, tiny, noBand);
     }

@@ -117,7 +117,7 @@ class RenderC1Test {
     void plantsAppearWherePlantsStandAndTerrainOrSkyElsewhere() throws Exception {
         int plant = grassPlant();
         ViewCamera cam = cameraAt(plant, 1.5);
-        render(TestFrames.rest(world), cam, px);
+        render(TestFrames.rest(world, cam), cam, px);
         Pixels.writePng(Path.of("target/render-test/c1-close.png"), px, W, H);
         // where the tuft stands: project its base and a point 0.2 m up
         Vector4f p = new Vector4f(world.plantX(plant), world.plantY(plant) + 0.15f, world.plantZ(plant), 1f);
@@ -156,7 +156,7 @@ class RenderC1Test {
     void lookingAtTheSkyShowsOnlySky() {
         ViewCamera cam = cameraAt(grassPlant(), 1.5);
         cam.setOrientation(0, Math.toRadians(80));
-        render(TestFrames.rest(world), cam, px);
+        render(TestFrames.rest(world, cam), cam, px);
         for (int y = 0; y < H; y += 7) {
             for (int x = 0; x < W; x += 7) {
                 assertTrue(sky(px, W, x, y), "sky at " + x + "," + y);
@@ -167,16 +167,16 @@ class RenderC1Test {
     @Test
     void twoFramesInWindDiffer() {
         ViewCamera cam = cameraAt(grassPlant(), 1.5);
-        render(TestFrames.wind(world, 0.3), cam, px);
-        render(TestFrames.wind(world, 1.4), cam, other);
+        render(TestFrames.wind(world, 0.3, cam), cam, px);
+        render(TestFrames.wind(world, 1.4, cam), cam, other);
         assertTrue(differing(px, other, W * H) > 200, "wind frames differ: " + differing(px, other, W * H));
     }
 
     @Test
     void twoFramesInStaticModeAreIdentical() {
         ViewCamera cam = cameraAt(grassPlant(), 1.5);
-        render(TestFrames.rest(world), cam, px);
-        render(TestFrames.rest(world), cam, other);
+        render(TestFrames.rest(world, cam), cam, px);
+        render(TestFrames.rest(world, cam), cam, other);
         assertEquals(0, differing(px, other, W * H));
     }
 
@@ -193,7 +193,7 @@ class RenderC1Test {
         int plant = grassPlant();
         ViewCamera cam = cameraAt(plant, 20);
         cam.setOrientation(0, -Math.atan2(0.9, 20));
-        render(TestFrames.rest(world), cam, px);
+        render(TestFrames.rest(world, cam), cam, px);
         PlantBatches b = renderer.plants().batches();
         int far = b.list(0, 2);
         assertTrue(b.lines(far));
@@ -242,13 +242,13 @@ class RenderC1Test {
         renderer.setField(field.debugView());
         renderer.settings().showField(true).showWind(true);
         try {
-            render(TestFrames.rest(world), cam, px);
+            render(TestFrames.rest(world, cam), cam, px);
         } finally {
             renderer.settings().showField(false).showWind(false);
             renderer.setField(null);
         }
         Pixels.writePng(Path.of("target/render-test/c1-overlays.png"), px, W, H);
-        render(TestFrames.rest(world), cam, other);
+        render(TestFrames.rest(world, cam), cam, other);
         // the map sits in the top-right corner: grey cells (r = g = b), red wind arrows
         int side = (int) (0.38f * Math.min(W, H));
         int grey = 0;
@@ -280,7 +280,7 @@ class RenderC1Test {
         try {
             fb.resize(w2, h2);
             cam.setLens(cam.fovY(), w2 / (double) h2, cam.near(), cam.far());
-            render(TestFrames.rest(world), cam, px);
+            render(TestFrames.rest(world, cam), cam, px);
             assertTrue(sky(px, w2, w2 / 2, h2 - 1), "sky at the top of the resized image");
             assertFalse(sky(px, w2, w2 / 2, 0), "terrain at the bottom");
             assertTrue(distinctColours(px, w2, h2) > 50);
@@ -297,7 +297,7 @@ class RenderC1Test {
         GlFramebuffer f = new GlFramebuffer(gl.tracker(), 64, 64);
         assertTrue(gl.tracker().live() > before + 10);
         f.bind();
-        r.render(TestFrames.rest(world), cameraAt(grassPlant(), 2), 64, 64);
+        r.render(TestFrames.rest(world, cameraAt(grassPlant(), 2)), cameraAt(grassPlant(), 2), 64, 64);
         r.close();
         f.close();
         r.close();

@@ -27,7 +27,7 @@ class RenderLodLookTest {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        Frame frame = TestFrames.rest(world);
+        Frame frame = TestFrames.rest(world, cam);
         ByteBuffer ground = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer near = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer far = MemoryUtil.memAlloc(4 * W * H);
@@ -39,11 +39,11 @@ class RenderLodLookTest {
             Pixels.read(W, H, ground);
             r.drawPlants = true;
             PlantBatches b = r.plants().batches();
-            allAt(b, new double[] {0.5, 1000}); // level 1 from 0.5 m on
+            allAt(world, frame, 1); // every drawn plant of a three-level species at level 1
             r.render(frame, cam, W, H);
             Pixels.read(W, H, near);
             assertEquals(0, b.lineCount());
-            allAt(b, new double[] {0.5, 1.0}); // level 2 (lines) from 1 m on
+            allAt(world, frame, 2); // level 2 (lines)
             r.render(frame, cam, W, H);
             Pixels.read(W, H, far);
             assertTrue(b.lineCount() > 100_000, "lines: " + b.lineCount());
@@ -76,10 +76,11 @@ class RenderLodLookTest {
         }
     }
 
-    private static void allAt(PlantBatches b, double[] edges) {
-        for (int s = 0; s < b.speciesCount(); s++) {
-            if (b.levels(s) == 3) {
-                b.setLodDistances(s, edges);
+    /** Draws every drawn plant of a three-level species at level {@code level} alone. */
+    private static void allAt(World world, Frame frame, int level) {
+        for (int p = 0; p < world.plantCount(); p++) {
+            if (frame.drawLevel(p) >= 0 && world.plants().species().get(world.plantSpecies(p)).levels() == 3) {
+                frame.setDraw(p, level, 255);
             }
         }
     }

@@ -98,10 +98,10 @@ class RenderPathEquivalenceTest {
     private double[] meanDifference(int i) throws IOException {
         fb.bind();
         renderer.drawPlants = false;
-        renderer.render(frame(world, i), view(world, i), W, H);
+        renderer.render(TestFrames.decide(world, frame(world, i), view(world, i)), view(world, i), W, H);
         renderer.drawPlants = true;
         Pixels.read(W, H, bare);
-        renderer.render(frame(world, i), view(world, i), W, H);
+        renderer.render(TestFrames.decide(world, frame(world, i), view(world, i)), view(world, i), W, H);
         Pixels.read(W, H, px);
         String out = System.getenv("JECOSYS_WRITE_RENDER_REFERENCE");
         if (out != null) {

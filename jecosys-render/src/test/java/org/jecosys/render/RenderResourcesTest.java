@@ -93,7 +93,7 @@ class RenderResourcesTest {
         try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings());
              FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
             fb.bind();
-            r.render(TestFrames.wind(world, 0.5), camera, W, H);
+            r.render(TestFrames.wind(world, 0.5, camera), camera, W, H);
             during = GlCensus.take().minus(before);
             assertTrue(during.total() > 10, "objects: " + during);
             assertEquals(gl.tracker().live() - tracked, during.total(),
@@ -109,7 +109,7 @@ class RenderResourcesTest {
     void renderingAllocatesNothingAfterWarmUp() {
         Frame[] frames = new Frame[4];
         for (int i = 0; i < frames.length; i++) {
-            frames[i] = TestFrames.wind(world, 0.25 * i);
+            frames[i] = TestFrames.wind(world, 0.25 * i, camera);
         }
         long thread = Thread.currentThread().getId();
         try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {

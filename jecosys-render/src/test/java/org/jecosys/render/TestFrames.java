@@ -1,6 +1,10 @@
 package org.jecosys.render;
 
+import java.util.Map;
+import java.util.WeakHashMap;
+import org.jecosys.math.Camera;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.DrawDecision;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 
@@ -33,5 +37,22 @@ public final class TestFrames {
             }
         }
         return f;
+    }
+
+    private static final Map<World, DrawDecision> DECISIONS = new WeakHashMap<>();
+
+    /** {@link #rest(World)} decided for a camera (what the simulation's workers do for its frames). */
+    public static Frame rest(World world, Camera camera) {
+        return decide(world, rest(world), camera);
+    }
+
+    /** {@link #wind(World, double)} decided for a camera. */
+    public static Frame wind(World world, double t, Camera camera) {
+        return decide(world, wind(world, t), camera);
+    }
+
+    /** Makes the frame's visibility and level decision for a camera, with the species' own bands. */
+    public static synchronized Frame decide(World world, Frame frame, Camera camera) {
+        return DECISIONS.computeIfAbsent(world, DrawDecision::of).decideAll(camera, frame);
     }
 }

@@ -1,0 +1,110 @@
+package org.jecosys.bench;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.GlFramebuffer;
+import org.jecosys.render.PlantRenderer;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.SceneFiles;
+import org.jecosys.sim.CameraWalk;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.Simulation;
+
+/**
+ * Render scale: frames of the meadow (91,800 components), large (1,000,000) and prairie (about
+ * 4,000,000) at 1920x1080 with the camera walking each scene's path, one fixed step per frame: frames
+ * per second, frame time (step, render and the GPU finishing), the render thread's CPU time inside
+ * {@link SceneRenderer#render} (what the library costs the thread that submits; on a software
+ * rasteriser it includes the driver's vertex work), bytes uploaded per frame, components drawn, and
+ * the GL renderer and path. A smoke run renders the meadow only, small.
+ */
+final class RenderScaleSection implements Section {
+    private static final String[] FILES = {"meadow.xml", "large.xml", "prairie.xml"};
+    private static final double DT = 1 / 30.0;
+
+    private final Path scenes;
+
+    RenderScaleSection(Path scenes) {
+        this.scenes = scenes;
+    }
+
+    @Override
+    public String name() {
+        return "render scale (meadow, large, prairie at 1920x1080)";
+    }
+
+    @Override
+    public void run(Mode mode, Report report) throws Exception {
+        boolean smoke = mode == Mode.SMOKE;
+        int width = smoke ? 320 : 1920;
+        int height = smoke ? 180 : 1080;
+        int count = smoke ? 1 : FILES.length;
+        int warm = smoke ? 1 : mode == Mode.QUICK ? 3 : 10;
+        int frames = smoke ? 2 : mode == Mode.QUICK ? 8 : 40;
+        Table t = new Table("render-scale", "Render scale: " + width + "x" + height + ", camera walking, one step per "
+                + "frame", java.util.List.of("scene", "components", "drawn (median)", "fps", "frame ms (median)",
+                "frame ms (p90)", "step ms", "render-thread CPU ms", "KiB uploaded / frame", "path"));
+        Map<String, Object> raw = new LinkedHashMap<>();
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        try (GlContext gl = GlContext.headless(false);
+             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
+            report.glRenderer(gl.describe());
+            for (int s = 0; s < count; s++) {
+                SceneDef def = SceneFiles.load(scenes.resolve(FILES[s]));
+                try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE);
+                     SceneRenderer r = new SceneRenderer(gl, sim.world(), new RenderSettings().sky(def.render().sky()))) {
+                    sim.setLodTransition(def.render().lodTransition());
+                    CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
+                            width / (double) height);
+                    double[] frameMs = new double[frames];
+                    double[] stepMs = new double[frames];
+                    double[] cpuMs = new double[frames];
+                    double[] uploaded = new double[frames];
+                    double[] drawn = new double[frames];
+                    fb.bind();
+                    for (int i = 0; i < warm + frames; i++) {
+                        ViewCamera cam = walk.at(i * DT);
+                        long t0 = System.nanoTime();
+                        sim.step(DT, cam);
+                        long t1 = System.nanoTime();
+                        Frame f = sim.latestFrame();
+                        long c0 = threads.getCurrentThreadCpuTime();
+                        r.render(f, cam, width, height);
+                        long c1 = threads.getCurrentThreadCpuTime();
+                        gl.finish();
+                        long t2 = System.nanoTime();
+                        int k = i - warm;
+                        if (k >= 0) {
+                            frameMs[k] = (t2 - t0) / 1e6;
+                            stepMs[k] = (t1 - t0) / 1e6;
+                            cpuMs[k] = (c1 - c0) / 1e6;
+                            uploaded[k] = r.plants().uploadedBytes() / 1024.0;
+                            drawn[k] = r.plants().batches().components();
+                        }
+                    }
+                    double median = Stats.median(frameMs);
+                    t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
+                            Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
+                            Stats.median(uploaded), PlantRenderer.PATH);
+                    raw.put(def.name(), Map.of("frameMs", frameMs, "stepMs", stepMs, "renderCpuMs", cpuMs,
+                            "uploadedKiB", uploaded, "drawnComponents", drawn));
+                }
+            }
+            t.note("GL renderer: " + gl.describe() + ". Frame = one fixed step + render + glFinish; render-thread CPU"
+                    + " = the calling thread's CPU time inside SceneRenderer.render (on a software rasteriser it"
+                    + " includes the driver's vertex processing). Uploads: 8 bytes per component of the drawn plants'"
+                    + " range (pose coordinate and azimuth, written by the animation workers) plus 8 bytes per drawn"
+                    + " plant and level.");
+        }
+        report.add(t);
+        report.raw("renderScale", raw);
+    }
+}

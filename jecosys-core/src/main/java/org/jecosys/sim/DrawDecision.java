@@ -1,0 +1,268 @@
+package org.jecosys.sim;
+
+import java.util.List;
+import org.jecosys.math.Camera;
+import org.jecosys.math.Require;
+import org.jecosys.plant.LodChooser;
+import org.jecosys.plant.LodDef;
+import org.jecosys.plant.SpeciesModel;
+import org.joml.FrustumIntersection;
+import org.joml.Matrix4f;
+
+/**
+ * The one visibility and level-of-detail decision of a frame (paper §3.1.1 and §4.1, Table 3),
+ * published with the {@link Frame} for the renderer to draw as it is: a plant is drawn when the force
+ * field found it visible (so it was animated this step) and its bounding sphere meets the view
+ * frustum; it is drawn at the level its distance to the eye falls in, the same level the animation
+ * updated it at (the same distance bands, {@link Simulation#setLodScale}, {@link
+ * Simulation#setLodDistances}); and within {@link #transition()} metres before the end of its level
+ * it is drawn at the next level too, each level keeping a complementary share of the screen-door
+ * dither thresholds ({@link #keep}), so a plant crossing a band fades from one level to the next
+ * instead of popping.
+ *
+ * <p>In a simulation the animation workers make this decision for their own chunks of plants as they
+ * animate them; {@link #decideAll} makes it for a whole frame on one thread, for tools and tests that
+ * build frames without the animation engine. Distances in metres.
+ */
+public final class DrawDecision {
+    /** Where each species' levels end, metres, with any LOD scale applied. */
+    interface Edges {
+        /** {@return levels of species s} */
+        int levels(int s);
+
+        /** {@return where level l of species s ends, metres} */
+        double edge(int s, int l);
+    }
+
+    private final World world;
+    private final Edges edges;
+    private final float[] radius;
+    private volatile double transition = LodChooser.DEFAULT_BAND;
+    private final Matrix4f viewProjection = new Matrix4f();
+    private final FrustumIntersection frustum = new FrustumIntersection();
+
+    DrawDecision(World world, Edges edges) {
+        this.world = world;
+        this.edges = edges;
+        List<SpeciesModel> species = world.plants().species();
+        radius = new float[species.size()];
+        for (int s = 0; s < radius.length; s++) {
+            radius[s] = boundingRadius(species.get(s));
+        }
+    }
+
+    /**
+     * A decision over a world with the distance bands of its species' definitions (no LOD scale), for
+     * frames built without a simulation. Allocates.
+     *
+     * @param world the plants
+     * @return a new decision with the default transition band ({@link LodChooser#DEFAULT_BAND})
+     */
+    public static DrawDecision of(World world) {
+        Require.nonNull("world", world);
+        List<SpeciesModel> species = world.plants().species();
+        double[][] e = new double[species.size()][];
+        for (int s = 0; s < e.length; s++) {
+            List<LodDef> lods = species.get(s).def().lods();
+            e[s] = new double[lods.size() - 1];
+            for (int l = 0; l < e[s].length; l++) {
+                e[s][l] = lods.get(l).maxDistance();
+            }
+        }
+        return new DrawDecision(world, new Edges() {
+            @Override
+            public int levels(int s) {
+                return e[s].length + 1;
+            }
+
+            @Override
+            public double edge(int s, int l) {
+                return e[s][l];
+            }
+        });
+    }
+
+    /**
+     * The radius of a sphere around a plant's base that holds it in every pose: the longest
+     * component chain (each component's longest pose-table skeleton plus its width) plus the
+     * farthest ground offset of a component, metres.
+     *
+     * @param m the species
+     * @return the radius, metres
+     */
+    public static float boundingRadius(SpeciesModel m) {
+        double r = 0;
+        double base = 0;
+        for (int s = 0; s < m.slotCount(); s++) {
+            base = Math.max(base, Math.hypot(m.slotBaseX(s), m.slotBaseZ(s)));
+        }
+        for (int c = 0; c < m.componentCount(); c++) {
+            double longest = 0;
+            for (int v = 0; v < m.component(c).variants(); v++) {
+                longest = Math.max(longest, m.component(c).poseTable(v).length());
+            }
+            r += longest + Math.max(m.component(c).def().baseWidth(), m.component(c).def().tipWidth());
+        }
+        return (float) (r + base);
+    }
+
+    /** {@return the width of the band before each level's end over which two levels are dithered, metres} */
+    public double transition() {
+        return transition;
+    }
+
+    /**
+     * Sets the transition band (the scene's {@code <render lodTransition>}); each species uses at
+     * most the smallest gap between its own distances. Any thread; takes effect at the next decision.
+     *
+     * @param metres band width, in [0, 10]
+     */
+    public void setTransition(double metres) {
+        transition = Require.range("lodTransition", metres, 0, 10);
+    }
+
+    /**
+     * {@return the bounding radius of a species' plants, metres (see {@link #boundingRadius})}
+     *
+     * @param species species index
+     */
+    public float radius(int species) {
+        return radius[species];
+    }
+
+    /**
+     * Decides plants {@code [p0, p1)} into {@code frame}: {@link Frame#drawLevel} and
+     * {@link Frame#drawKeep}. Worker threads, each on its own range; no allocation.
+     *
+     * @param visible per plant, whether the field found it visible (and it was animated)
+     * @param frustum the camera's frustum, read only
+     */
+    void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, FrustumIntersection frustum,
+                Frame frame) {
+        double band = transition;
+        for (int p = p0; p < p1; p++) {
+            int s = world.plantSpecies(p);
+            float x = world.plantX(p);
+            float y = world.plantY(p);
+            float z = world.plantZ(p);
+            if (!visible[p] || !frustum.testSphere(x, y, z, radius[s])) {
+                frame.drawLevel[p] = -1;
+                frame.drawKeep[p] = 0;
+                continue;
+            }
+            double dx = x - ex;
+            double dy = y - ey;
+            double dz = z - ez;
+            double d2 = dx * dx + dy * dy + dz * dz;
+            int levels = edges.levels(s);
+            int l = 0;
+            while (l < levels - 1) {
+                double e = edges.edge(s, l);
+                if (d2 < e * e) {
+                    break;
+                }
+                l++;
+            }
+            double d = Math.sqrt(d2);
+            double b = Math.min(band, minGap(s, levels));
+            int keep = keep(s, l, levels, d, b);
+            if (l < levels - 1 && b > 0 && d > edges.edge(s, l) - b) {
+                keep |= keep(s, l + 1, levels, d, b) << 16;
+            }
+            frame.drawLevel[p] = (byte) l;
+            frame.drawKeep[p] = keep;
+        }
+    }
+
+    /**
+     * Decides every plant of {@code frame} for {@code camera}, all taken as visible to the field:
+     * for frames built without the animation engine (a renderer preview, tests). The caller's thread;
+     * uses this object's own matrices, so one call at a time; no allocation.
+     *
+     * @param camera the viewer
+     * @param frame  a frame of this decision's world
+     * @return {@code frame}
+     */
+    public Frame decideAll(Camera camera, Frame frame) {
+        Require.nonNull("camera", camera);
+        if (frame.plantCount() != world.plantCount()) {
+            throw new IllegalArgumentException("frame has " + frame.plantCount() + " plants, the world "
+                    + world.plantCount());
+        }
+        frustum.set(camera.viewProjection(viewProjection), false);
+        java.util.Arrays.fill(frame.plantVisible, true);
+        decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), frustum, frame);
+        return frame;
+    }
+
+    private double minGap(int s, int levels) {
+        double gap = Double.POSITIVE_INFINITY;
+        double prev = 0;
+        for (int l = 0; l < levels - 1; l++) {
+            double e = edges.edge(s, l);
+            gap = Math.min(gap, e - prev);
+            prev = e;
+        }
+        return gap;
+    }
+
+    /**
+     * The packed dither window of level {@code l} for a plant at distance {@code d}: level l keeps
+     * the bayer thresholds in {@code [handOver, received)} (both /255), where handOver is the share
+     * already given to level l + 1 and received the share taken over from level l - 1; packed as
+     * {@code 256 handOver + received}. The windows of neighbouring levels tile [0, 255] at every
+     * distance. No allocation.
+     *
+     * @param s      species index
+     * @param l      level
+     * @param levels levels of the species
+     * @param d      distance to the eye, metres
+     * @param band   transition band of the species, metres
+     * @return the packed window, in [0, 65535]
+     */
+    int keep(int s, int l, int levels, double d, double band) {
+        double handOver = l < levels - 1 ? fade(d, edges.edge(s, l), band) : 0;
+        double received = l > 0 ? (d >= edges.edge(s, l - 1) ? 1 : fade(d, edges.edge(s, l - 1), band)) : 1;
+        return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
+    }
+
+    /**
+     * {@return the packed dither window of level l of species s at distance d, with this decision's
+     * band (see {@link #keep(int, int, int, double, double)})}
+     *
+     * @param s species index
+     * @param l level
+     * @param d distance to the eye, metres
+     */
+    public int keep(int s, int l, double d) {
+        int levels = edges.levels(s);
+        return keep(s, l, levels, d, Math.min(transition, minGap(s, levels)));
+    }
+
+    /** Fade across the band ending at {@code edge}: 0 before it, 1 at and beyond the edge. */
+    static double fade(double d, double edge, double band) {
+        if (band <= 0) {
+            return d >= edge ? 1 : 0;
+        }
+        return Math.max(0, Math.min(1, (d - (edge - band)) / band));
+    }
+
+    /**
+     * {@return levels of species s}
+     *
+     * @param s species index
+     */
+    public int levels(int s) {
+        return edges.levels(s);
+    }
+
+    /**
+     * {@return where level l of species s ends, metres, with the LOD scale applied}
+     *
+     * @param s species index
+     * @param l level, below the species' last
+     */
+    public double edge(int s, int l) {
+        return edges.edge(s, l);
+    }
+}
