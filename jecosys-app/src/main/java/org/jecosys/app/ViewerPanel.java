@@ -24,6 +24,9 @@ import org.jecosys.sim.Simulation;
  * Java strings); edits allocate.
  */
 final class ViewerPanel {
+    /** The rendering path, as the HUD names it. */
+    private static final String RENDER_PATH = "render path: " + org.jecosys.render.PlantRenderer.PATH;
+
     private static final String[] MODES = {"static", "random", "constraint"};
     private static final String[] TINTS = {"none", "water", "nutrients"};
 
@@ -100,6 +103,7 @@ final class ViewerPanel {
         ImGui.text(String.format(Locale.ROOT, "field %.2f ms  animation %.2f ms (%d thread%s%s)  render %.2f ms",
                 frame.fieldNanos() / 1e6, frame.animationNanos() / 1e6, threads, threads == 1 ? "" : "s",
                 threads == 1 ? ", one after the other" : ", side by side", renderMs));
+        ImGui.text(RENDER_PATH);
         ImGui.text(fly.playing() ? "camera path playing (P stops)"
                 : "WASD QE, right-drag look, H frame scene, F add flow, T agent, P path (view --help lists all)");
         if (!controls.message().isEmpty()) {

@@ -4,7 +4,9 @@
  * {@link org.jecosys.sim.Frame}s ({@link org.jecosys.render.PlantRenderer}: every pose table
  * uploaded once, one instanced draw per species and level of detail, triangles near and lines far,
  * dithered between levels; paper §4.1, §4.2.2 and Table 3), the force-field overlays of paper
- * Figures 2 and 3 ({@link org.jecosys.render.FieldOverlay}), and the whole frame
+ * Figures 2 and 3 ({@link org.jecosys.render.FieldOverlay}), gizmos for flows and agents and the
+ * wind the plants feel, drawn in the 3D view ({@link org.jecosys.render.GizmoRenderer}), and the
+ * whole frame
  * ({@link org.jecosys.render.SceneRenderer}, which puts back every GL state it changes, so it
  * composes with a game's own drawing). The GL-free parts that choose what is drawn
  * ({@link org.jecosys.render.PlantBatches}, which follows the frame's one decision) are tested
