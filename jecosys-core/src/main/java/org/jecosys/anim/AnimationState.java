@@ -50,10 +50,10 @@ import org.jecosys.math.Require;
  * consecutive components with the same spring coefficients ({@link SpringKinds#springClass}: the
  * shape variants of one component type share them, so a 25-leaf tuft is one run) and the same
  * level-of-detail mask. {@link #animate} first advances D and v over segments of contiguous runs of
- * one coefficient row (spring class and response variant), across plants: per run its rest points
- * (computed once per run from the plant's force), then one short branch-free loop over its
- * components that C2 vectorises; each component's result depends on its own values only, so the
- * bits do not depend on how runs are grouped. It then computes the outputs
+ * one coefficient row (spring class and response variant), across plants: the homogeneous part of
+ * the step's map in one loop that C2 vectorises, then each run's rest-point terms (its stiffened rest
+ * points, computed once per run from the plant's force), added in the same order as the fused
+ * formula, so the bits do not depend on how runs are grouped. It then computes the outputs
  * in a second, branch-free loop over contiguous component ranges, also vectorised. A range may
  * also cover components that were not advanced (a short gap of invisible plants, components outside
  * the level of detail): their outputs are recomputed from their unchanged D and come out
@@ -86,6 +86,7 @@ public final class AnimationState implements AnimationView {
     private final int[] runMask;
     private final int[] plantRun;
     private final float[] runForce;
+    private final float[] runKnee;
     private final float[] leanX;
     private final float[] leanZ;
     // per-component copies of the kind constants the output loop needs (no gather there)
@@ -93,7 +94,6 @@ public final class AnimationState implements AnimationView {
     private final float[] compLength;
     private final float[] compScale;
     private final float[] compPoseMax;
-    private final float[] compInvLimit;
     private final byte[] plantResponse;
     private final float[] plantCompliance;
     /** Per plant, whether its state follows the wind (see "Start" in the class comment). */
@@ -185,7 +185,7 @@ public final class AnimationState implements AnimationView {
         compLength = new float[components];
         compScale = new float[components];
         compPoseMax = new float[components];
-        compInvLimit = new float[components];
+        float[] compInvLimit = new float[components];
         for (int c = 0; c < components; c++) {
             int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
             kind[c] = (short) k;
@@ -217,6 +217,7 @@ public final class AnimationState implements AnimationView {
         runMask = springRuns.mask;
         plantRun = springRuns.plantRun;
         runForce = new float[springRuns.count() * SpringRuns.FORCE_STRIDE];
+        runKnee = springRuns.knees(compInvLimit);
         devX = new float[components];
         devZ = new float[components];
         velX = new float[components];
@@ -347,10 +348,10 @@ public final class AnimationState implements AnimationView {
         float pz = speed * uz;
         double compliance = plantCompliance[p];
         for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
-            SpringRuns.setForce(r, kinds.gain(runClass[r]) * compliance, runForce, px, pz, px, pz);
+            SpringRuns.setForce(r, kinds.gain(runClass[r]) * compliance, runKnee[r], runForce, px, pz, px, pz);
             int f = r * SpringRuns.FORCE_STRIDE;
-            SpringRuns.settle(runStart[r], runStart[r + 1], runForce[f], runForce[f + 1], runForce[f + 4],
-                    compInvLimit, devX, devZ, velX, velZ);
+            SpringRuns.settle(r, runStart, runForce[f], runForce[f + 1], runForce[f + 4], runKnee, devX, devZ, velX,
+                    velZ);
         }
         pressX[p] = px;
         pressZ[p] = pz;
@@ -486,7 +487,7 @@ public final class AnimationState implements AnimationView {
                 continue;
             }
             int cls = runClass[r];
-            SpringRuns.setForce(r, kinds.gain(cls) * compliance, runForce, p0x, p0z, p1x, p1z);
+            SpringRuns.setForce(r, kinds.gain(cls) * compliance, runKnee[r], runForce, p0x, p0z, p1x, p1z);
             queued += runStart[r + 1] - runStart[r];
             cursor.queueRun(this, r, SpringKinds.row(cls, variant), runStart);
         }
@@ -497,7 +498,7 @@ public final class AnimationState implements AnimationView {
 
     /** Advances runs {@code r0 .. r1-1} (contiguous, all of coefficient row {@code row}): {@link SpringRuns#spring}. */
     void spring(int r0, int r1, int row) {
-        SpringRuns.spring(r0, r1, row, kinds.coef, runStart, runForce, compInvLimit, devX, devZ, velX, velZ);
+        SpringRuns.spring(r0, r1, row, kinds.coef, runStart, runForce, runKnee, devX, devZ, velX, velZ);
     }
 
     /**

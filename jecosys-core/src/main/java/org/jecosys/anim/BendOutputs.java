@@ -50,10 +50,13 @@ final class BendOutputs {
             float tz = leanZ[c] + devZ[c];
             azimuth[c] = (float) Math.sqrt(tx * tx + tz * tz);
         }
-        for (int c = c0; c < c1; c++) { // extra bend: asin(e / length) = atan2(num, sqrt(d^2 - num^2))
+        for (int c = c0; c < c1; c++) { // num = (|T| + l) e: the extra tip offset e times |T| + l
             float x = devX[c];
             float z = devZ[c];
-            float num = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+            pose[c] = Math.max(0f, 2 * (leanX[c] * x + leanZ[c] * z) + x * x + z * z);
+        }
+        for (int c = c0; c < c1; c++) { // extra bend: asin(e / length) = atan2(num, sqrt(d^2 - num^2))
+            float num = pose[c];
             float d = (azimuth[c] + lean[c]) * len[c];
             pose[c] = Trig.poseArgument(num, (float) Math.sqrt(Math.max(0f, (d - num) * (d + num))));
         }

@@ -52,7 +52,9 @@ import org.joml.Vector3f;
  * then stiffer and stiffer (sigma is continuous with its slope at the knee), never reaching dMax.
  * As the spring is critically damped and starts at a rest point, |D| stays below dMax, so no bend is
  * clamped, a stronger wind still shows as more bend and a released component comes back within a
- * few tau. The saturation is computed per component ({@code SpringRuns.spring}).
+ * few tau. The saturation is computed once per spring run of a plant ({@code SpringRuns.spring}),
+ * against the bend limit of the run's shortest component (its shape variants differ in length), so
+ * no component passes its own limit.
  *
  * <h2>Closed form over the step, exact at every step size</h2>
  * Over a step of length h the target moves linearly from its value T0 at the start of the step (the
@@ -69,10 +71,8 @@ import org.joml.Vector3f;
  * numbers are what eq. 5's cached constants {@code 1/mu} (the force gain, here {@code bD + cD = 1 - aDD})
  * and {@code 2m/(tau mu)} (the velocity gain, here aDv) become when the constraint equation is
  * integrated exactly rather than by the paper's one-step balance, whose equilibrium
- * {@code F/(PC + m/tau^2)} moved with the frame interval. The update uses them in the form
- * {@code D' = T0 + aDD (D - T0) + aDv v + cD (T1 - T0)}, {@code v' = aVD (D - T0) + aVv v + cV (T1 - T0)}
- * (the same map, as {@code bD + cD = 1 - aDD} and {@code bV + cV = -aVD}), which keeps a component
- * at rest exactly at its rest point in float arithmetic.
+ * {@code F/(PC + m/tau^2)} moved with the frame interval. As {@code bD + cD = 1 - aDD} and
+ * {@code bV + cV = -aVD}, a component at its rest point stays there (to a few float ulps).
  *
  * <h2>Sub-intervals: switches at their exact time</h2>
  * A step is split into S sub-intervals ({@link AnimationDef#subIntervals()}, §4.2.1). When a flow is

@@ -18,8 +18,11 @@ final class SpringRuns {
      * the step, T0x, T0z, T1x, T1z, and their magnitudes |T0|, |T1|.
      */
     static final int FORCE_STRIDE = 6;
-    /** Largest linear rest point kept, metres: far beyond every bend limit, so saturation is complete. */
-    static final double MAX_TARGET = 1e20;
+    /**
+     * Largest linear rest point kept, in knees of the run ({@link #knees}): far beyond every bend
+     * limit, so the saturation is complete, and small enough for {@link #saturation}'s float products.
+     */
+    static final double MAX_TARGET_KNEES = 1e12;
     private static final float KNEE = SpringKinds.KNEE;
     private static final float SPAN = 1 - KNEE;
     private static final float INV_SPAN = 1 / SPAN;
@@ -77,23 +80,26 @@ final class SpringRuns {
      * Writes run r's {@value #FORCE_STRIDE} values into {@code runForce}: the linear rest points
      * {@code gain P} of the plant's {@code P = |u| u} at the start ({@code p0}) and the end ({@code p1})
      * of the step, m^2/s^2, with {@code gain} the run's equilibrium deviation per unit P (metres per
-     * (m/s)^2, the plant's compliance included), and their magnitudes, capped at {@link #MAX_TARGET}.
+     * (m/s)^2, the plant's compliance included), and their magnitudes, capped at
+     * {@link #MAX_TARGET_KNEES} times the run's knee {@code knee} (metres) with their direction kept.
      */
-    static void setForce(int r, double gain, float[] runForce, float p0x, float p0z, float p1x, float p1z) {
+    static void setForce(int r, double gain, float knee, float[] runForce, float p0x, float p0z, float p1x,
+                         float p1z) {
         int f = r * FORCE_STRIDE;
-        target(gain, p0x, p0z, runForce, f, f + 4);
-        target(gain, p1x, p1z, runForce, f + 2, f + 5);
+        double most = MAX_TARGET_KNEES * knee;
+        target(gain, most, p0x, p0z, runForce, f, f + 4);
+        target(gain, most, p1x, p1z, runForce, f + 2, f + 5);
     }
 
-    private static void target(double gain, float px, float pz, float[] out, int o, int om) {
+    private static void target(double gain, double most, float px, float pz, float[] out, int o, int om) {
         double tx = gain * px;
         double tz = gain * pz;
         double m = Math.sqrt(tx * tx + tz * tz);
-        if (m > MAX_TARGET) {
-            double k = MAX_TARGET / m;
+        if (m > most) {
+            double k = most / m;
             tx *= k;
             tz *= k;
-            m = MAX_TARGET;
+            m = most;
         }
         out[o] = (float) tx;
         out[o + 1] = (float) tz;
@@ -109,22 +115,46 @@ final class SpringRuns {
      * @return the factor, in (0, 1]
      */
     static float saturation(float x) {
+        // (min(x, KNEE) + SPAN u / (1 + u)) / x with one division
         float u = Math.max(0f, (x - KNEE) * INV_SPAN);
-        return (Math.min(x, KNEE) + SPAN * (u / (1f + u))) / Math.max(x, Float.MIN_NORMAL);
+        float w = 1f + u;
+        return (Math.min(x, KNEE) * w + SPAN * u) / (Math.max(x, Float.MIN_NORMAL) * w);
     }
 
     /**
-     * Puts the components {@code c0 .. c1-1} at the rest point of the linear rest point (tx, tz) of
-     * magnitude m (metres), at zero velocity: the equilibrium of that force.
+     * Per run, the knee of the bend limit of its shortest component: {@code KNEE} times the smallest
+     * bend limit, metres (the largest rest point that {@link #spring} leaves unchanged). Build time;
+     * allocates.
      *
      * @param invLimit per component, 1 / its bend limit, 1/m
+     * @return one value per run
      */
-    static void settle(int c0, int c1, float tx, float tz, float m, float[] invLimit, float[] devX, float[] devZ,
-                       float[] velX, float[] velZ) {
-        for (int c = c0; c < c1; c++) {
-            float k = saturation(m * invLimit[c]);
-            devX[c] = k * tx;
-            devZ[c] = k * tz;
+    float[] knees(float[] invLimit) {
+        float[] k = new float[count()];
+        for (int r = 0; r < k.length; r++) {
+            float most = 0;
+            for (int c = start[r]; c < start[r + 1]; c++) {
+                most = Math.max(most, invLimit[c]);
+            }
+            k[r] = KNEE / most;
+        }
+        return k;
+    }
+
+    /**
+     * Puts the components of run r at the rest point of its linear rest point (tx, tz) of magnitude m
+     * (metres, as {@link #spring} stiffens it), at zero velocity: the equilibrium of that force.
+     *
+     * @param runKnee per run, the knee of its shortest component's bend limit, metres ({@link #knees})
+     */
+    static void settle(int r, int[] runStart, float tx, float tz, float m, float[] runKnee, float[] devX,
+                       float[] devZ, float[] velX, float[] velZ) {
+        float k = saturation(m * (KNEE / runKnee[r]));
+        float x = k * tx;
+        float z = k * tz;
+        for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
+            devX[c] = x;
+            devZ[c] = z;
             velX[c] = 0;
             velZ[c] = 0;
         }
@@ -158,51 +188,63 @@ final class SpringRuns {
 
     /**
      * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of coefficient row
-     * {@code row}) by the step's affine map (eq. 5 integrated exactly, see {@link SpringKinds}) in the
-     * form {@code D' = A + aDD (D - A) + aDv v + cD (B - A)}, {@code v' = aVD (D - A) + aVv v + cV (B - A)},
-     * where A and B are the component's stiffened rest points at the start and the end of the step
-     * (its run's linear rest points times {@link #saturation} of their size over its bend limit). One
-     * short branch-free loop per run, over arrays indexed by component; each component's result
-     * depends on its own values only.
+     * {@code row}) by the step's affine map (eq. 5 integrated exactly, see {@link SpringKinds}):
+     * {@code D' = aDD D + aDv v + bD A + cD B}, {@code v' = aVD D + aVv v + bV A + cV B}, where A and B
+     * are the run's stiffened rest points at the start and the end of the step: its linear rest points
+     * times {@link #saturation} of their size over the bend limit of its shortest component (so no
+     * component passes its own limit). First the part common to the row ({@code aDD D + aDv v},
+     * {@code aVD D + aVv v}) in one loop over the whole segment that C2 vectorises, then each run's
+     * rest-point terms, computed once per run and added in the order {@code (aDD D + aDv v) + bD A + cD B},
+     * so the bits do not depend on how runs are grouped into segments.
      *
      * @param co       the spring coefficients ({@link SpringKinds#coef}, {@link SpringKinds#STRIDE} per row)
      * @param runStart per run its first component, as {@link #start}
      * @param runForce per run its {@value #FORCE_STRIDE} values ({@link #setForce})
-     * @param invLimit per component, 1 / its bend limit, 1/m
+     * @param runKnee  per run, the knee of its shortest component's bend limit, metres ({@link #knees})
      */
-    static void spring(int r0, int r1, int row, float[] co, int[] runStart, float[] runForce, float[] invLimit,
+    static void spring(int r0, int r1, int row, float[] co, int[] runStart, float[] runForce, float[] runKnee,
                        float[] devX, float[] devZ, float[] velX, float[] velZ) {
         final int o = row * SpringKinds.STRIDE;
         final float aDD = co[o];
         final float aDv = co[o + 1];
+        final float bD = co[o + 2];
         final float cD = co[o + 3];
         final float aVD = co[o + 4];
         final float aVv = co[o + 5];
+        final float bV = co[o + 6];
         final float cV = co[o + 7];
+        for (int c = runStart[r0], e = runStart[r1]; c < e; c++) {
+            float x = devX[c];
+            float z = devZ[c];
+            float vx = velX[c];
+            float vz = velZ[c];
+            devX[c] = aDD * x + aDv * vx;
+            devZ[c] = aDD * z + aDv * vz;
+            velX[c] = aVD * x + aVv * vx;
+            velZ[c] = aVD * z + aVv * vz;
+        }
         for (int r = r0; r < r1; r++) {
             int f = r * FORCE_STRIDE;
-            float t0x = runForce[f];
-            float t0z = runForce[f + 1];
-            float t1x = runForce[f + 2];
-            float t1z = runForce[f + 3];
-            float m0 = runForce[f + 4];
-            float m1 = runForce[f + 5];
+            float q = KNEE / runKnee[r];
+            float k0 = saturation(runForce[f + 4] * q);
+            float k1 = saturation(runForce[f + 5] * q);
+            float ax = k0 * runForce[f];
+            float az = k0 * runForce[f + 1];
+            float bx = k1 * runForce[f + 2];
+            float bz = k1 * runForce[f + 3];
+            float dx0 = bD * ax;
+            float dx1 = cD * bx;
+            float dz0 = bD * az;
+            float dz1 = cD * bz;
+            float vx0 = bV * ax;
+            float vx1 = cV * bx;
+            float vz0 = bV * az;
+            float vz1 = cV * bz;
             for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
-                float q = invLimit[c];
-                float k0 = saturation(m0 * q);
-                float k1 = saturation(m1 * q);
-                float ax = k0 * t0x;
-                float az = k0 * t0z;
-                float dx = k1 * t1x - ax;
-                float dz = k1 * t1z - az;
-                float ex = devX[c] - ax;
-                float ez = devZ[c] - az;
-                float vx = velX[c];
-                float vz = velZ[c];
-                devX[c] = ax + aDD * ex + aDv * vx + cD * dx;
-                devZ[c] = az + aDD * ez + aDv * vz + cD * dz;
-                velX[c] = aVD * ex + aVv * vx + cV * dx;
-                velZ[c] = aVD * ez + aVv * vz + cV * dz;
+                devX[c] = devX[c] + dx0 + dx1;
+                devZ[c] = devZ[c] + dz0 + dz1;
+                velX[c] = velX[c] + vx0 + vx1;
+                velZ[c] = velZ[c] + vz0 + vz1;
             }
         }
     }

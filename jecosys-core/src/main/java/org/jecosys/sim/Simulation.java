@@ -50,9 +50,9 @@ import org.jecosys.wind.WindSource;
  * plant is visible and feels no wind (paper Table 6's "Force field disabled").
  *
  * <h2>Start</h2>
- * In CONSTRAINT mode with the field on, the constructor puts every plant at the equilibrium of the
- * flows at its position at t = 0 (one evaluation per plant, once), so the frames before the first
- * step already show the meadow in the wind. The first step samples the field at t = 0 as well (the
+ * In CONSTRAINT mode with the paper's field on, the constructor puts every plant at the equilibrium
+ * of the flows at its position at t = 0 (one evaluation per plant, once), so the frames before the
+ * first step already show the meadow in the wind. The first step samples the field at t = 0 as well (the
  * force its spring update starts from; when the plants were not settled at construction, the plants
  * it sees are settled on it), then for the end of the step as usual. A plant that comes into view
  * later starts at the equilibrium of the wind it then feels ({@code AnimationState}). When the flows
@@ -380,15 +380,16 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * At construction, in CONSTRAINT mode with the field on: puts every plant at the equilibrium of
-     * the flows at its own position at t = 0 (one evaluation per plant, once), so that the frames a
+     * At construction, in CONSTRAINT mode with the paper's quadtree field on: puts every plant at the
+     * equilibrium of the flows at its own position at t = 0 (one evaluation per plant, once), so that the frames a
      * reader sees before the first step already show the meadow in the wind. The first step then
      * settles the plants it sees on the field's own wind at t = 0 ({@link #prime}). Build time;
      * allocates.
      */
     private void settleEverywhere(float[] xs, float[] zs) {
-        if (mode != AnimationMode.CONSTRAINT || !fieldEnabled) {
-            return;
+        if (mode != AnimationMode.CONSTRAINT || !fieldEnabled
+                || !(field instanceof org.jecosys.field.QuadtreeForceField)) {
+            return; // a game's own field may blow other winds than the flows: the first step settles on it
         }
         settledAtBuild = true;
         int n = xs.length;

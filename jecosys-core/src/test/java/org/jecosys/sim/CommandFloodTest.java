@@ -79,8 +79,12 @@ class CommandFloodTest {
             }
             int maxPending = 0;
             int maxFlows = 0;
-            for (int s = 0; s < STEPS && problem.get() == null; s++) {
+            // at least STEPS steps, and on until the producers (who may get the cores late on a loaded
+            // machine) have had more than 2 x STEPS commands accepted
+            long steps = 0;
+            for (int s = 0; (s < STEPS || accepted.get() <= 2L * STEPS) && s < 2_000_000 && problem.get() == null; s++) {
                 sim.stepFixed(cam);
+                steps++;
                 sinceStep.set(0);
                 maxPending = Math.max(maxPending, sim.pendingCommands());
                 maxFlows = Math.max(maxFlows, sim.windField().size());
@@ -90,7 +94,8 @@ class CommandFloodTest {
                 p.join();
             }
             assertNull(problem.get());
-            assertEquals(STEPS, sim.steps());
+            assertEquals(steps, sim.steps());
+            assertTrue(steps >= STEPS);
             assertTrue(maxPending <= Simulation.MAX_PENDING_COMMANDS, "pending " + maxPending);
             assertTrue(maxFlows <= Simulation.MAX_FLOWS, "flows " + maxFlows);
             assertTrue(sim.flowCount() <= Simulation.MAX_FLOWS, "flows reserved " + sim.flowCount());
