@@ -13,7 +13,10 @@ final class OutputPaths {
     private OutputPaths() {
     }
 
-    /** A file the command will write: not a folder, in an existing folder, writable. */
+    /**
+     * A file the command will write: not a folder, writable; a missing folder for it is checked like
+     * {@link #folder} and made now (as {@code mkdir -p} would), so the write at the end finds it.
+     */
     static void file(CommandLine cl, String flag, Path file) {
         Path abs = file.toAbsolutePath().normalize();
         if (Files.isDirectory(abs)) {
@@ -26,8 +29,20 @@ final class OutputPaths {
             return;
         }
         Path parent = abs.getParent();
-        if (parent == null || !Files.isDirectory(parent)) {
-            throw new ParameterException(cl, flag + " " + file + ": cannot write it: no such folder " + parent);
+        if (parent == null) {
+            throw new ParameterException(cl, flag + " " + file + ": cannot write it");
+        }
+        if (!Files.exists(parent)) {
+            folder(cl, flag, parent);
+            try {
+                Files.createDirectories(parent);
+            } catch (java.io.IOException e) {
+                throw new ParameterException(cl, flag + " " + file + ": cannot create its folder " + parent + ": "
+                        + e.getMessage());
+            }
+        }
+        if (!Files.isDirectory(parent)) {
+            throw new ParameterException(cl, flag + " " + file + ": cannot write it: " + parent + " is not a folder");
         }
         if (!Files.isWritable(parent)) {
             throw new ParameterException(cl, flag + " " + file + ": cannot create files in " + parent

@@ -65,10 +65,17 @@ class SimulateCliTest {
 
     @Test
     void anUnwritableOutputFileIsBadInputFoundBeforeTheRun() {
-        Path bad = dir.resolve("no/such/folder/x.csv");
+        Path aFile = dir.resolve("a-file.txt");
+        try {
+            java.nio.file.Files.writeString(aFile, "x");
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        Path bad = aFile.resolve("no/such/folder/x.csv");
         CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--dump", bad.toString());
         assertEquals(2, r.code());
-        assertTrue(r.err().contains("--dump " + bad + ": cannot write it: no such folder"), r.err());
+        assertTrue(r.err().contains("--dump " + bad.getParent() + ": cannot create it: " + aFile + " is a file"),
+                r.err());
         assertFalse(r.err().contains("\tat "), r.err());
         assertFalse(r.out().contains("state hash"), "nothing ran: " + r.out());
         CliTest.Result v = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--json", dir.toString(),
