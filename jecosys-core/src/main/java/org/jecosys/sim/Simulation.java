@@ -2,26 +2,17 @@ package org.jecosys.sim;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
 import org.jecosys.anim.AnimationView;
 import org.jecosys.anim.SpringKinds;
-import org.jecosys.field.FieldBounds;
 import org.jecosys.field.FieldCounters;
 import org.jecosys.field.ForceField;
-import org.joml.FrustumIntersection;
-import org.joml.Matrix4f;
 import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
-import org.jecosys.math.Rng;
 import org.jecosys.math.Camera;
-import org.jecosys.plant.SpeciesDef;
-import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.WindField;
 import org.jecosys.wind.WindSource;
@@ -109,26 +100,11 @@ public final class Simulation implements AutoCloseable {
     private final FrameExchange exchange;
     private final WorkerPool pool;
     private final ChunkAnimator chunkAnimator;
-    private final float[][] windX = new float[2][];
-    private final float[][] windZ = new float[2][];
-    private final boolean[][] visible = new boolean[2][];
-    private final double[][] eye = new double[2][3];
-    /** Per buffer, the sub-interval boundary of a switch of the flows in its step, or -1 (SpringKinds.prepare). */
-    private final int[] edge = {-1, -1};
-    private final FrustumIntersection[] frustum = {new FrustumIntersection(), new FrustumIntersection()};
-    private final Matrix4f viewProjection = new Matrix4f();
+    /** Double-buffered field samples (wind, visibility, eye, frustum, flow switches). */
+    private final FieldSampler sampler;
     private final DrawDecision draw;
-    private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
-    /** Commands queued and not yet taken by a step; at most {@link #MAX_PENDING_COMMANDS}. */
-    private final AtomicInteger pendingCommands = new AtomicInteger();
-    /** Every flow id held or queued, with its owner (the source, or a blast's token). */
-    private final ConcurrentHashMap<String, Object> flowIds = new ConcurrentHashMap<>();
-    /** Flows held or queued; at most {@link #MAX_FLOWS}. */
-    private final AtomicInteger flowsReserved = new AtomicInteger();
-    /** Blasts made by {@link #blast}, with their id tokens, until they expire. Stepping thread. */
-    private WindSource[] blasts = new WindSource[4];
-    private Object[] blastTokens = new Object[4];
-    private int blastCount;
+    /** The command queue and the flow-id reservations. */
+    private final Commands commands;
     private final double fixedStep;
     private final int maxSubSteps;
     private final int subIntervals;
@@ -161,49 +137,19 @@ public final class Simulation implements AutoCloseable {
             throw new IllegalArgumentException("a simulation holds at most " + MAX_FLOWS + " flows, the def has "
                     + wind.size());
         }
-        for (int i = 0; i < wind.size(); i++) {
-            flowIds.put(wind.get(i).id(), wind.get(i));
-        }
-        flowsReserved.set(wind.size());
-        Heightfield hf = world.terrain().heightfield();
+        commands = new Commands(wind);
         int plants = world.plantCount();
-        float[] xs = new float[plants];
-        float[] zs = new float[plants];
-        float[] ys = new float[plants];
-        for (int p = 0; p < plants; p++) {
-            xs[p] = world.plantX(p);
-            ys[p] = world.plantY(p);
-            zs[p] = world.plantZ(p);
-        }
-        double plantHeight = 0;
-        for (SpeciesDef s : def.species()) {
-            double h = 0;
-            for (var c : s.components()) {
-                h += c.length();
-            }
-            plantHeight = Math.max(plantHeight, h);
-        }
-        field = Require.nonNull("the force field factory's result",
-                fields.create(new FieldBounds(hf.minX(), hf.minZ(), hf.maxX(), hf.maxZ(), hf.minHeight(),
-                        hf.maxHeight() + plantHeight), def.field(), wind, xs.clone(), zs.clone()));
-        if (field.plantCount() != plants) {
-            throw new IllegalArgumentException("the force field must hold the world's " + plants + " plants, it holds "
-                    + field.plantCount());
-        }
+        float[][] positions = SimulationBuild.positions(world);
+        float[] xs = positions[0];
+        float[] ys = positions[1];
+        float[] zs = positions[2];
+        field = SimulationBuild.field(world, def, fields, wind, xs, zs);
         kinds = SpringKinds.of(world.plants().species());
         int comps = world.componentCount();
-        int[] first = new int[plants + 1];
-        for (int p = 0; p < plants; p++) {
-            first[p] = world.firstComponent(p);
-        }
-        first[plants] = comps;
+        int[] first = SimulationBuild.firstComponents(world);
         state = AnimationStates.of(world, kinds, first, xs, ys, zs, def.seed());
-        for (int b = 0; b < 2; b++) {
-            windX[b] = new float[plants];
-            windZ[b] = new float[plants];
-            visible[b] = new boolean[plants];
-        }
-        settleEverywhere(xs, zs);
+        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals);
+        settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
         exchange = new FrameExchange(plants, comps);
         for (int i = 0; i < 3; i++) {
             Frame f = exchange.frame(i);
@@ -221,8 +167,8 @@ public final class Simulation implements AutoCloseable {
                 return state.lodEdge(sp, l);
             }
         });
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, windX, windZ, visible, eye,
-                ad.seed(), draw, frustum);
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler.windX, sampler.windZ,
+                sampler.visible, sampler.eye, ad.seed(), draw, sampler.frustum);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 
@@ -354,18 +300,18 @@ public final class Simulation implements AutoCloseable {
             throw new IllegalStateException("the simulation is closed");
         }
         steppingThread = Thread.currentThread().getId();
-        drainCommands();
+        commands.drain();
         if (!primed) {
             prime(camera);
             primed = true;
         }
-        kinds.prepare(fixedStep, subIntervals, edge[current]);
+        kinds.prepare(fixedStep, subIntervals, sampler.edge[current]);
         Frame f = exchange.back();
         exchange.beginWrite();
         chunkAnimator.prepare(mode, current, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
         long t0 = System.nanoTime();
         pool.start();
-        updateField(camera, 1 - current);
+        sampler.update(camera, 1 - current, fieldEnabled);
         long fieldNanos = System.nanoTime() - t0;
         pool.await();
         current = 1 - current;
@@ -380,33 +326,6 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * At construction, in CONSTRAINT mode with the paper's quadtree field on: puts every plant at the
-     * equilibrium of the flows at its own position at t = 0 (one evaluation per plant, once), so that the frames a
-     * reader sees before the first step already show the meadow in the wind. The first step then
-     * settles the plants it sees on the field's own wind at t = 0 ({@link #prime}). Build time;
-     * allocates.
-     */
-    private void settleEverywhere(float[] xs, float[] zs) {
-        if (mode != AnimationMode.CONSTRAINT || !fieldEnabled
-                || !(field instanceof org.jecosys.field.QuadtreeForceField)) {
-            return; // a game's own field may blow other winds than the flows: the first step settles on it
-        }
-        settledAtBuild = true;
-        int n = xs.length;
-        float[] wx = new float[n];
-        float[] wz = new float[n];
-        boolean[] all = new boolean[n];
-        org.joml.Vector2d u = new org.joml.Vector2d();
-        for (int p = 0; p < n; p++) {
-            wind.velocity(xs[p], zs[p], u);
-            wx[p] = (float) u.x;
-            wz[p] = (float) u.y;
-            all[p] = true;
-        }
-        state.settle(0, n, org.jecosys.anim.AnimationStep.of(mode, wx, wz, all));
-    }
-
-    /**
      * Before the first step: samples the field at t = 0 and, in CONSTRAINT mode, puts the plants
      * visible then at the equilibrium of that wind (the force each starts its first step from),
      * unless the constructor already put every plant at the equilibrium of the flows at t = 0 and
@@ -416,68 +335,17 @@ public final class Simulation implements AutoCloseable {
      */
     private void prime(Camera camera) {
         int b = 1 - current;
-        sampleField(camera, b);
+        sampler.sample(camera, b, fieldEnabled);
         if (mode == AnimationMode.CONSTRAINT && !(settledAtBuild && fieldEnabled)) {
             state.settle(0, world.plantCount(),
-                    org.jecosys.anim.AnimationStep.of(mode, windX[b], windZ[b], visible[b]));
+                    org.jecosys.anim.AnimationStep.of(mode, sampler.windX[b], sampler.windZ[b], sampler.visible[b]));
         }
-        updateField(camera, current);
-    }
-
-    /**
-     * Advances the wind one fixed step, notes where in the step the flows switched (if they did), and
-     * writes the field's result for its end into buffer b.
-     */
-    private void updateField(Camera camera, int b) {
-        wind.advance(fixedStep);
-        edge[b] = SpringKinds.edgeBoundary(wind.lastEdge(), wind.time(), fixedStep, subIntervals);
-        releaseExpiredBlasts();
-        sampleField(camera, b);
-    }
-
-    /** Writes the field's result for the wind's current time into buffer b. */
-    private void sampleField(Camera camera, int b) {
-        eye[b][0] = camera.x();
-        eye[b][1] = camera.y();
-        eye[b][2] = camera.z();
-        frustum[b].set(camera.viewProjection(viewProjection), false);
-        int n = world.plantCount();
-        if (fieldEnabled) {
-            field.update(camera);
-            field.gather(0, n, windX[b], windZ[b], visible[b]);
-        } else {
-            java.util.Arrays.fill(windX[b], 0f);
-            java.util.Arrays.fill(windZ[b], 0f);
-            java.util.Arrays.fill(visible[b], true);
-        }
-    }
-
-    /** Applies the commands queued when it starts, no more (later ones wait for the next step). */
-    private void drainCommands() {
-        for (int n = pendingCommands.get(); n > 0; n--) {
-            Runnable r = commands.poll();
-            if (r == null) {
-                return; // counted but not yet in the queue: the next step takes it
-            }
-            pendingCommands.decrementAndGet();
-            r.run();
-        }
-    }
-
-    /** Queues a command, or refuses it past {@link #MAX_PENDING_COMMANDS}. */
-    private void enqueue(Runnable command) {
-        if (pendingCommands.incrementAndGet() > MAX_PENDING_COMMANDS) {
-            pendingCommands.decrementAndGet();
-            throw new IllegalStateException("the simulation's command queue is full: " + MAX_PENDING_COMMANDS
-                    + " commands wait for the next step (Simulation.MAX_PENDING_COMMANDS); step more often or "
-                    + "send fewer commands");
-        }
-        commands.add(command);
+        sampler.update(camera, current, fieldEnabled);
     }
 
     /** {@return the commands queued and not yet applied, at most {@link #MAX_PENDING_COMMANDS}} Any thread. */
     public int pendingCommands() {
-        return Math.min(pendingCommands.get(), MAX_PENDING_COMMANDS);
+        return commands.pending();
     }
 
     /**
@@ -485,65 +353,7 @@ public final class Simulation implements AutoCloseable {
      * {@link #MAX_FLOWS}} Any thread.
      */
     public int flowCount() {
-        return flowsReserved.get();
-    }
-
-    /** Reserves a flow id for {@code owner}, refusing a duplicate or a flow past {@link #MAX_FLOWS}. */
-    private void reserveFlow(String id, Object owner) {
-        Require.nonNull("id", id);
-        if (id.isEmpty()) {
-            throw new IllegalArgumentException("a flow id must not be empty");
-        }
-        if (flowsReserved.incrementAndGet() > MAX_FLOWS) {
-            flowsReserved.decrementAndGet();
-            throw new IllegalStateException("the simulation holds " + MAX_FLOWS + " flows (Simulation.MAX_FLOWS, "
-                    + "queued ones included): remove one before adding '" + id + "'");
-        }
-        if (flowIds.putIfAbsent(id, owner) != null) {
-            flowsReserved.decrementAndGet();
-            throw new IllegalArgumentException("a flow with id '" + id + "' is already in the simulation (or "
-                    + "queued): flow ids are unique");
-        }
-    }
-
-    private void releaseFlow(String id, Object owner) {
-        if (id != null && flowIds.remove(id, owner)) {
-            flowsReserved.decrementAndGet();
-        }
-    }
-
-    /** Queues a command for a flow whose id was just reserved; releases the id when it is refused. */
-    private void enqueueReserved(String id, Object owner, Runnable command) {
-        try {
-            enqueue(command);
-        } catch (RuntimeException e) {
-            releaseFlow(id, owner);
-            throw e;
-        }
-    }
-
-    /** Frees the ids of blasts the wind field removed at their end. Stepping thread; no allocation. */
-    private void releaseExpiredBlasts() {
-        double now = wind.time();
-        for (int i = blastCount - 1; i >= 0; i--) {
-            if (blasts[i].expired(now)) {
-                releaseFlow(blasts[i].id(), blastTokens[i]);
-                blastCount--;
-                blasts[i] = blasts[blastCount];
-                blastTokens[i] = blastTokens[blastCount];
-                blasts[blastCount] = null;
-                blastTokens[blastCount] = null;
-            }
-        }
-    }
-
-    private void trackBlast(WindSource b, Object token) {
-        if (blastCount == blasts.length) {
-            blasts = java.util.Arrays.copyOf(blasts, 2 * blastCount);
-            blastTokens = java.util.Arrays.copyOf(blastTokens, 2 * blastCount);
-        }
-        blasts[blastCount] = b;
-        blastTokens[blastCount++] = token;
+        return commands.flowCount();
     }
 
     /**
@@ -606,8 +416,8 @@ public final class Simulation implements AutoCloseable {
     public WindSource addFlow(WindSource source) {
         Require.nonNull("source", source);
         String id = source.id();
-        reserveFlow(id, source);
-        enqueueReserved(id, source, () -> wind.add(source));
+        commands.reserveFlow(id, source);
+        commands.enqueueReserved(id, source, () -> wind.add(source));
         return source;
     }
 
@@ -620,8 +430,8 @@ public final class Simulation implements AutoCloseable {
      */
     public void removeFlow(WindSource source) {
         Require.nonNull("source", source);
-        enqueue(() -> wind.remove(source));
-        releaseFlow(source.id(), source);
+        commands.enqueue(() -> wind.remove(source));
+        commands.releaseFlow(source.id(), source);
     }
 
     /**
@@ -656,7 +466,7 @@ public final class Simulation implements AutoCloseable {
         Require.nonNull("agent", agent);
         Require.range("x", x, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
         Require.range("z", z, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
-        enqueue(() -> agent.setCentre(x, z));
+        commands.enqueue(() -> agent.setCentre(x, z));
     }
 
     /**
@@ -678,8 +488,8 @@ public final class Simulation implements AutoCloseable {
         FlowDef.builder(id, org.jecosys.wind.FlowKind.BLAST).centre(x, z).strength(strength).duration(duration)
                 .build(); // checks every value with the scene schema's ranges
         Object token = new Object();
-        reserveFlow(id, token);
-        enqueueReserved(id, token, () -> trackBlast(wind.blast(id, x, z, strength, duration), token));
+        commands.reserveFlow(id, token);
+        commands.enqueueReserved(id, token, () -> commands.trackBlast(wind.blast(id, x, z, strength, duration), token));
     }
 
     /**
@@ -691,7 +501,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void setFlowEnabled(WindSource source, boolean enabled) {
         Require.nonNull("source", source);
-        enqueue(() -> source.setEnabled(enabled));
+        commands.enqueue(() -> source.setEnabled(enabled));
     }
 
     /**
@@ -702,7 +512,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void setMode(AnimationMode mode) {
         Require.nonNull("mode", mode);
-        enqueue(() -> this.mode = mode);
+        commands.enqueue(() -> this.mode = mode);
     }
 
     /**
@@ -712,7 +522,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setFieldEnabled(boolean enabled) {
-        enqueue(() -> fieldEnabled = enabled);
+        commands.enqueue(() -> fieldEnabled = enabled);
     }
 
     /**
@@ -725,7 +535,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void setLodTransition(double metres) {
         Require.range("lodTransition", metres, 0, 10);
-        enqueue(() -> draw.setTransition(metres));
+        commands.enqueue(() -> draw.setTransition(metres));
     }
 
     /**
@@ -751,7 +561,7 @@ public final class Simulation implements AutoCloseable {
             prev = maxDistances[i];
         }
         double[] copy = maxDistances.clone();
-        enqueue(() -> state.setLodDistances(species, copy));
+        commands.enqueue(() -> state.setLodDistances(species, copy));
     }
 
     /**
@@ -773,7 +583,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void setLodScale(double scale) {
         Require.range("scale", scale, 0.01, 100);
-        enqueue(() -> state.setLodScale(scale));
+        commands.enqueue(() -> state.setLodScale(scale));
     }
 
     /** {@return the animation mode of the last step} Stepping thread. */
@@ -880,7 +690,7 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public float windX(int p) {
-        return windX[1 - current][p];
+        return sampler.windX[1 - current][p];
     }
 
     /**
@@ -889,7 +699,7 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public float windZ(int p) {
-        return windZ[1 - current][p];
+        return sampler.windZ[1 - current][p];
     }
 
     /**
@@ -898,7 +708,7 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public boolean plantVisible(int p) {
-        return visible[1 - current][p];
+        return sampler.visible[1 - current][p];
     }
 
     /** {@return the {@link AnimationState#stateHash()} of the current state} Stepping thread, between steps. */

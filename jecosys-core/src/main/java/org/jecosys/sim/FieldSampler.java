@@ -1,0 +1,92 @@
+package org.jecosys.sim;
+
+import org.jecosys.anim.SpringKinds;
+import org.jecosys.field.ForceField;
+import org.jecosys.math.Camera;
+import org.jecosys.wind.WindField;
+import org.joml.FrustumIntersection;
+import org.joml.Matrix4f;
+
+/**
+ * The per-step field side of a {@link Simulation} (paper §3, §5.1): advances the wind clock one
+ * fixed step, notes where in the step the flows switched, and samples the force field into one of
+ * two buffers (wind X and Z in m/s at each plant's node, visibility, the eye in metres and the view
+ * frustum), so that the workers animate from one buffer while the stepping thread fills the other.
+ *
+ * <p>Threads: {@link #update} and {@link #sample} only on the stepping thread, while the workers
+ * read the other buffer (the arrays are handed to {@link ChunkAnimator} at construction). Allocation:
+ * the buffers are allocated once at construction; sampling allocates nothing.
+ */
+final class FieldSampler {
+    /** Per buffer, the wind X (m/s) at each plant's node. */
+    final float[][] windX = new float[2][];
+    /** Per buffer, the wind Z (m/s) at each plant's node. */
+    final float[][] windZ = new float[2][];
+    /** Per buffer, whether each plant is visible. */
+    final boolean[][] visible = new boolean[2][];
+    /** Per buffer, the eye position (x, y, z), metres. */
+    final double[][] eye = new double[2][3];
+    /** Per buffer, the sub-interval boundary of a switch of the flows in its step, or -1 (SpringKinds.prepare). */
+    final int[] edge = {-1, -1};
+    /** Per buffer, the camera's view frustum. */
+    final FrustumIntersection[] frustum = {new FrustumIntersection(), new FrustumIntersection()};
+    private final Matrix4f viewProjection = new Matrix4f();
+    private final WindField wind;
+    private final ForceField field;
+    private final Commands commands;
+    private final int plants;
+    private final double fixedStep;
+    private final int subIntervals;
+
+    /**
+     * Buffers for {@code plants} plants. Build time; allocates.
+     *
+     * @param wind         the simulation's flows, advanced by {@link #update}
+     * @param field        the force field sampled
+     * @param commands     frees the ids of blasts that expire
+     * @param plants       number of plants
+     * @param fixedStep    fixed step, seconds
+     * @param subIntervals spring sub-intervals per step
+     */
+    FieldSampler(WindField wind, ForceField field, Commands commands, int plants, double fixedStep,
+            int subIntervals) {
+        this.wind = wind;
+        this.field = field;
+        this.commands = commands;
+        this.plants = plants;
+        this.fixedStep = fixedStep;
+        this.subIntervals = subIntervals;
+        for (int b = 0; b < 2; b++) {
+            windX[b] = new float[plants];
+            windZ[b] = new float[plants];
+            visible[b] = new boolean[plants];
+        }
+    }
+
+    /**
+     * Advances the wind one fixed step, notes where in the step the flows switched (if they did), and
+     * writes the field's result for its end into buffer b.
+     */
+    void update(Camera camera, int b, boolean fieldEnabled) {
+        wind.advance(fixedStep);
+        edge[b] = SpringKinds.edgeBoundary(wind.lastEdge(), wind.time(), fixedStep, subIntervals);
+        commands.releaseExpiredBlasts(wind.time());
+        sample(camera, b, fieldEnabled);
+    }
+
+    /** Writes the field's result for the wind's current time into buffer b. */
+    void sample(Camera camera, int b, boolean fieldEnabled) {
+        eye[b][0] = camera.x();
+        eye[b][1] = camera.y();
+        eye[b][2] = camera.z();
+        frustum[b].set(camera.viewProjection(viewProjection), false);
+        if (fieldEnabled) {
+            field.update(camera);
+            field.gather(0, plants, windX[b], windZ[b], visible[b]);
+        } else {
+            java.util.Arrays.fill(windX[b], 0f);
+            java.util.Arrays.fill(windZ[b], 0f);
+            java.util.Arrays.fill(visible[b], true);
+        }
+    }
+}
