@@ -22,16 +22,6 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
-import static org.lwjgl.opengl.GL30C.GL_RG32F;
-import static org.lwjgl.opengl.GL30C.GL_RG32I;
-import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
-import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
-import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
-import static org.lwjgl.opengl.GL30C.glBeginTransformFeedback;
-import static org.lwjgl.opengl.GL30C.glBindBufferBase;
-import static org.lwjgl.opengl.GL30C.glEndTransformFeedback;
-import static org.lwjgl.opengl.GL11C.GL_POINTS;
-import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
@@ -70,6 +60,8 @@ import org.lwjgl.system.MemoryUtil;
  * leaf's true width covers as opacity: the line levels are drawn last, blended
  * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
+ * The per-component uploads and the resolve pass live in {@code ComponentResolver}, which this
+ * renderer owns and closes.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
@@ -97,22 +89,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final GlProgram lineProgram;
     private final GlBuffer poseBuffer;
     private final GlBufferTexture poseTexture;
-    private final GlBuffer componentBuffer;
-    private final GlBufferTexture componentTexture;
-    private final GlProgram resolveProgram;
-    private final GlBuffer staticBuffer;
-    private final GlBufferTexture staticTexture;
-    private final GlBuffer linkBuffer;
-    private final GlBufferTexture linkTexture;
-    private final GlBuffer dynamicBuffer;
-    private final GlBufferTexture dynamicTexture;
-    private final GlBuffer instanceBuffer;
-    private final GlBufferTexture instanceTexture;
-    private final GlVertexArray pointsVao;
-    private final IntBuffer instanceStaging;
-    private final int uInstanceBase;
-    private final int uSlots;
-    private long uploadedBytes;
+    private final ComponentResolver resolver;
     private final GlVertexArray[] vaos;
     private final int[] indexCount;
     private final FloatBuffer matrix;
@@ -156,7 +133,6 @@ public final class PlantRenderer implements AutoCloseable {
         long texels = poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
-        IntBuffer instances = null;
         FloatBuffer mat = null;
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
@@ -165,24 +141,11 @@ public final class PlantRenderer implements AutoCloseable {
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
             lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
-            resolveProgram = own(new GlProgram(gl.tracker(), "plant_resolve.vert", null, "vRecord0", "vRecord1"));
             poseBuffer = own(uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
-            instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
-            componentBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER, 4L * RECORD_FLOATS * maxComponents));
-            componentTexture = own(new GlBufferTexture(gl.tracker(), componentBuffer, GL_RGBA32F));
-            staticBuffer = own(uploadStatic(gl.tracker(), world, poseTexel));
-            staticTexture = own(new GlBufferTexture(gl.tracker(), staticBuffer, GL_RGBA32F));
-            linkBuffer = own(uploadLinks(gl.tracker(), world));
-            linkTexture = own(new GlBufferTexture(gl.tracker(), linkBuffer, GL_RGBA32I));
-            dynamicBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
-                    * components));
-            dynamicTexture = own(new GlBufferTexture(gl.tracker(), dynamicBuffer, GL_RG32F));
-            instanceBuffer = own(GlBuffer.dynamic(gl.tracker(), GL_TEXTURE_BUFFER,
-                    8L * Math.max(1, batches.maxInstances())));
-            instanceTexture = own(new GlBufferTexture(gl.tracker(), instanceBuffer, GL_RG32I));
-            pointsVao = own(new GlVertexArray(gl.tracker()));
+            resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
+                    maxComponents));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -195,21 +158,11 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         } catch (RuntimeException | Error e) {
-            MemoryUtil.memFree(instances);
             MemoryUtil.memFree(mat);
             closeReverse(owned);
             throw e;
         }
-        instanceStaging = instances;
         matrix = mat;
-        resolveProgram.use();
-        glUniform1i(resolveProgram.uniform("uPoses"), 0);
-        glUniform1i(resolveProgram.uniform("uInstances"), 1);
-        glUniform1i(resolveProgram.uniform("uDynamic"), 2);
-        glUniform1i(resolveProgram.uniform("uStatic"), 3);
-        glUniform1i(resolveProgram.uniform("uLinks"), 4);
-        uInstanceBase = resolveProgram.uniform("uInstanceBase");
-        uSlots = resolveProgram.uniform("uSlots");
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
         uPixelScale = lineProgram.uniform("uPixelScale");
@@ -390,8 +343,8 @@ public final class PlantRenderer implements AutoCloseable {
         if (!pending) {
             return;
         }
-        upload(frame);
-        resolve();
+        resolver.upload(frame);
+        resolver.resolve();
         camera.viewProjection(viewProj);
         viewProj.get(matrix);
         float ex = (float) camera.x();
@@ -404,7 +357,7 @@ public final class PlantRenderer implements AutoCloseable {
         program.use();
         triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         poseTexture.bind(0);
-        componentTexture.bind(1);
+        resolver.bindRecords(1);
         drawLists(false, triangleUniforms);
     }
 
@@ -420,7 +373,7 @@ public final class PlantRenderer implements AutoCloseable {
         pending = false;
         lineProgram.use();
         poseTexture.bind(0);
-        componentTexture.bind(1);
+        resolver.bindRecords(1);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
@@ -449,142 +402,16 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Uploads this frame's instance records (8 bytes per drawn plant and level) and the render states
-     * of the drawn plants' components (8 bytes per component, {@link Frame#renderStates()}, as the
-     * workers wrote them), in the few ranges that hold them ({@link PlantBatches#runStart}; the
-     * plants' spatial order keeps them few). Render thread; no allocation.
-     */
-    private void upload(Frame frame) {
-        int n = batches.writeInstances(instanceStaging);
-        instanceBuffer.orphan();
-        instanceBuffer.upload(0, instanceStaging);
-        long base = MemoryUtil.memAddress0(frame.renderStates());
-        long bytes = 0;
-        for (int i = 0, runs = batches.runs(); i < runs; i++) {
-            long c0 = batches.runStart(i);
-            long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
-            dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
-            bytes += size;
-        }
-        uploadedBytes = 8L * n + bytes;
-    }
-
-    /**
-     * The per-component pass on the GPU: one point per drawn component through
-     * {@code plant_resolve.vert}, rasterisation discarded, its records captured by transform feedback
-     * into the component buffer in list order. Render thread; no allocation.
-     */
-    private void resolve() {
-        glEnable(GL_RASTERIZER_DISCARD);
-        resolveProgram.use();
-        poseTexture.bind(0);
-        instanceTexture.bind(1);
-        dynamicTexture.bind(2);
-        staticTexture.bind(3);
-        linkTexture.bind(4);
-        pointsVao.bind();
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
-        glBeginTransformFeedback(GL_POINTS);
-        for (int li = 0, lists = batches.listCount(); li < lists; li++) {
-            int n = batches.count(li);
-            if (n == 0) {
-                continue;
-            }
-            int slots = batches.slots(batches.speciesOf(li));
-            glUniform1i(uInstanceBase, batches.instanceOffset(li));
-            glUniform1i(uSlots, slots);
-            glDrawArrays(GL_POINTS, 0, n * slots);
-        }
-        glEndTransformFeedback();
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-        glDisable(GL_RASTERIZER_DISCARD);
-    }
-
-    /**
      * Reads back the component records of the last {@link #drawNear} (tests). Render thread; waits
      * for the GPU.
      */
     void readRecords(FloatBuffer dest) {
-        if (!dest.isDirect()) {
-            throw new IllegalArgumentException("dest must be a direct buffer");
-        }
-        dest.clear();
-        dest.limit(RECORD_FLOATS * batches.components());
-        componentBuffer.bind();
-        org.lwjgl.opengl.GL15C.glGetBufferSubData(GL_TEXTURE_BUFFER, 0, dest);
+        resolver.readRecords(dest);
     }
 
     /** {@return bytes uploaded by the last {@link #drawNear}: instance records and component render states} */
     public long uploadedBytes() {
-        return uploadedBytes;
-    }
-
-    /**
-     * Static per-component data for the resolve pass, one RGBA32F texel per component: the world
-     * position of a root component's base (its plant's base plus the slot's ground offset rotated by
-     * the plant's rest azimuth; 0 for attached components) and the texel of pose 0, point 0 of its
-     * pose table.
-     */
-    private static GlBuffer uploadStatic(GlTracker t, World world, int[][][] poseTexel) {
-        int n = Math.max(1, world.componentCount());
-        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
-        try {
-            for (int p = 0; p < world.plantCount(); p++) {
-                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
-                int v = world.plantVariant(p);
-                int s = world.plantSpecies(p);
-                double rest = world.plantRestAzimuth(p);
-                double rc = Math.cos(rest);
-                double rs = Math.sin(rest);
-                for (int slot = 0; slot < m.slotCount(); slot++) {
-                    int o = 4 * (world.firstComponent(p) + slot);
-                    if (m.slotParent(slot) < 0) {
-                        double ox = m.slotBaseX(slot);
-                        double oz = m.slotBaseZ(slot);
-                        b.put(o, world.plantX(p) + (float) (ox * rc - oz * rs));
-                        b.put(o + 1, world.plantY(p));
-                        b.put(o + 2, world.plantZ(p) + (float) (ox * rs + oz * rc));
-                    } else {
-                        b.put(o, 0f).put(o + 1, 0f).put(o + 2, 0f);
-                    }
-                    b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
-                }
-            }
-            b.position(0).limit(4 * n);
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(b);
-        }
-    }
-
-    /**
-     * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
-     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
-     * tip point in a pose (where its children attach), and its pose count.
-     */
-    private static GlBuffer uploadLinks(GlTracker t, World world) {
-        int n = Math.max(1, world.componentCount());
-        IntBuffer b = MemoryUtil.memAllocInt(4 * n);
-        try {
-            for (int p = 0; p < world.plantCount(); p++) {
-                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
-                int v = world.plantVariant(p);
-                int first = world.firstComponent(p);
-                for (int slot = 0; slot < m.slotCount(); slot++) {
-                    PoseTable pt = m.slotPoseTable(slot, v);
-                    int o = 4 * (first + slot);
-                    int parent = m.slotParent(slot);
-                    b.put(o, parent < 0 ? -1 : first + parent);
-                    b.put(o + 1, 3 * pt.points());
-                    b.put(o + 2, 3 * (pt.points() - 1));
-                    b.put(o + 3, pt.poses());
-                }
-            }
-            b.position(0).limit(4 * n);
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(b);
-        }
+        return resolver.uploadedBytes();
     }
 
     /** Deletes every GL object and frees the staging memory. Render thread; idempotent. */
@@ -595,7 +422,6 @@ public final class PlantRenderer implements AutoCloseable {
         }
         closed = true;
         closeReverse(owned);
-        MemoryUtil.memFree(instanceStaging);
         MemoryUtil.memFree(matrix);
     }
 

@@ -1,0 +1,291 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL11C.GL_POINTS;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glDrawArrays;
+import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
+import static org.lwjgl.opengl.GL30C.GL_RG32F;
+import static org.lwjgl.opengl.GL30C.GL_RG32I;
+import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
+import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
+import static org.lwjgl.opengl.GL30C.glBeginTransformFeedback;
+import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+import static org.lwjgl.opengl.GL30C.glEndTransformFeedback;
+import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
+
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.plant.PoseTable;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The GPU per-component resolve pass of {@link PlantRenderer} (paper §4.1-4.2; docs/ARCHITECTURE.md,
+ * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component, as the
+ * animation workers wrote them) and 8 bytes per drawn plant and level, then resolves each drawn
+ * component's record (2 RGBA32F texels: base, cos/sin of the bend azimuth, pose texel and weight,
+ * dither window) by transform feedback through {@code plant_resolve.vert} into the component buffer
+ * the instanced draws read.
+ *
+ * <p>Holds the resolve program, the static per-component data (root bases and pose texels; parent
+ * links), the dynamic render-state and instance buffers with their buffer textures, the component
+ * record buffer, an empty VAO for the points and the instance staging memory. It reads the renderer's
+ * pose texture and {@link PlantBatches}, which it does not own.
+ *
+ * <p>Render thread only. The constructor allocates (and releases what it had made if it fails);
+ * {@link #upload}, {@link #resolve} and {@link #bindRecords} allocate nothing. {@link #close()} is
+ * idempotent; {@link PlantRenderer} closes it.
+ */
+final class ComponentResolver implements AutoCloseable {
+    private final PlantBatches batches;
+    private final GlBufferTexture poseTexture;
+    private final List<AutoCloseable> owned = new ArrayList<>();
+    private final GlProgram resolveProgram;
+    private final GlBuffer componentBuffer;
+    private final GlBufferTexture componentTexture;
+    private final GlBuffer staticBuffer;
+    private final GlBufferTexture staticTexture;
+    private final GlBuffer linkBuffer;
+    private final GlBufferTexture linkTexture;
+    private final GlBuffer dynamicBuffer;
+    private final GlBufferTexture dynamicTexture;
+    private final GlBuffer instanceBuffer;
+    private final GlBufferTexture instanceTexture;
+    private final GlVertexArray pointsVao;
+    private final IntBuffer instanceStaging;
+    private final int uInstanceBase;
+    private final int uSlots;
+    private long uploadedBytes;
+    private boolean closed;
+
+    /**
+     * Compiles the resolve program, uploads the static per-component data and preallocates the
+     * per-frame buffers. Render thread, context current; allocates. If it throws, every GL object it
+     * had made is deleted again.
+     *
+     * @param t             the tracker of the current context
+     * @param world         the plants
+     * @param batches       the renderer's decision lists (sizes the buffers; read each frame)
+     * @param poseTexture   the renderer's pose table texture (bound to unit 0 while resolving)
+     * @param poseTexel     first texel of each pose table, {@link PlantRenderer#poseTexelLayout}
+     * @param components    component slots to hold render states for, &ge; 1
+     * @param maxComponents most components drawn in one frame, &ge; 1
+     */
+    ComponentResolver(GlTracker t, World world, PlantBatches batches, GlBufferTexture poseTexture,
+                      int[][][] poseTexel, int components, long maxComponents) {
+        this.batches = batches;
+        this.poseTexture = poseTexture;
+        IntBuffer instances = null;
+        try {
+            resolveProgram = own(new GlProgram(t, "plant_resolve.vert", null, "vRecord0", "vRecord1"));
+            instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
+            componentBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
+                    4L * PlantRenderer.RECORD_FLOATS * maxComponents));
+            componentTexture = own(new GlBufferTexture(t, componentBuffer, GL_RGBA32F));
+            staticBuffer = own(uploadStatic(t, world, poseTexel));
+            staticTexture = own(new GlBufferTexture(t, staticBuffer, GL_RGBA32F));
+            linkBuffer = own(uploadLinks(t, world));
+            linkTexture = own(new GlBufferTexture(t, linkBuffer, GL_RGBA32I));
+            dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
+                    * components));
+            dynamicTexture = own(new GlBufferTexture(t, dynamicBuffer, GL_RG32F));
+            instanceBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
+                    8L * Math.max(1, batches.maxInstances())));
+            instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
+            pointsVao = own(new GlVertexArray(t));
+        } catch (RuntimeException | Error e) {
+            MemoryUtil.memFree(instances);
+            PlantRenderer.closeReverse(owned);
+            throw e;
+        }
+        instanceStaging = instances;
+        resolveProgram.use();
+        glUniform1i(resolveProgram.uniform("uPoses"), 0);
+        glUniform1i(resolveProgram.uniform("uInstances"), 1);
+        glUniform1i(resolveProgram.uniform("uDynamic"), 2);
+        glUniform1i(resolveProgram.uniform("uStatic"), 3);
+        glUniform1i(resolveProgram.uniform("uLinks"), 4);
+        uInstanceBase = resolveProgram.uniform("uInstanceBase");
+        uSlots = resolveProgram.uniform("uSlots");
+    }
+
+    private <T extends AutoCloseable> T own(T resource) {
+        owned.add(resource);
+        return resource;
+    }
+
+    /**
+     * Uploads this frame's instance records (8 bytes per drawn plant and level) and the render states
+     * of the drawn plants' components (8 bytes per component, {@link Frame#renderStates()}, as the
+     * workers wrote them), in the few ranges that hold them ({@link PlantBatches#runStart}; the
+     * plants' spatial order keeps them few). Call after {@link PlantBatches#update}. Render thread;
+     * no allocation.
+     *
+     * @param frame the frame being drawn
+     */
+    void upload(Frame frame) {
+        int n = batches.writeInstances(instanceStaging);
+        instanceBuffer.orphan();
+        instanceBuffer.upload(0, instanceStaging);
+        long base = MemoryUtil.memAddress0(frame.renderStates());
+        long bytes = 0;
+        for (int i = 0, runs = batches.runs(); i < runs; i++) {
+            long c0 = batches.runStart(i);
+            long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
+            dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
+            bytes += size;
+        }
+        uploadedBytes = 8L * n + bytes;
+    }
+
+    /**
+     * The per-component pass on the GPU: one point per drawn component through
+     * {@code plant_resolve.vert}, rasterisation discarded, its records captured by transform feedback
+     * into the component buffer in list order. Leaves the resolve program in use. Render thread; no
+     * allocation.
+     */
+    void resolve() {
+        glEnable(GL_RASTERIZER_DISCARD);
+        resolveProgram.use();
+        poseTexture.bind(0);
+        instanceTexture.bind(1);
+        dynamicTexture.bind(2);
+        staticTexture.bind(3);
+        linkTexture.bind(4);
+        pointsVao.bind();
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
+        glBeginTransformFeedback(GL_POINTS);
+        for (int li = 0, lists = batches.listCount(); li < lists; li++) {
+            int n = batches.count(li);
+            if (n == 0) {
+                continue;
+            }
+            int slots = batches.slots(batches.speciesOf(li));
+            glUniform1i(uInstanceBase, batches.instanceOffset(li));
+            glUniform1i(uSlots, slots);
+            glDrawArrays(GL_POINTS, 0, n * slots);
+        }
+        glEndTransformFeedback();
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+        glDisable(GL_RASTERIZER_DISCARD);
+    }
+
+    /**
+     * Binds the component records to a texture unit for the draw programs. Render thread; no
+     * allocation.
+     *
+     * @param unit the texture unit, 0 based
+     */
+    void bindRecords(int unit) {
+        componentTexture.bind(unit);
+    }
+
+    /**
+     * Reads back the component records of the last {@link #resolve} (tests). Render thread; waits
+     * for the GPU.
+     *
+     * @param dest a direct buffer of at least {@link PlantRenderer#RECORD_FLOATS} floats per drawn
+     *             component
+     */
+    void readRecords(FloatBuffer dest) {
+        if (!dest.isDirect()) {
+            throw new IllegalArgumentException("dest must be a direct buffer");
+        }
+        dest.clear();
+        dest.limit(PlantRenderer.RECORD_FLOATS * batches.components());
+        componentBuffer.bind();
+        org.lwjgl.opengl.GL15C.glGetBufferSubData(GL_TEXTURE_BUFFER, 0, dest);
+    }
+
+    /** {@return bytes uploaded by the last {@link #upload}: instance records and component render states} */
+    long uploadedBytes() {
+        return uploadedBytes;
+    }
+
+    /**
+     * Static per-component data for the resolve pass, one RGBA32F texel per component: the world
+     * position of a root component's base (its plant's base plus the slot's ground offset rotated by
+     * the plant's rest azimuth; 0 for attached components) and the texel of pose 0, point 0 of its
+     * pose table.
+     */
+    private static GlBuffer uploadStatic(GlTracker t, World world, int[][][] poseTexel) {
+        int n = Math.max(1, world.componentCount());
+        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int s = world.plantSpecies(p);
+                double rest = world.plantRestAzimuth(p);
+                double rc = Math.cos(rest);
+                double rs = Math.sin(rest);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    int o = 4 * (world.firstComponent(p) + slot);
+                    if (m.slotParent(slot) < 0) {
+                        double ox = m.slotBaseX(slot);
+                        double oz = m.slotBaseZ(slot);
+                        b.put(o, world.plantX(p) + (float) (ox * rc - oz * rs));
+                        b.put(o + 1, world.plantY(p));
+                        b.put(o + 2, world.plantZ(p) + (float) (ox * rs + oz * rc));
+                    } else {
+                        b.put(o, 0f).put(o + 1, 0f).put(o + 2, 0f);
+                    }
+                    b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
+    /**
+     * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
+     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
+     * tip point in a pose (where its children attach), and its pose count.
+     */
+    private static GlBuffer uploadLinks(GlTracker t, World world) {
+        int n = Math.max(1, world.componentCount());
+        IntBuffer b = MemoryUtil.memAllocInt(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int first = world.firstComponent(p);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    PoseTable pt = m.slotPoseTable(slot, v);
+                    int o = 4 * (first + slot);
+                    int parent = m.slotParent(slot);
+                    b.put(o, parent < 0 ? -1 : first + parent);
+                    b.put(o + 1, 3 * pt.points());
+                    b.put(o + 2, 3 * (pt.points() - 1));
+                    b.put(o + 3, pt.poses());
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
+    /** Deletes every GL object it made and frees the staging memory. Render thread; idempotent. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        PlantRenderer.closeReverse(owned);
+        MemoryUtil.memFree(instanceStaging);
+    }
+}
