@@ -12,12 +12,12 @@ package org.jecosys.anim;
  */
 public interface AnimationView {
     /**
-     * The component kinds: their constants and spring coefficients (read them; the simulation
+     * The component kinds: their constants and spring coefficients, read only (the simulation
      * prepares them again at every step).
      *
-     * @return the kinds
+     * @return a read-only view of the kinds
      */
-    SpringKinds kinds();
+    KindsView kinds();
 
     /**
      * Number of plants.

@@ -91,7 +91,7 @@ import org.joml.Vector3f;
  * <p>Build time allocates; {@link #prepare} and every accessor allocate nothing. Not thread-safe:
  * the stepping thread calls {@link #prepare} while the workers are idle; workers then only read.
  */
-public final class SpringKinds {
+public final class SpringKinds implements KindsView {
     /** Coefficients per kind in {@link #coefficients(int, float[], int)}. */
     public static final int STRIDE = 8;
     /** Response-time variants (coefficient rows) per kind; see the class comment. */
@@ -207,11 +207,13 @@ public final class SpringKinds {
      * @param component component type index within the species
      * @param variant   shape variant, in [0, the species' variants)
      */
+    @Override
     public int kindOf(int species, int component, int variant) {
         return speciesBase[species] + component * speciesVariants[species] + variant;
     }
 
     /** {@return the number of kinds} */
+    @Override
     public int count() {
         return count;
     }
@@ -221,6 +223,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double stiffness(int k) {
         return stiffness[k];
     }
@@ -230,6 +233,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double responseTime(int k) {
         return responseTime[k];
     }
@@ -239,6 +243,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double mass(int k) {
         return mass[k];
     }
@@ -248,6 +253,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double dragArea(int k) {
         return dragArea[k];
     }
@@ -257,6 +263,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double gain(int k) {
         return gain[k];
     }
@@ -266,6 +273,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public float restLean(int k) {
         return leanMag[k];
     }
@@ -275,6 +283,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public float length(int k) {
         return length[k];
     }
@@ -284,6 +293,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public float maxBend(int k) {
         return maxBend[k];
     }
@@ -293,6 +303,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public float poseMax(int k) {
         return poseMax[k];
     }
@@ -306,6 +317,7 @@ public final class SpringKinds {
      * @param k kind, in [0, count())
      * @return the class's first kind, in [0, k]
      */
+    @Override
     public int springClass(int k) {
         return springClass[k];
     }
@@ -315,6 +327,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public int lodMask(int k) {
         return lodMask[k];
     }
@@ -325,6 +338,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public float bendLimit(int k) {
         return dMax[k];
     }
@@ -334,6 +348,7 @@ public final class SpringKinds {
      *
      * @param k kind, in [0, count())
      */
+    @Override
     public double responseVariation(int k) {
         return responseVariation[k];
     }
@@ -345,11 +360,13 @@ public final class SpringKinds {
      * @param k kind, in [0, count())
      * @param v response variant, in [0, RESPONSE_VARIANTS)
      */
+    @Override
     public double responseTime(int k, int v) {
         return responseTime[k] * (1 + responseVariation[k] * (v - NOMINAL_VARIANT) / NOMINAL_VARIANT);
     }
 
     /** {@return the step length the coefficients were last prepared for, seconds (NaN before the first)} */
+    @Override
     public double preparedStep() {
         return preparedStep;
     }
@@ -366,6 +383,7 @@ public final class SpringKinds {
      * @return {@code dest}
      * @throws IllegalArgumentException when k is out of range or dest is too short
      */
+    @Override
     public float[] coefficients(int k, float[] dest, int offset) {
         Require.range("k", k, 0, count - 1);
         Require.nonNull("dest", dest);
@@ -384,6 +402,7 @@ public final class SpringKinds {
      * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
      * @return the coefficient (NaN-free after {@link #prepare}; 0 before)
      */
+    @Override
     public float coefficient(int k, int i) {
         return coefficient(k, NOMINAL_VARIANT, i);
     }
@@ -397,6 +416,7 @@ public final class SpringKinds {
      * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
      * @return the coefficient (0 before {@link #prepare})
      */
+    @Override
     public float coefficient(int k, int v, int i) {
         Require.range("k", k, 0, count - 1);
         Require.range("v", v, 0, RESPONSE_VARIANTS - 1);
