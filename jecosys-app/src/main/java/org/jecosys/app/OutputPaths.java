@@ -16,8 +16,12 @@ final class OutputPaths {
     /**
      * A file the command will write: not a folder, writable; a missing folder for it is checked like
      * {@link #folder} and made now (as {@code mkdir -p} would), so the write at the end finds it.
+     * Nothing to check when {@code file} is null (an optional flag not given).
      */
     static void file(CommandLine cl, String flag, Path file) {
+        if (file == null) {
+            return; // the flag was not given
+        }
         Path abs = file.toAbsolutePath().normalize();
         if (Files.isDirectory(abs)) {
             throw new ParameterException(cl, flag + " " + file + ": is a folder; give a file name");

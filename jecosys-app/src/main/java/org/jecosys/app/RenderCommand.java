@@ -43,9 +43,7 @@ final class RenderCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--frames must be in [1, 100000], got " + frames);
         }
         OutputPaths.folder(spec.commandLine(), "--out", out);
-        if (gif != null) {
-            OutputPaths.file(spec.commandLine(), "--gif", gif);
-        }
+        OutputPaths.file(spec.commandLine(), "--gif", gif);
         SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
         if (def == null) {
             return ExitCodes.BAD_INPUT;

@@ -77,12 +77,8 @@ final class SimulateCommand implements Callable<Integer> {
         if (threads != null && (threads < 1 || threads > 256)) {
             throw new ParameterException(spec.commandLine(), "--threads must be in [1, 256], got " + threads);
         }
-        if (json != null) {
-            OutputPaths.file(spec.commandLine(), "--json", json);
-        }
-        if (dump != null) {
-            OutputPaths.file(spec.commandLine(), "--dump", dump);
-        }
+        OutputPaths.file(spec.commandLine(), "--json", json);
+        OutputPaths.file(spec.commandLine(), "--dump", dump);
         SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
         if (def == null) {
             return ExitCodes.BAD_INPUT;

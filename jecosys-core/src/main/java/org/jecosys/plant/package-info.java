@@ -6,8 +6,8 @@
  * pose tables that animation chooses from ({@link org.jecosys.plant.PoseTable},
  * {@link org.jecosys.plant.PoseMapping}), and the levels of detail: per-level point subsets and
  * triangle or line meshes ({@link org.jecosys.plant.ComponentMesh},
- * {@link org.jecosys.plant.LodMesh}) and the distance-based choice between them
- * ({@link org.jecosys.plant.LodChooser}).
+ * {@link org.jecosys.plant.LodMesh}); the distance-based choice between them is made per frame by
+ * {@code org.jecosys.sim.DrawDecision}.
  *
  * <p>Everything here is built once at scene load ({@link org.jecosys.plant.PlantModel},
  * {@link org.jecosys.plant.SpeciesModel}), allocating, and is immutable afterwards: any thread may

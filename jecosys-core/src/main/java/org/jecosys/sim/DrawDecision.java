@@ -3,7 +3,6 @@ package org.jecosys.sim;
 import java.util.List;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
-import org.jecosys.plant.LodChooser;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.SpeciesModel;
 import org.joml.FrustumIntersection;
@@ -25,6 +24,9 @@ import org.joml.Matrix4f;
  * build frames without the animation engine. Distances in metres.
  */
 public final class DrawDecision {
+    /** The transition band a decision starts with, metres (the scene schema's default lodTransition). */
+    public static final double DEFAULT_TRANSITION = 1.0;
+
     /** Where each species' levels end, metres, with any LOD scale applied. */
     interface Edges {
         /** {@return levels of species s} */
@@ -37,7 +39,7 @@ public final class DrawDecision {
     private final World world;
     private final Edges edges;
     private final float[] radius;
-    private volatile double transition = LodChooser.DEFAULT_BAND;
+    private volatile double transition = DEFAULT_TRANSITION;
     private final Matrix4f viewProjection = new Matrix4f();
     private final FrustumIntersection frustum = new FrustumIntersection();
 
@@ -56,7 +58,7 @@ public final class DrawDecision {
      * frames built without a simulation. Allocates.
      *
      * @param world the plants
-     * @return a new decision with the default transition band ({@link LodChooser#DEFAULT_BAND})
+     * @return a new decision with the default transition band ({@link #DEFAULT_TRANSITION})
      */
     public static DrawDecision of(World world) {
         Require.nonNull("world", world);

@@ -132,20 +132,6 @@ public final class Frame {
     }
 
     /**
-     * Writes (poseCoord, bendAzimuth) pairs of components {@code first .. first + count - 1} into
-     * {@code dest} at its position, advancing it: the upload format of the renderer. No allocation.
-     *
-     * @param dest  receives {@code 2 * count} floats
-     * @param first first component, &gt;= 0
-     * @param count number of components; {@code first + count <= componentCount()}
-     */
-    public void putPoseAzimuth(FloatBuffer dest, int first, int count) {
-        for (int i = first, end = first + count; i < end; i++) {
-            dest.put(poseCoord[i]).put(bendAzimuth[i]);
-        }
-    }
-
-    /**
      * Sets component c's pose coordinate and bend azimuth. For tools and tests that build frames
      * without the animation engine (for example a renderer preview); the simulation writes its frames
      * itself. Only on a frame the caller owns (never one read through {@link FrameExchange}). No
