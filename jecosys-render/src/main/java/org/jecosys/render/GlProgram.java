@@ -96,8 +96,28 @@ public final class GlProgram extends GlResource {
         }
     }
 
-    /** Reads a shader's source from the classpath. */
+    /**
+     * Reads a shader's source from the classpath, replacing each line {@code #include "name"} by the
+     * text of the shader resource {@code name} (one level: included files do not include). Allocates.
+     */
     static String source(String resource) {
+        String text = raw(resource);
+        if (!text.contains("#include")) {
+            return text;
+        }
+        StringBuilder out = new StringBuilder(text.length() + 4096);
+        for (String line : text.split("\n", -1)) {
+            String t = line.strip();
+            if (t.startsWith("#include \"") && t.endsWith("\"") && t.length() > 11) {
+                out.append(raw(t.substring(10, t.length() - 1))).append('\n');
+            } else {
+                out.append(line).append('\n');
+            }
+        }
+        return out.toString();
+    }
+
+    private static String raw(String resource) {
         try (InputStream in = GlProgram.class.getResourceAsStream("shaders/" + resource)) {
             if (in == null) {
                 throw new IllegalStateException("shader resource org/jecosys/render/shaders/" + resource + " is missing");
@@ -138,6 +158,17 @@ public final class GlProgram extends GlResource {
             throw new IllegalStateException(name + " has no active uniform '" + uniform + "'");
         }
         return loc;
+    }
+
+    /**
+     * The location of a uniform the linker may have dropped (a shared include a program uses only
+     * in part), or -1, which {@code glUniform*} ignores. Render thread; no allocation.
+     *
+     * @param uniform the uniform's name
+     * @return its location, or -1 when the program has no such active uniform
+     */
+    public int optionalUniform(String uniform) {
+        return glGetUniformLocation(id(), uniform);
     }
 
     @Override

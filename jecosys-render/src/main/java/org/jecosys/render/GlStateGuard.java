@@ -59,7 +59,7 @@ import org.lwjgl.system.MemoryUtil;
  * Saves, and puts back, every piece of GL state the scene renderer changes, so that it composes with a
  * host's own drawing: the program, vertex array and array-buffer bindings, the active texture unit and
  * the buffer textures of the units the renderer uses, the buffers bound to {@code GL_TEXTURE_BUFFER}
- * and {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index 0), rasteriser discard,
+ * and {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index 0), rasteriser discard, alpha-to-coverage,
  * the depth test, depth function and depth mask, face culling, blending (switch, factors, equations),
  * the scissor test and box, the clear colour and the viewport. The framebuffer binding is not changed
  * by the renderer and so not saved.
@@ -76,7 +76,7 @@ final class GlStateGuard implements AutoCloseable {
     static final int UNITS = 5;
 
     private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST,
-        org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD};
+        org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD, org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE};
 
     private final IntBuffer ints = MemoryUtil.memAllocInt(32);
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);

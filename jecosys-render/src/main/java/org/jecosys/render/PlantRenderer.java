@@ -19,6 +19,9 @@ import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
+import static org.lwjgl.opengl.GL30C.glUniform1ui;
+import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
@@ -34,6 +37,8 @@ import java.util.List;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
+import org.jecosys.plant.ComponentDef;
+import org.jecosys.plant.ComponentShape;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
@@ -79,8 +84,19 @@ public final class PlantRenderer implements AutoCloseable {
     static final int RECORD_FLOATS = 8;
     /** Largest index a float holds exactly (texels and components passed as floats). */
     static final int MAX_EXACT = 1 << 24;
-    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride. */
-    private static final int VERTEX_FLOATS = 9;
+    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach. */
+    private static final int VERTEX_FLOATS = 11;
+    /** Vertex kinds of {@code plant_common.glsl}: a blade (leaf), a stem, a petal, a fan head. */
+    static final int BLADE = 0;
+    static final int STEM = 1;
+    static final int PETAL = 2;
+    static final int HEAD = 3;
+    /** Default least width of a thin part, pixels. */
+    public static final float DEFAULT_MIN_PIXELS = 1.0f;
+    /** Default least size of a flower part, pixels. */
+    public static final float DEFAULT_HEAD_PIXELS = 3.0f;
+    /** Default turn of flower parts toward the viewer, degrees. */
+    public static final float DEFAULT_FLOWER_TILT = 30f;
 
     private final World world;
     private final PlantBatches batches;
@@ -96,7 +112,19 @@ public final class PlantRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
-    private final int uPixelScale;
+    private final float[] variation;
+    private float minPixels = DEFAULT_MIN_PIXELS;
+    private float headPixels = DEFAULT_HEAD_PIXELS;
+    private float flowerTilt = (float) Math.toRadians(DEFAULT_FLOWER_TILT);
+    private float sunR = 0.80f;
+    private float sunG = 0.78f;
+    private float sunB = 0.72f;
+    private float ambR = 0.42f;
+    private float ambG = 0.46f;
+    private float ambB = 0.52f;
+    private float patchScale = 20f;
+    private float patchStrength;
+    private int seed;
     private boolean pending;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
@@ -165,7 +193,7 @@ public final class PlantRenderer implements AutoCloseable {
         matrix = mat;
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
-        uPixelScale = lineProgram.uniform("uPixelScale");
+        variation = new float[3 * models.size()];
     }
 
     /**
@@ -181,6 +209,15 @@ public final class PlantRenderer implements AutoCloseable {
         final int fogStart;
         final int fogEnd;
         final int lightDir;
+        final int sunColour;
+        final int ambient;
+        final int pixelScale;
+        final int variation;
+        final int patches;
+        final int seed;
+        final int minPixels;
+        final int headPixels;
+        final int flowerTilt;
 
         Uniforms(GlProgram p) {
             p.use();
@@ -192,14 +229,33 @@ public final class PlantRenderer implements AutoCloseable {
             fogStart = p.uniform("uFogStart");
             fogEnd = p.uniform("uFogEnd");
             lightDir = p.uniform("uLightDir");
+            sunColour = p.uniform("uSunColour");
+            ambient = p.uniform("uAmbient");
+            pixelScale = p.uniform("uPixelScale");
+            variation = p.uniform("uVariation");
+            patches = p.uniform("uPatches");
+            seed = p.uniform("uSeed");
+            minPixels = p.optionalUniform("uMinPixels");
+            headPixels = p.uniform("uHeadPixels");
+            flowerTilt = p.uniform("uFlowerTilt");
             glUniform1i(p.uniform("uPoses"), 0);
             glUniform1i(p.uniform("uComponents"), 1);
         }
 
         /** Sets the per-frame values on the program in use. No allocation. */
-        void frame(FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start, float end,
-                   float lx, float ly, float lz) {
+        void frame(PlantRenderer r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
+                   float end, float lx, float ly, float lz) {
             glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+            glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
+            glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
+            // the seed moves the patch noise (whole lattice cells) and picks the per-plant hashes
+            float ox = (r.seed * 0.618034f) % 1024f;
+            float oz = (r.seed * 0.414214f + 512f) % 1024f;
+            glUniform4f(patches, 1f / r.patchScale, r.patchStrength, ox, oz);
+            glUniform1ui(seed, r.seed);
+            glUniform1f(minPixels, r.minPixels);
+            glUniform1f(headPixels, r.headPixels);
+            glUniform1f(flowerTilt, r.flowerTilt);
             glUniform3f(lightDir, lx, ly, lz);
             glUniform3f(eye, ex, ey, ez);
             glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
@@ -242,13 +298,18 @@ public final class PlantRenderer implements AutoCloseable {
         FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
         IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
         try {
+            float[] reach = new float[m.slotCount()];
+            for (int slot = 0; slot < reach.length; slot++) {
+                reach[slot] = reach(m.slotPoseTable(slot, 0));
+            }
             for (int v = 0; v < n; v++) {
                 int slot = mesh.vertexSlot(v);
-                Rgb rgb = m.component(m.slotComponent(slot)).def().colour();
+                ComponentDef def = m.component(m.slotComponent(slot)).def();
+                Rgb rgb = def.colour();
                 int points = m.slotPoseTable(slot, 0).points();
                 fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
                         .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
-                        .put(3 * points);
+                        .put(3 * points).put(kind(def)).put(reach[slot]);
             }
             for (int i = 0; i < mesh.indexCount(); i++) {
                 iv.put(mesh.index(i));
@@ -264,6 +325,8 @@ public final class PlantRenderer implements AutoCloseable {
             glVertexAttribPointer(1, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 16);
             glEnableVertexAttribArray(2);
             glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
+            glEnableVertexAttribArray(3);
+            glVertexAttribPointer(3, 2, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
             own(GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
             glBindVertexArray(0);
             return vao;
@@ -273,11 +336,123 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
+    /** The vertex kind of a component for {@code plant_common.glsl}. */
+    static int kind(ComponentDef def) {
+        return switch (def.type()) {
+            case STALK -> STEM;
+            case PETAL -> PETAL;
+            case HEAD -> def.shape() == ComponentShape.FAN ? HEAD : PETAL;
+            default -> BLADE;
+        };
+    }
+
+    /** The farthest a point of pose 0 reaches from the component's base, width included, metres. */
+    static float reach(PoseTable table) {
+        double most = 1e-4;
+        for (int j = 0; j < table.points(); j++) {
+            int o = j * PoseTable.STRIDE;
+            double p = Math.sqrt(sq(table.get(o)) + sq(table.get(o + 1)) + sq(table.get(o + 2)));
+            double w = Math.sqrt(sq(table.get(o + 3)) + sq(table.get(o + 4)) + sq(table.get(o + 5)));
+            most = Math.max(most, p + w);
+        }
+        return (float) most;
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+
     private static void checkTexels(String what, long texels, int max) {
         if (texels > max) {
             throw new IllegalStateException("the scene's " + what + " need " + texels
                     + " buffer-texture texels; this GL allows " + max);
         }
+    }
+
+    /**
+     * Sets the light on the plants: sunlight on a surface facing the sun and the sky's ambient light
+     * (the direction goes in with each draw). Render thread; no allocation.
+     *
+     * @param sun     sunlight colour and strength, components in [0, 4]
+     * @param ambient sky light colour and strength, components in [0, 4]
+     * @throws IllegalArgumentException when a component is out of range
+     */
+    public void setLight(Rgb sun, Rgb ambient) {
+        checkLight("sun", sun);
+        checkLight("ambient", ambient);
+        sunR = sun.r();
+        sunG = sun.g();
+        sunB = sun.b();
+        ambR = ambient.r();
+        ambG = ambient.g();
+        ambB = ambient.b();
+    }
+
+    private static void checkLight(String name, Rgb c) {
+        Require.nonNull(name, c);
+        Require.range(name + ".r", c.r(), 0, 4);
+        Require.range(name + ".g", c.g(), 0, 4);
+        Require.range(name + ".b", c.b(), 0, 4);
+    }
+
+    /**
+     * Sets the colour variation of species {@code s}: per plant (and, a third as much, per
+     * component) a hue turn and a brightness factor drawn about-normally with these standard
+     * deviations, and straw-coloured tips. Render thread; no allocation.
+     *
+     * @param s        species index in the world, in [0, species count)
+     * @param hueDeg   standard deviation of the hue turn, degrees, in [0, 60]
+     * @param value    standard deviation of the brightness factor, in [0, 1]
+     * @param dryTips  how far the tips turn toward straw, in [0, 1]
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setVariation(int s, float hueDeg, float value, float dryTips) {
+        Require.range("species", s, 0, variation.length / 3 - 1);
+        Require.range("hue", hueDeg, 0, 60);
+        Require.range("value", value, 0, 1);
+        Require.range("dryTips", dryTips, 0, 1);
+        variation[3 * s] = (float) Math.toRadians(hueDeg);
+        variation[3 * s + 1] = value;
+        variation[3 * s + 2] = dryTips;
+    }
+
+    /**
+     * Sets the healthy/dry patches: a seeded value noise over the ground, of feature size
+     * {@code scale}, turns blades toward straw where it is high, by up to {@code strength}. The seed
+     * also picks each plant's colour variation. Render thread; no allocation.
+     *
+     * @param scale    patch size, metres, in [0.1, 10000]
+     * @param strength how dry the driest patches get, in [0, 1] (0: no patches)
+     * @param seed     any integer
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setPatches(float scale, float strength, int seed) {
+        Require.range("patchScale", scale, 0.1, 10_000);
+        Require.range("patchStrength", strength, 0, 1);
+        this.patchScale = scale;
+        this.patchStrength = strength;
+        this.seed = seed;
+    }
+
+    /**
+     * Sets how thin parts are kept visible: blades and stems are widened across the view to at
+     * least {@code minPixels} (their real share of that width becomes coverage, which
+     * multisampling turns into partly covered pixels), flower parts are scaled up to at least
+     * {@code headPixels} across and turned toward the viewer by {@code flowerTiltDeg}. Render
+     * thread; no allocation.
+     *
+     * @param minPixels     least width of blades and stems, pixels, in [0, 8] (0: off)
+     * @param headPixels    least size of flower parts, pixels, in [0, 32] (0: off)
+     * @param flowerTiltDeg turn of flower parts toward the viewer, degrees, in [0, 90]
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setThinParts(float minPixels, float headPixels, float flowerTiltDeg) {
+        Require.range("minPixels", minPixels, 0, 8);
+        Require.range("headPixels", headPixels, 0, 32);
+        Require.range("flowerTilt", flowerTiltDeg, 0, 90);
+        this.minPixels = minPixels;
+        this.headPixels = headPixels;
+        this.flowerTilt = (float) Math.toRadians(flowerTiltDeg);
     }
 
     /** {@return the GL-free lists, LOD choice and counters (read them after {@link #draw})} */
@@ -350,15 +525,19 @@ public final class PlantRenderer implements AutoCloseable {
         float ex = (float) camera.x();
         float ey = (float) camera.y();
         float ez = (float) camera.z();
+        float px = (float) (camera.viewHeightAtEye() / viewportHeight);
+        float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
         lineProgram.use();
-        lineUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-        glUniform2f(uPixelScale, (float) (camera.viewHeightAtEye() / viewportHeight),
-                (float) (camera.viewHeightPerMetre() / viewportHeight));
+        lineUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        glUniform2f(lineUniforms.pixelScale, px, py);
         program.use();
-        triangleUniforms.frame(matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        triangleUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        glUniform2f(triangleUniforms.pixelScale, px, py);
         poseTexture.bind(0);
         resolver.bindRecords(1);
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         drawLists(false, triangleUniforms);
+        glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
 
     /**
@@ -392,6 +571,7 @@ public final class PlantRenderer implements AutoCloseable {
                     continue;
                 }
                 glUniform1i(u.slotCount, batches.slots(s));
+                glUniform4f(u.variation, variation[3 * s], variation[3 * s + 1], variation[3 * s + 2], 0f);
                 glUniform1i(u.componentBase, batches.componentOffset(li));
                 vaos[li].bind();
                 glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);

@@ -156,6 +156,7 @@ class HostCompositionTest {
         s.put("transform feedback buffer 0", Integer.toString(org.lwjgl.opengl.GL30C.glGetIntegeri(
                 org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0)));
         s.put("rasterizer discard", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD)));
+        s.put("alpha to coverage", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE)));
         for (int u = 0; u < 8; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             s.put("unit " + u + " buffer texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_BUFFER)));

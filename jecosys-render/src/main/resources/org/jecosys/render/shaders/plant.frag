@@ -1,9 +1,11 @@
 #version 330 core
 // Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
 // L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
-// fragment is tested.
-// Colour arrives lit and fogged from the vertex shader.
+// fragment is tested. Colour arrives lit and fogged from the vertex shader; alpha is the share of
+// the drawn width the real part covers (used by alpha-to-coverage when multisampling, ignored
+// otherwise: the plants are drawn opaque).
 in vec3 vColour;
+in float vCover;
 flat in vec2 vKeep;
 out vec4 fragColour;
 
@@ -22,5 +24,5 @@ void main() {
             discard;
         }
     }
-    fragColour = vec4(vColour, 1.0);
+    fragColour = vec4(vColour, vCover);
 }

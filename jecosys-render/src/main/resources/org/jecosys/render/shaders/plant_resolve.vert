@@ -10,7 +10,8 @@
 // tip, which follows its own parent, up to 4 deep.
 //
 // Record: r0 = (base xyz, cos azimuth), r1 = (texel of pose k point 0, blend weight w toward
-// pose k + 1, sin azimuth, dither window).
+// pose k + 1, sin azimuth, packed word: dither window in bits 0-15, an 8-bit hash of the plant in
+// bits 16-23, for its colour variation; exact in a float).
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
 uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend azimuth (radians)
@@ -65,6 +66,12 @@ void main() {
         base += vec3(tip.x * pp.c - tip.z * pp.s, tip.y, tip.x * pp.s + tip.z * pp.c);
     }
     vRecord0 = vec4(base, own.c);
-    vRecord1 = vec4(float(own.texel), own.w, own.s, float(instance.y));
+    // the plant's first component names it: its 8-bit hash rides above the 16-bit dither window
+    uint h = uint(instance.x) * 0x9e3779b9u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    int plantHash = int((h >> 24) & 255u);
+    vRecord1 = vec4(float(own.texel), own.w, own.s, float((instance.y & 65535) | (plantHash << 16)));
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }

@@ -1,0 +1,209 @@
+// Shared by plant.vert and plant_line.vert (#include): where a plant vertex goes and what colour it
+// has. Placement (paper sections 4.1, 4.2.2): pose k and k + 1 of the point blended, rotated by the
+// bend azimuth, added to the component's base. On top of the paper, for looks:
+// - thin parts stay at least uMinPixels wide: a ribbon narrower than that on screen is widened
+//   across the view, and the share of the widened ribbon the real one covers goes out as coverage
+//   (alpha-to-coverage under multisampling);
+// - stems face the camera (a ribbon turned about its own axis toward the eye), so they never vanish
+//   edge-on;
+// - flower parts (petals, heads) turn toward the viewer about their base by uFlowerTilt and are
+//   scaled up to at least uHeadPixels across;
+// - colour varies per plant and per component (hue, value), toward straw at the tips and in dry
+//   patches of a seeded value noise; light is sky ambient, sun diffuse, light through the blade when
+//   back-lit, a specular term toward the tip, and darkening toward the base.
+
+layout(location = 0) in vec4 aVertex;           // slot, point, a, b
+layout(location = 1) in vec4 aColour;           // component colour (0..1), fraction along it
+layout(location = 2) in float aStride;          // texels between poses k and k + 1 of the slot (3 x points)
+layout(location = 3) in vec2 aShape;            // kind (0 blade, 1 stem, 2 petal, 3 fan head), reach (m)
+
+uniform mat4 uViewProj;
+uniform vec3 uEye;
+uniform vec3 uLightDir;                          // unit, toward the sun
+uniform vec3 uSunColour;                         // sunlight on a surface facing the sun
+uniform vec3 uAmbient;                           // sky light
+uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
+uniform samplerBuffer uComponents;               // RGBA32F: 2 texels per drawn component
+uniform int uSlotCount;
+uniform int uComponentBase;
+uniform vec3 uFogColour;
+uniform float uFogStart;
+uniform float uFogEnd;
+uniform vec2 uPixelScale;                        // a pixel's height, metres: x + distance * y
+uniform vec4 uVariation;                         // this species: hue s.d. (radians), value s.d., dry tips, -
+uniform vec4 uPatches;                           // 1 / patch size (1/m), patch strength, noise offset x, z
+uniform uint uSeed;                              // colour seed of the scene
+uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
+uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
+uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
+
+const vec3 STRAW = vec3(0.74, 0.66, 0.38);
+const vec3 THROUGH = vec3(0.95, 1.05, 0.50);    // light through a blade: yellower than reflected light
+
+struct Placed {
+    vec3 world;                                  // vertex position, world
+    vec3 normal;                                 // surface normal, world, not normalised (0: none)
+    vec3 toEye;                                  // eye - vertex
+    float distance;                              // |toEye|
+    float cover;                                 // share of the drawn width the real part covers
+};
+
+vec3 rotY(vec3 v, float c, float s) {
+    // local +X goes to world (cos a, 0, sin a)
+    return vec3(v.x * c - v.z * s, v.y, v.x * s + v.z * c);
+}
+
+// rotation of v by angle t about the unit axis k (Rodrigues)
+vec3 rotAxis(vec3 v, vec3 k, float t) {
+    float c = cos(t);
+    return v * c + cross(k, v) * sin(t) + k * dot(k, v) * (1.0 - c);
+}
+
+uint hash(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+float unit01(uint h) {
+    return float(h >> 8) / 16777216.0;
+}
+
+// about standard normal: the sum of three uniforms, centred and scaled to s.d. 1
+float gauss(uint h) {
+    uint a = hash(h);
+    uint b = hash(a);
+    uint c = hash(b);
+    return (unit01(a) + unit01(b) + unit01(c) - 1.5) * 2.0;
+}
+
+float lattice(ivec2 i) {
+    return unit01(hash(uint(i.x) * 73856093u ^ uint(i.y) * 19349663u ^ uSeed));
+}
+
+float valueNoise(vec2 p) {
+    vec2 i = floor(p);
+    vec2 f = p - i;
+    f = f * f * (3.0 - 2.0 * f);
+    ivec2 q = ivec2(i);
+    float a = lattice(q);
+    float b = lattice(q + ivec2(1, 0));
+    float c = lattice(q + ivec2(0, 1));
+    float d = lattice(q + ivec2(1, 1));
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// hue turned about the grey axis
+vec3 hueTurn(vec3 c, float t) {
+    const vec3 k = vec3(0.57735027);
+    return rotAxis(c, k, t);
+}
+
+// Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the
+// component's frame; (ca, sa) the bend azimuth; widen says whether thin parts are widened.
+Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool widen) {
+    float a = aVertex.z;
+    float b = aVertex.w;
+    int kind = int(aShape.x + 0.5);
+    vec3 pw = rotY(p, ca, sa);
+    vec3 sw = rotY(side, ca, sa);
+    vec3 nw = rotY(normal, ca, sa);
+    vec3 centre = base + pw;
+    vec3 toEye = uEye - centre;
+    float d = max(length(toEye), 1e-4);
+    vec3 v = toEye / d;
+    float pix = uPixelScale.x + d * uPixelScale.y;
+    Placed r;
+    r.cover = 1.0;
+    if (kind >= 2) {
+        vec3 rel = pw + a * sw + b * nw;
+        vec3 n = kind == 3 ? cross(sw, nw) : nw;  // a fan's disc faces along its axis
+        float hl = length(v.xz);
+        if (hl > 1e-4 && uFlowerTilt != 0.0) {
+            vec3 k = vec3(v.z, 0.0, -v.x) / hl;  // turning +Y about k moves it toward the eye
+            rel = rotAxis(rel, k, uFlowerTilt);
+            n = rotAxis(n, k, uFlowerTilt);
+        }
+        rel *= max(1.0, 0.5 * uHeadPixels * pix / max(aShape.y, 1e-4));
+        r.world = base + rel;
+        r.normal = n;
+    } else {
+        float hw = length(sw);
+        vec3 t = cross(sw, nw);                  // along the part
+        vec3 across = cross(t, v);               // across the part, facing the eye
+        float al = length(across);
+        across = al > 1e-12 ? across / al : (hw > 0.0 ? sw / hw : vec3(1.0, 0.0, 0.0));
+        if (dot(across, sw) < 0.0) {
+            across = -across;
+        }
+        vec3 offset;
+        float seen;                              // real half width as seen, metres
+        if (kind == 1) {
+            offset = across * hw;
+            seen = hw;
+            float tl = length(t);
+            vec3 facing = tl > 1e-12 ? normalize(v - t * dot(v, t) / (tl * tl)) : v;
+            r.normal = facing * 0.8 + across * (0.6 * a);
+        } else {
+            offset = sw;
+            seen = max(length(sw - dot(sw, v) * v), 0.25 * hw);
+            r.normal = nw;
+        }
+        vec3 world = centre + a * offset + b * nw;
+        if (widen && uMinPixels > 0.0) {
+            float least = 0.5 * uMinPixels * pix;
+            world += a * max(least - seen, 0.0) * across;
+            r.cover = clamp(seen / least, 0.0, 1.0);
+        }
+        r.world = world;
+    }
+    r.toEye = uEye - r.world;
+    r.distance = length(r.toEye);
+    return r;
+}
+
+// The lit, fogged colour of a placed vertex of a plant with 8-bit id hash plant at ground point base.
+vec3 shade(Placed v, uint plant, int slot, vec3 base) {
+    int kind = int(aShape.x + 0.5);
+    float along = aColour.w;
+    uint ph = hash(plant * 0x9e3779b9u ^ uSeed);
+    uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
+    float hue = uVariation.x * (gauss(ph) + 0.35 * gauss(ch));
+    float value = 1.0 + uVariation.y * (gauss(ph ^ 0x5bd1e995u) + 0.3 * gauss(ch ^ 0x27d4eb2fu));
+    vec3 c = max(hueTurn(aColour.rgb, hue), vec3(0.0)) * clamp(value, 0.3, 1.8);
+    if (kind < 2) {
+        vec2 q = base.xz * uPatches.x + uPatches.zw;
+        float patch = 0.65 * valueNoise(q) + 0.35 * valueNoise(q * 2.03 + vec2(17.1, 5.3));
+        float dry = uPatches.y * smoothstep(0.42, 0.72, patch);
+        float dryness = clamp(uVariation.z * along * along + dry * (0.35 + 0.65 * along), 0.0, 1.0);
+        float grey = dot(c, vec3(0.3, 0.59, 0.11));
+        c = mix(c, STRAW * (0.55 + 1.1 * grey), dryness);
+        c = mix(c, c * vec3(1.08, 1.12, 0.85) + vec3(0.03, 0.04, 0.0), along * along); // sunlit tips
+    }
+    float ao = kind >= 2 ? 1.0 : 0.38 + 0.62 * pow(along, 0.7);  // the base stands in its neighbours' shade
+    vec3 e = v.toEye / max(v.distance, 1e-6);
+    vec3 light;
+    vec3 gloss = vec3(0.0);
+    float len = length(v.normal);
+    if (len > 1e-9) {
+        vec3 n = v.normal / len;
+        n = dot(n, e) < 0.0 ? -n : n;
+        float nl = dot(n, uLightDir);
+        float front = max(nl, 0.0);
+        float back = max(-nl, 0.0);
+        float toward = max(dot(-e, uLightDir), 0.0);      // looking toward the sun
+        float through = kind == 3 ? 0.0 : back * (0.55 + 0.9 * toward * toward) * (0.55 + 0.45 * along);
+        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
+                + uSunColour * THROUGH * through;
+        float h = max(dot(n, normalize(uLightDir + e)), 0.0);
+        gloss = uSunColour * (0.22 * along * step(0.0, nl) * pow(h, 24.0));
+    } else {
+        light = uAmbient * ao + uSunColour * 0.45;
+    }
+    vec3 colour = c * light + gloss;
+    float fog = clamp((v.distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
+    return mix(colour, uFogColour, fog * fog);
+}
