@@ -224,8 +224,24 @@ class ComponentRecordsTest {
                 assertEquals(0, prevLo, "the last level keeps from 0");
             }
         }
-        // and the records carry the window of the plant's own distance
-        forEachRecord((li, i, slot, r) -> assertEquals(batches.keepOf(li, i), rec.get(r + 7)));
+        // and the records carry the window of the plant's own distance in the low 16 bits, and above
+        // them an 8-bit hash of the plant, the same for every component of the plant
+        java.util.Map<Integer, Integer> hashOf = new java.util.HashMap<>();
+        java.util.Set<Integer> hashes = new java.util.HashSet<>();
+        forEachRecord((li, i, slot, r) -> {
+            float w = rec.get(r + 7);
+            int word = (int) w;
+            assertEquals(w, (float) word, "the packed word is an integer");
+            assertTrue(word >= 0 && word < 1 << 24, "24 bits: " + word);
+            assertEquals(batches.keepOf(li, i), word & 0xFFFF);
+            int plant = batches.plant(li, i);
+            Integer before = hashOf.putIfAbsent(plant, word >>> 16);
+            if (before != null) {
+                assertEquals(before, word >>> 16, "plant " + plant + "'s hash is one for all its components");
+            }
+            hashes.add(word >>> 16);
+        });
+        assertTrue(hashes.size() > 32, "plants get different hashes: " + hashes.size() + " distinct");
     }
 
     @Test

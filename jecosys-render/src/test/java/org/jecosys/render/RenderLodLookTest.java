@@ -16,7 +16,8 @@ import org.lwjgl.system.MemoryUtil;
  * camera with every plant at level 1 (triangles) and again with every plant at level 2 (lines) gives
  * the same mean colour over the far half of the terrain, within 4 levels of 255. One solid pixel
  * per leaf edge would cover several times the leaf's area there and paint the far meadow a brighter
- * green than the near one (a visible band at the level edge).
+ * green than the near one (a visible band at the level edge). Drawn as shipped: 4x multisampled, the
+ * triangle level widened to a pixel with its real share of it as coverage.
  */
 class RenderLodLookTest {
     private static final int W = 960;
@@ -31,20 +32,25 @@ class RenderLodLookTest {
         ByteBuffer ground = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer near = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer far = MemoryUtil.memAlloc(4 * W * H);
-        try (GlContext gl = GlContext.headless(true); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
+        try (GlContext gl = GlContext.headless(true); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H, 4);
              SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
             fb.bind();
             r.drawPlants = false;
             r.render(frame, cam, W, H);
+            fb.resolve();
             Pixels.read(W, H, ground);
+            fb.bind();
             r.drawPlants = true;
             PlantBatches b = r.plants().batches();
             allAt(world, frame, 1); // every drawn plant of a three-level species at level 1
             r.render(frame, cam, W, H);
+            fb.resolve();
             Pixels.read(W, H, near);
+            fb.bind();
             assertEquals(0, b.lineCount());
             allAt(world, frame, 2); // level 2 (lines)
             r.render(frame, cam, W, H);
+            fb.resolve();
             Pixels.read(W, H, far);
             assertTrue(b.lineCount() > 100_000, "lines: " + b.lineCount());
             gl.debug().check("rendering the meadow at one level");

@@ -28,7 +28,7 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    int word = int(c1.w + 0.5);
+    int word = int(c1.w);                        // exact: an integer below 2^24 (no + 0.5: above 2^23 it rounds)
     vColour = shade(v, uint(word >> 16), slot, c0.xyz);
     vCover = v.cover;
     vKeep = vec2(float((word >> 8) & 255), float(word & 255)) / 255.0;

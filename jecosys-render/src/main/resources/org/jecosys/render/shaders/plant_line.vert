@@ -32,7 +32,7 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, false);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    int word = int(c1.w + 0.5);
+    int word = int(c1.w);                        // exact: an integer below 2^24 (no + 0.5: above 2^23 it rounds)
     vColour = shade(v, uint(word >> 16), slot, c0.xyz);
     float halfWidth = abs(aVertex.z) * length(side);
     float pixel = max(uPixelScale.x + v.distance * uPixelScale.y, 1e-6);
