@@ -72,12 +72,9 @@ float unit01(uint h) {
     return float(h >> 8) / 16777216.0;
 }
 
-// about standard normal: the sum of three uniforms, centred and scaled to s.d. 1
-float gauss(uint h) {
-    uint a = hash(h);
-    uint b = hash(a);
-    uint c = hash(b);
-    return (unit01(a) + unit01(b) + unit01(c) - 1.5) * 2.0;
+// a spread of standard deviation 1 from 10 bits of h: uniform on [-sqrt 3, sqrt 3]
+float spread(uint h, int shift) {
+    return (float((h >> uint(shift)) & 1023u) / 1023.0 - 0.5) * 3.4641016;
 }
 
 float lattice(ivec2 i) {
@@ -171,8 +168,8 @@ vec3 shade(Placed v, uint plant, int slot, vec3 base) {
     float along = aColour.w;
     uint ph = hash(plant * 0x9e3779b9u ^ uSeed);
     uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
-    float hue = uVariation.x * (gauss(ph) + 0.35 * gauss(ch));
-    float value = 1.0 + uVariation.y * (gauss(ph ^ 0x5bd1e995u) + 0.3 * gauss(ch ^ 0x27d4eb2fu));
+    float hue = uVariation.x * (spread(ph, 0) + 0.35 * spread(ch, 0));
+    float value = 1.0 + uVariation.y * (spread(ph, 10) + 0.3 * spread(ch, 10));
     vec3 c = max(hueTurn(aColour.rgb, hue), vec3(0.0)) * clamp(value, 0.3, 1.8);
     if (kind < 2) {
         vec2 q = base.xz * uPatches.x + uPatches.zw;
