@@ -6,6 +6,8 @@ import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
+import static org.lwjgl.opengl.GL30C.glUniform1ui;
 import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
 import static org.lwjgl.opengl.GL30C.GL_RG32F;
 import static org.lwjgl.opengl.GL30C.GL_RG32I;
@@ -31,8 +33,8 @@ import org.lwjgl.system.MemoryUtil;
  * The GPU per-component resolve pass of {@link PlantRenderer} (paper §4.1-4.2; docs/ARCHITECTURE.md,
  * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component, as the
  * animation workers wrote them) and 8 bytes per drawn plant and level, then resolves each drawn
- * component's record (2 RGBA32F texels: base, cos/sin of the bend azimuth, pose texel and weight,
- * dither window) by transform feedback through {@code plant_resolve.vert} into the component buffer
+ * component's record (3 RGBA32F texels: base, cos/sin of the bend azimuth, pose texel and weight,
+ * dither window, colour variation) by transform feedback through {@code plant_resolve.vert} into the component buffer
  * the instanced draws read.
  *
  * <p>Holds the resolve program, the static per-component data (root bases and pose texels; parent
@@ -63,6 +65,9 @@ final class ComponentResolver implements AutoCloseable {
     private final IntBuffer instanceStaging;
     private final int uInstanceBase;
     private final int uSlots;
+    private final int uVariation;
+    private final int uPatches;
+    private final int uSeed;
     private long uploadedBytes;
     private boolean closed;
 
@@ -85,7 +90,8 @@ final class ComponentResolver implements AutoCloseable {
         this.poseTexture = poseTexture;
         IntBuffer instances = null;
         try {
-            resolveProgram = own(new GlProgram(t, "plant_resolve.vert", null, "vRecord0", "vRecord1"));
+            resolveProgram = own(new GlProgram(t, "plant_resolve.vert", null, "vRecord0", "vRecord1",
+                    "vRecord2"));
             instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
             componentBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
                     4L * PlantRenderer.RECORD_FLOATS * maxComponents));
@@ -115,6 +121,9 @@ final class ComponentResolver implements AutoCloseable {
         glUniform1i(resolveProgram.uniform("uLinks"), 4);
         uInstanceBase = resolveProgram.uniform("uInstanceBase");
         uSlots = resolveProgram.uniform("uSlots");
+        uVariation = resolveProgram.uniform("uVariation");
+        uPatches = resolveProgram.uniform("uPatches");
+        uSeed = resolveProgram.uniform("uSeed");
     }
 
     private <T extends AutoCloseable> T own(T resource) {
@@ -152,9 +161,11 @@ final class ComponentResolver implements AutoCloseable {
      * into the component buffer in list order. Leaves the resolve program in use. Render thread; no
      * allocation.
      */
-    void resolve() {
+    void resolve(PlantLook look) {
         glEnable(GL_RASTERIZER_DISCARD);
         resolveProgram.use();
+        glUniform4f(uPatches, 1f / look.patchScale(), look.patchStrength(), look.offsetX(), look.offsetZ());
+        glUniform1ui(uSeed, look.seed());
         poseTexture.bind(0);
         instanceTexture.bind(1);
         dynamicTexture.bind(2);
@@ -168,7 +179,9 @@ final class ComponentResolver implements AutoCloseable {
             if (n == 0) {
                 continue;
             }
-            int slots = batches.slots(batches.speciesOf(li));
+            int species = batches.speciesOf(li);
+            int slots = batches.slots(species);
+            glUniform4f(uVariation, look.hue(species), look.value(species), 0f, 0f);
             glUniform1i(uInstanceBase, batches.instanceOffset(li));
             glUniform1i(uSlots, slots);
             glDrawArrays(GL_POINTS, 0, n * slots);

@@ -98,23 +98,36 @@ public final class GlProgram extends GlResource {
 
     /**
      * Reads a shader's source from the classpath, replacing each line {@code #include "name"} by the
-     * text of the shader resource {@code name} (one level: included files do not include). Allocates.
+     * text of the shader resource {@code name}, itself expanded the same way (at most 4 deep; a file
+     * is included once, later includes of it are dropped). Allocates.
      */
     static String source(String resource) {
+        StringBuilder out = new StringBuilder(8192);
+        expand(resource, out, new java.util.HashSet<>(), 0);
+        return out.toString();
+    }
+
+    private static void expand(String resource, StringBuilder out, java.util.Set<String> seen, int depth) {
         String text = raw(resource);
         if (!text.contains("#include")) {
-            return text;
+            out.append(text);
+            return;
         }
-        StringBuilder out = new StringBuilder(text.length() + 4096);
         for (String line : text.split("\n", -1)) {
             String t = line.strip();
             if (t.startsWith("#include \"") && t.endsWith("\"") && t.length() > 11) {
-                out.append(raw(t.substring(10, t.length() - 1))).append('\n');
+                String name = t.substring(10, t.length() - 1);
+                if (depth >= 4) {
+                    throw new IllegalStateException("shader " + resource + ": includes nest deeper than 4");
+                }
+                if (seen.add(name)) {
+                    expand(name, out, seen, depth + 1);
+                    out.append('\n');
+                }
             } else {
                 out.append(line).append('\n');
             }
         }
-        return out.toString();
     }
 
     private static String raw(String resource) {

@@ -19,8 +19,6 @@ import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
-import static org.lwjgl.opengl.GL20C.glUniform4f;
-import static org.lwjgl.opengl.GL30C.glUniform1ui;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
@@ -57,8 +55,9 @@ import org.lwjgl.system.MemoryUtil;
  * parents). Per frame, {@link #draw} draws what the frame's decision lists ({@link PlantBatches}),
  * uploads only the render states the animation workers wrote for the drawn plants (8 bytes per
  * component) and 8 bytes per drawn plant and level, resolves on the GPU (transform feedback,
- * {@code plant_resolve.vert}) each drawn component's record (2 texels: base, cos/sin of the bend
- * azimuth, pose texel and weight, dither window), then issues one instanced draw per species and
+ * {@code plant_resolve.vert}) each drawn component's record (3 texels: base, cos/sin of the bend
+ * azimuth, pose texel and weight, dither window, and its colour variation: hue turn, brightness,
+ * patch dryness), then issues one instanced draw per species and
  * level (triangles near, lines far: Table 3). Triangle
  * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
  * and lights the same vertices and writes one flat colour per segment, with the share of a pixel the
@@ -80,8 +79,8 @@ public final class PlantRenderer implements AutoCloseable {
      */
     public static final String PATH = "GL 3.3 core: worker-written states, GPU resolve (transform feedback), "
             + "instanced draws";
-    /** Floats per component record (2 RGBA32F texels), written by the resolve pass. */
-    static final int RECORD_FLOATS = 8;
+    /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
+    static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
     static final int MAX_EXACT = 1 << 24;
     /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach. */
@@ -112,7 +111,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
-    private final float[] variation;
+    private final PlantLook look;
     private float minPixels = DEFAULT_MIN_PIXELS;
     private float headPixels = DEFAULT_HEAD_PIXELS;
     private float flowerTilt = (float) Math.toRadians(DEFAULT_FLOWER_TILT);
@@ -122,9 +121,6 @@ public final class PlantRenderer implements AutoCloseable {
     private float ambR = 0.42f;
     private float ambG = 0.46f;
     private float ambB = 0.52f;
-    private float patchScale = 20f;
-    private float patchStrength;
-    private int seed;
     private boolean pending;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
@@ -165,7 +161,7 @@ public final class PlantRenderer implements AutoCloseable {
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
             checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
-            checkTexels("component records", 2 * maxComponents, maxTexels);
+            checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
             lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
@@ -193,7 +189,7 @@ public final class PlantRenderer implements AutoCloseable {
         matrix = mat;
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
-        variation = new float[3 * models.size()];
+        look = new PlantLook(models.size());
     }
 
     /**
@@ -212,9 +208,7 @@ public final class PlantRenderer implements AutoCloseable {
         final int sunColour;
         final int ambient;
         final int pixelScale;
-        final int variation;
-        final int patches;
-        final int seed;
+        final int dryTips;
         final int minPixels;
         final int headPixels;
         final int flowerTilt;
@@ -232,9 +226,7 @@ public final class PlantRenderer implements AutoCloseable {
             sunColour = p.uniform("uSunColour");
             ambient = p.uniform("uAmbient");
             pixelScale = p.uniform("uPixelScale");
-            variation = p.uniform("uVariation");
-            patches = p.uniform("uPatches");
-            seed = p.uniform("uSeed");
+            dryTips = p.uniform("uDryTips");
             minPixels = p.optionalUniform("uMinPixels");
             headPixels = p.uniform("uHeadPixels");
             flowerTilt = p.uniform("uFlowerTilt");
@@ -248,11 +240,6 @@ public final class PlantRenderer implements AutoCloseable {
             glUniformMatrix4fv(viewProj, false, viewProjMatrix);
             glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
             glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
-            // the seed moves the patch noise (whole lattice cells) and picks the per-plant hashes
-            float ox = (r.seed * 0.618034f) % 1024f;
-            float oz = (r.seed * 0.414214f + 512f) % 1024f;
-            glUniform4f(patches, 1f / r.patchScale, r.patchStrength, ox, oz);
-            glUniform1ui(seed, r.seed);
             glUniform1f(minPixels, r.minPixels);
             glUniform1f(headPixels, r.headPixels);
             glUniform1f(flowerTilt, r.flowerTilt);
@@ -407,13 +394,7 @@ public final class PlantRenderer implements AutoCloseable {
      * @throws IllegalArgumentException when an argument is out of range
      */
     public void setVariation(int s, float hueDeg, float value, float dryTips) {
-        Require.range("species", s, 0, variation.length / 3 - 1);
-        Require.range("hue", hueDeg, 0, 60);
-        Require.range("value", value, 0, 1);
-        Require.range("dryTips", dryTips, 0, 1);
-        variation[3 * s] = (float) Math.toRadians(hueDeg);
-        variation[3 * s + 1] = value;
-        variation[3 * s + 2] = dryTips;
+        look.setVariation(s, hueDeg, value, dryTips);
     }
 
     /**
@@ -427,11 +408,7 @@ public final class PlantRenderer implements AutoCloseable {
      * @throws IllegalArgumentException when an argument is out of range
      */
     public void setPatches(float scale, float strength, int seed) {
-        Require.range("patchScale", scale, 0.1, 10_000);
-        Require.range("patchStrength", strength, 0, 1);
-        this.patchScale = scale;
-        this.patchStrength = strength;
-        this.seed = seed;
+        look.setPatches(scale, strength, seed);
     }
 
     /**
@@ -519,7 +496,7 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         resolver.upload(frame);
-        resolver.resolve();
+        resolver.resolve(look);
         camera.viewProjection(viewProj);
         viewProj.get(matrix);
         float ex = (float) camera.x();
@@ -571,7 +548,7 @@ public final class PlantRenderer implements AutoCloseable {
                     continue;
                 }
                 glUniform1i(u.slotCount, batches.slots(s));
-                glUniform4f(u.variation, variation[3 * s], variation[3 * s + 1], variation[3 * s + 2], 0f);
+                glUniform1f(u.dryTips, look.dryTips(s));
                 glUniform1i(u.componentBase, batches.componentOffset(li));
                 vaos[li].bind();
                 glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);

@@ -1,6 +1,7 @@
 package org.jecosys.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.lang.management.ManagementFactory;
@@ -224,24 +225,8 @@ class ComponentRecordsTest {
                 assertEquals(0, prevLo, "the last level keeps from 0");
             }
         }
-        // and the records carry the window of the plant's own distance in the low 16 bits, and above
-        // them an 8-bit hash of the plant, the same for every component of the plant
-        java.util.Map<Integer, Integer> hashOf = new java.util.HashMap<>();
-        java.util.Set<Integer> hashes = new java.util.HashSet<>();
-        forEachRecord((li, i, slot, r) -> {
-            float w = rec.get(r + 7);
-            int word = (int) w;
-            assertEquals(w, (float) word, "the packed word is an integer");
-            assertTrue(word >= 0 && word < 1 << 24, "24 bits: " + word);
-            assertEquals(batches.keepOf(li, i), word & 0xFFFF);
-            int plant = batches.plant(li, i);
-            Integer before = hashOf.putIfAbsent(plant, word >>> 16);
-            if (before != null) {
-                assertEquals(before, word >>> 16, "plant " + plant + "'s hash is one for all its components");
-            }
-            hashes.add(word >>> 16);
-        });
-        assertTrue(hashes.size() > 32, "plants get different hashes: " + hashes.size() + " distinct");
+        // and the records carry the window of the plant's own distance
+        forEachRecord((li, i, slot, r) -> assertEquals(batches.keepOf(li, i), rec.get(r + 7)));
     }
 
     @Test
@@ -264,6 +249,72 @@ class ComponentRecordsTest {
             assertEquals(rec, again, "the same records every frame");
         } finally {
             org.lwjgl.system.MemoryUtil.memFree(again);
+        }
+    }
+
+    @Test
+    void theColourVariationIsSeededPerPlantAndOffWhenUnset() {
+        // unset: no hue turn, brightness 1, no dryness
+        forEachRecord((li, i, slot, r) -> {
+            assertEquals(1f, rec.get(r + 8), 0f);
+            assertEquals(0f, rec.get(r + 9), 0f);
+            assertEquals(1f, rec.get(r + 10), 0f);
+            assertEquals(0f, rec.get(r + 11), 0f);
+        });
+        try {
+            for (int s = 0; s < models.size(); s++) {
+                renderer.setVariation(s, 10f, 0.15f, 0f);
+            }
+            renderer.setPatches(5f, 1f, 42);
+            draw();
+            renderer.readRecords(rec);
+            double[] sum = new double[4];
+            double[] sq = new double[4];
+            int[] n = new int[1];
+            java.util.Set<Float> dryness = new java.util.HashSet<>();
+            forEachRecord((li, i, slot, r) -> {
+                float c = rec.get(r + 8);
+                float sn = rec.get(r + 9);
+                assertEquals(1.0, c * c + sn * sn, 1e-5, "a hue turn is a rotation");
+                double hue = Math.toDegrees(Math.atan2(sn, c));
+                float value = rec.get(r + 10);
+                float dry = rec.get(r + 11);
+                assertTrue(value >= 0.3f && value <= 1.8f, "brightness " + value);
+                assertTrue(dry >= 0f && dry <= 1f, "dryness " + dry);
+                dryness.add(dry);
+                sum[0] += hue;
+                sq[0] += hue * hue;
+                sum[1] += value;
+                sq[1] += value * value;
+                n[0]++;
+            });
+            double hueSd = Math.sqrt(sq[0] / n[0] - Math.pow(sum[0] / n[0], 2));
+            double valueSd = Math.sqrt(sq[1] / n[0] - Math.pow(sum[1] / n[0], 2));
+            // plant spread s.d. 1 plus a component spread of 0.35 (hue) or 0.3 (brightness)
+            assertEquals(10 * Math.sqrt(1 + 0.35 * 0.35), hueSd, 1.5, "hue s.d., degrees");
+            assertEquals(0.15 * Math.sqrt(1 + 0.3 * 0.3), valueSd, 0.025, "brightness s.d.");
+            assertTrue(dryness.size() > 20, "the patches vary over the scene: " + dryness.size() + " values");
+            FloatBuffer first = org.lwjgl.system.MemoryUtil.memAllocFloat(rec.capacity());
+            try {
+                renderer.readRecords(first);
+                renderer.setPatches(5f, 1f, 43);
+                draw();
+                renderer.readRecords(rec);
+                assertNotEquals(first, rec, "another seed, another variation");
+                renderer.setPatches(5f, 1f, 42);
+                draw();
+                renderer.readRecords(rec);
+                assertEquals(first, rec, "the same seed, the same variation");
+            } finally {
+                org.lwjgl.system.MemoryUtil.memFree(first);
+            }
+        } finally {
+            for (int s = 0; s < models.size(); s++) {
+                renderer.setVariation(s, 0f, 0f, 0f);
+            }
+            renderer.setPatches(20f, 0f, 0);
+            draw();
+            renderer.readRecords(rec);
         }
     }
 

@@ -4,8 +4,8 @@
 // Per drawn component, the resolve pass (plant_resolve.vert) has written a record: the world position
 // of the component's base (the plant's base plus its ground offset, or the animated tip of its
 // parent), its bend azimuth as cosine and sine, the pose-table texel of pose k, the blend weight
-// toward k + 1, and a packed word: this level's dither window (16 bits) and an 8-bit hash of the
-// plant (colour variation). plant_common.glsl places and shades the vertex; 2 + 6 texel fetches.
+// toward k + 1, this level's dither window, and its colour variation (hue turn, brightness, patch
+// dryness). plant_common.glsl places and shades the vertex; 3 + 6 texel fetches.
 // Line levels use plant_line.vert instead.
 
 #include "plant_common.glsl"
@@ -17,9 +17,10 @@ flat out vec2 vKeep;                             // keep fragments with lo <= ba
 void main() {
     int slot = int(aVertex.x);
     int point = int(aVertex.y);
-    int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 2;
+    int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 3;
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
-    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), packed word
+    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
+    vec4 c2 = texelFetch(uComponents, ci + 2);   // cos and sin of the hue turn, brightness, patch dryness
     int t = int(c1.x + 0.5) + point * 3;
     int u = t + int(aStride + 0.5);
     float w = c1.y;
@@ -28,8 +29,8 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    int word = int(c1.w);                        // exact: an integer below 2^24 (no + 0.5: above 2^23 it rounds)
-    vColour = shade(v, uint(word >> 16), slot, c0.xyz);
+    int keep = int(c1.w + 0.5);
+    vColour = shade(v, c2, false);
     vCover = v.cover;
-    vKeep = vec2(float((word >> 8) & 255), float(word & 255)) / 255.0;
+    vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
 }

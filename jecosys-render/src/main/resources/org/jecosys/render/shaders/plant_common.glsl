@@ -8,8 +8,9 @@
 //   edge-on;
 // - flower parts (petals, heads) turn toward the viewer about their base by uFlowerTilt and are
 //   scaled up to at least uHeadPixels across;
-// - colour varies per plant and per component (hue, value), toward straw at the tips and in dry
-//   patches of a seeded value noise; light is sky ambient, sun diffuse, light through the blade when
+// - colour varies per plant and per component: the resolve pass gives each component a hue turn, a
+//   brightness factor and the dryness of its patch (plant_resolve.vert); here tips and dry patches
+//   turn toward straw; light is sky ambient, sun diffuse, light through the blade when
 //   back-lit, a specular term toward the tip, and darkening toward the base.
 
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
@@ -23,16 +24,14 @@ uniform vec3 uLightDir;                          // unit, toward the sun
 uniform vec3 uSunColour;                         // sunlight on a surface facing the sun
 uniform vec3 uAmbient;                           // sky light
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
-uniform samplerBuffer uComponents;               // RGBA32F: 2 texels per drawn component
+uniform samplerBuffer uComponents;               // RGBA32F: 3 texels per drawn component
 uniform int uSlotCount;
 uniform int uComponentBase;
 uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
 uniform vec2 uPixelScale;                        // a pixel's height, metres: x + distance * y
-uniform vec4 uVariation;                         // this species: hue s.d. (radians), value s.d., dry tips, -
-uniform vec4 uPatches;                           // 1 / patch size (1/m), patch strength, noise offset x, z
-uniform uint uSeed;                              // colour seed of the scene
+uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
 uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
@@ -57,46 +56,6 @@ vec3 rotY(vec3 v, float c, float s) {
 vec3 rotAxis(vec3 v, vec3 k, float t) {
     float c = cos(t);
     return v * c + cross(k, v) * sin(t) + k * dot(k, v) * (1.0 - c);
-}
-
-uint hash(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-float unit01(uint h) {
-    return float(h >> 8) / 16777216.0;
-}
-
-// a spread of standard deviation 1 from 10 bits of h: uniform on [-sqrt 3, sqrt 3]
-float spread(uint h, int shift) {
-    return (float((h >> uint(shift)) & 1023u) / 1023.0 - 0.5) * 3.4641016;
-}
-
-float lattice(ivec2 i) {
-    return unit01(hash(uint(i.x) * 73856093u ^ uint(i.y) * 19349663u ^ uSeed));
-}
-
-float valueNoise(vec2 p) {
-    vec2 i = floor(p);
-    vec2 f = p - i;
-    f = f * f * (3.0 - 2.0 * f);
-    ivec2 q = ivec2(i);
-    float a = lattice(q);
-    float b = lattice(q + ivec2(1, 0));
-    float c = lattice(q + ivec2(0, 1));
-    float d = lattice(q + ivec2(1, 1));
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
-}
-
-// hue turned about the grey axis
-vec3 hueTurn(vec3 c, float t) {
-    const vec3 k = vec3(0.57735027);
-    return rotAxis(c, k, t);
 }
 
 // Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the
@@ -162,25 +121,22 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     return r;
 }
 
-// The lit, fogged colour of a placed vertex of a plant with 8-bit id hash plant at ground point base.
-vec3 shade(Placed v, uint plant, int slot, vec3 base) {
+// The lit, fogged colour of a placed vertex; look is the component's record texel 2 (cos and sin of
+// its hue turn, brightness factor, patch dryness); far drops the specular term (the line levels).
+vec3 shade(Placed v, vec4 look, bool far) {
     int kind = int(aShape.x + 0.5);
     float along = aColour.w;
-    uint ph = hash(plant * 0x9e3779b9u ^ uSeed);
-    uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
-    float hue = uVariation.x * (spread(ph, 0) + 0.35 * spread(ch, 0));
-    float value = 1.0 + uVariation.y * (spread(ph, 10) + 0.3 * spread(ch, 10));
-    vec3 c = max(hueTurn(aColour.rgb, hue), vec3(0.0)) * clamp(value, 0.3, 1.8);
+    const vec3 k = vec3(0.57735027);
+    vec3 base = aColour.rgb;
+    vec3 c = base * look.x + cross(k, base) * look.y + k * dot(k, base) * (1.0 - look.x);
+    c = max(c, vec3(0.0)) * look.z;
     if (kind < 2) {
-        vec2 q = base.xz * uPatches.x + uPatches.zw;
-        float patch = 0.65 * valueNoise(q) + 0.35 * valueNoise(q * 2.03 + vec2(17.1, 5.3));
-        float dry = uPatches.y * smoothstep(0.42, 0.72, patch);
-        float dryness = clamp(uVariation.z * along * along + dry * (0.35 + 0.65 * along), 0.0, 1.0);
+        float dryness = clamp(uDryTips * along * along + look.w * (0.35 + 0.65 * along), 0.0, 1.0);
         float grey = dot(c, vec3(0.3, 0.59, 0.11));
         c = mix(c, STRAW * (0.55 + 1.1 * grey), dryness);
         c = mix(c, c * vec3(1.08, 1.12, 0.85) + vec3(0.03, 0.04, 0.0), along * along); // sunlit tips
     }
-    float ao = kind >= 2 ? 1.0 : 0.38 + 0.62 * pow(along, 0.7);  // the base stands in its neighbours' shade
+    float ao = kind >= 2 ? 1.0 : 0.38 + 0.62 * sqrt(along);  // the base stands in its neighbours' shade
     vec3 e = v.toEye / max(v.distance, 1e-6);
     vec3 light;
     vec3 gloss = vec3(0.0);
@@ -195,8 +151,12 @@ vec3 shade(Placed v, uint plant, int slot, vec3 base) {
         float through = kind == 3 ? 0.0 : back * (0.55 + 0.9 * toward * toward) * (0.55 + 0.45 * along);
         light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
                 + uSunColour * THROUGH * through;
-        float h = max(dot(n, normalize(uLightDir + e)), 0.0);
-        gloss = uSunColour * (0.22 * along * step(0.0, nl) * pow(h, 24.0));
+        if (!far && nl > 0.0) {
+            float h = max(dot(n, normalize(uLightDir + e)), 0.0);
+            float h2 = h * h;
+            float h8 = h2 * h2 * h2 * h2;
+            gloss = uSunColour * (0.22 * along * h8 * h8 * h8);
+        }
     } else {
         light = uAmbient * ao + uSunColour * 0.45;
     }

@@ -21,9 +21,10 @@ out float vCover;                                // alpha: the share of a pixel 
 void main() {
     int slot = int(aVertex.x);
     int point = int(aVertex.y);
-    int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 2;
+    int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 3;
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
-    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), packed word
+    vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
+    vec4 c2 = texelFetch(uComponents, ci + 2);   // cos and sin of the hue turn, brightness, patch dryness
     int t = int(c1.x + 0.5) + point * 3;
     int u = t + int(aStride + 0.5);
     float w = c1.y;
@@ -32,10 +33,10 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, false);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    int word = int(c1.w);                        // exact: an integer below 2^24 (no + 0.5: above 2^23 it rounds)
-    vColour = shade(v, uint(word >> 16), slot, c0.xyz);
+    int keep = int(c1.w + 0.5);
+    vColour = shade(v, c2, true);
     float halfWidth = abs(aVertex.z) * length(side);
     float pixel = max(uPixelScale.x + v.distance * uPixelScale.y, 1e-6);
     vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / pixel, 1.0 / 32.0, 1.0);
-    vKeep = vec2(float((word >> 8) & 255), float(word & 255)) / 255.0;
+    vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
 }

@@ -1,7 +1,7 @@
 #version 330 core
 // The per-component pass of plant rendering, on the GPU (paper sections 4.1, 4.2.2): one vertex per
 // drawn component, no rasterisation; its two outputs are captured by transform feedback into the
-// component records that plant.vert and plant_line.vert read (2 RGBA32F texels per drawn component,
+// component records that plant.vert and plant_line.vert read (3 RGBA32F texels per drawn component,
 // in draw-list order). Inputs: the instance records of this frame (first component of the drawn
 // plant and its level's dither window), the compact animated state of every component (8 bytes:
 // pose coordinate and bend azimuth, two floats, as the simulation's workers wrote them), and static
@@ -10,8 +10,8 @@
 // tip, which follows its own parent, up to 4 deep.
 //
 // Record: r0 = (base xyz, cos azimuth), r1 = (texel of pose k point 0, blend weight w toward
-// pose k + 1, sin azimuth, packed word: dither window in bits 0-15, an 8-bit hash of the plant in
-// bits 16-23, for its colour variation; exact in a float).
+// pose k + 1, sin azimuth, dither window), r2 = (cos and sin of the component's hue turn, its
+// brightness factor, the dryness of the plant's patch): the colour variation, seeded (uSeed).
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
 uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend azimuth (radians)
@@ -21,8 +21,14 @@ uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point 
 uniform int uInstanceBase;                       // first instance record of this draw list
 uniform int uSlots;                              // components per plant of this species
 
+uniform vec4 uVariation;                         // this species: hue s.d. (radians), brightness s.d., -, -
+uniform vec4 uPatches;                           // 1 / patch size (1/m), patch strength, noise offset x, z
+
 out vec4 vRecord0;
 out vec4 vRecord1;
+out vec4 vRecord2;
+
+#include "plant_noise.glsl"
 
 struct Pose {
     int texel;                                   // texel of pose k, point 0
@@ -52,9 +58,11 @@ void main() {
     ivec4 link = texelFetch(uLinks, component);
     Pose own = pose(component, link, st.w);
     vec3 base = vec3(0.0);
+    vec3 root = st.xyz;
     for (int depth = 0; depth < 4; depth++) {
         if (link.x < 0) {
             base += st.xyz;
+            root = st.xyz;
             break;
         }
         int parent = link.x;
@@ -66,12 +74,16 @@ void main() {
         base += vec3(tip.x * pp.c - tip.z * pp.s, tip.y, tip.x * pp.s + tip.z * pp.c);
     }
     vRecord0 = vec4(base, own.c);
-    // the plant's first component names it: its 8-bit hash rides above the 16-bit dither window
-    uint h = uint(instance.x) * 0x9e3779b9u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 12;
-    int plantHash = int((h >> 24) & 255u);
-    vRecord1 = vec4(float(own.texel), own.w, own.s, float((instance.y & 65535) | (plantHash << 16)));
+    vRecord1 = vec4(float(own.texel), own.w, own.s, float(instance.y));
+    // colour variation: the plant (named by its first component) and the component each draw a hue
+    // turn and a brightness factor; the patch noise at the plant's root gives its dryness
+    uint ph = hash(uint(instance.x) * 0x9e3779b9u ^ uSeed);
+    uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
+    float hue = uVariation.x * (spread(ph, 0) + 0.35 * spread(ch, 0));
+    float value = clamp(1.0 + uVariation.y * (spread(ph, 10) + 0.3 * spread(ch, 10)), 0.3, 1.8);
+    vec2 q = root.xz * uPatches.x + uPatches.zw;
+    float patch = 0.65 * valueNoise(q) + 0.35 * valueNoise(q * 2.03 + vec2(17.1, 5.3));
+    float dry = uPatches.y * smoothstep(0.42, 0.72, patch);
+    vRecord2 = vec4(cos(hue), sin(hue), value, dry);
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }
