@@ -52,6 +52,46 @@ final class Shots implements AutoCloseable {
         return Img.of(px, width, height);
     }
 
+    /**
+     * Distance from the eye to what each pixel of the terrain alone shows (the depth buffer of a
+     * render without plants, unprojected), metres; infinity where the sky is. Allocates.
+     */
+    double[] groundDistance(Frame frame, Camera camera) {
+        fb.bind();
+        renderer.drawPlants = false;
+        try {
+            renderer.render(frame, camera, width, height);
+        } finally {
+            renderer.drawPlants = true;
+        }
+        java.nio.FloatBuffer depth = MemoryUtil.memAllocFloat(width * height);
+        try {
+            org.lwjgl.opengl.GL11C.glReadPixels(0, 0, width, height, org.lwjgl.opengl.GL11C.GL_DEPTH_COMPONENT,
+                    org.lwjgl.opengl.GL11C.GL_FLOAT, depth);
+            gl.debug().check("reading depth");
+            Matrix4f inv = camera.viewProjection(new Matrix4f()).invert();
+            org.joml.Vector3f p = new org.joml.Vector3f();
+            double[] d = new double[width * height];
+            for (int y = 0; y < height; y++) {
+                for (int x = 0; x < width; x++) {
+                    int i = y * width + x;
+                    float z = depth.get(i);
+                    if (z >= 1f) {
+                        d[i] = Double.POSITIVE_INFINITY;
+                        continue;
+                    }
+                    inv.transformProject((float) (2 * (x + 0.5) / width - 1), (float) (2 * (y + 0.5) / height - 1),
+                            2 * z - 1, p);
+                    d[i] = Math.sqrt((p.x - camera.x()) * (p.x - camera.x()) + (p.y - camera.y()) * (p.y - camera.y())
+                            + (p.z - camera.z()) * (p.z - camera.z()));
+                }
+            }
+            return d;
+        } finally {
+            MemoryUtil.memFree(depth);
+        }
+    }
+
     /** The full picture and its vegetation mask ({@link ImageMetrics#vegetation}). */
     record View(Img full, Img ground, boolean[] vegetation) {
     }
