@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
         description = {"JEcoSys: interactive meadows bending in wind and under agents, in real time.",
                 "A port of Endo, Morimoto, Fabris, CGI 2005. With no command, runs 'view' on scenes/meadow.xml."},
         subcommands = {ViewCommand.class, CheckCommand.class, SimulateCommand.class, RenderCommand.class,
-                BenchCommand.class},
+                BenchCommand.class, GalleryCommand.class},
         footer = {"", "Exit codes: 0 ok, 1 runtime failure, 2 bad input."})
 final class JecosysCommand implements Runnable {
     @Override

@@ -26,14 +26,14 @@ class CliTest {
     void helpListsEveryCommand() {
         Result r = run("--help");
         assertEquals(0, r.code());
-        for (String c : new String[] {"view", "check", "simulate", "render", "bench"}) {
+        for (String c : new String[] {"view", "check", "simulate", "render", "bench", "gallery"}) {
             assertTrue(r.out().contains("  " + c + " "), c);
         }
     }
 
     @Test
     void everyCommandHasHelp() {
-        for (String c : new String[] {"view", "check", "simulate", "render", "bench"}) {
+        for (String c : new String[] {"view", "check", "simulate", "render", "bench", "gallery"}) {
             Result r = run(c, "--help");
             assertEquals(0, r.code(), c);
             assertTrue(r.out().startsWith("Usage: jecosys " + c), c);

@@ -1,0 +1,187 @@
+package org.jecosys.app;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.ComponentType;
+import org.jecosys.plant.PoseTable;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.GlFramebuffer;
+import org.jecosys.render.Pixels;
+import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.Simulation;
+import org.jecosys.sim.World;
+import org.joml.Vector3f;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The gallery of {@code jecosys gallery} (and of docs/gallery in the repository): a fixed set of views
+ * of the shipped scenes, each rendered headless after {@link #STEPS} fixed animation steps of a fresh
+ * simulation, so the pictures depend only on the scene files and the renderer. File names and views:
+ * <ul>
+ * <li>{@code meadow-default.png}: the meadow from its start camera;</li>
+ * <li>{@code meadow-closeup.png}: 1 m from the middle of the densest patch of the meadow's second
+ *     species (the yellow flowers), eye 0.6 m above the ground, looking at the flower heads;</li>
+ * <li>{@code meadow-above.png}: straight down from 10 m above the middle of the meadow;</li>
+ * <li>{@code meadow-backlit.png}: the start camera turned to look toward the sun ({@link #SUN_X},
+ *     {@link #SUN_Z});</li>
+ * <li>{@code rose-level0.png}, {@code rose-level1.png}, {@code rose-level2.png}: the rose at 1.2 m,
+ *     12 m and 20 m (each distance falls in one level of detail: triangles, fewer triangles, lines),
+ *     from 45 degrees, the lens narrowed so that the rose fills the picture's height at every distance;</li>
+ * <li>{@code c1.png}, {@code c2.png}, {@code c3.png}: the paper's scenes from their start cameras.</li>
+ * </ul>
+ */
+final class Gallery {
+    static final int WIDTH = 960;
+    static final int HEIGHT = 540;
+    /** Fixed animation steps run before each picture (the wind has started to move the plants). */
+    static final int STEPS = 60;
+    /** The scene files the gallery needs. */
+    static final List<String> SCENES = List.of("meadow.xml", "rose.xml", "c1.xml", "c2.xml", "c3.xml");
+    /** Every file the gallery writes, in order. */
+    static final List<String> FILES = List.of("meadow-default.png", "meadow-closeup.png", "meadow-above.png",
+            "meadow-backlit.png", "rose-level0.png", "rose-level1.png", "rose-level2.png", "c1.png", "c2.png",
+            "c3.png");
+    /**
+     * Horizontal direction toward the sun (x, z), as the renderer lights today (SceneRenderer's fixed
+     * sun, -0.45, 0.80, 0.40). Follow the render settings' sun when it becomes configurable.
+     */
+    static final double SUN_X = -0.45;
+    static final double SUN_Z = 0.40;
+
+    /** A scene file with problems (already printed). */
+    static final class BadScene extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        BadScene(String file) {
+            super(file);
+        }
+    }
+
+    private Gallery() {
+    }
+
+    private record View(String file, ViewCamera camera) {
+    }
+
+    static void render(Path scenes, Path out, int width, int height, PrintWriter log, PrintWriter err)
+            throws IOException, BadScene {
+        Files.createDirectories(out);
+        double aspect = width / (double) height;
+        ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
+        try (GlContext gl = GlContext.headless(false);
+             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
+            for (String name : SCENES) {
+                SceneDef def = SceneArgs.load(scenes.resolve(name), err);
+                if (def == null) {
+                    throw new BadScene(name);
+                }
+                World world = World.build(def.simulationDef(), scenes.toAbsolutePath(),
+                        Runtime.getRuntime().availableProcessors(), Progress.NONE);
+                List<View> views = views(name, def, world, aspect);
+                try (SceneRenderer renderer = new SceneRenderer(gl, world, HeadlessRender.settings(def.render()))) {
+                    for (View v : views) {
+                        try (Simulation sim = Simulation.of(world, def.simulationDef(), 0)) {
+                            sim.setLodTransition(def.render().lodTransition());
+                            for (int i = 0; i < STEPS; i++) {
+                                sim.stepFixed(v.camera());
+                            }
+                            Frame frame = sim.latestFrame();
+                            fb.bind();
+                            renderer.render(frame, v.camera(), width, height);
+                            Pixels.read(width, height, px);
+                            Pixels.writePng(out.resolve(v.file()), px, width, height);
+                        }
+                        log.println("Wrote " + out.resolve(v.file()));
+                        log.flush();
+                    }
+                }
+            }
+        } finally {
+            MemoryUtil.memFree(px);
+        }
+    }
+
+    private static List<View> views(String scene, SceneDef def, World world, double aspect) {
+        List<View> views = new ArrayList<>();
+        double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
+        switch (scene) {
+            case "meadow.xml" -> {
+                views.add(new View("meadow-default.png", ViewCamera.of(def.camera(), ground, aspect)));
+                views.add(new View("meadow-closeup.png", closeUp(def, world, aspect)));
+                double gy = world.terrain().heightfield().height(0, 0);
+                views.add(new View("meadow-above.png", new ViewCamera().setPosition(0, gy + 10, 0)
+                        .setOrientation(0, -Math.PI / 2 + 1e-3).setLens(def.camera().fovY(), aspect, 0.1, 200)));
+                ViewCamera back = ViewCamera.of(def.camera(), ground, aspect);
+                back.setOrientation(Math.atan2(SUN_X, -SUN_Z), def.camera().pitch());
+                views.add(new View("meadow-backlit.png", back));
+            }
+            case "rose.xml" -> {
+                double[] distances = {1.2, 12, 20};
+                double tip = stalkTip(world, 0);
+                double mid = world.plantY(0) + 0.5 * tip;
+                for (int level = 0; level < distances.length; level++) {
+                    double d = distances[level];
+                    double a = Math.toRadians(45);
+                    double fov = 2 * Math.atan(0.6 * tip / d);
+                    views.add(new View("rose-level" + level + ".png", new ViewCamera()
+                            .setPosition(world.plantX(0) - d * Math.sin(a), mid, world.plantZ(0) + d * Math.cos(a))
+                            .setOrientation(a, 0).setLens(fov, aspect, 0.02, 500)));
+                }
+            }
+            default -> views.add(new View(scene.replace(".xml", ".png"), ViewCamera.of(def.camera(), ground, aspect)));
+        }
+        return views;
+    }
+
+    /** 1 m south of the yellow flowers' densest patch, eye 0.6 m up, looking at the flower heads. */
+    private static ViewCamera closeUp(SceneDef def, World world, double aspect) {
+        int species = Math.min(1, world.plants().species().size() - 1);
+        int best = 0;
+        int most = -1;
+        for (int p = 0; p < world.plantCount(); p++) {
+            if (world.plantSpecies(p) != species) {
+                continue;
+            }
+            int n = 0;
+            for (int q = 0; q < world.plantCount(); q++) {
+                if (world.plantSpecies(q) == species && Math.hypot(world.plantX(p) - world.plantX(q),
+                        world.plantZ(p) - world.plantZ(q)) < 1) {
+                    n++;
+                }
+            }
+            if (n > most) {
+                most = n;
+                best = p;
+            }
+        }
+        double x = world.plantX(best);
+        double z = world.plantZ(best) + 1;
+        double eye = world.terrain().heightfield().height(x, z) + 0.6;
+        double target = world.plantY(best) + stalkTip(world, best);
+        double pitch = Math.atan2(target - eye, 1);
+        return new ViewCamera().setPosition(x, eye, z).setOrientation(0, pitch)
+                .setLens(def.camera().fovY(), aspect, 0.02, 500);
+    }
+
+    /** Height of plant p's stalk tip at rest above its base, metres (0.3 when it has no stalk). */
+    private static double stalkTip(World world, int p) {
+        SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+        for (int slot = 0; slot < m.slotCount(); slot++) {
+            if (m.def().components().get(m.slotComponent(slot)).type() == ComponentType.STALK) {
+                PoseTable t = m.slotPoseTable(slot, world.plantVariant(p));
+                return t.position(0, t.points() - 1, new Vector3f()).y;
+            }
+        }
+        return 0.3;
+    }
+}

@@ -1,0 +1,226 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.reflect.Field;
+import java.lang.reflect.Method;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.Heightfield;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 13, "Done when": grass looking toward the sun is at least as bright as looking away (back-lit
+ * grass glows), and the ground within 0.2 m of plant bases is at least 15% darker than open ground
+ * (contact darkening). Both in the meadow at 960x540.
+ *
+ * <p>Toward and away: from the densest patch of grass (the grass plant with most grass plants
+ * within 2 m), 1.2 m above the ground, looking 35 degrees down along the sun's horizontal direction and
+ * the opposite one; mean luma of the vegetation pixels. Contact: looking straight down from 4 m over
+ * the middle of the meadow; ground pixels are those where no plant geometry is (the plants drawn alone
+ * leave the sky colour), each placed on the terrain by its ray; mean luma of ground pixels within
+ * 0.2 m of a plant base against those farther than 1 m from every base.
+ *
+ * <p>The sun direction is read from the renderer: {@code RenderSettings.sunX()/sunY()/sunZ()} when they
+ * exist, else SceneRenderer's constants LX, LY, LZ (today's fixed sun), by reflection so this test
+ * keeps working when the settings arrive.
+ */
+class LightingLooksTest {
+    private static final int W = 960;
+    private static final int H = 540;
+
+    @Test
+    void grassTowardTheSunIsAtLeastAsBrightAsAway() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        int grass = 0; // the meadow's first species, grass tuft A
+        int best = MeadowSpots.densest(world, grass, 2);
+        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+            double[] sun = sunDirection(s.renderer);
+            double sunYaw = Math.atan2(sun[0], -sun[2]); // yaw looking along the sun's horizontal direction
+            double x = world.plantX(best);
+            double z = world.plantZ(best);
+            double y = world.plantY(best) + 1.2;
+            double toward = brightness(s, world, def, x, y, z, sunYaw);
+            double away = brightness(s, world, def, x, y, z, sunYaw + Math.PI);
+            System.out.printf("[look] meadow grass toward the sun: mean luma %.1f, away %.1f (ratio %.3f, >= 1)%n",
+                    toward, away, toward / away);
+            assertTrue(toward >= away, String.format("grass looking toward the sun (luma %.1f) is darker than"
+                    + " looking away (%.1f)", toward, away));
+        }
+    }
+
+    private static double brightness(Shots s, World world, SceneDef def, double x, double y, double z, double yaw) {
+        ViewCamera cam = new ViewCamera().setPosition(x, y, z).setOrientation(yaw, Math.toRadians(-35))
+                .setLens(def.camera().fovY(), W / (double) H, 0.05, 500);
+        Shots.View v = s.view(TestFrames.rest(world, cam), cam);
+        assertTrue(ImageMetrics.count(v.vegetation()) > W * H / 20, "little grass in view");
+        return ImageMetrics.meanLuma(v.full(), v.vegetation());
+    }
+
+    @Test
+    void groundNearPlantBasesIsDarker() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        Heightfield hf = world.terrain().heightfield();
+        double gy = hf.height(0, 0);
+        ViewCamera cam = new ViewCamera().setPosition(0, gy + 4, 0).setOrientation(0, -Math.PI / 2 + 1e-3)
+                .setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
+        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+            var frame = TestFrames.rest(world, cam);
+            ImageMetrics.Img full = s.render(frame, cam, true, true);
+            ImageMetrics.Img plants = s.render(frame, cam, true, false);
+            ImageMetrics.Img empty = s.render(frame, cam, false, false);
+            boolean[] geometry = ImageMetrics.differ(plants, empty, Shots.TOLERANCE);
+            boolean[] near = new boolean[W * H];
+            boolean[] open = new boolean[W * H];
+            Matrix4f inv = cam.viewProjection(new Matrix4f()).invert();
+            Bases bases = new Bases(world);
+            Vector3f a = new Vector3f();
+            Vector3f b = new Vector3f();
+            for (int py = 0; py < H; py++) {
+                for (int px = 0; px < W; px++) {
+                    int i = py * W + px;
+                    if (geometry[i]) {
+                        continue;
+                    }
+                    double nx = 2 * (px + 0.5) / W - 1;
+                    double ny = 2 * (py + 0.5) / H - 1;
+                    inv.transformProject((float) nx, (float) ny, -1f, a);
+                    inv.transformProject((float) nx, (float) ny, 1f, b);
+                    double[] g = onGround(hf, a, b);
+                    if (g == null) {
+                        continue;
+                    }
+                    double d = bases.nearest(g[0], g[1]);
+                    near[i] = d <= 0.2;
+                    open[i] = d > 1.0;
+                }
+            }
+            int nNear = ImageMetrics.count(near);
+            int nOpen = ImageMetrics.count(open);
+            double lNear = ImageMetrics.meanLuma(full, near);
+            double lOpen = ImageMetrics.meanLuma(full, open);
+            double darker = 1 - lNear / lOpen;
+            System.out.printf("[look] meadow ground within 0.2 m of plant bases: luma %.1f (%d px) vs open ground"
+                    + " %.1f (%d px): %.1f%% darker (>= 15%%)%n", lNear, nNear, lOpen, nOpen, 100 * darker);
+            assertTrue(nNear > 100 && nOpen > 100, "ground samples: near " + nNear + ", open " + nOpen);
+            assertTrue(darker >= 0.15, String.format("ground near plant bases is %.1f%% darker than open ground,"
+                    + " want >= 15%%", 100 * darker));
+        }
+    }
+
+    /** Where the segment a-b first goes below the terrain: {x, z}, or null. */
+    private static double[] onGround(Heightfield hf, Vector3f a, Vector3f b) {
+        double lo = 0;
+        double hi = 1;
+        double len = a.distance(b);
+        int steps = (int) Math.min(4000, Math.ceil(len / 0.05));
+        double prev = 0;
+        boolean found = false;
+        for (int k = 1; k <= steps; k++) {
+            double t = k / (double) steps;
+            double x = a.x + (b.x - a.x) * t;
+            double y = a.y + (b.y - a.y) * t;
+            double z = a.z + (b.z - a.z) * t;
+            if (!hf.contains(x, z)) {
+                return null;
+            }
+            if (y <= hf.height(x, z)) {
+                lo = prev;
+                hi = t;
+                found = true;
+                break;
+            }
+            prev = t;
+        }
+        if (!found) {
+            return null;
+        }
+        for (int k = 0; k < 30; k++) {
+            double t = 0.5 * (lo + hi);
+            double x = a.x + (b.x - a.x) * t;
+            double y = a.y + (b.y - a.y) * t;
+            double z = a.z + (b.z - a.z) * t;
+            if (y <= hf.height(x, z)) {
+                hi = t;
+            } else {
+                lo = t;
+            }
+        }
+        return new double[] {a.x + (b.x - a.x) * hi, a.z + (b.z - a.z) * hi};
+    }
+
+    /** Plant bases bucketed in 1 m cells: nearest-base queries up to 1 m look at 3 x 3 cells. */
+    private static final class Bases {
+        private final World world;
+        private final java.util.Map<Long, java.util.List<Integer>> cells = new java.util.HashMap<>();
+
+        Bases(World world) {
+            this.world = world;
+            for (int p = 0; p < world.plantCount(); p++) {
+                cells.computeIfAbsent(key((int) Math.floor(world.plantX(p)), (int) Math.floor(world.plantZ(p))),
+                        k -> new java.util.ArrayList<>()).add(p);
+            }
+        }
+
+        private static long key(int cx, int cz) {
+            return (long) cx << 32 ^ (cz & 0xFFFFFFFFL);
+        }
+
+        /** Distance to the nearest base if it is within 1 m, else a larger number. */
+        double nearest(double x, double z) {
+            int cx = (int) Math.floor(x);
+            int cz = (int) Math.floor(z);
+            double best = Double.MAX_VALUE;
+            for (int dz = -1; dz <= 1; dz++) {
+                for (int dx = -1; dx <= 1; dx++) {
+                    java.util.List<Integer> l = cells.get(key(cx + dx, cz + dz));
+                    if (l != null) {
+                        for (int p : l) {
+                            best = Math.min(best, Math.hypot(world.plantX(p) - x, world.plantZ(p) - z));
+                        }
+                    }
+                }
+            }
+            return best;
+        }
+    }
+
+    /**
+     * The unit direction toward the sun the renderer lights with: {@code settings().sunX/Y/Z()} when
+     * RenderSettings has them, else SceneRenderer's constants LX, LY, LZ.
+     */
+    static double[] sunDirection(SceneRenderer r) {
+        try {
+            RenderSettings st = r.settings();
+            Method mx = RenderSettings.class.getMethod("sunX");
+            Method my = RenderSettings.class.getMethod("sunY");
+            Method mz = RenderSettings.class.getMethod("sunZ");
+            return normal(((Number) mx.invoke(st)).doubleValue(), ((Number) my.invoke(st)).doubleValue(),
+                    ((Number) mz.invoke(st)).doubleValue());
+        } catch (NoSuchMethodException e) {
+            try {
+                return normal(constant("LX"), constant("LY"), constant("LZ"));
+            } catch (ReflectiveOperationException f) {
+                throw new IllegalStateException("no sun direction in RenderSettings or SceneRenderer", f);
+            }
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("cannot read the sun direction", e);
+        }
+    }
+
+    private static double constant(String name) throws ReflectiveOperationException {
+        Field f = SceneRenderer.class.getDeclaredField(name);
+        f.setAccessible(true);
+        return f.getFloat(null);
+    }
+
+    private static double[] normal(double x, double y, double z) {
+        double n = Math.sqrt(x * x + y * y + z * z);
+        return new double[] {x / n, y / n, z / n};
+    }
+}

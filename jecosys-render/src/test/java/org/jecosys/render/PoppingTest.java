@@ -1,0 +1,60 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.ImageMetrics.Img;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.CameraWalk;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 13, "Done when": no popping: on the meadow's camera walk (its scene path, 30 frames per second
+ * for one second, wind off: plants at rest, 960x540), the largest frame-to-frame change (mean absolute
+ * difference of the whole picture) is at most 1.15x the median one; and a still scene (wind off,
+ * camera still) does not change at all between frames.
+ */
+class PoppingTest {
+    private static final int W = 960;
+    private static final int H = 540;
+    private static final int FRAMES = 31;
+
+    @Test
+    void noFrameOfTheWalkChangesMuchMoreThanTheOthers() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        CameraWalk walk = new CameraWalk(def.camera(), world.terrain().heightfield(), W / (double) H);
+        Img[] frames = new Img[FRAMES];
+        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+            for (int i = 0; i < FRAMES; i++) {
+                ViewCamera cam = walk.at(i / 30.0);
+                frames[i] = s.render(TestFrames.rest(world, cam), cam, true, true);
+            }
+        }
+        double[] change = ImageMetrics.frameChanges(frames);
+        double[] lm = ImageMetrics.largestAndMedian(change);
+        double ratio = lm[0] / lm[1];
+        System.out.printf("[look] meadow camera walk: largest frame change %.3f/255, median %.3f/255, ratio %.2f"
+                + " (<= 1.15)%n", lm[0], lm[1], ratio);
+        assertTrue(lm[1] > 0, "the walk does not move the picture");
+        assertTrue(ratio <= 1.15, String.format("largest frame-to-frame change %.3f is %.2fx the median %.3f,"
+                + " want <= 1.15x", lm[0], ratio, lm[1]));
+    }
+
+    @Test
+    void aStillSceneDoesNotChange() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        ViewCamera cam = RenderScenes.camera(def, world, W, H);
+        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+            Img a = s.render(TestFrames.rest(world, cam), cam, true, true);
+            Img b = s.render(TestFrames.rest(world, cam), cam, true, true);
+            Img c = s.render(TestFrames.rest(world, cam), cam, true, true);
+            double d = Math.max(ImageMetrics.meanAbsDiff(a, b, null), ImageMetrics.meanAbsDiff(b, c, null));
+            System.out.printf("[look] meadow still scene: frame-to-frame change %.4f/255 (must be 0)%n", d);
+            assertEquals(0, d, "a still scene changes between frames");
+        }
+    }
+}

@@ -1,0 +1,142 @@
+package org.jecosys.render;
+
+import java.nio.ByteBuffer;
+import org.jecosys.math.Camera;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.ImageMetrics.Img;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.joml.Matrix4f;
+import org.joml.Vector4f;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * Headless pictures of one world for the look tests: a GL context, a framebuffer and a scene
+ * renderer, and the four renders a vegetation mask needs. Render thread = the test's thread.
+ */
+final class Shots implements AutoCloseable {
+    /** Largest channel difference (0..255) still counted as "the same pixel" in vegetation masks. */
+    static final int TOLERANCE = 3;
+
+    final int width;
+    final int height;
+    final World world;
+    final GlContext gl;
+    final GlFramebuffer fb;
+    final SceneRenderer renderer;
+    private final ByteBuffer px;
+
+    Shots(World world, RenderSettings settings, int width, int height) {
+        this.world = world;
+        this.width = width;
+        this.height = height;
+        px = MemoryUtil.memAlloc(4 * width * height);
+        gl = GlContext.headless(true);
+        fb = new GlFramebuffer(gl.tracker(), width, height);
+        renderer = new SceneRenderer(gl, world, settings);
+    }
+
+    /** One render with plants and terrain switched as given. */
+    Img render(Frame frame, Camera camera, boolean plants, boolean terrain) {
+        fb.bind();
+        renderer.drawPlants = plants;
+        renderer.drawTerrain = terrain;
+        try {
+            renderer.render(frame, camera, width, height);
+        } finally {
+            renderer.drawPlants = true;
+            renderer.drawTerrain = true;
+        }
+        Pixels.read(width, height, px);
+        gl.debug().check("rendering a look-test picture");
+        return Img.of(px, width, height);
+    }
+
+    /**
+     * Distance from the eye to what each pixel of the terrain alone shows (the depth buffer of a
+     * render without plants, unprojected), metres; infinity where the sky is. Allocates.
+     */
+    double[] groundDistance(Frame frame, Camera camera) {
+        fb.bind();
+        renderer.drawPlants = false;
+        try {
+            renderer.render(frame, camera, width, height);
+        } finally {
+            renderer.drawPlants = true;
+        }
+        java.nio.FloatBuffer depth = MemoryUtil.memAllocFloat(width * height);
+        try {
+            org.lwjgl.opengl.GL11C.glReadPixels(0, 0, width, height, org.lwjgl.opengl.GL11C.GL_DEPTH_COMPONENT,
+                    org.lwjgl.opengl.GL11C.GL_FLOAT, depth);
+            gl.debug().check("reading depth");
+            Matrix4f inv = camera.viewProjection(new Matrix4f()).invert();
+            org.joml.Vector3f p = new org.joml.Vector3f();
+            double[] d = new double[width * height];
+            for (int y = 0; y < height; y++) {
+                for (int x = 0; x < width; x++) {
+                    int i = y * width + x;
+                    float z = depth.get(i);
+                    if (z >= 1f) {
+                        d[i] = Double.POSITIVE_INFINITY;
+                        continue;
+                    }
+                    inv.transformProject((float) (2 * (x + 0.5) / width - 1), (float) (2 * (y + 0.5) / height - 1),
+                            2 * z - 1, p);
+                    d[i] = Math.sqrt((p.x - camera.x()) * (p.x - camera.x()) + (p.y - camera.y()) * (p.y - camera.y())
+                            + (p.z - camera.z()) * (p.z - camera.z()));
+                }
+            }
+            return d;
+        } finally {
+            MemoryUtil.memFree(depth);
+        }
+    }
+
+    /** The full picture and its vegetation mask ({@link ImageMetrics#vegetation}). */
+    record View(Img full, Img ground, boolean[] vegetation) {
+    }
+
+    View view(Frame frame, Camera camera) {
+        Img full = render(frame, camera, true, true);
+        Img ground = render(frame, camera, false, true);
+        Img plants = render(frame, camera, true, false);
+        Img empty = render(frame, camera, false, false);
+        return new View(full, ground, ImageMetrics.vegetation(full, ground, plants, empty, TOLERANCE));
+    }
+
+    /**
+     * Projects a world point to window pixels (GL order: x right, y up from the bottom row).
+     *
+     * @return {x, y, distance along the view} or null behind the eye
+     */
+    static double[] project(Camera camera, double x, double y, double z, int width, int height) {
+        Matrix4f vp = camera.viewProjection(new Matrix4f());
+        Vector4f v = vp.transform(new Vector4f((float) x, (float) y, (float) z, 1f));
+        if (v.w <= 1e-6f) {
+            return null;
+        }
+        return new double[] {(v.x / v.w + 1) * 0.5 * width, (v.y / v.w + 1) * 0.5 * height, v.w};
+    }
+
+    /** A camera at an eye point looking at a target point, with the given lens. */
+    static ViewCamera lookAt(double ex, double ey, double ez, double tx, double ty, double tz, double fovY,
+                             double aspect, double near, double far) {
+        double dx = tx - ex;
+        double dy = ty - ey;
+        double dz = tz - ez;
+        double yaw = Math.atan2(dx, -dz);
+        double pitch = Math.atan2(dy, Math.hypot(dx, dz));
+        return new ViewCamera().setPosition(ex, ey, ez).setOrientation(yaw, pitch).setLens(fovY, aspect, near, far);
+    }
+
+    @Override
+    public void close() {
+        try {
+            renderer.close();
+            fb.close();
+            gl.close();
+        } finally {
+            MemoryUtil.memFree(px);
+        }
+    }
+}
