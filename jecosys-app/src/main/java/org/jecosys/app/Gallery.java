@@ -79,7 +79,7 @@ final class Gallery {
         double aspect = width / (double) height;
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
+             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, HeadlessRender.SAMPLES)) {
             for (String name : SCENES) {
                 SceneDef def = SceneArgs.load(scenes.resolve(name), err);
                 if (def == null) {
@@ -98,6 +98,7 @@ final class Gallery {
                             Frame frame = sim.latestFrame();
                             fb.bind();
                             renderer.render(frame, v.camera(), width, height);
+                            fb.resolve();
                             Pixels.read(width, height, px);
                             Pixels.writePng(out.resolve(v.file()), px, width, height);
                         }

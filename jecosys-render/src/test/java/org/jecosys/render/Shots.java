@@ -22,7 +22,12 @@ final class Shots implements AutoCloseable {
     final int height;
     final World world;
     final GlContext gl;
+    /** Multisampled as shipped ({@link #SAMPLES}); the colour renders. */
     final GlFramebuffer fb;
+    /** Single-sampled: the depth reads of {@link #groundDistance}. */
+    final GlFramebuffer depthFb;
+    /** Samples per pixel of the colour renders: the library's default anti-aliasing. */
+    static final int SAMPLES = 4;
     final SceneRenderer renderer;
     private final ByteBuffer px;
 
@@ -32,7 +37,8 @@ final class Shots implements AutoCloseable {
         this.height = height;
         px = MemoryUtil.memAlloc(4 * width * height);
         gl = GlContext.headless(true);
-        fb = new GlFramebuffer(gl.tracker(), width, height);
+        fb = new GlFramebuffer(gl.tracker(), width, height, SAMPLES);
+        depthFb = new GlFramebuffer(gl.tracker(), width, height);
         renderer = new SceneRenderer(gl, world, settings);
     }
 
@@ -47,6 +53,7 @@ final class Shots implements AutoCloseable {
             renderer.drawPlants = true;
             renderer.drawTerrain = true;
         }
+        fb.resolve();
         Pixels.read(width, height, px);
         gl.debug().check("rendering a look-test picture");
         return Img.of(px, width, height);
@@ -57,7 +64,7 @@ final class Shots implements AutoCloseable {
      * render without plants, unprojected), metres; infinity where the sky is. Allocates.
      */
     double[] groundDistance(Frame frame, Camera camera) {
-        fb.bind();
+        depthFb.bind();
         renderer.drawPlants = false;
         try {
             renderer.render(frame, camera, width, height);
@@ -134,6 +141,7 @@ final class Shots implements AutoCloseable {
         try {
             renderer.close();
             fb.close();
+            depthFb.close();
             gl.close();
         } finally {
             MemoryUtil.memFree(px);

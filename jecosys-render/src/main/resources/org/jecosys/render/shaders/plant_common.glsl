@@ -37,7 +37,7 @@ uniform float uHeadPixels;                       // least size of a flower part,
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
 
 const vec3 STRAW = vec3(0.74, 0.66, 0.38);
-const vec3 THROUGH = vec3(0.95, 1.05, 0.50);    // light through a blade: yellower than reflected light
+const vec3 THROUGH = vec3(1.0, 1.12, 0.55);     // light through a blade: yellower than reflected light
 
 struct Placed {
     vec3 world;                                  // vertex position, world
@@ -147,8 +147,9 @@ vec3 shade(Placed v, vec4 look, bool far) {
         float nl = dot(n, uLightDir);
         float front = max(nl, 0.0);
         float back = max(-nl, 0.0);
-        float toward = max(dot(-e, uLightDir), 0.0);      // looking toward the sun
-        float through = kind == 3 ? 0.0 : back * (0.55 + 0.9 * toward * toward) * (0.55 + 0.45 * along);
+        float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
+        // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
+        float through = kind == 3 ? 0.0 : back * (1.15 + 0.6 * toward * toward) * (0.6 + 0.4 * along);
         light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
                 + uSunColour * THROUGH * through;
         if (!far && nl > 0.0) {
