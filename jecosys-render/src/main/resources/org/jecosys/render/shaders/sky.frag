@@ -1,0 +1,24 @@
+#version 330 core
+// Sky: a vertical gradient from the horizon colour (also the haze colour of plants and ground) to the
+// zenith colour, brighter toward the sun, with a glow and the sun's disc.
+in vec2 vNdc;
+uniform mat4 uInvViewProj;
+uniform vec3 uHorizon;
+uniform vec3 uZenith;
+uniform vec3 uSunDir;                            // unit vector toward the sun
+uniform vec3 uSunColour;                         // sun colour times intensity
+out vec4 fragColour;
+
+void main() {
+    vec4 near = uInvViewProj * vec4(vNdc, -1.0, 1.0);
+    vec4 far = uInvViewProj * vec4(vNdc, 0.0, 1.0);  // mid-depth: better conditioned than the far plane
+    vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
+    float up = clamp(dir.y, 0.0, 1.0);
+    vec3 sky = mix(uHorizon, uZenith, sqrt(up));
+    float c = max(dot(dir, uSunDir), 0.0);
+    // broad forward scattering, stronger near the horizon, and a tight glow around the disc
+    float glow = 0.22 * pow(c, 4.0) * (1.0 - 0.5 * up) + 0.45 * pow(c, 64.0);
+    float disc = smoothstep(0.99985, 0.99993, c);  // about 0.7 degrees across
+    vec3 colour = sky + uSunColour * glow + vec3(disc);
+    fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+}
