@@ -19,6 +19,6 @@ void main() {
     // broad forward scattering, stronger near the horizon, and a tight glow around the disc
     float glow = 0.22 * pow(c, 4.0) * (1.0 - 0.5 * up) + 0.45 * pow(c, 64.0);
     float disc = smoothstep(0.99985, 0.99993, c);  // about 0.7 degrees across
-    vec3 colour = sky + uSunColour * glow + vec3(disc);
+    vec3 colour = sky + uSunColour * (glow + 2.0 * disc);
     fragColour = vec4(min(colour, vec3(1.0)), 1.0);
 }
