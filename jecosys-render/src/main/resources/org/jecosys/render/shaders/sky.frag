@@ -1,8 +1,8 @@
 #version 330 core
 // Sky: a vertical gradient from the horizon colour (also the haze colour of plants and ground) to the
 // zenith colour, brighter toward the sun, with a glow and the sun's disc.
-in vec2 vNdc;
-uniform mat4 uInvViewProj;
+in vec4 vNear;
+in vec4 vMid;
 uniform vec3 uHorizon;
 uniform vec3 uZenith;
 uniform vec3 uSunDir;                            // unit vector toward the sun
@@ -10,9 +10,7 @@ uniform vec3 uSunColour;                         // sun colour times intensity
 out vec4 fragColour;
 
 void main() {
-    vec4 near = uInvViewProj * vec4(vNdc, -1.0, 1.0);
-    vec4 far = uInvViewProj * vec4(vNdc, 0.0, 1.0);  // mid-depth: better conditioned than the far plane
-    vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
+    vec3 dir = normalize(vMid.xyz / vMid.w - vNear.xyz / vNear.w);
     float up = clamp(dir.y, 0.0, 1.0);
     vec3 sky = mix(uHorizon, uZenith, sqrt(up));
     float c = max(dot(dir, uSunDir), 0.0);
