@@ -45,8 +45,15 @@ final class HeadlessRender {
             case NUTRIENTS -> TerrainTint.NUTRIENTS;
             default -> TerrainTint.NONE;
         };
+        RenderDef.Light l = def.light();
+        RenderDef.Patches p = def.patches();
         return new RenderSettings().sky(def.sky()).tint(tint)
-                .showField(def.showField()).showWind(def.showWind());
+                .showField(def.showField()).showWind(def.showWind())
+                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
+                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
+                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
+                .fog((float) l.fogStart(), (float) l.fogEnd())
+                .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
     static void run(SceneDef def, Path baseDir, int frames, Path out, int width, int height, boolean maps,

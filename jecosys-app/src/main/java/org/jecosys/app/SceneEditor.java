@@ -308,6 +308,19 @@ final class SceneEditor {
         }
     }
 
+    /**
+     * Sets the sun's direction (saved in the scene's render light).
+     *
+     * @param azimuthDeg   degrees, in [-360, 360]
+     * @param elevationDeg degrees, in [0, 90]
+     */
+    void setSun(float azimuthDeg, float elevationDeg) {
+        if (azimuthDeg != settings.sunAzimuth() || elevationDeg != settings.sunElevation()) {
+            settings.sun(azimuthDeg, elevationDeg);
+            dirty = true;
+        }
+    }
+
     /** Sets the terrain tint (saved in the scene's render settings). */
     void setTint(TerrainTint tint) {
         if (tint != settings.tint()) {
@@ -339,8 +352,17 @@ final class SceneEditor {
                     sd.variation()));
         }
         RenderDef r = def.render();
+        RenderDef.Light l = r.light();
+        // the panel edits the sun; an unmoved slider keeps the scene's exact angles
+        double az = (float) Math.toDegrees(l.sunAzimuth()) == settings.sunAzimuth() ? l.sunAzimuth()
+                : Math.toRadians(settings.sunAzimuth());
+        double el = (float) Math.toDegrees(l.sunElevation()) == settings.sunElevation() ? l.sunElevation()
+                : Math.toRadians(settings.sunElevation());
+        RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
+                l.contactShadow(), l.fogStart(), l.fogEnd());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
-                RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind());
+                RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind(), nl,
+                r.patches());
         AnimationDef a = def.animation();
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
                 a.seed());

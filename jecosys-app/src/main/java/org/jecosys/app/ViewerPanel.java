@@ -165,6 +165,16 @@ final class ViewerPanel {
                 editor.setLodTransition(edit[0]);
             }
         }
+        if (ImGui.collapsingHeader("Light")) {
+            edit[0] = s.sunAzimuth();
+            if (ImGui.sliderFloat("sun azimuth (deg)", edit, -180, 360, "%.0f")) {
+                editor.setSun(edit[0], s.sunElevation());
+            }
+            edit[0] = s.sunElevation();
+            if (ImGui.sliderFloat("sun elevation (deg)", edit, 0, 90, "%.0f")) {
+                editor.setSun(s.sunAzimuth(), edit[0]);
+            }
+        }
         if (ImGui.collapsingHeader("Overlays")) {
             if (ImGui.checkbox("wind arrows on the terrain (V)", controls.showWind())) {
                 controls.showWind(!controls.showWind());

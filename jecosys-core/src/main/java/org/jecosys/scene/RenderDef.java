@@ -8,14 +8,113 @@ import org.jecosys.math.Rgb;
  *
  * @param width         default window or image width, pixels, in [16, 8192]
  * @param height        default window or image height, pixels, in [16, 8192]
- * @param sky           background colour
+ * @param sky           horizon and fog colour (the sky gradient runs from it to {@link Light#skyZenith()})
  * @param lodTransition width of the band over which two levels of detail are dithered, metres, in [0, 10]
  * @param terrainTint   which resource map tints the terrain
  * @param showField     whether the force-field quadtree overlay starts visible (paper Figure 2)
  * @param showWind      whether the wind-vector overlay starts visible (paper Figure 3)
+ * @param light         sun, sky gradient, ambient light, contact shadow and aerial perspective
+ * @param patches       large-scale healthy/dry colour patches over the ground and the plants
  */
 public record RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
-                        boolean showWind) {
+                        boolean showWind, Light light, Patches patches) {
+    /**
+     * Sun, sky and atmosphere of a scene: presentation only, never read by the simulation. Immutable;
+     * any thread.
+     *
+     * @param sunAzimuth    compass angle of the sun, radians, in [-2 pi, 2 pi]: the direction toward the
+     *                      sun is (cos el cos az, sin el, cos el sin az), so 0 is +X and pi/2 is +Z
+     * @param sunElevation  height of the sun above the horizon, radians, in [0, pi/2]
+     * @param sunColour     colour of the sunlight
+     * @param sunIntensity  multiplier of the sun colour, in [0, 4] (radiance = sunColour x sunIntensity)
+     * @param skyZenith     sky colour straight up (the render's {@code sky} is the horizon and fog colour)
+     * @param ambient       sky light reaching an upward-facing surface, colour times strength
+     * @param contactShadow how much darker fully occluded ground under plants is, in [0, 1]
+     * @param fogStart      distance where the aerial perspective (haze toward the horizon colour) begins,
+     *                      metres, &gt;= 0
+     * @param fogEnd        distance of full haze, metres, &gt; fogStart
+     */
+    public record Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
+                        Rgb ambient, double contactShadow, double fogStart, double fogEnd) {
+        /** Largest sun azimuth magnitude, degrees (the Def holds radians). */
+        public static final double MAX_AZIMUTH_DEGREES = 360;
+        /** Largest sun elevation, degrees (the Def holds radians). */
+        public static final double MAX_ELEVATION_DEGREES = 90;
+        /** Largest sun intensity. */
+        public static final double MAX_INTENSITY = 4;
+        /** Largest fog distance, metres. */
+        public static final double MAX_FOG = 100_000;
+
+        /**
+         * Checks the components.
+         *
+         * @param sunAzimuth    radians, in [-2 pi, 2 pi]
+         * @param sunElevation  radians, in [0, pi/2]
+         * @param sunColour     not null
+         * @param sunIntensity  in [0, 4]
+         * @param skyZenith     not null
+         * @param ambient       not null
+         * @param contactShadow in [0, 1]
+         * @param fogStart      metres, in [0, 100000]
+         * @param fogEnd        metres, in (fogStart, 100000]
+         * @throws IllegalArgumentException when a component is null or out of range
+         */
+        public Light {
+            Require.degrees("sunAzimuth", sunAzimuth, -MAX_AZIMUTH_DEGREES, MAX_AZIMUTH_DEGREES);
+            Require.degrees("sunElevation", sunElevation, 0, MAX_ELEVATION_DEGREES);
+            Require.nonNull("sunColour", sunColour);
+            Require.range("sunIntensity", sunIntensity, 0, MAX_INTENSITY);
+            Require.nonNull("skyZenith", skyZenith);
+            Require.nonNull("ambient", ambient);
+            Require.range("contactShadow", contactShadow, 0, 1);
+            Require.range("fogStart", fogStart, 0, MAX_FOG);
+            Require.range("fogEnd", fogEnd, 0, MAX_FOG);
+            if (!(fogEnd > fogStart)) {
+                throw new IllegalArgumentException("fogEnd must be > fogStart (" + fogStart + "), got " + fogEnd);
+            }
+        }
+
+        /**
+         * The defaults: the sun at azimuth 135 degrees, elevation 50 degrees (high, behind and to the left
+         * of a camera looking along -Z, as the scenes' start cameras do), warm white at intensity 0.8, a
+         * deeper blue zenith, a cool ambient of about 0.45, contact shadow 0.5 and haze from 20 m to 150 m.
+         */
+        public static final Light DEFAULT = new Light(Math.toRadians(135), Math.toRadians(50),
+                new Rgb(1f, 0.95f, 0.85f), 0.8, new Rgb(0.30f, 0.50f, 0.85f), new Rgb(0.42f, 0.46f, 0.52f), 0.5,
+                20, 150);
+    }
+
+    /**
+     * Large-scale colour patches: a seeded noise over the ground mixes healthy and dry colour (plants in
+     * dry patches turn toward straw, the soil lighter). Presentation only. Immutable; any thread.
+     *
+     * @param scale    feature size of the noise, metres, in [0.5, 1000]
+     * @param strength how far the driest patches go from healthy to dry, in [0, 1]; 0 turns patches off
+     * @param seed     seed of the noise (any int)
+     */
+    public record Patches(double scale, double strength, int seed) {
+        /** Smallest patch scale, metres. */
+        public static final double MIN_SCALE = 0.5;
+        /** Largest patch scale, metres. */
+        public static final double MAX_SCALE = 1000;
+
+        /**
+         * Checks the components.
+         *
+         * @param scale    metres, in [0.5, 1000]
+         * @param strength in [0, 1]
+         * @param seed     any int
+         * @throws IllegalArgumentException when a component is out of range
+         */
+        public Patches {
+            Require.range("scale", scale, MIN_SCALE, MAX_SCALE);
+            Require.range("strength", strength, 0, 1);
+        }
+
+        /** The defaults: 12 m patches at strength 0.3, seed 1. */
+        public static final Patches DEFAULT = new Patches(12, 0.3, 1);
+    }
+
     /** Which map tints the terrain. */
     public enum Tint {
         /** Plain terrain colour. */
@@ -47,6 +146,8 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @param terrainTint   terrain tint, not null
      * @param showField     whether the quadtree overlay starts visible
      * @param showWind      whether the wind-vector overlay starts visible
+     * @param light         sun, sky and atmosphere, not null
+     * @param patches       colour patches, not null
      * @throws IllegalArgumentException when a component is null or out of range
      */
     public RenderDef {
@@ -55,9 +156,42 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         Require.nonNull("sky", sky);
         Require.range("lodTransition", lodTransition, 0, 10);
         Require.nonNull("terrainTint", terrainTint);
+        Require.nonNull("light", light);
+        Require.nonNull("patches", patches);
     }
 
-    /** {@return 1280x720, light blue sky, a 1 m transition band, no tint, overlays hidden} */
+    /**
+     * The settings with the default light and patches ({@link Light#DEFAULT}, {@link Patches#DEFAULT}).
+     * Any thread; allocates.
+     *
+     * @param width         default width, pixels, in [16, 8192]
+     * @param height        default height, pixels, in [16, 8192]
+     * @param sky           horizon and fog colour, not null
+     * @param lodTransition dithering band width, metres, in [0, 10]
+     * @param terrainTint   terrain tint, not null
+     * @param showField     whether the quadtree overlay starts visible
+     * @param showWind      whether the wind-vector overlay starts visible
+     * @throws IllegalArgumentException when a component is null or out of range
+     */
+    public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
+                     boolean showWind) {
+        this(width, height, sky, lodTransition, terrainTint, showField, showWind, Light.DEFAULT, Patches.DEFAULT);
+    }
+
+    /**
+     * A copy with other light settings. Any thread; allocates.
+     *
+     * @param light the new light, not null
+     * @return the copy
+     */
+    public RenderDef withLight(Light light) {
+        return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches);
+    }
+
+    /**
+     * {@return 1280x720, light blue horizon, a 1 m transition band, no tint, overlays hidden, the default
+     * light and patches}
+     */
     public static RenderDef defaults() {
         return new RenderDef(1280, 720, new Rgb(0.62f, 0.76f, 0.92f), 1, Tint.NONE, false, false);
     }

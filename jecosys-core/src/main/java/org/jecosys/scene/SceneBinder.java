@@ -239,7 +239,8 @@ final class SceneBinder {
         Values varV = s.child("variation");
         VariationDef variation = varV == null ? VariationDef.NONE : make(varV, () -> new VariationDef(
                 varV.integer("variants"), varV.num("length"), varV.num("width"), varV.num("curvature"),
-                varV.num("tilt"), varV.num("responseTime"), varV.num("stiffness")));
+                varV.num("tilt"), varV.num("responseTime"), varV.num("stiffness"), varV.num("hue"), varV.num("value"),
+                varV.num("dryTips")));
         List<Values> compValues = s.children("component");
         Set<String> compIds = new HashSet<>();
         for (Values c : compValues) {
@@ -427,9 +428,20 @@ final class SceneBinder {
         if (r == null) {
             return RenderDef.defaults();
         }
+        Values lv = r.child("light");
+        RenderDef.Light light = lv == null ? RenderDef.Light.DEFAULT : make(lv, () -> new RenderDef.Light(
+                lv.num("sunAzimuth"), lv.num("sunElevation"), (Rgb) lv.get("sunColour"), lv.num("sunIntensity"),
+                (Rgb) lv.get("skyZenith"), (Rgb) lv.get("ambient"), lv.num("contactShadow"), lv.num("fogStart"),
+                lv.num("fogEnd")));
+        Values pv = r.child("patches");
+        RenderDef.Patches patches = pv == null ? RenderDef.Patches.DEFAULT : make(pv, () -> new RenderDef.Patches(
+                pv.num("scale"), pv.num("strength"), pv.integer("seed")));
+        if (light == null || patches == null) {
+            return null;
+        }
         return make(r, () -> new RenderDef(r.integer("width"), r.integer("height"), (Rgb) r.get("sky"),
                 r.num("lodTransition"), byXml(RenderDef.Tint.values(), r.str("terrainTint")), r.bool("showField"),
-                r.bool("showWind")));
+                r.bool("showWind"), light, patches));
     }
 
     /** The constant whose xmlName() is {@code word}; the validator has already checked it exists. */

@@ -277,7 +277,14 @@ final class SceneSchema {
                         + "(seeded): neighbours move alike but not in lockstep.").range(0, VariationDef.MAX_FRACTION)
                         .def(0.0).get(d -> ((VariationDef) d).responseTime()))
                 .attr(num("stiffness", "", "Relative variation of the stiffness from plant to plant (seeded).")
-                        .range(0, VariationDef.MAX_FRACTION).def(0.0).get(d -> ((VariationDef) d).stiffness()));
+                        .range(0, VariationDef.MAX_FRACTION).def(0.0).get(d -> ((VariationDef) d).stiffness()))
+                .attr(num("hue", "degrees", "Colour only: standard deviation of the per-plant hue shift (seeded).")
+                        .range(0, VariationDef.MAX_HUE_DEGREES).def(0.0).get(d -> ((VariationDef) d).hue()))
+                .attr(num("value", "", "Colour only: standard deviation of the per-plant brightness factor "
+                        + "(1 is the species colour; seeded).").range(0, VariationDef.MAX_VALUE).def(0.0)
+                        .get(d -> ((VariationDef) d).value()))
+                .attr(num("dryTips", "", "Colour only: how far the leaf tips turn straw-coloured (0 none, 1 fully).")
+                        .range(0, 1).def(0.0).get(d -> ((VariationDef) d).dryTips()));
         ElementSpec component = new ElementSpec("component", "A component type: skeleton shape (paper section 4.1) "
                 + "and dynamic-constraint spring (section 4.2, equations 4-5).")
                 .attr(AttrSpec.of("id", ID, "", "Unique within the species.").required().get(d -> c(d).id()))
@@ -457,13 +464,50 @@ final class SceneSchema {
                         .def(0).get(d -> ((AnimationDef) d).threads()))
                 .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
 
+        RenderDef.Light ld = RenderDef.Light.DEFAULT;
+        Function<Object, RenderDef.Light> li = d -> (RenderDef.Light) d;
+        ElementSpec light = new ElementSpec("light", "Sun, sky gradient, ambient light, contact shadow and aerial "
+                + "perspective (presentation only).")
+                .attr(angle("sunAzimuth", "Compass angle of the sun: the direction toward it is (cos el cos az, "
+                        + "sin el, cos el sin az), so 0 is +X and 90 is +Z.")
+                        .range(-RenderDef.Light.MAX_AZIMUTH_DEGREES, RenderDef.Light.MAX_AZIMUTH_DEGREES)
+                        .def(ld.sunAzimuth()).get(d -> li.apply(d).sunAzimuth()))
+                .attr(angle("sunElevation", "Height of the sun above the horizon.")
+                        .range(0, RenderDef.Light.MAX_ELEVATION_DEGREES).def(ld.sunElevation())
+                        .get(d -> li.apply(d).sunElevation()))
+                .attr(AttrSpec.of("sunColour", COLOUR, "", "Colour of the sunlight.").def(ld.sunColour())
+                        .get(d -> li.apply(d).sunColour()))
+                .attr(num("sunIntensity", "", "Multiplier of the sun colour.").range(0, RenderDef.Light.MAX_INTENSITY)
+                        .def(ld.sunIntensity()).get(d -> li.apply(d).sunIntensity()))
+                .attr(AttrSpec.of("skyZenith", COLOUR, "", "Sky colour straight up; the render's sky is the "
+                        + "horizon.").def(ld.skyZenith()).get(d -> li.apply(d).skyZenith()))
+                .attr(AttrSpec.of("ambient", COLOUR, "", "Sky light on an upward-facing surface (colour times "
+                        + "strength).").def(ld.ambient()).get(d -> li.apply(d).ambient()))
+                .attr(num("contactShadow", "", "How much darker fully occluded ground under plants is (0 none).")
+                        .range(0, 1).def(ld.contactShadow()).get(d -> li.apply(d).contactShadow()))
+                .attr(num("fogStart", "metres", "Distance where the haze toward the horizon colour begins.")
+                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogStart()).get(d -> li.apply(d).fogStart()))
+                .attr(num("fogEnd", "metres", "Distance of full haze; above fogStart.")
+                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogEnd()).get(d -> li.apply(d).fogEnd()));
+        RenderDef.Patches pd = RenderDef.Patches.DEFAULT;
+        ElementSpec patches = new ElementSpec("patches", "Large healthy/dry colour patches over the ground and "
+                + "the plants, from seeded noise (presentation only).")
+                .attr(num("scale", "metres", "Feature size of the noise.")
+                        .range(RenderDef.Patches.MIN_SCALE, RenderDef.Patches.MAX_SCALE).def(pd.scale())
+                        .get(d -> ((RenderDef.Patches) d).scale()))
+                .attr(num("strength", "", "How far the driest patches go toward dry (0 turns patches off).")
+                        .range(0, 1).def(pd.strength()).get(d -> ((RenderDef.Patches) d).strength()))
+                .attr(integer("seed", "Seed of the noise.").range(Integer.MIN_VALUE, Integer.MAX_VALUE)
+                        .def(pd.seed()).get(d -> ((RenderDef.Patches) d).seed()));
+
         RenderDef rd = RenderDef.defaults();
         ElementSpec render = new ElementSpec("render", "Presentation settings.")
                 .attr(integer("width", "Window or image width, pixels.").range(16, 8192).def(rd.width())
                         .get(d -> ((RenderDef) d).width()))
                 .attr(integer("height", "Window or image height, pixels.").range(16, 8192).def(rd.height())
                         .get(d -> ((RenderDef) d).height()))
-                .attr(AttrSpec.of("sky", COLOUR, "", "Background colour.").def(rd.sky())
+                .attr(AttrSpec.of("sky", COLOUR, "", "Horizon and fog colour (the sky gradient runs from it to "
+                        + "the light's skyZenith).").def(rd.sky())
                         .get(d -> ((RenderDef) d).sky()))
                 .attr(num("lodTransition", "metres", "Band over which two levels of detail are dithered.")
                         .range(0, 10).def(rd.lodTransition()).get(d -> ((RenderDef) d).lodTransition()))
@@ -473,7 +517,9 @@ final class SceneSchema {
                 .attr(bool("showField", "Force-field overlay visible at start (paper Figure 2).").def(false)
                         .get(d -> ((RenderDef) d).showField()))
                 .attr(bool("showWind", "Wind-vector overlay visible at start (paper Figure 3).").def(false)
-                        .get(d -> ((RenderDef) d).showWind()));
+                        .get(d -> ((RenderDef) d).showWind()))
+                .child(light, 0, 1, d -> List.of(((RenderDef) d).light()))
+                .child(patches, 0, 1, d -> List.of(((RenderDef) d).patches()));
 
         ROOT = new ElementSpec("scene", "A JEcoSys scene, format version 1. Children appear in this order.")
                 .attr(integer("version", "Format version.").range(SceneDef.FORMAT_VERSION, SceneDef.FORMAT_VERSION)

@@ -57,8 +57,9 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * Saves, and puts back, every piece of GL state the scene renderer changes, so that it composes with a
- * host's own drawing: the program, vertex array and array-buffer bindings, the active texture unit and
- * the buffer textures of the units the renderer uses, the buffers bound to {@code GL_TEXTURE_BUFFER}
+ * host's own drawing: the program, vertex array and array-buffer bindings, the active texture unit,
+ * the buffer textures of the units the renderer uses, the 2D texture of unit {@link #UNIT_2D}, the
+ * buffers bound to {@code GL_TEXTURE_BUFFER}
  * and {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index 0), rasteriser discard, alpha-to-coverage,
  * the depth test, depth function and depth mask, face culling, blending (switch, factors, equations),
  * the scissor test and box, the clear colour and the viewport. The framebuffer binding is not changed
@@ -75,6 +76,9 @@ final class GlStateGuard implements AutoCloseable {
      */
     static final int UNITS = 5;
 
+    /** The texture unit whose 2D texture binding the renderer changes: the terrain's occlusion map. */
+    static final int UNIT_2D = 5;
+
     private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST,
         org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD, org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE};
 
@@ -82,6 +86,7 @@ final class GlStateGuard implements AutoCloseable {
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);
     private final boolean[] caps = new boolean[CAPS.length];
     private final int[] unitTextures = new int[UNITS];
+    private int texture2d;
     private int program;
     private int vertexArray;
     private int arrayBuffer;
@@ -116,6 +121,8 @@ final class GlStateGuard implements AutoCloseable {
             glActiveTexture(GL_TEXTURE0 + u);
             unitTextures[u] = glGetInteger(GL_TEXTURE_BINDING_BUFFER);
         }
+        glActiveTexture(GL_TEXTURE0 + UNIT_2D);
+        texture2d = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
         glActiveTexture(activeTexture);
         for (int i = 0; i < CAPS.length; i++) {
             caps[i] = glIsEnabled(CAPS[i]);
@@ -171,6 +178,8 @@ final class GlStateGuard implements AutoCloseable {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_BUFFER, unitTextures[u]);
         }
+        glActiveTexture(GL_TEXTURE0 + UNIT_2D);
+        glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture2d);
         glActiveTexture(activeTexture);
         for (int i = 0; i < CAPS.length; i++) {
             if (caps[i]) {

@@ -4,36 +4,231 @@ import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 
 /**
- * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colour, LOD
- * transition band, terrain tint, overlays, fog. The app fills it from a scene's render settings.
- * Render thread only; setters do not allocate.
+ * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
+ * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, overlays. The
+ * app fills it from a scene's render settings ({@code RenderDef} and its {@code light} and
+ * {@code patches}). Colours are linear RGB in [0, 1]. Render thread only; setters do not allocate
+ * (they keep the {@link Rgb} given).
+ *
+ * <p>Per-plant colour variation is per species, not here: {@code world.plants().species().get(s).def()
+ * .variation()} gives the {@code VariationDef} ({@code hue()}, {@code value()}, {@code dryTips()}) of
+ * species {@code s}, and {@code world.plantSpecies(p)} the species of plant {@code p}.
  */
 public final class RenderSettings {
+    /** Default sun azimuth, degrees (behind and to the left of a camera looking along -Z). */
+    public static final float DEFAULT_SUN_AZIMUTH = 135;
+    /** Default sun elevation, degrees. */
+    public static final float DEFAULT_SUN_ELEVATION = 50;
+
     private Rgb sky = new Rgb(0.62f, 0.76f, 0.92f);
+    private Rgb skyZenith = new Rgb(0.30f, 0.50f, 0.85f);
+    private Rgb sunColour = new Rgb(1f, 0.95f, 0.85f);
+    private float sunIntensity = 0.8f;
+    private Rgb ambient = new Rgb(0.42f, 0.46f, 0.52f);
+    private float contactShadow = 0.5f;
+    private float sunAzimuth;
+    private float sunElevation;
+    private float sunX;
+    private float sunY;
+    private float sunZ;
+    private float patchScale = 12;
+    private float patchStrength = 0.3f;
+    private int patchSeed = 1;
     private TerrainTint tint = TerrainTint.NONE;
     private boolean showField;
     private boolean showWind;
-    private float fogStart = 25;
-    private float fogEnd = 160;
+    private float fogStart = 20;
+    private float fogEnd = 150;
     private boolean clear = true;
     private boolean terrain = true;
 
     /**
-     * The defaults: a light blue sky, a 1 m LOD transition band, no terrain tint, overlays hidden,
-     * fog from 25 m to 160 m, clearing and terrain on. Allocates.
+     * The defaults (equal to a scene file's defaults): a light blue horizon and a deeper blue zenith,
+     * the sun at azimuth 135 degrees and elevation 50 degrees, warm white at intensity 0.8, a cool
+     * ambient of about 0.45, contact shadow 0.5, haze from 20 m to 150 m, 12 m colour patches at
+     * strength 0.3 (seed 1), no terrain tint, overlays hidden, clearing and terrain on. Allocates.
      */
     public RenderSettings() {
+        sun(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION);
     }
 
-    /** {@return the sky (clear and fog) colour} */
+    /**
+     * Sets the sun's direction; the unit vector toward the sun is
+     * {@code (cos el cos az, sin el, cos el sin az)}, so azimuth 0 is +X, 90 is +Z, 180 is -X.
+     *
+     * @param azimuthDeg   compass angle of the sun, degrees, in [-360, 360]
+     * @param elevationDeg height above the horizon, degrees, in [0, 90]
+     * @return this settings object
+     * @throws IllegalArgumentException when an angle is out of range or not finite
+     */
+    public RenderSettings sun(float azimuthDeg, float elevationDeg) {
+        Require.range("sunAzimuth", azimuthDeg, -360, 360);
+        Require.range("sunElevation", elevationDeg, 0, 90);
+        sunAzimuth = azimuthDeg;
+        sunElevation = elevationDeg;
+        double az = Math.toRadians(azimuthDeg);
+        double el = Math.toRadians(elevationDeg);
+        sunX = (float) (Math.cos(el) * Math.cos(az));
+        sunY = (float) Math.sin(el);
+        sunZ = (float) (Math.cos(el) * Math.sin(az));
+        return this;
+    }
+
+    /** {@return the sun's azimuth, degrees, as last set} */
+    public float sunAzimuth() {
+        return sunAzimuth;
+    }
+
+    /** {@return the sun's elevation above the horizon, degrees, as last set} */
+    public float sunElevation() {
+        return sunElevation;
+    }
+
+    /** {@return X of the unit vector toward the sun, {@code cos el * cos az}} */
+    public float sunX() {
+        return sunX;
+    }
+
+    /** {@return Y (up) of the unit vector toward the sun, {@code sin el}} */
+    public float sunY() {
+        return sunY;
+    }
+
+    /** {@return Z of the unit vector toward the sun, {@code cos el * sin az}} */
+    public float sunZ() {
+        return sunZ;
+    }
+
+    /** {@return the colour of the sunlight (multiply by {@link #sunIntensity()} for the light)} */
+    public Rgb sunColour() {
+        return sunColour;
+    }
+
+    /**
+     * Sets the colour of the sunlight.
+     *
+     * @param colour the sun colour, not null
+     * @return this settings object
+     */
+    public RenderSettings sunColour(Rgb colour) {
+        this.sunColour = Require.nonNull("sunColour", colour);
+        return this;
+    }
+
+    /** {@return the multiplier of the sun colour: the direct light is sunColour x sunIntensity} */
+    public float sunIntensity() {
+        return sunIntensity;
+    }
+
+    /**
+     * Sets the sun's intensity.
+     *
+     * @param intensity multiplier of {@link #sunColour()}, in [0, 4]
+     * @return this settings object
+     * @throws IllegalArgumentException when out of range
+     */
+    public RenderSettings sunIntensity(float intensity) {
+        Require.range("sunIntensity", intensity, 0, 4);
+        this.sunIntensity = intensity;
+        return this;
+    }
+
+    /** {@return the sky colour straight up (the gradient runs from {@link #sky()} at the horizon)} */
+    public Rgb skyZenith() {
+        return skyZenith;
+    }
+
+    /**
+     * Sets the sky colour straight up.
+     *
+     * @param zenith the zenith colour, not null
+     * @return this settings object
+     */
+    public RenderSettings skyZenith(Rgb zenith) {
+        this.skyZenith = Require.nonNull("skyZenith", zenith);
+        return this;
+    }
+
+    /** {@return the ambient (sky) light on an upward-facing surface, colour times strength} */
+    public Rgb ambient() {
+        return ambient;
+    }
+
+    /**
+     * Sets the ambient (sky) light.
+     *
+     * @param ambient colour times strength of the light from the whole sky, not null
+     * @return this settings object
+     */
+    public RenderSettings ambient(Rgb ambient) {
+        this.ambient = Require.nonNull("ambient", ambient);
+        return this;
+    }
+
+    /**
+     * {@return how much darker fully occluded ground under plants is, in [0, 1] (0 none); ground within
+     * about 0.2 m of a plant's base is occluded}
+     */
+    public float contactShadow() {
+        return contactShadow;
+    }
+
+    /**
+     * Sets the contact-shadow strength.
+     *
+     * @param strength darkening of fully occluded ground, in [0, 1]
+     * @return this settings object
+     * @throws IllegalArgumentException when out of range
+     */
+    public RenderSettings contactShadow(float strength) {
+        Require.range("contactShadow", strength, 0, 1);
+        this.contactShadow = strength;
+        return this;
+    }
+
+    /** {@return the feature size of the healthy/dry colour patches, metres} */
+    public float patchScale() {
+        return patchScale;
+    }
+
+    /** {@return how far the driest patches go from healthy to dry, in [0, 1] (0 no patches)} */
+    public float patchStrength() {
+        return patchStrength;
+    }
+
+    /** {@return the seed of the patch noise} */
+    public int patchSeed() {
+        return patchSeed;
+    }
+
+    /**
+     * Sets the healthy/dry colour patches. The patch level at ground point (x, z) is
+     * {@link #patchLevel(float, float)}; the shaders compute the same function.
+     *
+     * @param scaleMetres feature size of the noise, metres, in [0.5, 1000]
+     * @param strength    how far the driest patches go toward dry, in [0, 1]; 0 turns them off
+     * @param seed        seed of the noise, any int
+     * @return this settings object
+     * @throws IllegalArgumentException when a value is out of range
+     */
+    public RenderSettings patches(float scaleMetres, float strength, int seed) {
+        Require.range("patchScale", scaleMetres, 0.5, 1000);
+        Require.range("patchStrength", strength, 0, 1);
+        patchScale = scaleMetres;
+        patchStrength = strength;
+        patchSeed = seed;
+        return this;
+    }
+
+    /** {@return the sky colour at the horizon, also the fog (aerial perspective) and clear colour} */
     public Rgb sky() {
         return sky;
     }
 
     /**
-     * Sets the sky colour.
+     * Sets the sky colour at the horizon.
      *
-     * @param sky the clear and fog colour, not null
+     * @param sky the horizon, fog and clear colour, not null
      * @return this settings object
      */
     public RenderSettings sky(Rgb sky) {
@@ -90,7 +285,11 @@ public final class RenderSettings {
         return this;
     }
 
-    /** {@return the distance where fog begins, metres} */
+    /**
+     * {@return the distance where fog (aerial perspective: haze toward {@link #sky()}) begins, metres;
+     * the haze is {@code f * f} with {@code f = clamp((d - fogStart) / (fogEnd - fogStart), 0, 1)}, for
+     * plants and ground alike}
+     */
     public float fogStart() {
         return fogStart;
     }
@@ -120,8 +319,9 @@ public final class RenderSettings {
 
     /**
      * Whether {@link SceneRenderer#render(org.jecosys.sim.Frame, org.jecosys.math.Camera)} first clears
-     * its viewport to the sky colour and depth 1. On by default (the viewer, headless rendering); a
-     * game that draws its own sky and ground first turns it off.
+     * its viewport to depth 1 and draws the library's sky (the gradient with the sun) behind
+     * everything. On by default (the viewer, headless rendering); a game that draws its own sky and
+     * ground first turns it off.
      *
      * @return whether the viewport is cleared before drawing
      */
@@ -159,5 +359,50 @@ public final class RenderSettings {
     public RenderSettings terrain(boolean terrain) {
         this.terrain = terrain;
         return this;
+    }
+
+    /**
+     * The healthy/dry patch level at a ground point: 0 healthy, 1 driest, before
+     * {@link #patchStrength()} scales it. Value noise of two octaves over {@link #patchScale()}, seeded
+     * by {@link #patchSeed()}, made into patches with a smooth step; {@code terrain.frag} computes the
+     * same function ({@code patchLevel}). Any thread reading settings not being changed; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the level, in [0, 1]
+     */
+    public float patchLevel(float x, float z) {
+        float n = 0.65f * valueNoise(x / patchScale, z / patchScale, patchSeed)
+                + 0.35f * valueNoise(2.7f * x / patchScale, 2.7f * z / patchScale, patchSeed + 1013);
+        float t = Math.max(0, Math.min(1, (n - 0.35f) / 0.3f));
+        return t * t * (3 - 2 * t);
+    }
+
+    /** Bilinear value noise with smooth interpolation, in [0, 1]; mirrored in terrain.frag. */
+    static float valueNoise(float x, float z, int seed) {
+        float fx = (float) Math.floor(x);
+        float fz = (float) Math.floor(z);
+        int ix = (int) fx;
+        int iz = (int) fz;
+        float tx = x - fx;
+        float tz = z - fz;
+        tx = tx * tx * (3 - 2 * tx);
+        tz = tz * tz * (3 - 2 * tz);
+        float a = hash(ix, iz, seed);
+        float b = hash(ix + 1, iz, seed);
+        float c = hash(ix, iz + 1, seed);
+        float d = hash(ix + 1, iz + 1, seed);
+        return a + (b - a) * tx + (c - a) * tz + (a - b - c + d) * tx * tz;
+    }
+
+    /** An integer hash of a lattice point to [0, 1]; mirrored in terrain.frag (uint arithmetic). */
+    static float hash(int x, int z, int seed) {
+        int h = x * 0x27d4eb2d ^ z * 0x165667b1 ^ seed * 0x6c8e9cf5;
+        h ^= h >>> 15;
+        h *= 0x2c1b3c6d;
+        h ^= h >>> 12;
+        h *= 0x297a2d39;
+        h ^= h >>> 15;
+        return (h >>> 8) * (1f / (1 << 24));
     }
 }

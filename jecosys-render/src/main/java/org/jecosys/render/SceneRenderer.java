@@ -24,23 +24,19 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 
 /**
- * Renders a whole frame of a {@link World}: sky, plants, lit terrain and the optional force-field
- * overlays, into the currently bound framebuffer and viewport (a window's, a game's own or a
- * {@link GlFramebuffer}), and puts back every GL state it changed (see {@link #render(Frame, Camera)}). Owns the
- * terrain, plant and overlay renderers. Render thread only; {@link #render} allocates nothing in the
+ * Renders a whole frame of a {@link World}: sky (gradient and sun), plants, lit terrain and the
+ * optional force-field overlays, into the currently bound framebuffer and viewport (a window's, a
+ * game's own or a {@link GlFramebuffer}), and puts back every GL state it changed (see
+ * {@link #render(Frame, Camera)}). Owns the sky, terrain, plant and overlay renderers. Render thread only; {@link #render} allocates nothing in the
  * steady state (changing the tint or LOD band re-uploads or rebuilds once).
  */
 public final class SceneRenderer implements AutoCloseable {
-    /** Unit direction toward the sun: high in the south-west. */
-    private static final float LX = -0.45f;
-    private static final float LY = 0.80f;
-    private static final float LZ = 0.40f;
-
     private final GlContext gl;
     private final RenderSettings settings;
     private final World world;
     private final TerrainRenderer terrain;
     private final PlantRenderer plants;
+    private final SkyRenderer sky;
     private final FieldOverlay overlay;
     private FieldDebugView field;
     private final GlStateGuard state;
@@ -63,15 +59,18 @@ public final class SceneRenderer implements AutoCloseable {
         this.world = world;
         TerrainRenderer t = null;
         PlantRenderer p = null;
+        SkyRenderer k = null;
         GlStateGuard g = new GlStateGuard();
         try {
-            t = new TerrainRenderer(gl, world.terrain(), settings.tint());
+            t = new TerrainRenderer(gl, world, settings.tint());
             p = new PlantRenderer(gl, world);
+            k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
-            PlantRenderer.closeAll(p, t, g);
+            PlantRenderer.closeAll(k, p, t, g);
             throw e;
         }
+        sky = k;
         terrain = t;
         plants = p;
         state = g;
@@ -140,13 +139,14 @@ public final class SceneRenderer implements AutoCloseable {
     /**
      * Draws one frame into whatever framebuffer and viewport are bound, so a game can draw its sky and
      * ground first, render into part of its window, and draw its HUD after. With
-     * {@link RenderSettings#clear()} on, the viewport's rectangle is first cleared to the sky colour
-     * and depth 1 (a scissored clear); off, the plants are depth-tested against what is already in the
-     * depth buffer. {@link RenderSettings#terrain()} says whether the library's own terrain is drawn.
+     * {@link RenderSettings#clear()} on, the viewport's rectangle is first cleared to the horizon colour
+     * and depth 1 (a scissored clear) and the sky (gradient and sun) is drawn where no geometry is;
+     * off, the plants are depth-tested against what is already in the depth buffer and no sky is drawn.
+     * {@link RenderSettings#terrain()} says whether the library's own terrain is drawn.
      *
      * <p>State contract: every GL state this method changes is put back before it returns (see
      * {@link GlStateGuard}: program, vertex array, array and texture-buffer bindings, active texture
-     * unit and the buffer textures of units 0 and 1, depth test, function and mask, culling,
+     * unit, the buffer textures of units 0 to 4 and the 2D texture of unit 5, depth test, function and mask, culling,
      * blending, scissor, clear colour, viewport). The framebuffer binding is never changed. Render
      * thread; no allocation in the steady state.
      *
@@ -171,11 +171,11 @@ public final class SceneRenderer implements AutoCloseable {
             return;
         }
         terrain.setTint(settings.tint());
-        Rgb sky = settings.sky();
+        Rgb horizon = settings.sky();
         if (settings.clear()) {
             glEnable(GL_SCISSOR_TEST);
             glScissor(vx, vy, width, height);
-            glClearColor(sky.r(), sky.g(), sky.b(), 1f);
+            glClearColor(horizon.r(), horizon.g(), horizon.b(), 1f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             glDisable(GL_SCISSOR_TEST);
         }
@@ -186,11 +186,20 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_BLEND);
         // near plants first: the terrain drawn after them fails the early depth test behind them (less
         // shading on a software rasteriser); the far (line) level last, blended over both
+        float lx = settings.sunX();
+        float ly = settings.sunY();
+        float lz = settings.sunZ();
         if (drawPlants) {
-            plants.drawNear(frame, camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd(), height);
+            plants.drawNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
         }
         if (drawTerrain && settings.terrain()) {
-            terrain.draw(camera, LX, LY, LZ, sky, settings.fogStart(), settings.fogEnd());
+            terrain.draw(camera, settings);
+        }
+        if (settings.clear()) {
+            // the sky where nothing is (depth still 1), before the blended far level
+            glDepthMask(false);
+            this.sky.draw(camera, settings);
+            glDepthMask(true);
         }
         if (drawPlants) {
             plants.drawFar();
@@ -216,7 +225,7 @@ public final class SceneRenderer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            PlantRenderer.closeAll(overlay, plants, terrain, state);
+            PlantRenderer.closeAll(overlay, sky, plants, terrain, state);
         }
     }
 }

@@ -9,15 +9,21 @@ import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
+import static org.lwjgl.opengl.GL20C.glUseProgram;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
+import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
+import org.jecosys.sim.World;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.terrain.ResourceMap;
 import org.jecosys.terrain.Terrain;
@@ -27,8 +33,11 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * The lit terrain: the heightfield as one indexed triangle mesh (vertex position, normal, colour),
- * optionally tinted by the water or nutrient map (paper §4.3). Render thread only; {@link #draw}
- * allocates nothing; {@link #setTint} re-uploads the colours (not per frame).
+ * optionally tinted by the water or nutrient map (paper §4.3), lit by the sun and the sky's ambient
+ * light, coloured by the healthy/dry patches, darkened under the plants by a contact-occlusion map
+ * (an R8 texture of about 10 cm texels built once from the plants' bases) and hazed toward the
+ * horizon with distance as the plants are. Render thread only; {@link #draw} allocates nothing;
+ * {@link #setTint} re-uploads the colours (not per frame).
  */
 public final class TerrainRenderer implements AutoCloseable {
     private static final int FLOATS = 9;
@@ -56,6 +65,13 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uFogColour;
     private final int uFogStart;
     private final int uFogEnd;
+    private final int uSun;
+    private final int uAmbient;
+    private final int uPatch;
+    private final int uPatchSeed;
+    private final int uContactShadow;
+    private final GlTexture2D occlusion;
+    private final ContactOcclusion occlusionMap;
     private TerrainTint tint;
     private boolean closed;
 
@@ -67,6 +83,22 @@ public final class TerrainRenderer implements AutoCloseable {
      * @param tint    the initial tint
      */
     public TerrainRenderer(GlContext gl, Terrain terrain, TerrainTint tint) {
+        this(gl, terrain, null, tint);
+    }
+
+    /**
+     * Builds and uploads the mesh and the contact-occlusion map of the world's plants. Render thread;
+     * allocates.
+     *
+     * @param gl    the render context, current on this thread
+     * @param world the terrain, and the plants whose bases darken it
+     * @param tint  the initial tint
+     */
+    public TerrainRenderer(GlContext gl, World world, TerrainTint tint) {
+        this(gl, world.terrain(), world, tint);
+    }
+
+    private TerrainRenderer(GlContext gl, Terrain terrain, World world, TerrainTint tint) {
         gl.checkThread();
         this.terrain = terrain;
         Heightfield h = terrain.heightfield();
@@ -78,9 +110,17 @@ public final class TerrainRenderer implements AutoCloseable {
         GlVertexArray va = null;
         GlBuffer vb = null;
         GlBuffer ib = null;
+        GlTexture2D occ = null;
+        occlusionMap = world == null ? null : ContactOcclusion.of(world);
         FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
         IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
+        ByteBuffer texels = MemoryUtil.memAlloc(occlusionMap == null ? 4 : occlusionMap.width * occlusionMap.height);
         try {
+            if (occlusionMap == null) {
+                occ = new GlTexture2D(t, 2, 2, texels.put(new byte[4]).flip());
+            } else {
+                occ = new GlTexture2D(t, occlusionMap.width, occlusionMap.height, occlusionMap.bytes(texels));
+            }
             prog = new GlProgram(t, "terrain.vert", "terrain.frag");
             va = new GlVertexArray(t);
             va.bind();
@@ -96,12 +136,14 @@ public final class TerrainRenderer implements AutoCloseable {
             ib = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
         } catch (RuntimeException e) {
             glBindVertexArray(0);
-            PlantRenderer.closeAll(vb, va, prog);
+            PlantRenderer.closeAll(vb, va, prog, occ);
             throw e;
         } finally {
             MemoryUtil.memFree(v);
             MemoryUtil.memFree(idx);
+            MemoryUtil.memFree(texels);
         }
+        occlusion = occ;
         program = prog;
         vao = va;
         vertices = vb;
@@ -120,6 +162,36 @@ public final class TerrainRenderer implements AutoCloseable {
         uFogColour = program.uniform("uFogColour");
         uFogStart = program.uniform("uFogStart");
         uFogEnd = program.uniform("uFogEnd");
+        uSun = program.uniform("uSun");
+        uAmbient = program.uniform("uAmbient");
+        uPatch = program.uniform("uPatch");
+        uPatchSeed = program.uniform("uPatchSeed");
+        uContactShadow = program.uniform("uContactShadow");
+        int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+        program.use();
+        glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        if (occlusionMap == null) {
+            glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
+            glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
+        } else {
+            ContactOcclusion m = occlusionMap;
+            glUniform4f(program.uniform("uOcclusionMap"), (float) m.minX, (float) m.minZ,
+                    (float) (1 / (m.texelX * m.width)), (float) (1 / (m.texelZ * m.height)));
+            glUniform2f(program.uniform("uOcclusionHalf"), 0.5f / m.width, 0.5f / m.height);
+        }
+        glUseProgram(previous);
+    }
+
+    /**
+     * The contact occlusion the terrain shader reads at a ground point (0 open ground, toward 1 under
+     * dense plants), for tests and tools. Any thread; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the occlusion in [0, 1]; 0 everywhere when built without plants
+     */
+    public double occlusion(double x, double z) {
+        return occlusionMap == null ? 0 : occlusionMap.sample(x, z);
     }
 
     private void fill(FloatBuffer v, TerrainTint tint) {
@@ -197,25 +269,33 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the terrain into the bound framebuffer with the current depth state. Render thread; no
-     * allocation.
+     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
+     * colour, ambient light, contact shadow, patches and haze from the settings. Binds the occlusion
+     * map to unit {@link GlStateGuard#UNIT_2D} (the scene renderer's state guard puts it back). Render
+     * thread; no allocation.
      *
      * @param camera   the viewer
-     * @param lx       unit direction toward the sun, X
-     * @param ly       unit direction toward the sun, Y
-     * @param lz       unit direction toward the sun, Z
-     * @param fog      fog colour
-     * @param fogStart distance where fog begins, metres
-     * @param fogEnd   distance of full fog, metres
+     * @param settings the light, haze and patch settings
      */
-    public void draw(Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart, float fogEnd) {
+    public void draw(Camera camera, RenderSettings settings) {
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
-        glUniform3f(uLightDir, lx, ly, lz);
+        glUniform3f(uLightDir, settings.sunX(), settings.sunY(), settings.sunZ());
+        Rgb sun = settings.sunColour();
+        float k = settings.sunIntensity();
+        glUniform3f(uSun, sun.r() * k, sun.g() * k, sun.b() * k);
+        Rgb amb = settings.ambient();
+        glUniform3f(uAmbient, amb.r(), amb.g(), amb.b());
+        Rgb fog = settings.sky();
         glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(uFogStart, fogStart);
-        glUniform1f(uFogEnd, fogEnd);
+        glUniform1f(uFogStart, settings.fogStart());
+        glUniform1f(uFogEnd, settings.fogEnd());
+        glUniform3f(uPatch, 1 / settings.patchScale(), settings.patchStrength(),
+                settings.patchStrength() > 0 ? 1 : 0);
+        glUniform1i(uPatchSeed, settings.patchSeed());
+        glUniform1f(uContactShadow, settings.contactShadow());
+        occlusion.bind(GlStateGuard.UNIT_2D);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
@@ -226,7 +306,7 @@ public final class TerrainRenderer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            PlantRenderer.closeAll(vao, vertices, indices, program);
+            PlantRenderer.closeAll(vao, vertices, indices, program, occlusion);
             MemoryUtil.memFree(matrix);
         }
     }

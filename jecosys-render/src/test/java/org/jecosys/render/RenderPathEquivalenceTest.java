@@ -22,7 +22,8 @@ import org.lwjgl.system.MemoryUtil;
  * The plant renderer's output on C1 against images the previous renderer made of the same frames
  * and views (test resources {@code reference/c1-*.png}, made by the renderer that resolved every
  * component on the render thread): the mean colour difference stays within 2/255, over the whole
- * image and over the pixels that show plants. Run with
+ * image and over the pixels that show plants. The references were regenerated once when the terrain
+ * became sun-lit with contact darkening (issue 13), by this command. Run with
  * the environment variable {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)

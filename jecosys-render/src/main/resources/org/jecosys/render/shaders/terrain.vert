@@ -1,25 +1,70 @@
 #version 330 core
-// Terrain: gentle lighting (a sky-tinted ambient term and a soft sun term), so the ground stays a
-// darker backdrop for the plants. Lighting and fog per vertex.
+// Terrain: lit by the sun and the sky's ambient light, coloured by the healthy/dry patches, hazed
+// toward the horizon colour with distance exactly as the plants are (aerial perspective). Lighting,
+// patches and haze per vertex (mesh cells are small against their scales, and llvmpipe shades far
+// more fragments than vertices); the fragment shader applies the contact occlusion under the plants.
 layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColour;
 uniform mat4 uViewProj;
 uniform vec3 uEye;
-uniform vec3 uLightDir;
+uniform vec3 uLightDir;                          // unit vector toward the sun
+uniform vec3 uSun;                               // sun colour times intensity
+uniform vec3 uAmbient;                           // sky light on an upward-facing surface
 uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
-out vec3 vColour;                                // lit and fogged: the fragment shader only writes it
+uniform vec3 uPatch;                             // 1 / scale (1/m), strength, enabled (0 or 1)
+uniform int uPatchSeed;
+uniform vec4 uOcclusionMap;                      // minX, minZ, 1 / (texelX * width), 1 / (texelZ * height)
+uniform vec2 uOcclusionHalf;                     // half a texel in texture coordinates
+out vec3 vLit;                                   // lit, before contact occlusion and haze
+out float vFog;                                  // haze weight toward uFogColour
+out vec2 vUv;                                    // occlusion-map coordinates
+
+// RenderSettings.hash / valueNoise / patchLevel, bit for bit on the lattice hash
+float hash(int x, int z, int seed) {
+    uint h = uint(x) * 0x27d4eb2du ^ uint(z) * 0x165667b1u ^ uint(seed) * 0x6c8e9cf5u;
+    h ^= h >> 15u;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12u;
+    h *= 0x297a2d39u;
+    h ^= h >> 15u;
+    return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+float valueNoise(vec2 p, int seed) {
+    vec2 f = floor(p);
+    ivec2 i = ivec2(f);
+    vec2 t = p - f;
+    t = t * t * (3.0 - 2.0 * t);
+    float a = hash(i.x, i.y, seed);
+    float b = hash(i.x + 1, i.y, seed);
+    float c = hash(i.x, i.y + 1, seed);
+    float d = hash(i.x + 1, i.y + 1, seed);
+    return a + (b - a) * t.x + (c - a) * t.y + (a - b - c + d) * t.x * t.y;
+}
+
+float patchLevel(vec2 xz) {
+    vec2 p = xz * uPatch.x;
+    float n = 0.65 * valueNoise(p, uPatchSeed) + 0.35 * valueNoise(2.7 * p, uPatchSeed + 1013);
+    return smoothstep(0.0, 1.0, clamp((n - 0.35) / 0.3, 0.0, 1.0));
+}
 
 void main() {
     gl_Position = uViewProj * vec4(aPos, 1.0);
     vec3 n = normalize(aNormal);
+    vec3 albedo = aColour;
+    if (uPatch.z > 0.5) {
+        // dry patches: paler, yellower soil
+        float dry = uPatch.y * patchLevel(aPos.xz);
+        albedo = mix(albedo, vec3(0.46, 0.40, 0.27), 0.6 * dry);
+    }
     float diffuse = max(dot(n, uLightDir), 0.0);
-    float sky = 0.5 + 0.5 * n.y;
-    vec3 lit = aColour * (0.45 * sky + 0.55 * diffuse) * vec3(0.97, 1.0, 1.04) + aColour * 0.25 * diffuse;
-    // fog per vertex (squared ramp): mesh cells are small against the fog distances, and llvmpipe
-    // shades far more fragments than vertices
+    vec3 light = uAmbient * (0.5 + 0.5 * n.y) + uSun * diffuse;
+    vLit = albedo * light;
+    // haze (squared ramp), the plants' formula, so plants and ground fade alike
     float fog = clamp((distance(uEye, aPos) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    vColour = mix(lit, uFogColour, fog * fog);
+    vFog = fog * fog;
+    vUv = (aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf;
 }
