@@ -5,7 +5,9 @@ import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL30C.glUniform1ui;
 import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
@@ -66,7 +68,16 @@ final class ComponentResolver implements AutoCloseable {
     private final int uInstanceBase;
     private final int uSlots;
     private final int uVariation;
-    private final int uPatches;
+    private final int uPatch;
+    private final int uLines;
+    private final int uSlotBase;
+    private final int uDryTips;
+    private final int[] slotBase;
+    private final GlBuffer slotLookBuffer;
+    private final GlBufferTexture slotLookTexture;
+    /** The texture unit of the species slots' looks (colour, vertex kind) during the resolve pass. */
+    static final int SLOT_LOOK_UNIT = 6;
+    private final int uPatchSeed;
     private final int uSeed;
     private long uploadedBytes;
     private boolean closed;
@@ -85,7 +96,7 @@ final class ComponentResolver implements AutoCloseable {
      * @param maxComponents most components drawn in one frame, &ge; 1
      */
     ComponentResolver(GlTracker t, World world, PlantBatches batches, GlBufferTexture poseTexture,
-                      int[][][] poseTexel, int components, long maxComponents) {
+                      int[][][] poseTexel, int components, long maxComponents, float[] slotLooks) {
         this.batches = batches;
         this.poseTexture = poseTexture;
         IntBuffer instances = null;
@@ -107,6 +118,8 @@ final class ComponentResolver implements AutoCloseable {
                     8L * Math.max(1, batches.maxInstances())));
             instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
             pointsVao = own(new GlVertexArray(t));
+            slotLookBuffer = own(uploadFloats(t, slotLooks));
+            slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree(instances);
             PlantRenderer.closeReverse(owned);
@@ -119,11 +132,35 @@ final class ComponentResolver implements AutoCloseable {
         glUniform1i(resolveProgram.uniform("uDynamic"), 2);
         glUniform1i(resolveProgram.uniform("uStatic"), 3);
         glUniform1i(resolveProgram.uniform("uLinks"), 4);
+        glUniform1i(resolveProgram.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
+        uLines = resolveProgram.uniform("uLines");
+        uSlotBase = resolveProgram.uniform("uSlotBase");
+        uDryTips = resolveProgram.uniform("uDryTips");
+        slotBase = new int[world.plants().species().size()];
+        for (int s = 1; s < slotBase.length; s++) {
+            slotBase[s] = slotBase[s - 1] + world.plants().species().get(s - 1).slotCount();
+        }
         uInstanceBase = resolveProgram.uniform("uInstanceBase");
         uSlots = resolveProgram.uniform("uSlots");
         uVariation = resolveProgram.uniform("uVariation");
-        uPatches = resolveProgram.uniform("uPatches");
+        uPatch = resolveProgram.uniform("uPatch");
+        uPatchSeed = resolveProgram.uniform("uPatchSeed");
         uSeed = resolveProgram.uniform("uSeed");
+    }
+
+    /** {@return the resolve program, for the lighting uniforms its line-level shading reads} */
+    GlProgram program() {
+        return resolveProgram;
+    }
+
+    private static GlBuffer uploadFloats(GlTracker t, float[] values) {
+        FloatBuffer b = MemoryUtil.memAllocFloat(values.length);
+        try {
+            b.put(values).flip();
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
     }
 
     private <T extends AutoCloseable> T own(T resource) {
@@ -164,13 +201,15 @@ final class ComponentResolver implements AutoCloseable {
     void resolve(PlantLook look) {
         glEnable(GL_RASTERIZER_DISCARD);
         resolveProgram.use();
-        glUniform4f(uPatches, 1f / look.patchScale(), look.patchStrength(), look.offsetX(), look.offsetZ());
+        glUniform3f(uPatch, 1f / look.patchScale(), look.patchStrength(), look.patchStrength() > 0 ? 1f : 0f);
+        glUniform1i(uPatchSeed, look.seed());
         glUniform1ui(uSeed, look.seed());
         poseTexture.bind(0);
         instanceTexture.bind(1);
         dynamicTexture.bind(2);
         staticTexture.bind(3);
         linkTexture.bind(4);
+        slotLookTexture.bind(SLOT_LOOK_UNIT);
         pointsVao.bind();
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
         glBeginTransformFeedback(GL_POINTS);
@@ -182,6 +221,9 @@ final class ComponentResolver implements AutoCloseable {
             int species = batches.speciesOf(li);
             int slots = batches.slots(species);
             glUniform4f(uVariation, look.hue(species), look.value(species), 0f, 0f);
+            glUniform1i(uLines, batches.lines(li) ? 1 : 0);
+            glUniform1i(uSlotBase, slotBase[species]);
+            glUniform1f(uDryTips, look.dryTips(species));
             glUniform1i(uInstanceBase, batches.instanceOffset(li));
             glUniform1i(uSlots, slots);
             glDrawArrays(GL_POINTS, 0, n * slots);

@@ -71,10 +71,10 @@ import org.lwjgl.system.MemoryUtil;
  */
 final class GlStateGuard implements AutoCloseable {
     /**
-     * The texture units whose buffer-texture binding the renderer changes: 0 to 4 (poses, component
-     * records or instances, render states, static data, links).
+     * The texture units whose buffer-texture binding the renderer changes: 0 to 6 (poses, component
+     * records or instances, render states, static data, links, -, the species slots' looks).
      */
-    static final int UNITS = 5;
+    static final int UNITS = 7;
 
     /** The texture unit whose 2D texture binding the renderer changes: the terrain's occlusion map. */
     static final int UNIT_2D = 5;

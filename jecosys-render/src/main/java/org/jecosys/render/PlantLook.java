@@ -5,7 +5,7 @@ import org.jecosys.math.Require;
 /**
  * The colour variation of the plants, set through {@link PlantRenderer}: per species the spread of a
  * plant's hue turn and brightness and how far its tips turn to straw, and for the whole scene the
- * healthy/dry patches (a seeded value noise over the ground) and the seed of it all. The resolve pass
+ * healthy/dry patches (the ground's noise, {@link RenderSettings#patchLevel}) and the seed of it all. The resolve pass
  * turns it into each drawn component's hue turn, brightness factor and patch dryness. Render thread;
  * setters do not allocate.
  */
@@ -34,7 +34,7 @@ final class PlantLook {
     }
 
     void setPatches(float scale, float strength, int seed) {
-        Require.range("patchScale", scale, 0.1, 10_000);
+        Require.range("patchScale", scale, 0.5, 1000);
         Require.range("patchStrength", strength, 0, 1);
         this.patchScale = scale;
         this.patchStrength = strength;
@@ -69,15 +69,5 @@ final class PlantLook {
     /** {@return the colour seed} */
     int seed() {
         return seed;
-    }
-
-    /** {@return the patch noise's offset along x, in noise cells: the seed moves the whole pattern} */
-    float offsetX() {
-        return Math.floorMod(seed * 40503, 1024) + 0.5f;
-    }
-
-    /** {@return the patch noise's offset along z, in noise cells} */
-    float offsetZ() {
-        return Math.floorMod(seed * 2654435 + 512, 1024) + 0.5f;
     }
 }

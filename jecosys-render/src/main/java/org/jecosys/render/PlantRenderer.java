@@ -40,6 +40,7 @@ import org.jecosys.plant.ComponentShape;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.plant.VariationDef;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.Matrix4f;
@@ -111,6 +112,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
+    private final Uniforms resolveUniforms;
     private final PlantLook look;
     private float minPixels = DEFAULT_MIN_PIXELS;
     private float headPixels = DEFAULT_HEAD_PIXELS;
@@ -171,7 +173,7 @@ public final class PlantRenderer implements AutoCloseable {
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
             resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
-                    maxComponents));
+                    maxComponents, slotLooks(models)));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -189,13 +191,19 @@ public final class PlantRenderer implements AutoCloseable {
             throw e;
         }
         matrix = mat;
+        resolveUniforms = new Uniforms(resolver.program());
         lineUniforms = new Uniforms(lineProgram);
         triangleUniforms = new Uniforms(program);
         look = new PlantLook(models.size());
+        for (int s = 0; s < models.size(); s++) {
+            VariationDef v = models.get(s).def().variation();
+            look.setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
+        }
     }
 
     /**
-     * The uniforms the triangle and the line programs share; the constructor binds the two samplers
+     * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
+     * missing one is set at location -1, which GL ignores); the constructor binds the two samplers
      * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
      */
     private static final class Uniforms {
@@ -217,23 +225,23 @@ public final class PlantRenderer implements AutoCloseable {
 
         Uniforms(GlProgram p) {
             p.use();
-            viewProj = p.uniform("uViewProj");
-            eye = p.uniform("uEye");
-            slotCount = p.uniform("uSlotCount");
-            componentBase = p.uniform("uComponentBase");
-            fogColour = p.uniform("uFogColour");
-            fogStart = p.uniform("uFogStart");
-            fogEnd = p.uniform("uFogEnd");
-            lightDir = p.uniform("uLightDir");
-            sunColour = p.uniform("uSunColour");
-            ambient = p.uniform("uAmbient");
-            pixelScale = p.uniform("uPixelScale");
-            dryTips = p.uniform("uDryTips");
+            viewProj = p.optionalUniform("uViewProj");
+            eye = p.optionalUniform("uEye");
+            slotCount = p.optionalUniform("uSlotCount");
+            componentBase = p.optionalUniform("uComponentBase");
+            fogColour = p.optionalUniform("uFogColour");
+            fogStart = p.optionalUniform("uFogStart");
+            fogEnd = p.optionalUniform("uFogEnd");
+            lightDir = p.optionalUniform("uLightDir");
+            sunColour = p.optionalUniform("uSunColour");
+            ambient = p.optionalUniform("uAmbient");
+            pixelScale = p.optionalUniform("uPixelScale");
+            dryTips = p.optionalUniform("uDryTips");
             minPixels = p.optionalUniform("uMinPixels");
-            headPixels = p.uniform("uHeadPixels");
-            flowerTilt = p.uniform("uFlowerTilt");
-            glUniform1i(p.uniform("uPoses"), 0);
-            glUniform1i(p.uniform("uComponents"), 1);
+            headPixels = p.optionalUniform("uHeadPixels");
+            flowerTilt = p.optionalUniform("uFlowerTilt");
+            glUniform1i(p.optionalUniform("uPoses"), 0);
+            glUniform1i(p.optionalUniform("uComponents"), 1);
         }
 
         /** Sets the per-frame values on the program in use. No allocation. */
@@ -325,6 +333,29 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
+    /**
+     * The look of every species slot for the resolve pass, 4 floats each (colour r, g, b, vertex
+     * kind), species after species. Construction time; allocates.
+     */
+    static float[] slotLooks(List<SpeciesModel> models) {
+        int n = 0;
+        for (SpeciesModel m : models) {
+            n += m.slotCount();
+        }
+        float[] looks = new float[4 * Math.max(1, n)];
+        int o = 0;
+        for (SpeciesModel m : models) {
+            for (int slot = 0; slot < m.slotCount(); slot++) {
+                ComponentDef def = m.component(m.slotComponent(slot)).def();
+                looks[o++] = def.colour().r();
+                looks[o++] = def.colour().g();
+                looks[o++] = def.colour().b();
+                looks[o++] = kind(def);
+            }
+        }
+        return looks;
+    }
+
     /** The vertex kind of a component for {@code plant_common.glsl}. */
     static int kind(ComponentDef def) {
         return switch (def.type()) {
@@ -359,19 +390,22 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Sets the light on the plants: sunlight on a surface facing the sun and the sky's ambient light
-     * (the direction goes in with each draw). Render thread; no allocation.
+     * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
+     * the sky's ambient light (the direction goes in with each draw). {@link SceneRenderer} sets it
+     * from its {@link RenderSettings} every frame. Render thread; no allocation.
      *
-     * @param sun     sunlight colour and strength, components in [0, 4]
-     * @param ambient sky light colour and strength, components in [0, 4]
-     * @throws IllegalArgumentException when a component is out of range
+     * @param sun       sunlight colour, components in [0, 4]
+     * @param intensity factor on the sun's colour, in [0, 4]
+     * @param ambient   sky light colour and strength, components in [0, 4]
+     * @throws IllegalArgumentException when a value is out of range
      */
-    public void setLight(Rgb sun, Rgb ambient) {
+    public void setLight(Rgb sun, float intensity, Rgb ambient) {
         checkLight("sun", sun);
         checkLight("ambient", ambient);
-        sunR = sun.r();
-        sunG = sun.g();
-        sunB = sun.b();
+        Require.range("intensity", intensity, 0, 4);
+        sunR = sun.r() * intensity;
+        sunG = sun.g() * intensity;
+        sunB = sun.b() * intensity;
         ambR = ambient.r();
         ambG = ambient.g();
         ambB = ambient.b();
@@ -379,9 +413,9 @@ public final class PlantRenderer implements AutoCloseable {
 
     private static void checkLight(String name, Rgb c) {
         Require.nonNull(name, c);
-        Require.range(name + ".r", c.r(), 0, 4);
-        Require.range(name + ".g", c.g(), 0, 4);
-        Require.range(name + ".b", c.b(), 0, 4);
+        if (!(c.r() >= 0 && c.r() <= 4 && c.g() >= 0 && c.g() <= 4 && c.b() >= 0 && c.b() <= 4)) {
+            throw new IllegalArgumentException(name + " components must be in [0, 4], got " + c);
+        }
     }
 
     /**
@@ -400,11 +434,12 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Sets the healthy/dry patches: a seeded value noise over the ground, of feature size
-     * {@code scale}, turns blades toward straw where it is high, by up to {@code strength}. The seed
-     * also picks each plant's colour variation. Render thread; no allocation.
+     * Sets the healthy/dry patches: the ground's patch noise ({@link RenderSettings#patchLevel}), of
+     * feature size {@code scale}, turns blades toward straw where it is high, by up to
+     * {@code strength}. The seed also picks each plant's colour variation. {@link SceneRenderer} sets
+     * it from its {@link RenderSettings} every frame. Render thread; no allocation.
      *
-     * @param scale    patch size, metres, in [0.1, 10000]
+     * @param scale    patch size, metres, in [0.5, 1000]
      * @param strength how dry the driest patches get, in [0, 1] (0: no patches)
      * @param seed     any integer
      * @throws IllegalArgumentException when an argument is out of range
@@ -498,12 +533,14 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         resolver.upload(frame);
-        resolver.resolve(look);
         camera.viewProjection(viewProj);
         viewProj.get(matrix);
         float ex = (float) camera.x();
         float ey = (float) camera.y();
         float ez = (float) camera.z();
+        resolver.program().use();
+        resolveUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
         lineProgram.use();

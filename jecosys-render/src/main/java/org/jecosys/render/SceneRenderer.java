@@ -190,6 +190,8 @@ public final class SceneRenderer implements AutoCloseable {
         float ly = settings.sunY();
         float lz = settings.sunZ();
         if (drawPlants) {
+            plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
+            plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.drawNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
         }
         if (drawTerrain && settings.terrain()) {

@@ -254,8 +254,15 @@ class ComponentRecordsTest {
 
     @Test
     void theColourVariationIsSeededPerPlantAndOffWhenUnset() {
-        // unset: no hue turn, brightness 1, no dryness
+        // unset: no hue turn, brightness 1, no dryness; a line level's texel 2 is its lit colour
         forEachRecord((li, i, slot, r) -> {
+            if (batches.lines(li)) {
+                for (int c = 8; c < 11; c++) {
+                    assertTrue(rec.get(r + c) >= 0f && rec.get(r + c) <= 1.5f, "lit colour " + rec.get(r + c));
+                }
+                assertEquals(1f, rec.get(r + 11), 0f);
+                return;
+            }
             assertEquals(1f, rec.get(r + 8), 0f);
             assertEquals(0f, rec.get(r + 9), 0f);
             assertEquals(1f, rec.get(r + 10), 0f);
@@ -273,6 +280,9 @@ class ComponentRecordsTest {
             int[] n = new int[1];
             java.util.Set<Float> dryness = new java.util.HashSet<>();
             forEachRecord((li, i, slot, r) -> {
+                if (batches.lines(li)) {
+                    return;
+                }
                 float c = rec.get(r + 8);
                 float sn = rec.get(r + 9);
                 assertEquals(1.0, c * c + sn * sn, 1e-5, "a hue turn is a rotation");
@@ -290,9 +300,12 @@ class ComponentRecordsTest {
             });
             double hueSd = Math.sqrt(sq[0] / n[0] - Math.pow(sum[0] / n[0], 2));
             double valueSd = Math.sqrt(sq[1] / n[0] - Math.pow(sum[1] / n[0], 2));
-            // plant spread s.d. 1 plus a component spread of 0.35 (hue) or 0.3 (brightness)
-            assertEquals(10 * Math.sqrt(1 + 0.35 * 0.35), hueSd, 1.5, "hue s.d., degrees");
-            assertEquals(0.15 * Math.sqrt(1 + 0.3 * 0.3), valueSd, 0.025, "brightness s.d.");
+            // plant spread s.d. 1 plus a component spread of 0.35 (hue) or 0.3 (brightness); the near
+            // levels hold a few dozen plants, so the sample s.d. is within about a third of it
+            double hueWant = 10 * Math.sqrt(1 + 0.35 * 0.35);
+            double valueWant = 0.15 * Math.sqrt(1 + 0.3 * 0.3);
+            assertEquals(hueWant, hueSd, hueWant / 3, "hue s.d., degrees, over " + n[0] + " components");
+            assertEquals(valueWant, valueSd, valueWant / 3, "brightness s.d., over " + n[0] + " components");
             assertTrue(dryness.size() > 20, "the patches vary over the scene: " + dryness.size() + " values");
             FloatBuffer first = org.lwjgl.system.MemoryUtil.memAllocFloat(rec.capacity());
             try {

@@ -13,31 +13,23 @@
 //   turn toward straw; light is sky ambient, sun diffuse, light through the blade when
 //   back-lit, a specular term toward the tip, and darkening toward the base.
 
+#include "plant_light.glsl"
+
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
 layout(location = 1) in vec4 aColour;           // component colour (0..1), fraction along it
 layout(location = 2) in float aStride;          // texels between poses k and k + 1 of the slot (3 x points)
 layout(location = 3) in vec2 aShape;            // kind (0 blade, 1 stem, 2 petal, 3 fan head), reach (m)
 
 uniform mat4 uViewProj;
-uniform vec3 uEye;
-uniform vec3 uLightDir;                          // unit, toward the sun
-uniform vec3 uSunColour;                         // sunlight on a surface facing the sun
-uniform vec3 uAmbient;                           // sky light
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
 uniform samplerBuffer uComponents;               // RGBA32F: 3 texels per drawn component
 uniform int uSlotCount;
 uniform int uComponentBase;
-uniform vec3 uFogColour;
-uniform float uFogStart;
-uniform float uFogEnd;
 uniform vec2 uPixelScale;                        // a pixel's height, metres: x + distance * y
-uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
 uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
 
-const vec3 STRAW = vec3(0.74, 0.66, 0.38);
-const vec3 THROUGH = vec3(1.0, 1.12, 0.55);     // light through a blade: yellower than reflected light
 
 struct Placed {
     vec3 world;                                  // vertex position, world
@@ -122,46 +114,9 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
 }
 
 // The lit, fogged colour of a placed vertex; look is the component's record texel 2 (cos and sin of
-// its hue turn, brightness factor, patch dryness); far drops the specular term (the line levels).
+// its hue turn, brightness factor, patch dryness); far drops the specular term.
 vec3 shade(Placed v, vec4 look, bool far) {
     int kind = int(aShape.x + 0.5);
     float along = aColour.w;
-    const vec3 k = vec3(0.57735027);
-    vec3 base = aColour.rgb;
-    vec3 c = base * look.x + cross(k, base) * look.y + k * dot(k, base) * (1.0 - look.x);
-    c = max(c, vec3(0.0)) * look.z;
-    if (kind < 2) {
-        float dryness = clamp(uDryTips * along * along + look.w * (0.35 + 0.65 * along), 0.0, 1.0);
-        float grey = dot(c, vec3(0.3, 0.59, 0.11));
-        c = mix(c, STRAW * (0.55 + 1.1 * grey), dryness);
-        c = mix(c, c * vec3(1.08, 1.12, 0.85) + vec3(0.03, 0.04, 0.0), along * along); // sunlit tips
-    }
-    float ao = kind >= 2 ? 1.0 : 0.38 + 0.62 * sqrt(along);  // the base stands in its neighbours' shade
-    vec3 e = v.toEye / max(v.distance, 1e-6);
-    vec3 light;
-    vec3 gloss = vec3(0.0);
-    float len = length(v.normal);
-    if (len > 1e-9) {
-        vec3 n = v.normal / len;
-        n = dot(n, e) < 0.0 ? -n : n;
-        float nl = dot(n, uLightDir);
-        float front = max(nl, 0.0);
-        float back = max(-nl, 0.0);
-        float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
-        // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
-        float through = kind == 3 ? 0.0 : back * (1.15 + 0.6 * toward * toward) * (0.6 + 0.4 * along);
-        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
-                + uSunColour * THROUGH * through;
-        if (!far && nl > 0.0) {
-            float h = max(dot(n, normalize(uLightDir + e)), 0.0);
-            float h2 = h * h;
-            float h8 = h2 * h2 * h2 * h2;
-            gloss = uSunColour * (0.22 * along * h8 * h8 * h8);
-        }
-    } else {
-        light = uAmbient * ao + uSunColour * 0.45;
-    }
-    vec3 colour = c * light + gloss;
-    float fog = clamp((v.distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    return mix(colour, uFogColour, fog * fog);
+    return lit(albedo(aColour.rgb, look, kind, along), kind, along, v.normal, v.toEye, v.distance, far);
 }

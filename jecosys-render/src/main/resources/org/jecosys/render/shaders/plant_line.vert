@@ -1,9 +1,10 @@
 #version 330 core
 // Plants drawn as lines (the far level, paper Table 3): the cheaper variant of plant.vert. The line
 // vertices are placed exactly as in plant.vert (plant_common.glsl, without widening: a line is a
-// pixel wide already) and lit the same way, one flat colour per segment from its first vertex, so
-// that the far level has the colour of the triangle level it replaces. The component record and the
-// dither window are the same as for plant.vert.
+// pixel wide already). Far away a component is a few pixels: the resolve pass has lit it once, at its
+// middle, with the same light as plant.vert (plant_light.glsl), into record texel 2; here only the
+// shade toward the base is applied, one flat colour per segment from its first vertex. The dither
+// window is the same as for plant.vert.
 //
 // Coverage: a line is one pixel wide whatever the leaf's width, so far away, where a leaf is a
 // fraction of a pixel wide, lines would cover several times the area the leaf does. A ribbon is
@@ -24,7 +25,7 @@ void main() {
     int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 3;
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
     vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
-    vec4 c2 = texelFetch(uComponents, ci + 2);   // cos and sin of the hue turn, brightness, patch dryness
+    vec4 c2 = texelFetch(uComponents, ci + 2);   // the component's lit colour (line levels)
     int t = int(c1.x + 0.5) + point * 3;
     int u = t + int(aStride + 0.5);
     float w = c1.y;
@@ -34,7 +35,9 @@ void main() {
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, false);
     gl_Position = uViewProj * vec4(v.world, 1.0);
     int keep = int(c1.w + 0.5);
-    vColour = shade(v, c2, true);
+    // the resolve pass lit the component at its middle (record texel 2); the base is darker
+    int kind = int(aShape.x + 0.5);
+    vColour = c2.rgb * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
     float halfWidth = abs(aVertex.z) * length(side);
     float pixel = max(uPixelScale.x + v.distance * uPixelScale.y, 1e-6);
     vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / pixel, 1.0 / 32.0, 1.0);

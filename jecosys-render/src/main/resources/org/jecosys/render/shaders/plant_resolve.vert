@@ -11,7 +11,8 @@
 //
 // Record: r0 = (base xyz, cos azimuth), r1 = (texel of pose k point 0, blend weight w toward
 // pose k + 1, sin azimuth, dither window), r2 = (cos and sin of the component's hue turn, its
-// brightness factor, the dryness of the plant's patch): the colour variation, seeded (uSeed).
+// brightness factor, the dryness of the plant's patch): the colour variation, seeded (uSeed); for a
+// line (far) level r2 is instead the component's colour lit once at its middle point (rgb, 1).
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
 uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend azimuth (radians)
@@ -22,13 +23,17 @@ uniform int uInstanceBase;                       // first instance record of thi
 uniform int uSlots;                              // components per plant of this species
 
 uniform vec4 uVariation;                         // this species: hue s.d. (radians), brightness s.d., -, -
-uniform vec4 uPatches;                           // 1 / patch size (1/m), patch strength, noise offset x, z
+uniform int uLines;                              // 1: this list is a line level (texel 2 = lit colour)
+uniform samplerBuffer uSlotLooks;                // RGBA32F per species slot: colour, vertex kind
+uniform int uSlotBase;                           // first slot look of this list's species
 
 out vec4 vRecord0;
 out vec4 vRecord1;
 out vec4 vRecord2;
 
 #include "plant_noise.glsl"
+#include "patches.glsl"
+#include "plant_light.glsl"
 
 struct Pose {
     int texel;                                   // texel of pose k, point 0
@@ -57,6 +62,7 @@ void main() {
     vec4 st = texelFetch(uStatic, component);
     ivec4 link = texelFetch(uLinks, component);
     Pose own = pose(component, link, st.w);
+    int stride = link.y;                         // texels per pose of this component (3 x points)
     vec3 base = vec3(0.0);
     vec3 root = st.xyz;
     for (int depth = 0; depth < 4; depth++) {
@@ -81,9 +87,27 @@ void main() {
     uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
     float hue = uVariation.x * (spread(ph, 0) + 0.35 * spread(ch, 0));
     float value = clamp(1.0 + uVariation.y * (spread(ph, 10) + 0.3 * spread(ch, 10)), 0.3, 1.8);
-    vec2 q = root.xz * uPatches.x + uPatches.zw;
-    float patch = 0.65 * valueNoise(q) + 0.35 * valueNoise(q * 2.03 + vec2(17.1, 5.3));
-    float dry = uPatches.y * smoothstep(0.42, 0.72, patch);
-    vRecord2 = vec4(cos(hue), sin(hue), value, dry);
+    float dry = uPatch.z > 0.5 ? uPatch.y * patchLevel(root.xz) : 0.0;
+    vec4 look = vec4(cos(hue), sin(hue), value, dry);
+    if (uLines == 0) {
+        vRecord2 = look;
+    } else {
+        // a line level: light the component once, at its middle point
+        vec4 slotLook = texelFetch(uSlotLooks, uSlotBase + slot);  // colour, kind
+        int kind = int(slotLook.w + 0.5);
+        int points = stride / 3;
+        int mid = points / 2;
+        float along = float(mid) / float(max(points - 1, 1));
+        int t = own.texel + mid * 3;
+        vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, t + stride).xyz, own.w);
+        vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, t + 1 + stride).xyz, own.w);
+        vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, t + 2 + stride).xyz, own.w);
+        vec3 n = kind == 3 ? cross(side, normal) : normal;
+        vec3 world = base + vec3(p.x * own.c - p.z * own.s, p.y, p.x * own.s + p.z * own.c);
+        n = vec3(n.x * own.c - n.z * own.s, n.y, n.x * own.s + n.z * own.c);
+        vec3 toEye = uEye - world;
+        vec3 c = albedo(slotLook.rgb, look, kind, along);
+        vRecord2 = vec4(lit(c, kind, along, n, toEye, length(toEye), true), 1.0);
+    }
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }

@@ -1,0 +1,70 @@
+// How a point of a plant is coloured and lit (#include; plant_common.glsl for vertices, the resolve
+// pass for a whole component of a line level): the component's colour turned in hue and scaled in
+// brightness by its variation, toward straw at the tips and in dry patches; sky ambient light, darker
+// toward the base (the neighbours' shade), the sun on the face toward it, light through the blade when
+// it is lit from behind (back-lit grass glows), a specular glint toward the tip, and haze toward the
+// horizon colour with distance (the terrain's formula).
+uniform vec3 uEye;
+uniform vec3 uLightDir;                          // unit, toward the sun
+uniform vec3 uSunColour;                         // sunlight on a surface facing the sun
+uniform vec3 uAmbient;                           // sky light
+uniform vec3 uFogColour;
+uniform float uFogStart;
+uniform float uFogEnd;
+uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
+
+const vec3 STRAW = vec3(0.74, 0.66, 0.38);
+const vec3 THROUGH = vec3(1.0, 1.12, 0.55);     // light through a blade: yellower than reflected light
+
+// the colour before light: base colour, look = (cos, sin of the hue turn, brightness, patch dryness),
+// kind (0 blade, 1 stem, 2 petal, 3 fan head), along = fraction along the component
+vec3 albedo(vec3 base, vec4 look, int kind, float along) {
+    const vec3 k = vec3(0.57735027);
+    vec3 c = base * look.x + cross(k, base) * look.y + k * dot(k, base) * (1.0 - look.x);
+    c = max(c, vec3(0.0)) * look.z;
+    if (kind < 2) {
+        float dryness = clamp(uDryTips * along * along + look.w * (0.35 + 0.65 * along), 0.0, 1.0);
+        float grey = dot(c, vec3(0.3, 0.59, 0.11));
+        c = mix(c, STRAW * (0.55 + 1.1 * grey), dryness);
+        c = mix(c, c * vec3(1.08, 1.12, 0.85) + vec3(0.03, 0.04, 0.0), along * along); // sunlit tips
+    }
+    return c;
+}
+
+// the shade toward the base: 1 at the tip
+float baseShade(int kind, float along) {
+    return kind >= 2 ? 1.0 : 0.38 + 0.62 * sqrt(along);
+}
+
+// c lit at a point with surface normal (not normalised; 0: none), seen from toEye at distance; far
+// drops the specular term
+vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance, bool far) {
+    float ao = baseShade(kind, along);
+    vec3 e = toEye / max(distance, 1e-6);
+    vec3 light;
+    vec3 gloss = vec3(0.0);
+    float len = length(normal);
+    if (len > 1e-9) {
+        vec3 n = normal / len;
+        n = dot(n, e) < 0.0 ? -n : n;
+        float nl = dot(n, uLightDir);
+        float front = max(nl, 0.0);
+        float back = max(-nl, 0.0);
+        float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
+        // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
+        float through = kind == 3 ? 0.0 : back * (1.15 + 0.6 * toward * toward) * (0.6 + 0.4 * along);
+        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
+                + uSunColour * THROUGH * through;
+        if (!far && nl > 0.0) {
+            float h = max(dot(n, normalize(uLightDir + e)), 0.0);
+            float h2 = h * h;
+            float h8 = h2 * h2 * h2 * h2;
+            gloss = uSunColour * (0.22 * along * h8 * h8 * h8);
+        }
+    } else {
+        light = uAmbient * ao + uSunColour * 0.45;
+    }
+    vec3 colour = c * light + gloss;
+    float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
+    return mix(colour, uFogColour, fog * fog);
+}
