@@ -22,6 +22,7 @@ out float vCover;                                // alpha: the share of a pixel 
 void main() {
     int slot = int(aVertex.x);
     int point = int(aVertex.y);
+    int kind = int(aShape.x + 0.5);
     int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 3;
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
     vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
@@ -30,16 +31,31 @@ void main() {
     int u = t + int(aStride + 0.5);
     float w = c1.y;
     vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
-    vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
-    vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
-    Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, false);
-    gl_Position = uViewProj * vec4(v.world, 1.0);
-    int keep = int(c1.w + 0.5);
+    vec3 side = vec3(0.0);
+    vec3 normal = vec3(0.0);
+    if (aVertex.z != 0.0) {
+        side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
+    }
+    if (aVertex.w != 0.0 || kind == 3) {
+        normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
+    }
+    vec3 world;
+    float distance;
+    if (kind >= 2) {
+        // flower parts: turned toward the viewer and kept a few pixels wide, as in plant.vert
+        Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, false);
+        world = v.world;
+        distance = v.distance;
+    } else {
+        world = c0.xyz + rotY(p + aVertex.z * side + aVertex.w * normal, c0.w, c1.z);
+        distance = length(uEye - world);
+    }
+    gl_Position = uViewProj * vec4(world, 1.0);
     // the resolve pass lit the component at its middle (record texel 2); the base is darker
-    int kind = int(aShape.x + 0.5);
     vColour = c2.rgb * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
     float halfWidth = abs(aVertex.z) * length(side);
-    float pixel = max(uPixelScale.x + v.distance * uPixelScale.y, 1e-6);
+    float pixel = max(uPixelScale.x + distance * uPixelScale.y, 1e-6);
     vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / pixel, 1.0 / 32.0, 1.0);
+    int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
 }

@@ -14,8 +14,14 @@ void main() {
     float up = clamp(dir.y, 0.0, 1.0);
     vec3 sky = mix(uHorizon, uZenith, sqrt(up));
     float c = max(dot(dir, uSunDir), 0.0);
-    // broad forward scattering, stronger near the horizon, and a tight glow around the disc
-    float glow = 0.22 * pow(c, 4.0) * (1.0 - 0.5 * up) + 0.45 * pow(c, 64.0);
+    // broad forward scattering, stronger near the horizon, and a tight glow around the disc; powers by
+    // squaring (pow is exp and log in a software rasteriser)
+    float c2 = c * c;
+    float c4 = c2 * c2;
+    float c16 = c4 * c4;
+    c16 *= c16;
+    float c64 = c16 * c16;
+    float glow = 0.22 * c4 * (1.0 - 0.5 * up) + 0.45 * c64;
     float disc = smoothstep(0.99985, 0.99993, c);  // about 0.7 degrees across
     vec3 colour = sky + uSunColour * (glow + 2.0 * disc);
     fragColour = vec4(min(colour, vec3(1.0)), 1.0);
