@@ -16,6 +16,7 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.GlFramebuffer;
 import org.jecosys.render.Pixels;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
@@ -79,7 +80,7 @@ final class Gallery {
         double aspect = width / (double) height;
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, HeadlessRender.SAMPLES)) {
+             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, RenderDef.DEFAULT_ANTIALIASING)) {
             for (String name : SCENES) {
                 SceneDef def = SceneArgs.load(scenes.resolve(name), err);
                 if (def == null) {

@@ -30,8 +30,6 @@ import org.lwjgl.system.MemoryUtil;
 final class HeadlessRender {
     /** Scene seconds between rendered frames. */
     static final double FRAME_DT = 1.0 / 30;
-    /** Multisample anti-aliasing of headless frames, samples per pixel. */
-    static final int SAMPLES = 4;
     /** Side of the map images, pixels. */
     static final int MAP_SIDE = 512;
 
@@ -88,7 +86,7 @@ final class HeadlessRender {
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false)) {
             log.println("OpenGL: " + gl.describe());
-            try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, SAMPLES);
+            try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
                 renderer.setField(sim.forceField().debugView());
                 for (int i = 1; i <= frames; i++) {

@@ -83,7 +83,7 @@ final class Viewer {
         FrameTimes times = new FrameTimes();
         ViewerInput input = new ViewerInput();
         RenderSettings settings = HeadlessRender.settings(def.render());
-        try (GlContext gl = GlContext.windowed(title(false), width, height, false, HeadlessRender.SAMPLES)) {
+        try (GlContext gl = GlContext.windowed(title(false), width, height, false, def.render().antialiasing())) {
             long window = gl.window();
             glfwSwapInterval(1);
             glfwShowWindow(window);

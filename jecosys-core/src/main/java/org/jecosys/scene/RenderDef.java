@@ -15,9 +15,15 @@ import org.jecosys.math.Rgb;
  * @param showWind      whether the wind-vector overlay starts visible (paper Figure 3)
  * @param light         sun, sky gradient, ambient light, contact shadow and aerial perspective
  * @param patches       large-scale healthy/dry colour patches over the ground and the plants
+ * @param antialiasing  samples per pixel of the viewer's window and of headless images: 1 (none), 2, 4
+ *                      or 8; thin parts of plants are drawn with their coverage as alpha, which
+ *                      multisampling turns into partly covered pixels
  */
 public record RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
-                        boolean showWind, Light light, Patches patches) {
+                        boolean showWind, Light light, Patches patches, int antialiasing) {
+    /** Default {@link #antialiasing()}: 4 samples per pixel. */
+    public static final int DEFAULT_ANTIALIASING = 4;
+
     /**
      * Sun, sky and atmosphere of a scene: presentation only, never read by the simulation. Immutable;
      * any thread.
@@ -148,6 +154,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @param showWind      whether the wind-vector overlay starts visible
      * @param light         sun, sky and atmosphere, not null
      * @param patches       colour patches, not null
+     * @param antialiasing  samples per pixel: 1, 2, 4 or 8
      * @throws IllegalArgumentException when a component is null or out of range
      */
     public RenderDef {
@@ -158,11 +165,15 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         Require.nonNull("terrainTint", terrainTint);
         Require.nonNull("light", light);
         Require.nonNull("patches", patches);
+        if (antialiasing != 1 && antialiasing != 2 && antialiasing != 4 && antialiasing != 8) {
+            throw new IllegalArgumentException("antialiasing must be 1, 2, 4 or 8 samples per pixel, got "
+                    + antialiasing);
+        }
     }
 
     /**
-     * The settings with the default light and patches ({@link Light#DEFAULT}, {@link Patches#DEFAULT}).
-     * Any thread; allocates.
+     * The settings with the default light and patches ({@link Light#DEFAULT}, {@link Patches#DEFAULT})
+     * and {@link #DEFAULT_ANTIALIASING}. Any thread; allocates.
      *
      * @param width         default width, pixels, in [16, 8192]
      * @param height        default height, pixels, in [16, 8192]
@@ -175,7 +186,8 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      */
     public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
                      boolean showWind) {
-        this(width, height, sky, lodTransition, terrainTint, showField, showWind, Light.DEFAULT, Patches.DEFAULT);
+        this(width, height, sky, lodTransition, terrainTint, showField, showWind, Light.DEFAULT, Patches.DEFAULT,
+                DEFAULT_ANTIALIASING);
     }
 
     /**
@@ -185,12 +197,13 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @return the copy
      */
     public RenderDef withLight(Light light) {
-        return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches);
+        return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches,
+                antialiasing);
     }
 
     /**
      * {@return 1280x720, light blue horizon, a 1 m transition band, no tint, overlays hidden, the default
-     * light and patches}
+     * light and patches, 4x anti-aliasing}
      */
     public static RenderDef defaults() {
         return new RenderDef(1280, 720, new Rgb(0.62f, 0.76f, 0.92f), 1, Tint.NONE, false, false);

@@ -441,7 +441,7 @@ final class SceneBinder {
         }
         return make(r, () -> new RenderDef(r.integer("width"), r.integer("height"), (Rgb) r.get("sky"),
                 r.num("lodTransition"), byXml(RenderDef.Tint.values(), r.str("terrainTint")), r.bool("showField"),
-                r.bool("showWind"), light, patches));
+                r.bool("showWind"), light, patches, Integer.parseInt(r.str("antialiasing"))));
     }
 
     /** The constant whose xmlName() is {@code word}; the validator has already checked it exists. */

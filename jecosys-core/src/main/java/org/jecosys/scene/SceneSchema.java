@@ -518,6 +518,10 @@ final class SceneSchema {
                         .get(d -> ((RenderDef) d).showField()))
                 .attr(bool("showWind", "Wind-vector overlay visible at start (paper Figure 3).").def(false)
                         .get(d -> ((RenderDef) d).showWind()))
+                .attr(enumeration("antialiasing", List.of("1", "2", "4", "8"), "Samples per pixel of the viewer's "
+                        + "window and of headless images (multisample anti-aliasing); 1 turns it off.")
+                        .def(Integer.toString(RenderDef.DEFAULT_ANTIALIASING))
+                        .get(d -> Integer.toString(((RenderDef) d).antialiasing())))
                 .child(light, 0, 1, d -> List.of(((RenderDef) d).light()))
                 .child(patches, 0, 1, d -> List.of(((RenderDef) d).patches()));
 

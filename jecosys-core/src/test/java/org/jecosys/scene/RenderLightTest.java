@@ -30,7 +30,7 @@ class RenderLightTest {
                     stiffness="0.5" lodSegments="4"/>
               </species>
               <distribution species="s"/>
-              <render sky="#a0c0e0">
+              <render sky="#a0c0e0" antialiasing="8">
                 <light sunAzimuth="-30" sunElevation="12.5" sunColour="#ffd090" sunIntensity="1.5"
                     skyZenith="#2050c0" ambient="#606870" contactShadow="0.7" fogStart="5" fogEnd="90"/>
                 <patches scale="20" strength="0.6" seed="-7"/>
@@ -61,6 +61,9 @@ class RenderLightTest {
         assertEquals(0.12, v.value());
         assertEquals(0.4, v.dryTips());
         assertEquals(Rgb.parseHex("#a0c0e0"), d.render().sky(), "sky stays the horizon colour");
+        assertEquals(8, d.render().antialiasing());
+        assertEquals(4, parse(SCENE.replace(" antialiasing=\"8\"", "")).render().antialiasing(),
+                "4 samples per pixel unless the scene says otherwise");
     }
 
     @Test
@@ -121,6 +124,7 @@ class RenderLightTest {
             {"scale=\"20\"", "scale=\"0\"", "scale"},
             {"hue=\"6.5\"", "hue=\"90\"", "hue"},
             {"dryTips=\"0.4\"", "dryTips=\"-0.1\"", "dryTips"},
+            {"antialiasing=\"8\"", "antialiasing=\"3\"", "antialiasing"},
         };
         for (String[] c : cases) {
             String xml = SCENE.replace(c[0], c[1]);
