@@ -30,9 +30,18 @@ import static org.lwjgl.opengl.GL11C.glGetInteger;
  * An offscreen framebuffer with an RGBA8 colour and a depth-stencil renderbuffer, resizable, single-
  * or multisampled: the target of headless rendering (any size, whatever the window). Multisampled,
  * it also owns a single-sampled colour target that {@link #resolve()} fills (read the image after
- * that). Counts as three GL objects, five when multisampled. Render thread only.
+ * that), through a filter between the plain average of each pixel's samples and a tent of one
+ * pixel's radius ({@link #setResolveFilter}). Counts as three GL objects, nine when multisampled.
+ * Render thread only.
  */
 public final class GlFramebuffer extends GlResource {
+    /**
+     * How far a multisampled framebuffer's {@link #resolve()} widens the filter toward a tent of one
+     * pixel's radius by default ({@link #setResolveFilter}): fully. Thin blades moving by a fraction of
+     * a pixel then change the image smoothly instead of in coverage steps of a quarter pixel (4
+     * samples), at the price of a slightly softer picture.
+     */
+    public static final float DEFAULT_TENT = 1f;
     /** The largest sample count asked for; the driver's maximum caps it further. */
     public static final int MAX_SAMPLES = 16;
 
@@ -40,6 +49,7 @@ public final class GlFramebuffer extends GlResource {
     private final Renderbuffer depth;
     private final Resolved resolved;
     private final int samples;
+    private float tent = DEFAULT_TENT;
     private int width;
     private int height;
 
@@ -118,10 +128,7 @@ public final class GlFramebuffer extends GlResource {
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
         attach(id(), colour, depth);
         if (resolved != null) {
-            glBindRenderbuffer(GL_RENDERBUFFER, resolved.colour.id());
-            storage(GL_RGBA8, 1, width, height);
-            glBindRenderbuffer(GL_RENDERBUFFER, 0);
-            attach(resolved.id(), resolved.colour, null);
+            resolved.resize(width, height);
         }
     }
 
@@ -168,10 +175,12 @@ public final class GlFramebuffer extends GlResource {
     }
 
     /**
-     * Makes the image readable: multisampled, averages the samples of every pixel into the
-     * single-sampled target and binds that for reading and drawing (call {@link #bind()} again
-     * before drawing more); single-sampled, binds the framebuffer. Then {@link Pixels#read} reads
-     * the image. Render thread; no allocation.
+     * Makes the image readable: multisampled, averages the samples of every pixel (a blit) and, when
+     * {@link #resolveFilter()} is above 0, widens that toward a tent filter in one full-screen pass
+     * (which puts back the program, vertex array, texture unit 0 and the switches it changes), then
+     * binds the single-sampled result for reading and drawing (call {@link #bind()} again before
+     * drawing more); single-sampled, binds the framebuffer. Then {@link Pixels#read} reads the image.
+     * Render thread; no allocation.
      */
     public void resolve() {
         if (resolved == null) {
@@ -179,9 +188,32 @@ public final class GlFramebuffer extends GlResource {
             return;
         }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, tent > 0 ? resolved.box.id() : resolved.id());
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        if (tent > 0) {
+            resolved.filter(width, height, tent);
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, resolved.id());
+    }
+
+    /**
+     * How far {@link #resolve()} widens the average of each pixel's samples toward a tent filter of one
+     * pixel's radius (0: the plain average; 1: the tent), for multisampled framebuffers; see
+     * {@link #DEFAULT_TENT}. Render thread; no allocation.
+     *
+     * @param tent in [0, 1]
+     * @throws IllegalArgumentException when out of range
+     */
+    public void setResolveFilter(float tent) {
+        if (!(tent >= 0 && tent <= 1)) {
+            throw new IllegalArgumentException("tent must be in [0, 1], got " + tent);
+        }
+        this.tent = tent;
+    }
+
+    /** {@return how far {@link #resolve()} widens the filter toward a tent, in [0, 1]} */
+    public float resolveFilter() {
+        return tent;
     }
 
     @Override
@@ -201,26 +233,164 @@ public final class GlFramebuffer extends GlResource {
         }
     }
 
-    /** The single-sampled target of a multisampled framebuffer: a framebuffer and its colour. */
+    /**
+     * The single-sampled targets of a multisampled framebuffer: the box average of the samples (a
+     * texture, for the filter pass) and the filtered image (a renderbuffer, to read), with the
+     * filter's program and an empty vertex array.
+     */
     private static final class Resolved extends GlResource {
         final Renderbuffer colour;
+        final Box box;
+        final GlProgram program;
+        final GlVertexArray vao;
+        final int uTexel;
+        final int uTent;
 
         Resolved(GlTracker tracker) {
             super(tracker, glGenFramebuffers());
-            Renderbuffer c;
+            Renderbuffer c = null;
+            Box b = null;
+            GlProgram p = null;
+            GlVertexArray v;
             try {
                 c = new Renderbuffer(tracker);
+                b = new Box(tracker);
+                p = new GlProgram(tracker, "resolve.vert", "resolve.frag");
+                v = new GlVertexArray(tracker);
             } catch (RuntimeException e) {
+                PlantRenderer.closeAll(p, b, c);
                 close();
                 throw e;
             }
             colour = c;
+            box = b;
+            program = p;
+            vao = v;
+            int current = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+            program.use();
+            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), 0);
+            uTexel = program.uniform("uTexel");
+            uTent = program.uniform("uTent");
+            org.lwjgl.opengl.GL20C.glUseProgram(current);
+        }
+
+        void resize(int width, int height) {
+            glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
+            storage(GL_RGBA8, 1, width, height);
+            glBindRenderbuffer(GL_RENDERBUFFER, 0);
+            attach(id(), colour, null);
+            box.resize(width, height);
+        }
+
+        /** Draws the box-averaged image through the tent filter into this framebuffer; puts back what it changes. */
+        void filter(int width, int height, float tent) {
+            int program0 = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+            int vao0 = glGetInteger(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
+            int unit0 = glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
+            int texture0 = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            boolean depth = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
+            boolean blend = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_BLEND);
+            boolean scissor = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
+            boolean cull = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_CULL_FACE);
+            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
+            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_BLEND);
+            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
+            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_CULL_FACE);
+            glBindFramebuffer(GL_FRAMEBUFFER, id());
+            glViewport(0, 0, width, height);
+            program.use();
+            org.lwjgl.opengl.GL20C.glUniform2f(uTexel, 1f / width, 1f / height);
+            org.lwjgl.opengl.GL20C.glUniform1f(uTent, tent);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.texture);
+            vao.bind();
+            org.lwjgl.opengl.GL11C.glDrawArrays(org.lwjgl.opengl.GL11C.GL_TRIANGLES, 0, 3);
+            org.lwjgl.opengl.GL30C.glBindVertexArray(vao0);
+            org.lwjgl.opengl.GL20C.glUseProgram(program0);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture0);
+            org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
+            enable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST, depth);
+            enable(org.lwjgl.opengl.GL11C.GL_BLEND, blend);
+            enable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST, scissor);
+            enable(org.lwjgl.opengl.GL11C.GL_CULL_FACE, cull);
+        }
+
+        private static void enable(int cap, boolean on) {
+            if (on) {
+                org.lwjgl.opengl.GL11C.glEnable(cap);
+            } else {
+                org.lwjgl.opengl.GL11C.glDisable(cap);
+            }
         }
 
         @Override
         void delete(int name) {
             glDeleteFramebuffers(name);
-            PlantRenderer.closeAll(colour);
+            PlantRenderer.closeAll(vao, program, box, colour);
+        }
+    }
+
+    /** A framebuffer with an RGBA8 texture, linear filtering, clamped: the box-averaged image. */
+    private static final class Box extends GlResource {
+        private final Texture image;
+        final int texture;
+
+        Box(GlTracker tracker) {
+            super(tracker, glGenFramebuffers());
+            Texture t;
+            try {
+                t = new Texture(tracker);
+            } catch (RuntimeException e) {
+                close();
+                throw e;
+            }
+            image = t;
+            texture = t.id();
+        }
+
+        void resize(int width, int height) {
+            int unit0 = glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
+            int bound = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            int t2 = org.lwjgl.opengl.GL11C.GL_TEXTURE_2D;
+            org.lwjgl.opengl.GL11C.glBindTexture(t2, texture);
+            org.lwjgl.opengl.GL11C.glTexImage2D(t2, 0, GL_RGBA8, width, height, 0, org.lwjgl.opengl.GL11C.GL_RGBA,
+                    org.lwjgl.opengl.GL11C.GL_UNSIGNED_BYTE, (java.nio.ByteBuffer) null);
+            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MIN_FILTER,
+                    org.lwjgl.opengl.GL11C.GL_LINEAR);
+            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MAG_FILTER,
+                    org.lwjgl.opengl.GL11C.GL_LINEAR);
+            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_WRAP_S,
+                    org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
+            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_WRAP_T,
+                    org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
+            org.lwjgl.opengl.GL11C.glBindTexture(t2, bound);
+            org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
+            glBindFramebuffer(GL_FRAMEBUFFER, id());
+            org.lwjgl.opengl.GL30C.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t2, texture, 0);
+            int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            if (status != GL_FRAMEBUFFER_COMPLETE) {
+                throw new IllegalStateException("framebuffer incomplete: status 0x" + Integer.toHexString(status));
+            }
+        }
+
+        @Override
+        void delete(int name) {
+            glDeleteFramebuffers(name);
+            PlantRenderer.closeAll(image);
+        }
+    }
+
+    /** A texture name, counted by the tracker. */
+    private static final class Texture extends GlResource {
+        Texture(GlTracker tracker) {
+            super(tracker, org.lwjgl.opengl.GL11C.glGenTextures());
+        }
+
+        @Override
+        void delete(int name) {
+            org.lwjgl.opengl.GL11C.glDeleteTextures(name);
         }
     }
 }

@@ -127,8 +127,6 @@ public final class PlantRenderer implements AutoCloseable {
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
-    /** Experiments only (package-private): whether the triangle levels use alpha-to-coverage. */
-    boolean alphaToCoverage = true;
     private boolean closed;
 
     /**
@@ -551,9 +549,7 @@ public final class PlantRenderer implements AutoCloseable {
         glUniform2f(triangleUniforms.pixelScale, px, py);
         poseTexture.bind(0);
         resolver.bindRecords(1);
-        if (alphaToCoverage) {
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        }
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         drawLists(false, triangleUniforms);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
