@@ -307,7 +307,7 @@ final class SceneBinder {
         return make(d, () -> new DistributionDef(d.str("species"), d.integer("count"), d.num("density"),
                 d.num("minWater"), d.num("maxWater"), d.num("minNutrients"), d.num("maxNutrients"),
                 d.num("maxSlope"), d.num("minAltitude"), d.num("maxAltitude"), d.num("footprint"),
-                d.num("waterUse"), d.num("nutrientUse")));
+                d.num("waterUse"), d.num("nutrientUse"), d.num("clumpSize"), d.num("clumpStrength")));
     }
 
     private boolean minMax(Values v, String min, String max) {

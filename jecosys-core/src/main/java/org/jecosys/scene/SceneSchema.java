@@ -375,7 +375,13 @@ final class SceneSchema {
                 .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1)
                         .def(DistributionDef.DEFAULT_WATER_USE).get(d -> dist(d).waterUse()))
                 .attr(num("nutrientUse", "", "Nutrient level a plant consumes in its footprint.").range(0, 1)
-                        .def(DistributionDef.DEFAULT_NUTRIENT_USE).get(d -> dist(d).nutrientUse()));
+                        .def(DistributionDef.DEFAULT_NUTRIENT_USE).get(d -> dist(d).nutrientUse()))
+                .attr(num("clumpSize", "metres", "Typical radius of a clump (patch) of this species.")
+                        .range(DistributionDef.MIN_CLUMP_SIZE, DistributionDef.MAX_CLUMP_SIZE)
+                        .def(DistributionDef.DEFAULT_CLUMP_SIZE).get(d -> dist(d).clumpSize()))
+                .attr(num("clumpStrength", "", "How strongly plants gather into clumps: 0 spreads them evenly over "
+                        + "the suitable ground, 1 places them only inside the clumps.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_CLUMP_STRENGTH).get(d -> dist(d).clumpStrength()));
         ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
                         .get(d -> ((PlacementDef) d).species()))
