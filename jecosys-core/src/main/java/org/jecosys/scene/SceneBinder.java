@@ -393,8 +393,11 @@ final class SceneBinder {
                 return null;
             }
         }
+        if (!minMax(f, "thinStart", "thinEnd")) {
+            return null;
+        }
         return make(f, () -> new ForceFieldDef(f.bool("enabled"), f.integer("maxObjectsPerNode"),
-                f.integer("maxDepth"), distances));
+                f.integer("maxDepth"), distances, f.num("thinStart"), f.num("thinEnd"), f.num("thinMinFraction")));
     }
 
     private CameraDef camera(Values c) {

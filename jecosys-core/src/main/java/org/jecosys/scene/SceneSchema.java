@@ -423,7 +423,17 @@ final class SceneSchema {
                         + "i levels collapse into their ancestor; empty for no distance LOD.")
                         .rangeAbove(0, ForceFieldDef.MAX_LOD_DISTANCE).items(0, ForceFieldDef.MAX_LOD_DISTANCES)
                         .def(List.of(15.0, 30.0))
-                        .get(d -> ((ForceFieldDef) d).lodDistances()));
+                        .get(d -> ((ForceFieldDef) d).lodDistances()))
+                .attr(num("thinStart", "metres", "Distance thinning of the drawing (for slow GPUs): beyond this "
+                        + "distance fewer plants are drawn, the same ones every frame.")
+                        .range(0, ForceFieldDef.MAX_LOD_DISTANCE).def(ForceFieldDef.DEFAULT_THIN_START)
+                        .get(d -> ((ForceFieldDef) d).thinStart()))
+                .attr(num("thinEnd", "metres", "Distance where the drawn share reaches thinMinFraction; at least "
+                        + "thinStart.").range(0, ForceFieldDef.MAX_LOD_DISTANCE).def(ForceFieldDef.DEFAULT_THIN_END)
+                        .get(d -> ((ForceFieldDef) d).thinEnd()))
+                .attr(num("thinMinFraction", "", "Share of plants drawn at and beyond thinEnd; 1 for no thinning.")
+                        .range(0, 1).def(ForceFieldDef.DEFAULT_THIN_MIN_FRACTION)
+                        .get(d -> ((ForceFieldDef) d).thinMinFraction()));
 
         ElementSpec camera = new ElementSpec("camera", "The viewer's start pose and optional path (paper section "
                 + "5.2).")
