@@ -7,8 +7,8 @@ import picocli.CommandLine.TypeConversionException;
 /** Parses {@code low}, {@code medium} or {@code high} ({@link DrawQuality}). */
 final class QualityConverter implements ITypeConverter<DrawQuality> {
     /** The option's description, shared by the commands that take it. */
-    static final String DESCRIPTION = "Far-plant thinning preset: low (from 8 m down to 15%% of the plants beyond "
-            + "25 m; for llvmpipe), medium (15 m, 35%% beyond 40 m) or high (none). Default: the scene's <field "
+    static final String DESCRIPTION = "Far-plant thinning preset: low (from 4 m down to 15%% of the plants beyond "
+            + "16 m; for llvmpipe), medium (8 m, 35%% beyond 30 m) or high (none). Default: the scene's <field "
             + "thinStart thinEnd thinMinFraction>.";
 
     @Override

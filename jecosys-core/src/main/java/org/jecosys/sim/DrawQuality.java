@@ -11,10 +11,10 @@ import org.jecosys.math.Require;
  * Immutable; any thread.
  */
 public enum DrawQuality {
-    /** Thinning from 8 m, down to 15% of the plants from 25 m: for llvmpipe at full-HD sizes. */
-    LOW(8, 25, 0.15),
-    /** Thinning from 15 m, down to 35% of the plants from 40 m: for llvmpipe at small sizes, weak GPUs. */
-    MEDIUM(15, 40, 0.35),
+    /** Thinning from 4 m, down to 15% of the plants from 16 m: for llvmpipe (software rendering). */
+    LOW(4, 16, 0.15),
+    /** Thinning from 8 m, down to 35% of the plants from 30 m: for weak GPUs. */
+    MEDIUM(8, 30, 0.35),
     /** No thinning: every plant the field finds visible is drawn (GPUs). */
     HIGH(ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END, 1);
 
