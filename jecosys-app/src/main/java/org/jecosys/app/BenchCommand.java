@@ -29,12 +29,15 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--only", paramLabel = "WORD", description = "Run only the sections whose name contains WORD "
             + "(case-insensitive), e.g. --only \"render scale\".")
     String only;
+    @Option(names = "--quality", paramLabel = "LEVEL", converter = QualityConverter.class,
+            description = "For the render-scale section: " + QualityConverter.DESCRIPTION)
+    org.jecosys.sim.DrawQuality quality;
 
     @Override
     public Integer call() throws IOException {
         OutputPaths.folder(spec.commandLine(), "--out", out);
         Path scenes = SceneArgs.resolve("scenes");
-        BenchSuite suite = BenchSuite.standard(scenes);
+        BenchSuite suite = BenchSuite.standard(scenes, quality);
         if (only != null) {
             java.util.List<String> names = new java.util.ArrayList<>();
             suite.sections().forEach(sec -> names.add(sec.name()));

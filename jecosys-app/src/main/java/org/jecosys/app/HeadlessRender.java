@@ -15,6 +15,7 @@ import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.DrawQuality;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
@@ -54,13 +55,16 @@ final class HeadlessRender {
                 .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
-    static void run(SceneDef def, Path baseDir, int frames, Path out, int width, int height, boolean maps,
-                    PrintWriter log, Progress progress) throws IOException {
+    static void run(SceneDef def, Path baseDir, DrawQuality quality, int frames, Path out, int width, int height,
+                    boolean maps, PrintWriter log, Progress progress) throws IOException {
         Files.createDirectories(out);
         log.println("Building '" + def.name() + "' ...");
         log.flush();
         try (Simulation sim = Simulation.create(def.simulationDef(), baseDir, progress)) {
             sim.setLodTransition(def.render().lodTransition());
+            if (quality != null) {
+                quality.applyTo(sim);
+            }
             render(def, sim, frames, out, width, height, maps, log);
         }
     }

@@ -3,6 +3,7 @@ package org.jecosys.app;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.DrawQuality;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,6 +37,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--gif", paramLabel = "FILE", description = "Also assemble the frames into a looping animated "
             + "GIF (30 frames per second).")
     Path gif;
+    @Option(names = "--quality", paramLabel = "LEVEL", converter = QualityConverter.class,
+            description = QualityConverter.DESCRIPTION)
+    DrawQuality quality;
 
     @Override
     public Integer call() {
@@ -53,7 +57,7 @@ final class RenderCommand implements Callable<Integer> {
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {
-            HeadlessRender.run(def, base, frames, out, w, h, maps, spec.commandLine().getOut(),
+            HeadlessRender.run(def, base, quality, frames, out, w, h, maps, spec.commandLine().getOut(),
                     new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
             if (gif != null) {
                 java.util.List<Path> pngs = new java.util.ArrayList<>();

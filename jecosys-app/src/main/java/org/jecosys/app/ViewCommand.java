@@ -5,8 +5,10 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jecosys.render.GlContext;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.DrawQuality;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -39,6 +41,9 @@ final class ViewCommand implements Callable<Integer> {
     @Parameters(arity = "0..1", paramLabel = "SCENE", defaultValue = SceneArgs.DEFAULT_SCENE,
             description = "Scene file (default: ${DEFAULT-VALUE}).")
     String scene;
+    @Option(names = "--quality", paramLabel = "LEVEL", converter = QualityConverter.class,
+            description = QualityConverter.DESCRIPTION)
+    DrawQuality quality;
 
     @Override
     public Integer call() {
@@ -57,12 +62,12 @@ final class ViewCommand implements Callable<Integer> {
                 spec.commandLine().getOut().println("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering "
                         + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
                 spec.commandLine().getOut().flush();
-                HeadlessRender.run(def, base, frames, out, def.render().width(), def.render().height(), true,
+                HeadlessRender.run(def, base, quality, frames, out, def.render().width(), def.render().height(), true,
                         spec.commandLine().getOut(),
                         new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
                 return ExitCodes.OK;
             }
-            new Viewer(def, file, base).run(new ConsoleProgress(spec.commandLine().getErr(),
+            new Viewer(def, file, base, quality).run(new ConsoleProgress(spec.commandLine().getErr(),
                     ConsoleProgress.stderrIsTerminal()));
             return ExitCodes.OK;
         } catch (IOException e) {

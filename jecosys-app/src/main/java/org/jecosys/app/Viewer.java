@@ -25,6 +25,7 @@ import org.jecosys.render.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.DrawQuality;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
@@ -49,6 +50,7 @@ final class Viewer {
     private final SceneDef def;
     private final Path file;
     private final Path base;
+    private final DrawQuality quality;
     private final double[] cx = new double[1];
     private final double[] cy = new double[1];
     private final int[] iw = new int[1];
@@ -56,16 +58,20 @@ final class Viewer {
     private final int[] ww = new int[1];
     private final int[] wh = new int[1];
 
-    Viewer(SceneDef def, Path file, Path base) {
+    Viewer(SceneDef def, Path file, Path base, DrawQuality quality) {
         this.def = def;
         this.file = file;
         this.base = base;
+        this.quality = quality;
     }
 
     void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
         try (Simulation sim = Simulation.create(def.simulationDef(), base, progress)) {
             sim.setLodTransition(def.render().lodTransition());
+            if (quality != null) {
+                quality.applyTo(sim);
+            }
             run(sim);
         }
     }

@@ -15,13 +15,22 @@ public final class BenchSuite {
 
     /** The standard suite over the scenes in {@code scenes}. */
     public static BenchSuite standard(Path scenes) {
+        return standard(scenes, null);
+    }
+
+    /**
+     * The standard suite over the scenes in {@code scenes}, the render-scale section drawing at
+     * {@code quality} (null: each scene's own thinning); the other sections measure the paper's
+     * tables and do not draw.
+     */
+    public static BenchSuite standard(Path scenes, org.jecosys.sim.DrawQuality quality) {
         BenchSuite s = new BenchSuite();
         s.add(new ModelSection(scenes));
         s.add(new PrecomputeSection(scenes));
         s.add(new FieldScaleSection());
         s.add(new PaperScenesSection(scenes));
         s.add(new ScaleSection(scenes));
-        s.add(new RenderScaleSection(scenes));
+        s.add(new RenderScaleSection(scenes, quality));
         return s;
     }
 

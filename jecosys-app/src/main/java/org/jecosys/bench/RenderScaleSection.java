@@ -31,9 +31,11 @@ final class RenderScaleSection implements Section {
     private static final double DT = 1 / 30.0;
 
     private final Path scenes;
+    private final org.jecosys.sim.DrawQuality quality;
 
-    RenderScaleSection(Path scenes) {
+    RenderScaleSection(Path scenes, org.jecosys.sim.DrawQuality quality) {
         this.scenes = scenes;
+        this.quality = quality;
     }
 
     @Override
@@ -63,6 +65,9 @@ final class RenderScaleSection implements Section {
                 try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE);
                      SceneRenderer r = new SceneRenderer(gl, sim.world(), new RenderSettings().sky(def.render().sky()))) {
                     sim.setLodTransition(def.render().lodTransition());
+                    if (quality != null) {
+                        quality.applyTo(sim);
+                    }
                     CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                             width / (double) height);
                     double[] frameMs = new double[frames];

@@ -74,6 +74,10 @@ class CliTest {
         Result field = run("simulate", "scenes/meadow.xml", "--field", "maybe");
         assertEquals(2, field.code());
         assertTrue(field.err().contains("--field"), field.err());
+        Result quality = run("render", "scenes/c1.xml", "--frames", "1", "--out", "x", "--quality", "ultra");
+        assertEquals(2, quality.code());
+        assertTrue(quality.err().contains("--quality") && quality.err().contains("expected low, medium or high"),
+                quality.err());
     }
 
     @Test
@@ -127,7 +131,7 @@ class CliTest {
         java.nio.file.Path out = java.nio.file.Path.of("target/cli-test/render");
         java.nio.file.Path gif = out.resolve("strip.gif");
         Result r = run("render", "scenes/c1.xml", "--frames", "2", "--out", out.toString(), "--size", "96x64", "--maps",
-                "--gif", gif.toString());
+                "--gif", gif.toString(), "--quality", "LOW");
         assertEquals(0, r.code(), r.err());
         for (String f : new String[] {"frame-00001.png", "frame-00002.png", "water.png", "nutrients.png",
                 "species.png"}) {

@@ -84,7 +84,11 @@ class FlowDefaultsTest {
             if (extra != null) {
                 sim.addFlow(extra);
             }
-            ViewCamera cam = ViewCamera.of(def.camera(), 0, 16 / 9.0);
+            // 9 m south of the flow, looking at it (C1's start camera before issue 13 moved it)
+            ViewCamera cam = new ViewCamera();
+            cam.setPosition(0, 1.7, 11);
+            cam.setOrientation(0, Math.toRadians(-12));
+            cam.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
             for (int i = 0; i < 60; i++) {
                 sim.step(1 / 60.0, cam);
             }

@@ -11,8 +11,14 @@ import org.jecosys.math.Require;
  * @param maxDepth          the deepest level a node may have (root is depth 0), in [0, 16]
  * @param lodDistances      ascending distances in metres: beyond the i-th (1-based) distance, i
  *                          levels collapse into their ancestor; empty for no distance LOD
+ * @param thinStart         distance thinning of the drawing: the distance where it starts, metres, in [0,
+ *                          {@link #MAX_LOD_DISTANCE}] (see {@code org.jecosys.sim.DrawDecision})
+ * @param thinEnd           where the kept share reaches thinMinFraction, metres, &gt;= thinStart
+ * @param thinMinFraction   share of plants kept at and beyond thinEnd, in [0, 1]; 1 (the default) for no
+ *                          thinning
  */
-public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
+public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances,
+                            double thinStart, double thinEnd, double thinMinFraction) {
     /** Largest allowed {@link #maxDepth()}. */
     public static final int MAX_DEPTH = 16;
     /** Largest {@link #maxObjectsPerNode()} (the scene schema's range and the API's). */
@@ -21,6 +27,12 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
     public static final int MAX_LOD_DISTANCES = 16;
     /** Largest LOD distance, metres. */
     public static final double MAX_LOD_DISTANCE = 1e6;
+    /** Default {@link #thinStart()}, metres. */
+    public static final double DEFAULT_THIN_START = 30;
+    /** Default {@link #thinEnd()}, metres. */
+    public static final double DEFAULT_THIN_END = 60;
+    /** Default {@link #thinMinFraction()}: 1, no thinning. */
+    public static final double DEFAULT_THIN_MIN_FRACTION = 1;
 
     /**
      * Checks the components and copies the distances.
@@ -30,6 +42,10 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
      * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
      * @param lodDistances      at most {@link #MAX_LOD_DISTANCES} strictly ascending distances, metres, each
      *                          in (0, {@link #MAX_LOD_DISTANCE}]
+     * @param thinStart         where distance thinning starts, metres, in [0, {@link #MAX_LOD_DISTANCE}]
+     * @param thinEnd           where it reaches thinMinFraction, metres, in [thinStart,
+     *                          {@link #MAX_LOD_DISTANCE}]
+     * @param thinMinFraction   share of plants kept beyond thinEnd, in [0, 1]; 1 for none
      * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
      */
     public ForceFieldDef {
@@ -49,6 +65,27 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
             }
             prev = d;
         }
+        Require.range("thinStart", thinStart, 0, MAX_LOD_DISTANCE);
+        Require.range("thinEnd", thinEnd, 0, MAX_LOD_DISTANCE);
+        if (thinEnd < thinStart) {
+            throw new IllegalArgumentException("thinEnd must be >= thinStart, got " + thinEnd + " < " + thinStart);
+        }
+        Require.range("thinMinFraction", thinMinFraction, 0, 1);
+    }
+
+    /**
+     * Settings without distance thinning ({@link #DEFAULT_THIN_START}, {@link #DEFAULT_THIN_END},
+     * {@link #DEFAULT_THIN_MIN_FRACTION}); checks as the canonical constructor does.
+     *
+     * @param enabled           whether the field evaluates flows
+     * @param maxObjectsPerNode split threshold, in [1, {@link #MAX_OBJECTS_PER_NODE}]
+     * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
+     * @param lodDistances      strictly ascending distances, metres
+     * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
+     */
+    public ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
+        this(enabled, maxObjectsPerNode, maxDepth, lodDistances, DEFAULT_THIN_START, DEFAULT_THIN_END,
+                DEFAULT_THIN_MIN_FRACTION);
     }
 
     /** {@return enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m} */

@@ -308,7 +308,7 @@ final class SceneBinder {
         return make(d, () -> new DistributionDef(d.str("species"), d.integer("count"), d.num("density"),
                 d.num("minWater"), d.num("maxWater"), d.num("minNutrients"), d.num("maxNutrients"),
                 d.num("maxSlope"), d.num("minAltitude"), d.num("maxAltitude"), d.num("footprint"),
-                d.num("waterUse"), d.num("nutrientUse")));
+                d.num("waterUse"), d.num("nutrientUse"), d.num("clumpSize"), d.num("clumpStrength")));
     }
 
     private boolean minMax(Values v, String min, String max) {
@@ -394,8 +394,11 @@ final class SceneBinder {
                 return null;
             }
         }
+        if (!minMax(f, "thinStart", "thinEnd")) {
+            return null;
+        }
         return make(f, () -> new ForceFieldDef(f.bool("enabled"), f.integer("maxObjectsPerNode"),
-                f.integer("maxDepth"), distances));
+                f.integer("maxDepth"), distances, f.num("thinStart"), f.num("thinEnd"), f.num("thinMinFraction")));
     }
 
     private CameraDef camera(Values c) {

@@ -382,7 +382,13 @@ final class SceneSchema {
                 .attr(num("waterUse", "", "Water level a plant consumes in its footprint.").range(0, 1)
                         .def(DistributionDef.DEFAULT_WATER_USE).get(d -> dist(d).waterUse()))
                 .attr(num("nutrientUse", "", "Nutrient level a plant consumes in its footprint.").range(0, 1)
-                        .def(DistributionDef.DEFAULT_NUTRIENT_USE).get(d -> dist(d).nutrientUse()));
+                        .def(DistributionDef.DEFAULT_NUTRIENT_USE).get(d -> dist(d).nutrientUse()))
+                .attr(num("clumpSize", "metres", "Typical radius of a clump (patch) of this species.")
+                        .range(DistributionDef.MIN_CLUMP_SIZE, DistributionDef.MAX_CLUMP_SIZE)
+                        .def(DistributionDef.DEFAULT_CLUMP_SIZE).get(d -> dist(d).clumpSize()))
+                .attr(num("clumpStrength", "", "How strongly plants gather into clumps: 0 spreads them evenly over "
+                        + "the suitable ground, 1 places them only inside the clumps.").range(0, 1)
+                        .def(DistributionDef.DEFAULT_CLUMP_STRENGTH).get(d -> dist(d).clumpStrength()));
         ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
                         .get(d -> ((PlacementDef) d).species()))
@@ -424,7 +430,17 @@ final class SceneSchema {
                         + "i levels collapse into their ancestor; empty for no distance LOD.")
                         .rangeAbove(0, ForceFieldDef.MAX_LOD_DISTANCE).items(0, ForceFieldDef.MAX_LOD_DISTANCES)
                         .def(List.of(15.0, 30.0))
-                        .get(d -> ((ForceFieldDef) d).lodDistances()));
+                        .get(d -> ((ForceFieldDef) d).lodDistances()))
+                .attr(num("thinStart", "metres", "Distance thinning of the drawing (for slow GPUs): beyond this "
+                        + "distance fewer plants are drawn, the same ones every frame.")
+                        .range(0, ForceFieldDef.MAX_LOD_DISTANCE).def(ForceFieldDef.DEFAULT_THIN_START)
+                        .get(d -> ((ForceFieldDef) d).thinStart()))
+                .attr(num("thinEnd", "metres", "Distance where the drawn share reaches thinMinFraction; at least "
+                        + "thinStart.").range(0, ForceFieldDef.MAX_LOD_DISTANCE).def(ForceFieldDef.DEFAULT_THIN_END)
+                        .get(d -> ((ForceFieldDef) d).thinEnd()))
+                .attr(num("thinMinFraction", "", "Share of plants drawn at and beyond thinEnd; 1 for no thinning.")
+                        .range(0, 1).def(ForceFieldDef.DEFAULT_THIN_MIN_FRACTION)
+                        .get(d -> ((ForceFieldDef) d).thinMinFraction()));
 
         ElementSpec camera = new ElementSpec("camera", "The viewer's start pose and optional path (paper section "
                 + "5.2).")

@@ -1,7 +1,9 @@
 package org.jecosys.sim;
 
 import java.util.List;
+import org.jecosys.field.ForceFieldDef;
 import org.jecosys.math.Camera;
+import org.jecosys.math.Rng;
 import org.jecosys.math.Require;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.SpeciesModel;
@@ -19,6 +21,18 @@ import org.joml.Matrix4f;
  * dither thresholds ({@link #keep}), so a plant crossing a band fades from one level to the next
  * instead of popping.
  *
+ * <h2>Distance thinning</h2>
+ * Optionally ({@link #setThinning}; the scene's {@code <field thinStart thinEnd thinMinFraction>}; off
+ * by default, when frames are bit for bit those without it) fewer plants are drawn far away, to keep a
+ * slow GPU usable: beyond {@link #thinStart()} the kept share {@link #thinKept(double)}
+ * {@code k(d) = 1 - (1 - thinMinFraction) smoothstep(thinStart, thinEnd, d)} falls smoothly to
+ * {@link #thinMinFraction()} at {@link #thinEnd()}. Each plant has a fixed rank h in [0, 1), a hash of
+ * its index (so the same plants stay, whatever the camera and the thread count); with
+ * {@code r = (1 + }{@link #THIN_FADE}{@code ) k(d)} a plant is drawn when {@code h < r}, and its dither
+ * windows are scaled by {@code min(1, (r - h) / THIN_FADE)}: a plant leaving the kept set fades out over
+ * a short distance instead of popping. The share of plants drawn at distance d is {@code min(1, r)}; a
+ * renderer may widen far blades by {@code 1 / sqrt(k(d))} to keep the covered area.
+ *
  * <p>In a simulation the animation workers make this decision for their own chunks of plants as they
  * animate them; {@link #decideAll} makes it for a whole frame on one thread, for tools and tests that
  * build frames without the animation engine. Distances in metres.
@@ -26,6 +40,12 @@ import org.joml.Matrix4f;
 public final class DrawDecision {
     /** The transition band a decision starts with, metres (the scene schema's default lodTransition). */
     public static final double DEFAULT_TRANSITION = 1.0;
+
+    /**
+     * The width, as a share of the plants, of the rank band over which a plant thinned away fades out
+     * (see the class comment).
+     */
+    public static final double THIN_FADE = 0.1;
 
     /** Where each species' levels end, metres, with any LOD scale applied. */
     interface Edges {
@@ -40,6 +60,9 @@ public final class DrawDecision {
     private final Edges edges;
     private final float[] radius;
     private volatile double transition = DEFAULT_TRANSITION;
+    /** start, end, min fraction: one array, swapped whole, so a decision never sees a mix. */
+    private volatile double[] thinning = {ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END,
+            ForceFieldDef.DEFAULT_THIN_MIN_FRACTION};
     private final Matrix4f viewProjection = new Matrix4f();
     private final FrustumIntersection frustum = new FrustumIntersection();
 
@@ -124,6 +147,71 @@ public final class DrawDecision {
     }
 
     /**
+     * Sets the distance thinning (the scene's {@code <field thinStart thinEnd thinMinFraction>}; see the
+     * class comment). Any thread; takes effect at the next decision; allocates a small array.
+     *
+     * @param start       where thinning starts, metres, in [0, 1e6]
+     * @param end         where the kept share reaches {@code minFraction}, metres, in [start, 1e6]
+     * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]; 1 for no thinning
+     * @throws IllegalArgumentException when out of range
+     */
+    public void setThinning(double start, double end, double minFraction) {
+        checkThinning(start, end, minFraction);
+        thinning = new double[] {start, end, minFraction};
+    }
+
+    static void checkThinning(double start, double end, double minFraction) {
+        Require.range("thinStart", start, 0, ForceFieldDef.MAX_LOD_DISTANCE);
+        Require.range("thinEnd", end, start, ForceFieldDef.MAX_LOD_DISTANCE);
+        Require.range("thinMinFraction", minFraction, 0, 1);
+    }
+
+    /** {@return where distance thinning starts, metres} Any thread. */
+    public double thinStart() {
+        return thinning[0];
+    }
+
+    /** {@return where the kept share reaches {@link #thinMinFraction()}, metres} Any thread. */
+    public double thinEnd() {
+        return thinning[1];
+    }
+
+    /** {@return the share of plants kept at and beyond {@link #thinEnd()}; 1 when thinning is off} Any thread. */
+    public double thinMinFraction() {
+        return thinning[2];
+    }
+
+    /**
+     * The share of plants kept at distance {@code d}, in [thinMinFraction, 1]: 1 up to thinStart, falling
+     * smoothly (smoothstep) to thinMinFraction at thinEnd. A renderer may widen the kept plants' thin
+     * parts by {@code 1 / sqrt(thinKept(d))}. Any thread; no allocation.
+     *
+     * @param d distance to the eye, metres
+     * @return the kept share
+     */
+    public double thinKept(double d) {
+        double[] t = thinning;
+        return kept(d, t[0], t[1], t[2]);
+    }
+
+    private static double kept(double d, double start, double end, double min) {
+        if (min >= 1 || d <= start) {
+            return 1;
+        }
+        double u = end > start ? Math.min(1, (d - start) / (end - start)) : 1;
+        return 1 - (1 - min) * u * u * (3 - 2 * u);
+    }
+
+    /**
+     * {@return plant p's fixed thinning rank, in [0, 1): a hash of its index} Any thread; no allocation.
+     *
+     * @param p plant index
+     */
+    public static double thinRank(int p) {
+        return (Rng.mix(0x7A1E5EEDL ^ Rng.mix(p + 1L)) >>> 11) * 0x1.0p-53;
+    }
+
+    /**
      * {@return the bounding radius of a species' plants, metres (see {@link #boundingRadius})}
      *
      * @param species species index
@@ -142,6 +230,11 @@ public final class DrawDecision {
     void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, FrustumIntersection frustum,
                 Frame frame) {
         double band = transition;
+        double[] thin = thinning;
+        double thinStart = thin[0];
+        double thinEnd = thin[1];
+        double thinMin = thin[2];
+        boolean thinned = thinMin < 1;
         for (int p = p0; p < p1; p++) {
             int s = world.plantSpecies(p);
             float x = world.plantX(p);
@@ -170,6 +263,18 @@ public final class DrawDecision {
             int keep = keep(s, l, levels, d, b);
             if (l < levels - 1 && b > 0 && d > edges.edge(s, l) - b) {
                 keep |= keep(s, l + 1, levels, d, b) << 16;
+            }
+            if (thinned && d > thinStart) {
+                double r = (1 + THIN_FADE) * kept(d, thinStart, thinEnd, thinMin);
+                double a = (r - thinRank(p)) / THIN_FADE;
+                if (a < 1) {
+                    keep = a * 255 < 0.5 ? 0 : scaleKeep(keep, a);
+                    if (keep == 0) {
+                        frame.drawLevel[p] = -1;
+                        frame.drawKeep[p] = 0;
+                        continue;
+                    }
+                }
             }
             frame.drawLevel[p] = (byte) l;
             frame.drawKeep[p] = keep;
@@ -239,6 +344,26 @@ public final class DrawDecision {
     public int keep(int s, int l, double d) {
         int levels = edges.levels(s);
         return keep(s, l, levels, d, Math.min(transition, minGap(s, levels)));
+    }
+
+    /**
+     * Both packed dither windows of {@code keep} with their bounds scaled by {@code a}: the windows keep
+     * tiling, now {@code [0, 255 a)}, so the plant keeps about a share {@code a} of its fragments; 0 when
+     * nothing is left. No allocation.
+     */
+    static int scaleKeep(int keep, double a) {
+        int lo = (int) Math.round(((keep >>> 8) & 0xFF) * a);
+        int hi = (int) Math.round((keep & 0xFF) * a);
+        int next = keep >>> 16;
+        int out = lo < hi ? 256 * lo + hi : 0;
+        if (next != 0) {
+            int nlo = (int) Math.round(((next >>> 8) & 0xFF) * a);
+            int nhi = (int) Math.round((next & 0xFF) * a);
+            if (nlo < nhi) {
+                out |= (256 * nlo + nhi) << 16;
+            }
+        }
+        return out;
     }
 
     /** Fade across the band ending at {@code edge}: 0 before it, 1 at and beyond the edge. */

@@ -167,6 +167,7 @@ public final class Simulation implements AutoCloseable {
                 return state.lodEdge(sp, l);
             }
         });
+        draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
         chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler.windX, sampler.windZ,
                 sampler.visible, sampler.eye, ad.seed(), draw, sampler.frustum);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
@@ -536,6 +537,39 @@ public final class Simulation implements AutoCloseable {
     public void setLodTransition(double metres) {
         Require.range("lodTransition", metres, 0, 10);
         commands.enqueue(() -> draw.setTransition(metres));
+    }
+
+    /**
+     * Sets the distance thinning of the drawing (the scene's {@code <field thinStart thinEnd
+     * thinMinFraction>}, which a simulation starts with): beyond {@code start} metres fewer plants are
+     * drawn, the kept share falling smoothly to {@code minFraction} at {@code end}; the same plants stay
+     * and a plant leaving fades out (see {@link DrawDecision}). For slow GPUs (llvmpipe); the animation
+     * is unchanged. Any thread; applied at the next fixed step; allocates a command.
+     *
+     * @param start       where thinning starts, metres, in [0, 1e6]
+     * @param end         where the kept share reaches {@code minFraction}, metres, in [start, 1e6]
+     * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]; 1 turns thinning off
+     * @throws IllegalArgumentException when out of range
+     * @throws IllegalStateException    when {@link #MAX_PENDING_COMMANDS} commands are already queued
+     */
+    public void setThinning(double start, double end, double minFraction) {
+        DrawDecision.checkThinning(start, end, minFraction);
+        commands.enqueue(() -> draw.setThinning(start, end, minFraction));
+    }
+
+    /** {@return where distance thinning starts, metres (see {@link #setThinning})} Any thread. */
+    public double thinStart() {
+        return draw.thinStart();
+    }
+
+    /** {@return where the kept share reaches {@link #thinMinFraction()}, metres} Any thread. */
+    public double thinEnd() {
+        return draw.thinEnd();
+    }
+
+    /** {@return the share of plants drawn at and beyond {@link #thinEnd()}; 1 when thinning is off} Any thread. */
+    public double thinMinFraction() {
+        return draw.thinMinFraction();
     }
 
     /**

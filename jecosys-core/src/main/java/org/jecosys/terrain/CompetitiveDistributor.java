@@ -25,7 +25,14 @@ import org.jecosys.math.Rng;
  * unfinished distribution gets a batch of random candidates sized from its remaining need and its
  * acceptance rate so far. Candidates are generated in fixed chunks of {@link #CHUNK} (each chunk
  * from its own {@link Rng#forStream} stream, in parallel over the worker threads), which also
- * evaluates the static conditions: altitude and slope at the exact point.</li>
+ * evaluates the static conditions: altitude and slope at the exact point. With a
+ * {@link DistributionDef#clumpStrength()} s &gt; 0, a drawn point is kept with chance
+ * {@code 1 - s + s g(x, z)}, where g in [0, 1] is a smooth step of seeded value noise (seed from the
+ * scene seed and the distribution's index) whose lattice cells are twice
+ * {@link DistributionDef#clumpSize()}: g is 1 inside the patches (about 40% of the ground) and 0 between
+ * them; otherwise it is drawn again, at most {@link #CLUMP_TRIES} times (the last draw is kept). So
+ * plants gather into patches of about clumpSize radius, denser by up to 1 / (share of ground in
+ * clumps); at s = 0 no extra numbers are drawn and the layout is the uniform one, bit for bit.</li>
  * <li>Acceptance runs on the calling thread in one fixed order that interleaves the batches in
  * proportion to their size (candidate i of a batch of b comes at (i + 0.5) / b; ties by
  * distribution index), so the species compete for the same ground at the same time and none simply
@@ -64,6 +71,13 @@ public final class CompetitiveDistributor implements TerrainDistributor {
     public static final int MASK_MIN_RESOLUTION = 64;
     /** Mask cells per side, at most. */
     public static final int MASK_MAX_RESOLUTION = 512;
+
+    /** Candidate draws a clumped distribution makes for one candidate before it keeps the last drawn. */
+    public static final int CLUMP_TRIES = 64;
+    /** Clump noise value where a clump's edge starts (value noise in [-1, 1]). */
+    static final double CLUMP_EDGE_LO = -0.05;
+    /** Clump noise value where a clump's inside is reached. */
+    static final double CLUMP_EDGE_HI = 0.2;
 
     /** Densest packing of equal discs in the plane (hexagonal), as a share of the area. */
     static final double PACKING = Math.PI / (2 * Math.sqrt(3));

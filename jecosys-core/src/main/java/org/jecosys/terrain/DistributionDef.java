@@ -19,10 +19,16 @@ import org.jecosys.math.Require;
  * @param footprint    radius of ground a plant takes, metres, in (0, 100]
  * @param waterUse     water level a plant consumes in its footprint, in [0, 1]
  * @param nutrientUse  nutrient level a plant consumes in its footprint, in [0, 1]
+ * @param clumpSize    typical radius of a clump (patch) of this species, metres, in
+ *                     [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
+ * @param clumpStrength how strongly candidates gather into clumps, in [0, 1]: 0 places them uniformly
+ *                     over the suitable ground (the paper's layout, bit for bit), 1 only inside the clumps
+ *                     (see {@link CompetitiveDistributor})
  */
 public record DistributionDef(String species, int count, double density, double minWater, double maxWater,
                               double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
-                              double maxAltitude, double footprint, double waterUse, double nutrientUse) {
+                              double maxAltitude, double footprint, double waterUse, double nutrientUse,
+                              double clumpSize, double clumpStrength) {
     /** Largest exact count. */
     public static final int MAX_COUNT = 10_000_000;
     /** Largest density, plants per square metre (the scene schema's range and the API's). */
@@ -35,6 +41,10 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double MIN_FOOTPRINT = 1e-3;
     /** Largest footprint radius, metres. */
     public static final double MAX_FOOTPRINT = 100;
+    /** Smallest clump radius, metres. */
+    public static final double MIN_CLUMP_SIZE = 0.05;
+    /** Largest clump radius, metres. */
+    public static final double MAX_CLUMP_SIZE = 1000;
 
     /**
      * Checks the components.
@@ -53,6 +63,8 @@ public record DistributionDef(String species, int count, double density, double 
      *                     {@link #MAX_FOOTPRINT}]
      * @param waterUse     water level a plant consumes, in [0, 1]
      * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
+     * @param clumpSize    clump radius, metres, in [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
+     * @param clumpStrength clumping, in [0, 1]; 0 for none
      * @throws IllegalArgumentException when a component is out of range or species is null
      */
     public DistributionDef {
@@ -72,6 +84,34 @@ public record DistributionDef(String species, int count, double density, double 
         Require.range("footprint", footprint, MIN_FOOTPRINT, MAX_FOOTPRINT);
         Require.range("waterUse", waterUse, 0, 1);
         Require.range("nutrientUse", nutrientUse, 0, 1);
+        Require.range("clumpSize", clumpSize, MIN_CLUMP_SIZE, MAX_CLUMP_SIZE);
+        Require.range("clumpStrength", clumpStrength, 0, 1);
+    }
+
+    /**
+     * A distribution without clumping ({@link #DEFAULT_CLUMP_SIZE}, {@link #DEFAULT_CLUMP_STRENGTH}):
+     * the paper's uniform candidates. Checks as the canonical constructor does.
+     *
+     * @param species      species id, not null
+     * @param count        exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
+     * @param density      plants per square metre, in [0, {@link #MAX_DENSITY}]
+     * @param minWater     lowest water level, in [0, 1]
+     * @param maxWater     highest water level, in [minWater, 1]
+     * @param minNutrients lowest nutrient level, in [0, 1]
+     * @param maxNutrients highest nutrient level, in [minNutrients, 1]
+     * @param maxSlope     steepest ground, radians
+     * @param minAltitude  lowest terrain height, metres
+     * @param maxAltitude  highest terrain height, metres
+     * @param footprint    radius of ground a plant takes, metres
+     * @param waterUse     water level a plant consumes, in [0, 1]
+     * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
+     * @throws IllegalArgumentException when a component is out of range or species is null
+     */
+    public DistributionDef(String species, int count, double density, double minWater, double maxWater,
+                           double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
+                           double maxAltitude, double footprint, double waterUse, double nutrientUse) {
+        this(species, count, density, minWater, maxWater, minNutrients, maxNutrients, maxSlope, minAltitude,
+                maxAltitude, footprint, waterUse, nutrientUse, DEFAULT_CLUMP_SIZE, DEFAULT_CLUMP_STRENGTH);
     }
 
     /** Default {@link #count()}: -1, place by {@link #density()}. */
@@ -98,6 +138,10 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double DEFAULT_WATER_USE = 0.5;
     /** Default {@link #nutrientUse()}. */
     public static final double DEFAULT_NUTRIENT_USE = 0.5;
+    /** Default {@link #clumpSize()}, metres. */
+    public static final double DEFAULT_CLUMP_SIZE = 1;
+    /** Default {@link #clumpStrength()}: no clumping, the paper's uniform candidates. */
+    public static final double DEFAULT_CLUMP_STRENGTH = 0;
 
     /**
      * A builder for a distribution of {@code species}, every value at the scene schema's default
@@ -119,7 +163,7 @@ public record DistributionDef(String species, int count, double density, double 
     public Builder toBuilder() {
         return new Builder(species).count(count).density(density).water(minWater, maxWater)
                 .nutrients(minNutrients, maxNutrients).maxSlope(maxSlope).altitude(minAltitude, maxAltitude)
-                .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse);
+                .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse).clump(clumpSize, clumpStrength);
     }
 
     /**
@@ -140,6 +184,8 @@ public record DistributionDef(String species, int count, double density, double 
         private double footprint = DEFAULT_FOOTPRINT;
         private double waterUse = DEFAULT_WATER_USE;
         private double nutrientUse = DEFAULT_NUTRIENT_USE;
+        private double clumpSize = DEFAULT_CLUMP_SIZE;
+        private double clumpStrength = DEFAULT_CLUMP_STRENGTH;
 
         private Builder(String species) {
             this.species = species;
@@ -251,6 +297,19 @@ public record DistributionDef(String species, int count, double density, double 
         }
 
         /**
+         * Sets the clumping: candidates gather into seeded patches of about {@code size} metres radius.
+         *
+         * @param size     clump radius, metres, in [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
+         * @param strength in [0, 1]; 0 for none (uniform candidates), 1 for candidates only in clumps
+         * @return this builder
+         */
+        public Builder clump(double size, double strength) {
+            this.clumpSize = size;
+            this.clumpStrength = strength;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -258,7 +317,7 @@ public record DistributionDef(String species, int count, double density, double 
          */
         public DistributionDef build() {
             return new DistributionDef(species, count, density, minWater, maxWater, minNutrients, maxNutrients,
-                    maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse);
+                    maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength);
         }
     }
 }

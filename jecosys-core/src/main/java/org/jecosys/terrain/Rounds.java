@@ -1,6 +1,7 @@
 package org.jecosys.terrain;
 
 import java.util.List;
+import org.jecosys.math.Noise;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Rng;
 
@@ -157,12 +158,25 @@ final class Rounds {
         int to = Math.min(batch[d], from + CompetitiveDistributor.CHUNK);
         double minX = hf.minX();
         double minZ = hf.minZ();
+        double strength = def.clumpStrength();
+        long clumpSeed = Rng.mix(seed ^ Rng.mix(0xC1L + ((long) d << 8)));
+        double clumpScale = 1 / (2 * def.clumpSize());
         for (int i = from; i < to; i++) {
-            int cell = m.possible[rng.nextInt(m.possible.length)];
-            int mi = cell % m.res;
-            int mj = cell / m.res;
-            float x = inside(minX + (mi + rng.nextDouble()) * m.cellX, minX, hf.maxX());
-            float z = inside(minZ + (mj + rng.nextDouble()) * m.cellZ, minZ, hf.maxZ());
+            float x;
+            float z;
+            int tries = 0;
+            while (true) {
+                int cell = m.possible[rng.nextInt(m.possible.length)];
+                int mi = cell % m.res;
+                int mj = cell / m.res;
+                x = inside(minX + (mi + rng.nextDouble()) * m.cellX, minX, hf.maxX());
+                z = inside(minZ + (mj + rng.nextDouble()) * m.cellZ, minZ, hf.maxZ());
+                // strength 0 draws nothing more: the paper's uniform candidates, bit for bit
+                if (strength == 0 || ++tries >= CompetitiveDistributor.CLUMP_TRIES
+                        || rng.nextDouble() < clumpAcceptance(clumpSeed, clumpScale, strength, x, z)) {
+                    break;
+                }
+            }
             double y = hf.height(x, z);
             cx[d][i] = x;
             cz[d][i] = z;
@@ -223,6 +237,19 @@ final class Rounds {
             placed[d]++;
             accepted++;
         }
+    }
+
+    /**
+     * The chance a candidate at (x, z) is kept by the clumping: {@code 1 - strength + strength g}, where
+     * g in [0, 1] is a smooth step of seeded value noise with lattice cells of twice the clump radius,
+     * so that about 40% of the ground lies inside clumps (g &gt; 0).
+     */
+    static double clumpAcceptance(long clumpSeed, double scale, double strength, double x, double z) {
+        double n = Noise.value2(clumpSeed, x * scale, z * scale);
+        double t = Math.max(0, Math.min(1, (n - CompetitiveDistributor.CLUMP_EDGE_LO)
+                / (CompetitiveDistributor.CLUMP_EDGE_HI - CompetitiveDistributor.CLUMP_EDGE_LO)));
+        double g = t * t * (3 - 2 * t);
+        return 1 - strength + strength * g;
     }
 
     /** v as a float inside [lo, hi]. */
