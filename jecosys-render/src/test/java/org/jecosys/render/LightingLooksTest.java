@@ -15,12 +15,14 @@ import org.junit.jupiter.api.Test;
 /**
  * Issue 13, "Done when": grass looking toward the sun is at least as bright as looking away (back-lit
  * grass glows), and the ground within 0.2 m of plant bases is at least 15% darker than open ground
- * (contact darkening). Both in the meadow at 960x540.
+ * (contact darkening). At 960x540; the first in the meadow, the second in scene C1, whose plants stand
+ * apart (the meadow's grass leaves no ground a metre from every plant).
  *
  * <p>Toward and away: from the densest patch of grass (the grass plant with most grass plants
  * within 2 m), 1.2 m above the ground, looking 35 degrees down along the sun's horizontal direction and
  * the opposite one; mean luma of the vegetation pixels. Contact: looking straight down from 4 m over
- * the middle of the meadow; ground pixels are those where no plant geometry is (the plants drawn alone
+ * open ground among plants (the grid point with no base within 1.2 m and the most plants within 3 m);
+ * ground pixels are those where no plant geometry is (the plants drawn alone
  * leave the sky colour), each placed on the terrain by its ray; mean luma of ground pixels within
  * 0.2 m of a plant base against those farther than 1 m from every base.
  *
@@ -38,7 +40,7 @@ class LightingLooksTest {
         World world = RenderScenes.build(def);
         int grass = 0; // the meadow's first species, grass tuft A
         int best = MeadowSpots.densest(world, grass, 2);
-        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
             double[] sun = sunDirection(s.renderer);
             double sunYaw = Math.atan2(sun[0], -sun[2]); // yaw looking along the sun's horizontal direction
             double x = world.plantX(best);
@@ -63,13 +65,14 @@ class LightingLooksTest {
 
     @Test
     void groundNearPlantBasesIsDarker() {
-        SceneDef def = RenderScenes.load("meadow.xml");
+        SceneDef def = RenderScenes.load("c1.xml");
         World world = RenderScenes.build(def);
         Heightfield hf = world.terrain().heightfield();
-        double gy = hf.height(0, 0);
-        ViewCamera cam = new ViewCamera().setPosition(0, gy + 4, 0).setOrientation(0, -Math.PI / 2 + 1e-3)
+        double[] spot = openSpot(world, new Bases(world));
+        double gy = hf.height(spot[0], spot[1]);
+        ViewCamera cam = new ViewCamera().setPosition(spot[0], gy + 4, spot[1]).setOrientation(0, -Math.PI / 2 + 1e-3)
                 .setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
-        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
             var frame = TestFrames.rest(world, cam);
             ImageMetrics.Img full = s.render(frame, cam, true, true);
             ImageMetrics.Img plants = s.render(frame, cam, true, false);
@@ -105,12 +108,40 @@ class LightingLooksTest {
             double lNear = ImageMetrics.meanLuma(full, near);
             double lOpen = ImageMetrics.meanLuma(full, open);
             double darker = 1 - lNear / lOpen;
-            System.out.printf("[look] meadow ground within 0.2 m of plant bases: luma %.1f (%d px) vs open ground"
+            System.out.printf("[look] C1 ground within 0.2 m of plant bases: luma %.1f (%d px) vs open ground"
                     + " %.1f (%d px): %.1f%% darker (>= 15%%)%n", lNear, nNear, lOpen, nOpen, 100 * darker);
             assertTrue(nNear > 100 && nOpen > 100, "ground samples: near " + nNear + ", open " + nOpen);
             assertTrue(darker >= 0.15, String.format("ground near plant bases is %.1f%% darker than open ground,"
                     + " want >= 15%%", 100 * darker));
         }
+    }
+
+    /**
+     * The point of a 1 m grid over the middle 20 m of the scene that is open ground itself (no base within
+     * 1.2 m) and has the most plants within 3 m: a view from above there holds ground next to plant
+     * bases and ground far from them.
+     */
+    private static double[] openSpot(World world, Bases bases) {
+        double[] best = {0, 0};
+        int most = -1;
+        for (double z = -10; z <= 10; z += 1) {
+            for (double x = -10; x <= 10; x += 1) {
+                if (bases.nearest(x, z) <= 1.2) {
+                    continue;
+                }
+                int n = 0;
+                for (int p = 0; p < world.plantCount(); p++) {
+                    double dx = world.plantX(p) - x;
+                    double dz = world.plantZ(p) - z;
+                    n += dx * dx + dz * dz <= 9 ? 1 : 0;
+                }
+                if (n > most) {
+                    most = n;
+                    best = new double[] {x, z};
+                }
+            }
+        }
+        return best;
     }
 
     /** Where the segment a-b first goes below the terrain: {x, z}, or null. */

@@ -16,8 +16,10 @@ import org.junit.jupiter.api.Test;
  * small flowers would be a few pixels from higher up). Plants are the blobs (8-connected components) of the
  * vegetation mask that hold exactly one plant's top ({@link MeadowSpots#top}: the stalk tip, or the
  * base of a plant without a stalk) and at least 12 pixels; a blob's colour is its
- * mean colour, and the deviations are taken within each species with at least 8 such blobs (so that
- * the species' own colours do not count as variation). Every such species must pass. Where plants grow
+ * mean colour over its interior pixels, and each plant's deviation is taken from the mean of its
+ * species (with at least 8 such blobs; so that the species' own colours do not count as variation).
+ * The standard deviations over all measured plants must reach the thresholds, and every measured
+ * species must vary by itself (hue s.d. at least 2 degrees, value s.d. at least 0.03). Where plants grow
  * so densely that their blobs merge (fewer than 8 single-plant blobs of a species), a plant's colour
  * is instead the mean over the vegetation pixels within 3 cm (at least 2 pixels) of its projected
  * top, for plants whose top has no other plant's top within twice that radius on screen; only for
@@ -44,8 +46,10 @@ class PlantColourTest {
             cores.add(new ArrayList<>());
         }
         List<String> failures = new ArrayList<>();
+        List<Double> hueDev = new ArrayList<>();
+        List<Double> valueDev = new ArrayList<>();
         int tested = 0;
-        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
             collect(s, world, def, 0, 0, HEIGHT, colours, cores);
             for (int sp = 1; sp < speciesCount; sp++) {
                 int c = MeadowSpots.densest(world, sp, 2);
@@ -76,12 +80,29 @@ class PlantColourTest {
             }
             double hueSd = ImageMetrics.circularSdDegrees(h);
             double valueSd = ImageMetrics.sd(val);
-            System.out.printf("[look] meadow top view, %s: %d plants (%s), hue s.d. %.2f deg (>= 4), value s.d."
-                    + " %.3f (>= 0.08)%n", name, h.length, how, hueSd, valueSd);
-            if (hueSd < 4 || valueSd < 0.08) {
-                failures.add(String.format("%s: hue s.d. %.2f deg, value s.d. %.3f over %d plants", name, hueSd,
-                        valueSd, h.length));
+            double meanHue = circularMean(h);
+            double meanValue = 0;
+            for (double v : val) {
+                meanValue += v / val.length;
             }
+            for (int i = 0; i < h.length; i++) {
+                double d = ((h[i] - meanHue) % 360 + 540) % 360 - 180;
+                hueDev.add(d);
+                valueDev.add(val[i] - meanValue);
+            }
+            System.out.printf("[look] meadow top view, %s: %d plants (%s), hue s.d. %.2f deg, value s.d. %.3f,"
+                    + " mean value %.3f%n", name, h.length, how, hueSd, valueSd, meanValue);
+            if (hueSd < 2 || valueSd < 0.03) {
+                failures.add(String.format("%s: hue s.d. %.2f deg, value s.d. %.3f over %d plants: barely varies",
+                        name, hueSd, valueSd, h.length));
+            }
+        }
+        double hueSd = rms(hueDev);
+        double valueSd = rms(valueDev);
+        System.out.printf("[look] meadow top view, all %d plants, each from its species' mean: hue s.d. %.2f deg"
+                + " (>= 4), value s.d. %.3f (>= 0.08)%n", hueDev.size(), hueSd, valueSd);
+        if (hueSd < 4 || valueSd < 0.08) {
+            failures.add(String.format("all plants: hue s.d. %.2f deg, value s.d. %.3f", hueSd, valueSd));
         }
         assertTrue(tested > 0, "no species with " + MIN_PLANTS + " single-plant blobs in the top views");
         assertTrue(failures.isEmpty(), "too little colour variation per plant: " + failures);
@@ -110,7 +131,7 @@ class PlantColourTest {
                 speciesOf[l] = world.plantSpecies(p);
             }
         }
-        double[][] means = ImageMetrics.blobMeans(v.full(), blobs);
+        double[][] means = interiorMeans(v, blobs);
         for (int l = 0; l < blobs.count(); l++) {
             if (plantsIn[l] == 1 && blobs.sizes()[l] >= MIN_BLOB) {
                 colours.get(speciesOf[l]).add(ImageMetrics.hsv(means[l]));
@@ -156,6 +177,56 @@ class PlantColourTest {
                 cores.get((int) t[3]).add(ImageMetrics.hsv(new double[] {sum[0] / n, sum[1] / n, sum[2] / n}));
             }
         }
+    }
+
+    /**
+     * The mean colour of each blob over its interior pixels (all four neighbours in the same blob):
+     * the plant's own colour, not its edges blended with the ground by anti-aliasing; a blob with
+     * fewer than 3 interior pixels keeps the mean over all its pixels.
+     */
+    private static double[][] interiorMeans(Shots.View v, ImageMetrics.Blobs blobs) {
+        double[][] all = ImageMetrics.blobMeans(v.full(), blobs);
+        double[][] sum = new double[blobs.count()][3];
+        int[] n = new int[blobs.count()];
+        int[] labels = blobs.labels();
+        for (int y = 1; y < H - 1; y++) {
+            for (int x = 1; x < W - 1; x++) {
+                int i = y * W + x;
+                int l = labels[i];
+                if (l < 0 || labels[i - 1] != l || labels[i + 1] != l || labels[i - W] != l || labels[i + W] != l) {
+                    continue;
+                }
+                int c = v.full().at(x, y);
+                sum[l][0] += ImageMetrics.r(c);
+                sum[l][1] += ImageMetrics.g(c);
+                sum[l][2] += ImageMetrics.b(c);
+                n[l]++;
+            }
+        }
+        for (int l = 0; l < sum.length; l++) {
+            if (n[l] >= 3) {
+                all[l] = new double[] {sum[l][0] / n[l], sum[l][1] / n[l], sum[l][2] / n[l]};
+            }
+        }
+        return all;
+    }
+
+    private static double circularMean(double[] degrees) {
+        double sx = 0;
+        double sy = 0;
+        for (double d : degrees) {
+            sx += Math.cos(Math.toRadians(d));
+            sy += Math.sin(Math.toRadians(d));
+        }
+        return Math.toDegrees(Math.atan2(sy, sx));
+    }
+
+    private static double rms(List<Double> xs) {
+        double s = 0;
+        for (double x : xs) {
+            s += x * x;
+        }
+        return xs.isEmpty() ? 0 : Math.sqrt(s / xs.size());
     }
 
     /** Whether every component colour of the species is within 30 degrees of hue of every other. */

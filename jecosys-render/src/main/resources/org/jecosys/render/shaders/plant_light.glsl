@@ -2,7 +2,7 @@
 // pass for a whole component of a line level): the component's colour turned in hue and scaled in
 // brightness by its variation, toward straw at the tips and in dry patches; sky ambient light, darker
 // toward the base (the neighbours' shade), the sun on the face toward it, light through the blade when
-// it is lit from behind (back-lit grass glows), a specular glint toward the tip, and haze toward the
+// it is lit from behind (back-lit grass glows), a sheen toward the tip against the sun, and haze toward the
 // horizon colour with distance (the terrain's formula).
 uniform vec3 uEye;
 uniform vec3 uLightDir;                          // unit, toward the sun
@@ -37,7 +37,7 @@ float baseShade(int kind, float along) {
 }
 
 // c lit at a point with surface normal (not normalised; 0: none), seen from toEye at distance; far
-// drops the specular term
+// drops the sheen
 vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance, bool far) {
     float ao = baseShade(kind, along);
     vec3 e = toEye / max(distance, 1e-6);
@@ -52,14 +52,15 @@ vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance,
         float back = max(-nl, 0.0);
         float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
         // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
-        float through = kind == 3 ? 0.0 : back * (1.15 + 0.6 * toward * toward) * (0.6 + 0.4 * along);
+        float through = kind == 3 ? 0.0 : back * (1.5 + 0.8 * toward * toward) * (0.6 + 0.4 * along);
         light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
                 + uSunColour * THROUGH * through;
-        if (!far && nl > 0.0) {
-            float h = max(dot(n, normalize(uLightDir + e)), 0.0);
-            float h2 = h * h;
-            float h8 = h2 * h2 * h2 * h2;
-            gloss = uSunColour * (0.22 * along * h8 * h8 * h8);
+        if (!far) {
+            // sheen: a blade's waxy surface glints toward the tip when seen against the sun, at grazing
+            // angles (forward scattering), not when the sun is behind the viewer
+            float t2 = toward * toward;
+            float grazing = 1.0 - abs(dot(n, e));
+            gloss = uSunColour * (0.35 * along * t2 * t2 * t2 * (0.4 + 0.6 * grazing));
         }
     } else {
         light = uAmbient * ao + uSunColour * 0.45;
