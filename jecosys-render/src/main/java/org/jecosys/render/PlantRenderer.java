@@ -92,11 +92,11 @@ public final class PlantRenderer implements AutoCloseable {
     static final int PETAL = 2;
     static final int HEAD = 3;
     /** Default least width of a thin part, pixels. */
-    public static final float DEFAULT_MIN_PIXELS = 1.0f;
+    public static final float DEFAULT_MIN_PIXELS = 1.5f;
     /** Default least size of a flower part, pixels. */
-    public static final float DEFAULT_HEAD_PIXELS = 3.0f;
+    public static final float DEFAULT_HEAD_PIXELS = 6.0f;
     /** Default turn of flower parts toward the viewer, degrees. */
-    public static final float DEFAULT_FLOWER_TILT = 30f;
+    public static final float DEFAULT_FLOWER_TILT = 45f;
 
     private final World world;
     private final PlantBatches batches;

@@ -19,12 +19,14 @@ import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.system.MemoryUtil;
 
 /**
- * The plant renderer's output on C1 against images the previous renderer made of the same frames
- * and views (test resources {@code reference/c1-*.png}, made by the renderer that resolved every
- * component on the render thread): the mean colour difference stays within 2/255, over the whole
- * image and over the pixels that show plants. The references were regenerated once when the terrain
- * became sun-lit with contact darkening (issue 13), by this command. Run with
- * the environment variable {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
+ * The plant renderer's output on C1 against reference images of the same frames and views (test
+ * resources {@code reference/c1-*.png}): the mean colour difference stays within 2/255, over the
+ * whole image and over the pixels that show plants, so a change to the rendering path that is meant
+ * to leave the picture alone is caught. The references were first made by the renderer that resolved
+ * every component on the render thread (the GPU resolve matched them to 0.000/255); they were
+ * regenerated when the look changed on purpose: the sun-lit terrain with contact darkening, then the
+ * plants' light, colour variation and thin-part widening. Run with the environment variable
+ * {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class RenderPathEquivalenceTest {

@@ -33,7 +33,7 @@ vec3 albedo(vec3 base, vec4 look, int kind, float along) {
 
 // the shade toward the base: 1 at the tip
 float baseShade(int kind, float along) {
-    return kind >= 2 ? 1.0 : 0.38 + 0.62 * sqrt(along);
+    return kind >= 2 ? 1.0 : 0.5 + 0.5 * sqrt(along);
 }
 
 // c lit at a point with surface normal (not normalised; 0: none), seen from toEye at distance; far
@@ -66,6 +66,9 @@ vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance,
         light = uAmbient * ao + uSunColour * 0.45;
     }
     vec3 colour = c * light + gloss;
+    // brighter than white: scale down instead of clipping each channel, which would turn a sunlit
+    // yellow petal greenish (red and green both clipped to 1)
+    colour /= max(1.0, max(colour.r, max(colour.g, colour.b)));
     float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
     return mix(colour, uFogColour, fog * fog);
 }
