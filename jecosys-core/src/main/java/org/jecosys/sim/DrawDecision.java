@@ -296,7 +296,7 @@ public final class DrawDecision {
             throw new IllegalArgumentException("frame has " + frame.plantCount() + " plants, the world "
                     + world.plantCount());
         }
-        frustum.set(camera.viewProjection(viewProjection), false);
+        frustum.set(camera.viewProjection(viewProjection), true); // normalised planes for testSphere
         java.util.Arrays.fill(frame.plantVisible, true);
         decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), frustum, frame);
         return frame;

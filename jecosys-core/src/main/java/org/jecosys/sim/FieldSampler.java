@@ -79,7 +79,7 @@ final class FieldSampler {
         eye[b][0] = camera.x();
         eye[b][1] = camera.y();
         eye[b][2] = camera.z();
-        frustum[b].set(camera.viewProjection(viewProjection), false);
+        frustum[b].set(camera.viewProjection(viewProjection), true); // normalised planes: the draw decision tests spheres
         if (fieldEnabled) {
             field.update(camera);
             field.gather(0, plants, windX[b], windZ[b], visible[b]);

@@ -30,18 +30,17 @@ import static org.lwjgl.opengl.GL11C.glGetInteger;
  * An offscreen framebuffer with an RGBA8 colour and a depth-stencil renderbuffer, resizable, single-
  * or multisampled: the target of headless rendering (any size, whatever the window). Multisampled,
  * it also owns a single-sampled colour target that {@link #resolve()} fills (read the image after
- * that), through a filter between the plain average of each pixel's samples and a tent of one
- * pixel's radius ({@link #setResolveFilter}). Counts as three GL objects, nine when multisampled.
+ * that), through a filter from the plain average of each pixel's samples to a 5x5 binomial
+ * ({@link #setResolveFilter}). Counts as three GL objects, nine when multisampled.
  * Render thread only.
  */
 public final class GlFramebuffer extends GlResource {
     /**
-     * How far a multisampled framebuffer's {@link #resolve()} widens the filter toward a tent of one
-     * pixel's radius by default ({@link #setResolveFilter}): fully. Thin blades moving by a fraction of
-     * a pixel then change the image smoothly instead of in coverage steps of a quarter pixel (4
-     * samples), at the price of a slightly softer picture.
+     * How far a multisampled framebuffer's {@link #resolve()} widens its filter by default
+     * ({@link #setResolveFilter}): the 5x5 binomial, a Gaussian of about one pixel. Thin blades moving by a fraction of a pixel then change the image smoothly instead of
+     * in coverage steps of a quarter pixel (4 samples), at the price of a softer picture.
      */
-    public static final float DEFAULT_TENT = 1f;
+    public static final float DEFAULT_TENT = 2f;
     /** The largest sample count asked for; the driver's maximum caps it further. */
     public static final int MAX_SAMPLES = 16;
 
@@ -197,21 +196,22 @@ public final class GlFramebuffer extends GlResource {
     }
 
     /**
-     * How far {@link #resolve()} widens the average of each pixel's samples toward a tent filter of one
-     * pixel's radius (0: the plain average; 1: the tent), for multisampled framebuffers; see
-     * {@link #DEFAULT_TENT}. Render thread; no allocation.
+     * How far {@link #resolve()} widens the average of each pixel's samples, for multisampled
+     * framebuffers: 0 keeps the plain average (a box one pixel wide); 1 is a tent of one pixel's
+     * radius (the 3x3 binomial); 2 a 5x5 binomial (a Gaussian of about one pixel); values between
+     * mix the neighbouring filters. See {@link #DEFAULT_TENT}. Render thread; no allocation.
      *
-     * @param tent in [0, 1]
+     * @param tent in [0, 2]
      * @throws IllegalArgumentException when out of range
      */
     public void setResolveFilter(float tent) {
-        if (!(tent >= 0 && tent <= 1)) {
-            throw new IllegalArgumentException("tent must be in [0, 1], got " + tent);
+        if (!(tent >= 0 && tent <= 2)) {
+            throw new IllegalArgumentException("resolve filter must be in [0, 2], got " + tent);
         }
         this.tent = tent;
     }
 
-    /** {@return how far {@link #resolve()} widens the filter toward a tent, in [0, 1]} */
+    /** {@return how far {@link #resolve()} widens its filter, in [0, 2] (see {@link #setResolveFilter})} */
     public float resolveFilter() {
         return tent;
     }
@@ -244,7 +244,7 @@ public final class GlFramebuffer extends GlResource {
         final GlProgram program;
         final GlVertexArray vao;
         final int uTexel;
-        final int uTent;
+        final int uWeights;
 
         Resolved(GlTracker tracker) {
             super(tracker, glGenFramebuffers());
@@ -270,7 +270,7 @@ public final class GlFramebuffer extends GlResource {
             program.use();
             org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), 0);
             uTexel = program.uniform("uTexel");
-            uTent = program.uniform("uTent");
+            uWeights = program.uniform("uWeights");
             org.lwjgl.opengl.GL20C.glUseProgram(current);
         }
 
@@ -301,7 +301,9 @@ public final class GlFramebuffer extends GlResource {
             glViewport(0, 0, width, height);
             program.use();
             org.lwjgl.opengl.GL20C.glUniform2f(uTexel, 1f / width, 1f / height);
-            org.lwjgl.opengl.GL20C.glUniform1f(uTent, tent);
+            float plain = Math.max(0, 1 - tent);
+            float wide = Math.max(0, tent - 1);
+            org.lwjgl.opengl.GL20C.glUniform3f(uWeights, plain, 1 - plain - wide, wide);
             org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.texture);
             vao.bind();
             org.lwjgl.opengl.GL11C.glDrawArrays(org.lwjgl.opengl.GL11C.GL_TRIANGLES, 0, 3);

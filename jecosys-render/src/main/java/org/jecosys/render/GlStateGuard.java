@@ -15,7 +15,6 @@ import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL11C.glGetFloatv;
-import static org.lwjgl.opengl.GL11C.glGetInteger;
 import static org.lwjgl.opengl.GL11C.glGetIntegerv;
 import static org.lwjgl.opengl.GL11C.glIsEnabled;
 import static org.lwjgl.opengl.GL11C.glScissor;
@@ -48,8 +47,6 @@ import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_SIZE;
 import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_START;
 import static org.lwjgl.opengl.GL30C.glBindBufferBase;
 import static org.lwjgl.opengl.GL30C.glBindBufferRange;
-import static org.lwjgl.opengl.GL30C.glGetIntegeri;
-import static org.lwjgl.opengl.GL32C.glGetInteger64i;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
@@ -83,6 +80,7 @@ final class GlStateGuard implements AutoCloseable {
         org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD, org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE};
 
     private final IntBuffer ints = MemoryUtil.memAllocInt(32);
+    private final GlInts query = new GlInts();
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);
     private final boolean[] caps = new boolean[CAPS.length];
     private final int[] unitTextures = new int[UNITS];
@@ -108,33 +106,33 @@ final class GlStateGuard implements AutoCloseable {
 
     /** Reads the current state. Render thread; no allocation. */
     void save() {
-        program = glGetInteger(GL_CURRENT_PROGRAM);
-        vertexArray = glGetInteger(GL_VERTEX_ARRAY_BINDING);
-        arrayBuffer = glGetInteger(GL_ARRAY_BUFFER_BINDING);
-        textureBuffer = glGetInteger(GL_TEXTURE_BUFFER);
-        feedbackBuffer = glGetInteger(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING);
-        feedbackBuffer0 = glGetIntegeri(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0);
-        feedbackStart0 = glGetInteger64i(GL_TRANSFORM_FEEDBACK_BUFFER_START, 0);
-        feedbackSize0 = glGetInteger64i(GL_TRANSFORM_FEEDBACK_BUFFER_SIZE, 0);
-        activeTexture = glGetInteger(GL_ACTIVE_TEXTURE);
+        program = query.get(GL_CURRENT_PROGRAM);
+        vertexArray = query.get(GL_VERTEX_ARRAY_BINDING);
+        arrayBuffer = query.get(GL_ARRAY_BUFFER_BINDING);
+        textureBuffer = query.get(GL_TEXTURE_BUFFER);
+        feedbackBuffer = query.get(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING);
+        feedbackBuffer0 = query.get(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0);
+        feedbackStart0 = query.get64(GL_TRANSFORM_FEEDBACK_BUFFER_START, 0);
+        feedbackSize0 = query.get64(GL_TRANSFORM_FEEDBACK_BUFFER_SIZE, 0);
+        activeTexture = query.get(GL_ACTIVE_TEXTURE);
         for (int u = 0; u < UNITS; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
-            unitTextures[u] = glGetInteger(GL_TEXTURE_BINDING_BUFFER);
+            unitTextures[u] = query.get(GL_TEXTURE_BINDING_BUFFER);
         }
         glActiveTexture(GL_TEXTURE0 + UNIT_2D);
-        texture2d = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+        texture2d = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
         glActiveTexture(activeTexture);
         for (int i = 0; i < CAPS.length; i++) {
             caps[i] = glIsEnabled(CAPS[i]);
         }
-        depthFunc = glGetInteger(GL_DEPTH_FUNC);
-        depthMask = glGetInteger(GL_DEPTH_WRITEMASK) != 0;
-        blendSrcRgb = glGetInteger(GL_BLEND_SRC_RGB);
-        blendDstRgb = glGetInteger(GL_BLEND_DST_RGB);
-        blendSrcAlpha = glGetInteger(GL_BLEND_SRC_ALPHA);
-        blendDstAlpha = glGetInteger(GL_BLEND_DST_ALPHA);
-        blendEqRgb = glGetInteger(GL_BLEND_EQUATION_RGB);
-        blendEqAlpha = glGetInteger(GL_BLEND_EQUATION_ALPHA);
+        depthFunc = query.get(GL_DEPTH_FUNC);
+        depthMask = query.get(GL_DEPTH_WRITEMASK) != 0;
+        blendSrcRgb = query.get(GL_BLEND_SRC_RGB);
+        blendDstRgb = query.get(GL_BLEND_DST_RGB);
+        blendSrcAlpha = query.get(GL_BLEND_SRC_ALPHA);
+        blendDstAlpha = query.get(GL_BLEND_DST_ALPHA);
+        blendEqRgb = query.get(GL_BLEND_EQUATION_RGB);
+        blendEqAlpha = query.get(GL_BLEND_EQUATION_ALPHA);
         ints.clear();
         glGetIntegerv(GL_VIEWPORT, ints.position(0));
         glGetIntegerv(GL_SCISSOR_BOX, ints.position(4));
@@ -204,6 +202,7 @@ final class GlStateGuard implements AutoCloseable {
             closed = true;
             MemoryUtil.memFree(ints);
             MemoryUtil.memFree(clear);
+            query.close();
         }
     }
 }

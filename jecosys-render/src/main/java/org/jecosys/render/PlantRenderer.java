@@ -45,6 +45,7 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.Matrix4f;
 import org.lwjgl.opengl.GL11C;
+import org.lwjgl.opengl.GL13C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -94,7 +95,7 @@ public final class PlantRenderer implements AutoCloseable {
     /** Default least width of a thin part, pixels. */
     public static final float DEFAULT_MIN_PIXELS = 1.5f;
     /** Default least size of a flower part, pixels. */
-    public static final float DEFAULT_HEAD_PIXELS = 6.0f;
+    public static final float DEFAULT_HEAD_PIXELS = 8.0f;
     /** Default turn of flower parts toward the viewer, degrees. */
     public static final float DEFAULT_FLOWER_TILT = 45f;
 
@@ -113,6 +114,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final Uniforms triangleUniforms;
     private final Uniforms lineUniforms;
     private final Uniforms resolveUniforms;
+    private final GlInts query = new GlInts();
     private final PlantLook look;
     private float minPixels = DEFAULT_MIN_PIXELS;
     private float headPixels = DEFAULT_HEAD_PIXELS;
@@ -185,6 +187,7 @@ public final class PlantRenderer implements AutoCloseable {
             }
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree(mat);
+            query.close();
             closeReverse(owned);
             throw e;
         }
@@ -567,6 +570,13 @@ public final class PlantRenderer implements AutoCloseable {
         lineProgram.use();
         poseTexture.bind(0);
         resolver.bindRecords(1);
+        if (query.get(GL13C.GL_SAMPLES) > 1) {
+            // multisampled: coverage to samples, as the triangle levels, depth written
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            drawLists(true, lineUniforms);
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            return;
+        }
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
@@ -617,6 +627,7 @@ public final class PlantRenderer implements AutoCloseable {
         closed = true;
         closeReverse(owned);
         MemoryUtil.memFree(matrix);
+        query.close();
     }
 
     /**

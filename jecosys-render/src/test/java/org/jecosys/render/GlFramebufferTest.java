@@ -53,7 +53,7 @@ class GlFramebufferTest {
                     fb.resolve();
                     Pixels.read(W, H, tent);
                     gl.debug().check("multisampled rendering and resolving");
-                    assertThrows(IllegalArgumentException.class, () -> fb.setResolveFilter(1.5f));
+                    assertThrows(IllegalArgumentException.class, () -> fb.setResolveFilter(2.5f));
                 }
                 assertEquals(live, gl.tracker().live(), "closing releases every object");
             }

@@ -7,7 +7,7 @@
 // - stems face the camera (a ribbon turned about its own axis toward the eye), so they never vanish
 //   edge-on;
 // - flower parts (petals, heads) turn toward the viewer about their base by uFlowerTilt and are
-//   scaled up to at least uHeadPixels across;
+//   scaled up to at least uHeadPixels across within 15 m, fading to their real size at 30 m;
 // - colour varies per plant and per component: the resolve pass gives each component a hue turn, a
 //   brightness factor and the dryness of its patch (plant_resolve.vert); here tips and dry patches
 //   turn toward straw; light is sky ambient, sun diffuse, light through the blade when
@@ -75,7 +75,10 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
             rel = rotAxis(rel, k, uFlowerTilt);
             n = rotAxis(n, k, uFlowerTilt);
         }
-        rel *= max(1.0, 0.5 * uHeadPixels * pix / max(aShape.y, 1e-4));
+        // at least uHeadPixels across, fading back to the real size between 15 and 30 m, where a
+        // flower is a speck in any case (and a head kept 8 pixels wide would crowd the horizon)
+        float least = uHeadPixels * (1.0 - smoothstep(15.0, 30.0, d));
+        rel *= max(1.0, 0.5 * least * pix / max(aShape.y, 1e-4));
         r.world = base + rel;
         r.normal = n;
     } else {

@@ -14,7 +14,7 @@ uniform float uFogEnd;
 uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
 
 const vec3 STRAW = vec3(0.74, 0.66, 0.38);
-const vec3 THROUGH = vec3(1.0, 1.12, 0.55);     // light through a blade: yellower than reflected light
+const vec3 THROUGH = vec3(1.05, 1.22, 0.6);      // light through a blade: yellower than reflected light
 
 // the colour before light: base colour, look = (cos, sin of the hue turn, brightness, patch dryness),
 // kind (0 blade, 1 stem, 2 petal, 3 fan head), along = fraction along the component
@@ -52,7 +52,7 @@ vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance,
         float back = max(-nl, 0.0);
         float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
         // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
-        float through = kind == 3 ? 0.0 : back * (1.5 + 0.8 * toward * toward) * (0.6 + 0.4 * along);
+        float through = kind == 3 ? 0.0 : back * (1.4 + 1.6 * toward * toward) * (0.6 + 0.4 * along);
         light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
                 + uSunColour * THROUGH * through;
         if (!far) {

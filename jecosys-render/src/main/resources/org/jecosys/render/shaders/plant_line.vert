@@ -1,7 +1,8 @@
 #version 330 core
 // Plants drawn as lines (the far level, paper Table 3): the cheaper variant of plant.vert. The line
 // vertices are placed exactly as in plant.vert (plant_common.glsl, without widening: a line is a
-// pixel wide already). Far away a component is a few pixels: the resolve pass has lit it once, at its
+// pixel wide already, but the two edge lines of a ribbon move apart to span the same least width as
+// the triangle levels). Far away a component is a few pixels: the resolve pass has lit it once, at its
 // middle, with the same light as plant.vert (plant_light.glsl), into record texel 2; here only the
 // shade toward the base is applied, one flat colour per segment from its first vertex. The dither
 // window is the same as for plant.vert.
@@ -47,8 +48,22 @@ void main() {
         world = v.world;
         distance = v.distance;
     } else {
-        world = c0.xyz + rotY(p + aVertex.z * side + aVertex.w * normal, c0.w, c1.z);
+        vec3 centre = c0.xyz + rotY(p, c0.w, c1.z);
+        vec3 offset = rotY(aVertex.z * side + aVertex.w * normal, c0.w, c1.z);
+        world = centre + offset;
         distance = length(uEye - world);
+        if (aVertex.z != 0.0 && uMinPixels > 0.0) {
+            // like the triangle levels' widening: the two edge lines (a pixel wide each) move apart
+            // until together they span uMinPixels across the view
+            vec3 v = (uEye - centre) / max(length(uEye - centre), 1e-6);
+            vec3 across = offset - dot(offset, v) * v;
+            float seen = length(across);
+            float pixel = uPixelScale.x + distance * uPixelScale.y;
+            float least = 0.5 * (uMinPixels - 1.0) * pixel;
+            if (seen > 1e-9 && least > seen) {
+                world += (least - seen) * across / seen;
+            }
+        }
     }
     gl_Position = uViewProj * vec4(world, 1.0);
     // the resolve pass lit the component at its middle (record texel 2); the base is darker

@@ -1,18 +1,33 @@
 #version 330 core
 // The second half of a multisampled framebuffer's resolve: the samples of each pixel have been
-// averaged (a box filter one pixel wide); this widens the filter toward a tent of one pixel's radius,
-// blended by uTent (0: box, 1: tent), so that thin geometry moving by a fraction of a pixel changes
-// the image smoothly. Four bilinear taps at the pixel's corners make the 3x3 tent
-// (1 2 1; 2 4 2; 1 2 1) / 16.
+// averaged (a box filter one pixel wide); this widens the filter: uWeights mixes the plain average
+// (x), a tent of one pixel's radius (y: the 3x3 binomial 1 2 1, four bilinear taps at the pixel's
+// corners) and a wider binomial (z: 5x5, 1 4 6 4 1 per axis, nine bilinear taps), so that thin
+// geometry moving by a fraction of a pixel changes the image smoothly.
 uniform sampler2D uImage;
 uniform vec2 uTexel;                             // 1 / size
-uniform float uTent;
+uniform vec3 uWeights;                           // box, tent, wide; sum 1
 out vec4 fragColour;
 
 void main() {
     vec2 uv = gl_FragCoord.xy * uTexel;
     vec4 box = texture(uImage, uv);
-    vec4 tent = 0.25 * (texture(uImage, uv + uTexel * vec2(-0.5, -0.5)) + texture(uImage, uv + uTexel * vec2(0.5, -0.5))
-            + texture(uImage, uv + uTexel * vec2(-0.5, 0.5)) + texture(uImage, uv + uTexel * vec2(0.5, 0.5)));
-    fragColour = mix(box, tent, uTent);
+    vec4 colour = uWeights.x * box;
+    if (uWeights.y > 0.0) {
+        vec4 tent = 0.25 * (texture(uImage, uv + uTexel * vec2(-0.5, -0.5)) + texture(uImage, uv + uTexel * vec2(0.5, -0.5))
+                + texture(uImage, uv + uTexel * vec2(-0.5, 0.5)) + texture(uImage, uv + uTexel * vec2(0.5, 0.5)));
+        colour += uWeights.y * tent;
+    }
+    if (uWeights.z > 0.0) {
+        // per axis: 6/16 at 0, 5/16 at +-1.2 pixels (the pairs 4, 1 of the binomial in one bilinear tap)
+        vec4 wide = vec4(0.0);
+        for (int j = -1; j <= 1; j++) {
+            for (int i = -1; i <= 1; i++) {
+                float w = (i == 0 ? 0.375 : 0.3125) * (j == 0 ? 0.375 : 0.3125);
+                wide += w * texture(uImage, uv + uTexel * vec2(1.2 * float(i), 1.2 * float(j)));
+            }
+        }
+        colour += uWeights.z * wide;
+    }
+    fragColour = colour;
 }
