@@ -39,7 +39,20 @@ final class HeadlessRender {
 
     /** The render settings a scene asks for. */
     static RenderSettings settings(RenderDef def) {
-        return RenderSettings.of(def);
+        TerrainTint tint = switch (def.terrainTint()) {
+            case WATER -> TerrainTint.WATER;
+            case NUTRIENTS -> TerrainTint.NUTRIENTS;
+            default -> TerrainTint.NONE;
+        };
+        RenderDef.Light l = def.light();
+        RenderDef.Patches p = def.patches();
+        return new RenderSettings().sky(def.sky()).tint(tint)
+                .showField(def.showField()).showWind(def.showWind())
+                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
+                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
+                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
+                .fog((float) l.fogStart(), (float) l.fogEnd())
+                .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
     static void run(SceneDef def, Path baseDir, DrawQuality quality, int frames, Path out, int width, int height,

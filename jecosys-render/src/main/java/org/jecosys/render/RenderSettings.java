@@ -2,7 +2,6 @@ package org.jecosys.render;
 
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
-import org.jecosys.scene.RenderDef;
 
 /**
  * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
@@ -219,32 +218,6 @@ public final class RenderSettings {
         patchStrength = strength;
         patchSeed = seed;
         return this;
-    }
-
-    /**
-     * The settings a scene file asks for: its {@code <render>} element's horizon colour, terrain tint,
-     * overlays, light ({@code <light>}: sun direction, colour and intensity, zenith, ambient, contact
-     * shadow, fog) and patches; everything else at its default. Any thread; allocates.
-     *
-     * @param def the scene's render settings, not null
-     * @return new settings
-     */
-    public static RenderSettings of(RenderDef def) {
-        Require.nonNull("def", def);
-        TerrainTint tint = switch (def.terrainTint()) {
-            case WATER -> TerrainTint.WATER;
-            case NUTRIENTS -> TerrainTint.NUTRIENTS;
-            default -> TerrainTint.NONE;
-        };
-        RenderDef.Light l = def.light();
-        RenderDef.Patches p = def.patches();
-        return new RenderSettings().sky(def.sky()).tint(tint)
-                .showField(def.showField()).showWind(def.showWind())
-                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
-                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
-                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd())
-                .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
     /** {@return the sky colour at the horizon, also the fog (aerial perspective) and clear colour} */

@@ -30,7 +30,7 @@ class AntiAliasingTest {
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
         Matrix4f proj = new Matrix4f().translation(1f / W, 0, 0).mul(cam.projection(new Matrix4f()));
         MatrixCamera shifted = new MatrixCamera(cam.view(new Matrix4f()), proj);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             Shots.View v = s.view(TestFrames.rest(world, cam), cam);
             Img b = s.render(TestFrames.rest(world, shifted), shifted, true, true);
             double residual = ImageMetrics.halfPixelResidual(v.full(), b, v.vegetation());

@@ -46,7 +46,7 @@ class FlowerHeadsTest {
             }
         }
         List<String> failures = new ArrayList<>();
-        try (Shots shots = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots shots = new Shots(world, RenderScenes.settings(def), W, H)) {
             check(shots, world, RenderScenes.camera(def, world, W, H), "default view", hues, false, failures);
             for (int s = 0; s < speciesCount; s++) {
                 SpeciesModel m = world.plants().species().get(s);

@@ -40,7 +40,7 @@ class LightingLooksTest {
         World world = RenderScenes.build(def);
         int grass = 0; // the meadow's first species, grass tuft A
         int best = MeadowSpots.densest(world, grass, 2);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             double[] sun = sunDirection(s.renderer);
             double sunYaw = Math.atan2(sun[0], -sun[2]); // yaw looking along the sun's horizontal direction
             double x = world.plantX(best);
@@ -72,7 +72,7 @@ class LightingLooksTest {
         double gy = hf.height(spot[0], spot[1]);
         ViewCamera cam = new ViewCamera().setPosition(spot[0], gy + 4, spot[1]).setOrientation(0, -Math.PI / 2 + 1e-3)
                 .setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             var frame = TestFrames.rest(world, cam);
             ImageMetrics.Img full = s.render(frame, cam, true, true);
             ImageMetrics.Img plants = s.render(frame, cam, true, false);

@@ -30,7 +30,7 @@ class LodSeamTest {
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
         DrawDecision decision = DrawDecision.of(world);
         int grass = 0; // the meadow's first species, grass tuft A
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             Frame frame = TestFrames.rest(world, cam);
             Shots.View v = s.view(frame, cam);
             double[] dist = s.groundDistance(frame, cam);

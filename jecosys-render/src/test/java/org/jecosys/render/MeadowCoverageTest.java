@@ -25,7 +25,7 @@ class MeadowCoverageTest {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             Shots.View v = s.view(TestFrames.rest(world, cam), cam);
             double cover = ImageMetrics.lowerHalfCoverage(v.vegetation(), W, H);
             System.out.printf("[look] meadow default view: vegetation %.1f%% of the lower half (>= 60%%)%n",

@@ -49,7 +49,7 @@ class PlantColourTest {
         List<Double> hueDev = new ArrayList<>();
         List<Double> valueDev = new ArrayList<>();
         int tested = 0;
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             collect(s, world, def, 0, 0, HEIGHT, colours, cores);
             for (int sp = 1; sp < speciesCount; sp++) {
                 int c = MeadowSpots.densest(world, sp, 2);

@@ -27,7 +27,7 @@ class PoppingTest {
         World world = RenderScenes.build(def);
         CameraWalk walk = new CameraWalk(def.camera(), world.terrain().heightfield(), W / (double) H);
         Img[] frames = new Img[FRAMES];
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             for (int i = 0; i < FRAMES; i++) {
                 ViewCamera cam = walk.at(i / 30.0);
                 frames[i] = s.render(TestFrames.rest(world, cam), cam, true, true);
@@ -48,7 +48,7 @@ class PoppingTest {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             Img a = s.render(TestFrames.rest(world, cam), cam, true, true);
             Img b = s.render(TestFrames.rest(world, cam), cam, true, true);
             Img c = s.render(TestFrames.rest(world, cam), cam, true, true);

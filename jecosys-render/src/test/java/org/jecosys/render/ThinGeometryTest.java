@@ -30,7 +30,7 @@ class ThinGeometryTest {
         SceneDef def = RenderScenes.load(scene);
         World world = RenderScenes.build(def);
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        try (Shots s = new Shots(world, RenderSettings.of(def.render()), W, H)) {
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             Shots.View v = s.view(TestFrames.rest(world, cam), cam);
             int all = ImageMetrics.count(v.vegetation());
             double share = ImageMetrics.isolatedShare(v.vegetation(), W, H);
