@@ -9,7 +9,7 @@ final class QualityConverter implements ITypeConverter<DrawQuality> {
     /** The option's description, shared by the commands that take it. */
     static final String DESCRIPTION = "Far-plant thinning preset: low (from 4 m down to 15%% of the plants beyond "
             + "16 m; for llvmpipe), medium (8 m, 35%% beyond 30 m) or high (none). Default: the scene's <field "
-            + "thinStart thinEnd thinMinFraction>.";
+            + "thinStart thinEnd thinMinFraction>; the viewer picks low on a software renderer (llvmpipe).";
 
     @Override
     public DrawQuality convert(String value) {

@@ -91,6 +91,11 @@ final class Viewer {
         RenderSettings settings = HeadlessRender.settings(def.render());
         try (GlContext gl = GlContext.windowed(title(false), width, height, false, def.render().antialiasing())) {
             long window = gl.window();
+            if (quality == null && softwareRenderer(gl.describe())) {
+                DrawQuality.LOW.applyTo(sim);
+                console.println("Software OpenGL (" + gl.describe() + "): drawing far plants thinned, as --quality "
+                        + "low; --quality high draws them all.");
+            }
             glfwSwapInterval(1);
             glfwShowWindow(window);
             // the callbacks first: ImGui's backend chains to the callbacks it finds installed
@@ -180,5 +185,11 @@ final class Viewer {
         } finally {
             MemoryUtil.memFree(px);
         }
+    }
+
+    /** {@return whether a GL renderer string names a software rasteriser (llvmpipe, softpipe, SwiftShader)} */
+    static boolean softwareRenderer(String renderer) {
+        String r = renderer.toLowerCase(java.util.Locale.ROOT);
+        return r.contains("llvmpipe") || r.contains("softpipe") || r.contains("swiftshader");
     }
 }
