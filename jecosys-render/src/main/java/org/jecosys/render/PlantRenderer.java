@@ -93,7 +93,7 @@ public final class PlantRenderer implements AutoCloseable {
     static final int PETAL = 2;
     static final int HEAD = 3;
     /** Default least width of a thin part, pixels. */
-    public static final float DEFAULT_MIN_PIXELS = 1.5f;
+    public static final float DEFAULT_MIN_PIXELS = 1.75f;
     /** Default least size of a flower part, pixels. */
     public static final float DEFAULT_HEAD_PIXELS = 8.0f;
     /** Default turn of flower parts toward the viewer, degrees. */

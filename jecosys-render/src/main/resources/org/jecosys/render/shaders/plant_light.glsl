@@ -52,7 +52,7 @@ vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance,
         float back = max(-nl, 0.0);
         float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
         // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
-        float through = kind == 3 ? 0.0 : back * (1.4 + 1.6 * toward * toward) * (0.6 + 0.4 * along);
+        float through = kind == 3 ? 0.0 : back * (1.6 + 1.6 * toward * toward) * (0.6 + 0.4 * along);
         light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
                 + uSunColour * THROUGH * through;
         if (!far) {
