@@ -21,6 +21,7 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GizmoRenderer;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlFramebuffer;
 import org.jecosys.render.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
@@ -89,17 +90,22 @@ final class Viewer {
         FrameTimes times = new FrameTimes();
         ViewerInput input = new ViewerInput();
         RenderSettings settings = HeadlessRender.settings(def.render());
-        try (GlContext gl = GlContext.windowed(title(false), width, height, false, def.render().antialiasing())) {
+        try (GlContext gl = GlContext.windowed(title(false), width, height, false)) {
             long window = gl.window();
             if (quality == null && softwareRenderer(gl.describe())) {
                 DrawQuality.LOW.applyTo(sim);
                 console.println("Software OpenGL (" + gl.describe() + "): drawing far plants thinned, as --quality "
-                        + "low; --quality high draws them all.");
+                        + "low; --quality high draws them all, and <render antialiasing=\"1\"> in the scene trades "
+                        + "the smooth edges for speed.");
             }
             glfwSwapInterval(1);
             glfwShowWindow(window);
             // the callbacks first: ImGui's backend chains to the callbacks it finds installed
+            // the scene goes through an offscreen multisampled framebuffer and its resolve filter,
+            // whatever the window offers, so the viewer shows what headless rendering writes
             try (GlfwInput callbacks = new GlfwInput(window, input);
+                 GlFramebuffer target = new GlFramebuffer(gl.tracker(), width, height,
+                         def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings);
                  GizmoRenderer gizmos = new GizmoRenderer(gl, ground);
                  ImGuiLayer ui = new ImGuiLayer(gl, window)) {
@@ -108,7 +114,7 @@ final class Viewer {
                 SceneSaver saver = new SceneSaver(file, SceneSaver.shippedFolder());
                 ViewerControls controls = new ViewerControls(def, sim, editor, saver, fly, input);
                 ViewerPanel panel = new ViewerPanel(def, controls, sim, renderer);
-                loop(window, renderer, gizmos, ui, panel, controls, sim, fly, times);
+                loop(window, target, renderer, gizmos, ui, panel, controls, sim, fly, times);
             }
         }
     }
@@ -117,7 +123,8 @@ final class Viewer {
         return "JEcoSys - " + def.name() + (dirty ? " (unsaved changes)" : "");
     }
 
-    private void loop(long window, SceneRenderer renderer, GizmoRenderer gizmoRenderer, ImGuiLayer ui,
+    private void loop(long window, GlFramebuffer target, SceneRenderer renderer, GizmoRenderer gizmoRenderer,
+                      ImGuiLayer ui,
                       ViewerPanel panel, ViewerControls controls, Simulation sim, FlyCamera fly, FrameTimes times)
             throws IOException {
         double last = glfwGetTime();
@@ -153,12 +160,17 @@ final class Viewer {
             FlowGizmos flows = controls.gizmos();
             legend.update(legend.typical(view), dt);
             long r0 = System.nanoTime();
-            GL11C.glViewport(0, 0, w, h);
+            if (target.width() != w || target.height() != h) {
+                target.resize(w, h);
+            }
+            target.bind();
             renderer.render(frame, camera, w, h);
             if (controls.showGizmos() || controls.showWind()) {
                 gizmoRenderer.render(controls.showGizmos() ? flows.gizmos() : null,
                         controls.showWind() ? view : null, legend.scale(), camera);
             }
+            target.resolveTo(0);
+            GL11C.glViewport(0, 0, w, h);
             double renderMs = (System.nanoTime() - r0) / 1e6;
             ui.begin(w, h, (float) dt);
             panel.hud(times, fly, frame, renderMs);

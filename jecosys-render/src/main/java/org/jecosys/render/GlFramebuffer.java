@@ -196,6 +196,20 @@ public final class GlFramebuffer extends GlResource {
     }
 
     /**
+     * {@link #resolve()}, then copies the result into {@code target} (0: the window's framebuffer) at
+     * the same size, and binds {@code target} for drawing more (a HUD over the scene). A viewer renders
+     * its scene here and shows it in any window, multisampled or not. Render thread; no allocation.
+     *
+     * @param target the framebuffer object to copy into, 0 for the default framebuffer
+     */
+    public void resolveTo(int target) {
+        resolve();
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+    }
+
+    /**
      * How far {@link #resolve()} widens the average of each pixel's samples, for multisampled
      * framebuffers: 0 keeps the plain average (a box one pixel wide); 1 is a tent of one pixel's
      * radius (the 3x3 binomial); 2 a 5x5 binomial (a Gaussian of about one pixel); values between
