@@ -52,6 +52,17 @@ class GlFramebufferTest {
                     fb.setResolveFilter(1);
                     fb.resolve();
                     Pixels.read(W, H, tent);
+                    // resolveTo copies the same picture into another framebuffer (a window's, say)
+                    try (GlFramebuffer window = new GlFramebuffer(gl.tracker(), W, H)) {
+                        fb.resolveTo(window.id());
+                        ByteBuffer copy = MemoryUtil.memAlloc(4 * W * H);
+                        try {
+                            Pixels.read(W, H, copy);
+                            assertEquals(tent, copy, "resolveTo shows what resolve reads");
+                        } finally {
+                            MemoryUtil.memFree(copy);
+                        }
+                    }
                     gl.debug().check("multisampled rendering and resolving");
                     assertThrows(IllegalArgumentException.class, () -> fb.setResolveFilter(2.5f));
                 }
