@@ -299,6 +299,7 @@ public final class DrawDecision {
         frustum.set(camera.viewProjection(viewProjection), true); // normalised planes for testSphere
         java.util.Arrays.fill(frame.plantVisible, true);
         decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), frustum, frame);
+        frame.setThinning(thinStart(), thinEnd(), thinMinFraction());
         return frame;
     }
 

@@ -3,6 +3,7 @@ package org.jecosys.sim;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
+import org.jecosys.field.ForceFieldDef;
 
 /**
  * One complete, published frame of animation output (paper §4.2.2's "displacement angle" per
@@ -34,6 +35,9 @@ public final class Frame {
     int componentsAnimated;
     long fieldNanos;
     long animationNanos;
+    private double thinStart = ForceFieldDef.DEFAULT_THIN_START;
+    private double thinEnd = ForceFieldDef.DEFAULT_THIN_END;
+    private double thinMinFraction = ForceFieldDef.DEFAULT_THIN_MIN_FRACTION;
 
     /**
      * An empty frame sized for a world: every pose and azimuth 0, no plant visible. Allocates.
@@ -169,6 +173,39 @@ public final class Frame {
         return drawKeep[p];
     }
 
+    /** {@return where the decision's distance thinning began for this frame, metres (see {@link DrawDecision#thinKept})} */
+    public double thinStart() {
+        return thinStart;
+    }
+
+    /** {@return where the decision's distance thinning reached its least share for this frame, metres} */
+    public double thinEnd() {
+        return thinEnd;
+    }
+
+    /**
+     * {@return the least share of far plants this frame's decision kept, in (0, 1] (1: no thinning);
+     * a renderer may widen the kept plants' thin parts to make up for the others}
+     */
+    public double thinMinFraction() {
+        return thinMinFraction;
+    }
+
+    /**
+     * Records the distance thinning the frame's decision used (the simulation does it as it publishes
+     * the frame; {@link DrawDecision#decideAll} too): for tools and tests that build frames themselves.
+     * Only on a frame the caller owns. No allocation.
+     *
+     * @param start       where thinning begins, metres
+     * @param end         where it reaches its least share, metres
+     * @param minFraction the least share, in (0, 1] (1: none)
+     */
+    public void setThinning(double start, double end, double minFraction) {
+        thinStart = start;
+        thinEnd = end;
+        thinMinFraction = minFraction;
+    }
+
     /**
      * Sets plant p's drawing decision (see {@link #drawLevel}, {@link #drawKeep}): for tools and
      * tests that build frames without the animation engine, like {@link #set}. Only on a frame the
@@ -226,5 +263,8 @@ public final class Frame {
         componentsAnimated = src.componentsAnimated;
         fieldNanos = src.fieldNanos;
         animationNanos = src.animationNanos;
+        thinStart = src.thinStart;
+        thinEnd = src.thinEnd;
+        thinMinFraction = src.thinMinFraction;
     }
 }

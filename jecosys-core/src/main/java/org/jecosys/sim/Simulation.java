@@ -323,6 +323,7 @@ public final class Simulation implements AutoCloseable {
         f.componentsAnimated = chunkAnimator.animated();
         f.fieldNanos = fieldNanos;
         f.animationNanos = pool.animationNanos(); // the chunks' own span, beside or after the field
+        f.setThinning(draw.thinStart(), draw.thinEnd(), draw.thinMinFraction());
         exchange.publish();
     }
 

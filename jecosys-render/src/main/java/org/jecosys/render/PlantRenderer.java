@@ -223,6 +223,7 @@ public final class PlantRenderer implements AutoCloseable {
         final int minPixels;
         final int headPixels;
         final int flowerTilt;
+        final int thin;
 
         Uniforms(GlProgram p) {
             p.use();
@@ -241,6 +242,7 @@ public final class PlantRenderer implements AutoCloseable {
             minPixels = p.optionalUniform("uMinPixels");
             headPixels = p.optionalUniform("uHeadPixels");
             flowerTilt = p.optionalUniform("uFlowerTilt");
+            thin = p.optionalUniform("uThin");
             glUniform1i(p.optionalUniform("uPoses"), 0);
             glUniform1i(p.optionalUniform("uComponents"), 1);
         }
@@ -547,9 +549,13 @@ public final class PlantRenderer implements AutoCloseable {
         lineProgram.use();
         lineUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         glUniform2f(lineUniforms.pixelScale, px, py);
+        glUniform3f(lineUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
+                (float) frame.thinMinFraction());
         program.use();
         triangleUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         glUniform2f(triangleUniforms.pixelScale, px, py);
+        glUniform3f(triangleUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
+                (float) frame.thinMinFraction());
         poseTexture.bind(0);
         resolver.bindRecords(1);
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);

@@ -1,6 +1,8 @@
 // Shared by plant.vert and plant_line.vert (#include): where a plant vertex goes and what colour it
 // has. Placement (paper sections 4.1, 4.2.2): pose k and k + 1 of the point blended, rotated by the
 // bend azimuth, added to the component's base. On top of the paper, for looks:
+// - blades of plants kept where the frame thinned far plants out are drawn wider by 1 / the
+//   kept share (at most 4 times; uThin), so a thinned meadow keeps most of its coverage;
 // - thin parts stay at least uMinPixels wide: a ribbon narrower than that on screen is widened
 //   across the view, and the share of the widened ribbon the real one covers goes out as coverage
 //   (alpha-to-coverage under multisampling);
@@ -29,6 +31,7 @@ uniform vec2 uPixelScale;                        // a pixel's height, metres: x 
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
 uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
+uniform vec3 uThin;                              // the frame's distance thinning: start, end (m), least share
 
 
 struct Placed {
@@ -50,6 +53,17 @@ vec3 rotAxis(vec3 v, vec3 k, float t) {
     return v * c + cross(k, v) * sin(t) + k * dot(k, v) * (1.0 - c);
 }
 
+// How much wider a kept far blade is drawn to make up for the plants the frame's decision thinned
+// out at distance d: 1 / the kept share, so the kept ones carry about the same ink, at most 4 times
+// (wider, far blades turn into blobs); 1 without thinning.
+float thinWiden(float d) {
+    if (uThin.z >= 1.0) {
+        return 1.0;
+    }
+    float kept = 1.0 - (1.0 - uThin.z) * smoothstep(uThin.x, uThin.y, d);
+    return min(1.0 / max(kept, 0.05), 4.0);
+}
+
 // Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the
 // component's frame; (ca, sa) the bend azimuth; widen says whether thin parts are widened.
 Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool widen) {
@@ -63,6 +77,9 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     vec3 toEye = uEye - centre;
     float d = max(length(toEye), 1e-4);
     vec3 v = toEye / d;
+    if (kind < 2) {
+        sw *= thinWiden(d);
+    }
     float pix = uPixelScale.x + d * uPixelScale.y;
     Placed r;
     r.cover = 1.0;

@@ -36,6 +36,9 @@ void main() {
     vec3 normal = vec3(0.0);
     if (aVertex.z != 0.0) {
         side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
+        if (kind < 2) {
+            side *= thinWiden(length(uEye - c0.xyz));
+        }
     }
     if (aVertex.w != 0.0 || kind == 3) {
         normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);

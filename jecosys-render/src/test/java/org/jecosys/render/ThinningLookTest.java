@@ -1,0 +1,66 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.sim.DrawDecision;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Where the frame's decision thins far plants out (the low quality preset: from 4 m down to 15% of
+ * the plants by 16 m), the kept blades are drawn wider by 1 / the kept share (at most 4 times), so
+ * the far meadow keeps most of its weight in the picture: over the upper half of the ground in the
+ * default meadow view, the plants change the picture at least 75% as much as all of them do, and
+ * clearly more than the same thinned frame drawn without the widening.
+ */
+class ThinningLookTest {
+    private static final int W = 480;
+    private static final int H = 270;
+
+    @Test
+    void keptFarBladesMakeUpForTheThinnedOnes() {
+        SceneDef def = RenderScenes.load("meadow.xml");
+        World world = RenderScenes.build(def);
+        ViewCamera cam = RenderScenes.camera(def, world, W, H);
+        DrawDecision decision = DrawDecision.of(world);
+        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
+            Frame full = decision.decideAll(cam, TestFrames.rest(world));
+            double all = farCover(s, full, cam);
+            decision.setThinning(4, 16, 0.15);
+            Frame thinned = decision.decideAll(cam, TestFrames.rest(world));
+            double widened = farCover(s, thinned, cam);
+            thinned.setThinning(4, 16, 1); // the same plants, drawn at their own width
+            double plain = farCover(s, thinned, cam);
+            System.out.printf("[look] meadow far coverage: all plants %.3f, thinned and widened %.3f, thinned %.3f%n",
+                    all, widened, plain);
+            assertTrue(widened >= 0.75 * all, "thinned and widened " + widened + " vs all " + all);
+            assertTrue(widened > plain * 1.1, "the widening adds coverage: " + widened + " vs " + plain);
+        }
+    }
+
+    /**
+     * How much the plants change the upper half of the ground in the picture: the mean colour
+     * difference against the ground drawn alone, over every pixel of the band, /255 (a plant that
+     * covers a tenth of a pixel counts a tenth).
+     */
+    private static double farCover(Shots s, Frame frame, ViewCamera cam) {
+        Shots.View v = s.view(frame, cam);
+        ImageMetrics.Img ground = v.ground();
+        int top = 0;
+        for (int y = 0; y < H; y++) {
+            if (ImageMetrics.hsv(ground.at(W / 2, y))[2] < 0.55) {
+                top = y; // the highest ground row (GL rows, bottom up) in the middle column
+            }
+        }
+        boolean[] band = new boolean[W * H];
+        for (int y = top / 2; y < top - 2; y++) {
+            for (int x = 0; x < W; x++) {
+                band[y * W + x] = true;
+            }
+        }
+        return ImageMetrics.meanAbsDiff(v.full(), ground, band);
+    }
+}
