@@ -3,7 +3,8 @@ package org.jecosys.render;
 import org.jecosys.math.Require;
 
 /**
- * The colour variation of the plants, set through {@link PlantRenderer}: per species the spread of a
+ * The look of the plants, set through {@link PlantRenderer}: the light on them (sun and ambient), how
+ * thin parts and flowers are kept visible, and the colour variation: per species the spread of a
  * plant's hue turn and brightness and how far its tips turn to straw, and for the whole scene the
  * healthy/dry patches (the ground's noise, {@link RenderSettings#patchLevel}) and the seed of it all. The resolve pass
  * turns it into each drawn component's hue turn, brightness factor and patch dryness. Render thread;
@@ -14,6 +15,15 @@ final class PlantLook {
     static final float DEFAULT_PATCH_SCALE = 20f;
 
     private final float[] variation;
+    float minPixels = PlantRenderer.DEFAULT_MIN_PIXELS;
+    float headPixels = PlantRenderer.DEFAULT_HEAD_PIXELS;
+    float flowerTilt = (float) Math.toRadians(PlantRenderer.DEFAULT_FLOWER_TILT);
+    float sunR = 0.80f;
+    float sunG = 0.78f;
+    float sunB = 0.72f;
+    float ambR = 0.42f;
+    float ambG = 0.46f;
+    float ambB = 0.52f;
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;
     private int seed;
@@ -31,6 +41,23 @@ final class PlantLook {
         variation[3 * s] = (float) Math.toRadians(hueDeg);
         variation[3 * s + 1] = value;
         variation[3 * s + 2] = dryTips;
+    }
+
+    /** Sets the sun (colour times intensity) and the sky's ambient light; checked by the caller. */
+    void setLight(float sr, float sg, float sb, float ar, float ag, float ab) {
+        sunR = sr;
+        sunG = sg;
+        sunB = sb;
+        ambR = ar;
+        ambG = ag;
+        ambB = ab;
+    }
+
+    /** Sets the thin-part and flower settings (tilt in radians); checked by the caller. */
+    void setThinParts(float minPixels, float headPixels, float flowerTilt) {
+        this.minPixels = minPixels;
+        this.headPixels = headPixels;
+        this.flowerTilt = flowerTilt;
     }
 
     void setPatches(float scale, float strength, int seed) {

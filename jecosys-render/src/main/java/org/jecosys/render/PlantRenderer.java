@@ -1,7 +1,6 @@
 package org.jecosys.render;
 
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
-import static org.lwjgl.opengl.GL11C.GL_FLOAT;
 import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_LINES;
@@ -11,34 +10,22 @@ import static org.lwjgl.opengl.GL11C.glBlendFunc;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
-import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
-import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
-import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
-import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
-import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
-import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
 
 import java.nio.FloatBuffer;
-import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
-import org.jecosys.plant.ComponentDef;
-import org.jecosys.plant.ComponentShape;
-import org.jecosys.plant.LodMesh;
-import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.sim.Frame;
@@ -85,13 +72,6 @@ public final class PlantRenderer implements AutoCloseable {
     static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
     static final int MAX_EXACT = 1 << 24;
-    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach. */
-    private static final int VERTEX_FLOATS = 11;
-    /** Vertex kinds of {@code plant_common.glsl}: a blade (leaf), a stem, a petal, a fan head. */
-    static final int BLADE = 0;
-    static final int STEM = 1;
-    static final int PETAL = 2;
-    static final int HEAD = 3;
     /** Default least width of a thin part, pixels. */
     public static final float DEFAULT_MIN_PIXELS = 1.75f;
     /** Default least size of a flower part, pixels. */
@@ -111,20 +91,11 @@ public final class PlantRenderer implements AutoCloseable {
     private final int[] indexCount;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
-    private final Uniforms triangleUniforms;
-    private final Uniforms lineUniforms;
-    private final Uniforms resolveUniforms;
+    private final PlantUniforms triangleUniforms;
+    private final PlantUniforms lineUniforms;
+    private final PlantUniforms resolveUniforms;
     private final GlInts query = new GlInts();
     private final PlantLook look;
-    private float minPixels = DEFAULT_MIN_PIXELS;
-    private float headPixels = DEFAULT_HEAD_PIXELS;
-    private float flowerTilt = (float) Math.toRadians(DEFAULT_FLOWER_TILT);
-    private float sunR = 0.80f;
-    private float sunG = 0.78f;
-    private float sunB = 0.72f;
-    private float ambR = 0.42f;
-    private float ambG = 0.46f;
-    private float ambB = 0.52f;
     private boolean pending;
     private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
@@ -158,7 +129,7 @@ public final class PlantRenderer implements AutoCloseable {
             }
         }
         int[][][] poseTexel = new int[models.size()][][];
-        long texels = poseTexelLayout(models, poseTexel);
+        long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
         FloatBuffer mat = null;
@@ -169,11 +140,11 @@ public final class PlantRenderer implements AutoCloseable {
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
             lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
-            poseBuffer = own(uploadPoses(gl.tracker(), models, texels));
+            poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
             resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
-                    maxComponents, slotLooks(models)));
+                    maxComponents, PlantMeshes.slotLooks(models)));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -182,7 +153,7 @@ public final class PlantRenderer implements AutoCloseable {
                 for (int l = 0; l < m.levels(); l++) {
                     int li = batches.list(s, l);
                     indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = uploadMesh(gl.tracker(), m, m.mesh(l));
+                    vaos[li] = PlantMeshes.uploadMesh(gl.tracker(), m, m.mesh(l), owned);
                 }
             }
         } catch (RuntimeException | Error e) {
@@ -192,9 +163,9 @@ public final class PlantRenderer implements AutoCloseable {
             throw e;
         }
         matrix = mat;
-        resolveUniforms = new Uniforms(resolver.program());
-        lineUniforms = new Uniforms(lineProgram);
-        triangleUniforms = new Uniforms(program);
+        resolveUniforms = new PlantUniforms(resolver.program());
+        lineUniforms = new PlantUniforms(lineProgram);
+        triangleUniforms = new PlantUniforms(program);
         look = new PlantLook(models.size());
         for (int s = 0; s < models.size(); s++) {
             VariationDef v = models.get(s).def().variation();
@@ -202,187 +173,9 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
-    /**
-     * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
-     * missing one is set at location -1, which GL ignores); the constructor binds the two samplers
-     * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
-     */
-    private static final class Uniforms {
-        final int viewProj;
-        final int eye;
-        final int slotCount;
-        final int componentBase;
-        final int fogColour;
-        final int fogStart;
-        final int fogEnd;
-        final int lightDir;
-        final int sunColour;
-        final int ambient;
-        final int pixelScale;
-        final int dryTips;
-        final int minPixels;
-        final int headPixels;
-        final int flowerTilt;
-        final int thin;
-
-        Uniforms(GlProgram p) {
-            p.use();
-            viewProj = p.optionalUniform("uViewProj");
-            eye = p.optionalUniform("uEye");
-            slotCount = p.optionalUniform("uSlotCount");
-            componentBase = p.optionalUniform("uComponentBase");
-            fogColour = p.optionalUniform("uFogColour");
-            fogStart = p.optionalUniform("uFogStart");
-            fogEnd = p.optionalUniform("uFogEnd");
-            lightDir = p.optionalUniform("uLightDir");
-            sunColour = p.optionalUniform("uSunColour");
-            ambient = p.optionalUniform("uAmbient");
-            pixelScale = p.optionalUniform("uPixelScale");
-            dryTips = p.optionalUniform("uDryTips");
-            minPixels = p.optionalUniform("uMinPixels");
-            headPixels = p.optionalUniform("uHeadPixels");
-            flowerTilt = p.optionalUniform("uFlowerTilt");
-            thin = p.optionalUniform("uThin");
-            glUniform1i(p.optionalUniform("uPoses"), 0);
-            glUniform1i(p.optionalUniform("uComponents"), 1);
-        }
-
-        /** Sets the per-frame values on the program in use. No allocation. */
-        void frame(PlantRenderer r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
-                   float end, float lx, float ly, float lz) {
-            glUniformMatrix4fv(viewProj, false, viewProjMatrix);
-            glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
-            glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
-            glUniform1f(minPixels, r.minPixels);
-            glUniform1f(headPixels, r.headPixels);
-            glUniform1f(flowerTilt, r.flowerTilt);
-            glUniform3f(lightDir, lx, ly, lz);
-            glUniform3f(eye, ex, ey, ez);
-            glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
-            glUniform1f(fogStart, start);
-            glUniform1f(fogEnd, end);
-        }
-    }
-
     private <T extends AutoCloseable> T own(T resource) {
         owned.add(resource);
         return resource;
-    }
-
-    private static GlBuffer uploadPoses(GlTracker t, List<SpeciesModel> models, long texels) {
-        FloatBuffer poses = MemoryUtil.memAllocFloat((int) Math.max(4, texels * 4));
-        try {
-            for (SpeciesModel m : models) {
-                for (int c = 0; c < m.componentCount(); c++) {
-                    for (int v = 0; v < m.variants(); v++) {
-                        PoseTable pt = m.component(c).poseTable(v);
-                        for (int i = 0; i < pt.floatCount(); i += 3) {
-                            poses.put(pt.get(i)).put(pt.get(i + 1)).put(pt.get(i + 2)).put(0f);
-                        }
-                    }
-                }
-            }
-            poses.position(0).limit((int) Math.max(4, texels * 4));
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, poses, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(poses);
-        }
-    }
-
-    /**
-     * One VAO (owning its vertex and index buffers) for a species' level: slot, point, a, b; colour,
-     * along; pose stride (3 x points of the slot's pose table, the same for every variant).
-     */
-    private GlVertexArray uploadMesh(GlTracker t, SpeciesModel m, LodMesh mesh) {
-        int n = mesh.vertexCount();
-        FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
-        IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
-        try {
-            float[] reach = new float[m.slotCount()];
-            for (int slot = 0; slot < reach.length; slot++) {
-                reach[slot] = reach(m.slotPoseTable(slot, 0));
-            }
-            for (int v = 0; v < n; v++) {
-                int slot = mesh.vertexSlot(v);
-                ComponentDef def = m.component(m.slotComponent(slot)).def();
-                Rgb rgb = def.colour();
-                int points = m.slotPoseTable(slot, 0).points();
-                fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
-                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
-                        .put(3 * points).put(kind(def)).put(reach[slot]);
-            }
-            for (int i = 0; i < mesh.indexCount(); i++) {
-                iv.put(mesh.index(i));
-            }
-            fv.position(0).limit(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
-            iv.position(0).limit(Math.max(1, mesh.indexCount()));
-            GlVertexArray vao = own(new GlVertexArray(t));
-            vao.bind();
-            own(GlBuffer.of(t, GL_ARRAY_BUFFER, fv, GL_STATIC_DRAW));
-            glEnableVertexAttribArray(0);
-            glVertexAttribPointer(0, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 0);
-            glEnableVertexAttribArray(1);
-            glVertexAttribPointer(1, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 16);
-            glEnableVertexAttribArray(2);
-            glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
-            glEnableVertexAttribArray(3);
-            glVertexAttribPointer(3, 2, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
-            own(GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
-            glBindVertexArray(0);
-            return vao;
-        } finally {
-            MemoryUtil.memFree(fv);
-            MemoryUtil.memFree(iv);
-        }
-    }
-
-    /**
-     * The look of every species slot for the resolve pass, 4 floats each (colour r, g, b, vertex
-     * kind), species after species. Construction time; allocates.
-     */
-    static float[] slotLooks(List<SpeciesModel> models) {
-        int n = 0;
-        for (SpeciesModel m : models) {
-            n += m.slotCount();
-        }
-        float[] looks = new float[4 * Math.max(1, n)];
-        int o = 0;
-        for (SpeciesModel m : models) {
-            for (int slot = 0; slot < m.slotCount(); slot++) {
-                ComponentDef def = m.component(m.slotComponent(slot)).def();
-                looks[o++] = def.colour().r();
-                looks[o++] = def.colour().g();
-                looks[o++] = def.colour().b();
-                looks[o++] = kind(def);
-            }
-        }
-        return looks;
-    }
-
-    /** The vertex kind of a component for {@code plant_common.glsl}. */
-    static int kind(ComponentDef def) {
-        return switch (def.type()) {
-            case STALK -> STEM;
-            case PETAL -> PETAL;
-            case HEAD -> def.shape() == ComponentShape.FAN ? HEAD : PETAL;
-            default -> BLADE;
-        };
-    }
-
-    /** The farthest a point of pose 0 reaches from the component's base, width included, metres. */
-    static float reach(PoseTable table) {
-        double most = 1e-4;
-        for (int j = 0; j < table.points(); j++) {
-            int o = j * PoseTable.STRIDE;
-            double p = Math.sqrt(sq(table.get(o)) + sq(table.get(o + 1)) + sq(table.get(o + 2)));
-            double w = Math.sqrt(sq(table.get(o + 3)) + sq(table.get(o + 4)) + sq(table.get(o + 5)));
-            most = Math.max(most, p + w);
-        }
-        return (float) most;
-    }
-
-    private static double sq(double x) {
-        return x * x;
     }
 
     private static void checkTexels(String what, long texels, int max) {
@@ -406,12 +199,8 @@ public final class PlantRenderer implements AutoCloseable {
         checkLight("sun", sun);
         checkLight("ambient", ambient);
         Require.range("intensity", intensity, 0, 4);
-        sunR = sun.r() * intensity;
-        sunG = sun.g() * intensity;
-        sunB = sun.b() * intensity;
-        ambR = ambient.r();
-        ambG = ambient.g();
-        ambB = ambient.b();
+        look.setLight(sun.r() * intensity, sun.g() * intensity, sun.b() * intensity, ambient.r(), ambient.g(),
+                ambient.b());
     }
 
     private static void checkLight(String name, Rgb c) {
@@ -467,9 +256,7 @@ public final class PlantRenderer implements AutoCloseable {
         Require.range("minPixels", minPixels, 0, 8);
         Require.range("headPixels", headPixels, 0, 32);
         Require.range("flowerTilt", flowerTiltDeg, 0, 90);
-        this.minPixels = minPixels;
-        this.headPixels = headPixels;
-        this.flowerTilt = (float) Math.toRadians(flowerTiltDeg);
+        look.setThinParts(minPixels, headPixels, (float) Math.toRadians(flowerTiltDeg));
     }
 
     /** {@return the GL-free lists, LOD choice and counters (read them after {@link #draw})} */
@@ -542,17 +329,17 @@ public final class PlantRenderer implements AutoCloseable {
         float ey = (float) camera.y();
         float ez = (float) camera.z();
         resolver.program().use();
-        resolveUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        resolveUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
         lineProgram.use();
-        lineUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        lineUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         glUniform2f(lineUniforms.pixelScale, px, py);
         glUniform3f(lineUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
                 (float) frame.thinMinFraction());
         program.use();
-        triangleUniforms.frame(this, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        triangleUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         glUniform2f(triangleUniforms.pixelScale, px, py);
         glUniform3f(triangleUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
                 (float) frame.thinMinFraction());
@@ -592,7 +379,7 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /** One instanced draw per list of the given primitive with the program in use. */
-    private void drawLists(boolean lines, Uniforms u) {
+    private void drawLists(boolean lines, PlantUniforms u) {
         for (int s = 0; s < batches.speciesCount(); s++) {
             for (int l = 0, levels = batches.levels(s); l < levels; l++) {
                 int li = batches.list(s, l);
@@ -636,25 +423,9 @@ public final class PlantRenderer implements AutoCloseable {
         query.close();
     }
 
-    /**
-     * The pose buffer's layout: species after species, component type after type, variant after
-     * variant, 3 texels (12 floats) per point of each pose. Fills {@code first[s][c][v]} with the
-     * first texel of that pose table and returns the texels in all. Construction time; allocates.
-     */
+    /** {@return the pose buffer's layout, see {@link PlantMeshes#poseTexelLayout}} (tests and benchmarks) */
     static long poseTexelLayout(List<SpeciesModel> models, int[][][] first) {
-        long texels = 0;
-        for (int s = 0; s < models.size(); s++) {
-            SpeciesModel m = models.get(s);
-            first[s] = new int[m.componentCount()][m.variants()];
-            for (int c = 0; c < m.componentCount(); c++) {
-                for (int v = 0; v < m.variants(); v++) {
-                    first[s][c][v] = (int) Math.min(texels, Integer.MAX_VALUE);
-                    PoseTable pt = m.component(c).poseTable(v);
-                    texels += 3L * pt.poses() * pt.points();
-                }
-            }
-        }
-        return texels;
+        return PlantMeshes.poseTexelLayout(models, first);
     }
 
     /** Closes {@code resources} last to first, like {@link #closeAll} (every one, even past a failure). */

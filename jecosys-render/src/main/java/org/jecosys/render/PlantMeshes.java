@@ -1,0 +1,183 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL11C.GL_FLOAT;
+import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
+import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
+import static org.lwjgl.opengl.GL30C.glBindVertexArray;
+import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
+
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import java.util.List;
+import org.jecosys.math.Rgb;
+import org.jecosys.plant.ComponentDef;
+import org.jecosys.plant.ComponentShape;
+import org.jecosys.plant.LodMesh;
+import org.jecosys.plant.PoseTable;
+import org.jecosys.plant.SpeciesModel;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * What {@link PlantRenderer} uploads once, at construction: the pose tables of every species as one
+ * buffer (3 RGBA32F texels per skeleton point), a mesh per species and level (per vertex: slot,
+ * pose-table point, side and normal coefficients, the component's colour and the fraction along it,
+ * the pose stride, and the vertex kind and reach that {@code plant_common.glsl} uses for thin parts
+ * and flowers), and the species slots' looks for the resolve pass. Render thread; allocates.
+ */
+final class PlantMeshes {
+    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach. */
+    static final int VERTEX_FLOATS = 11;
+    /** Vertex kinds of {@code plant_common.glsl}: a blade (leaf), a stem, a petal, a fan head. */
+    static final int BLADE = 0;
+    static final int STEM = 1;
+    static final int PETAL = 2;
+    static final int HEAD = 3;
+
+    private PlantMeshes() {
+    }
+
+    private static <T extends AutoCloseable> T own(List<AutoCloseable> owned, T resource) {
+        owned.add(resource);
+        return resource;
+    }
+
+    static GlBuffer uploadPoses(GlTracker t, List<SpeciesModel> models, long texels) {
+        FloatBuffer poses = MemoryUtil.memAllocFloat((int) Math.max(4, texels * 4));
+        try {
+            for (SpeciesModel m : models) {
+                for (int c = 0; c < m.componentCount(); c++) {
+                    for (int v = 0; v < m.variants(); v++) {
+                        PoseTable pt = m.component(c).poseTable(v);
+                        for (int i = 0; i < pt.floatCount(); i += 3) {
+                            poses.put(pt.get(i)).put(pt.get(i + 1)).put(pt.get(i + 2)).put(0f);
+                        }
+                    }
+                }
+            }
+            poses.position(0).limit((int) Math.max(4, texels * 4));
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, poses, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(poses);
+        }
+    }
+
+    /**
+     * One VAO (owning its vertex and index buffers) for a species' level: slot, point, a, b; colour,
+     * along; pose stride (3 x points of the slot's pose table, the same for every variant).
+     */
+    static GlVertexArray uploadMesh(GlTracker t, SpeciesModel m, LodMesh mesh, List<AutoCloseable> owned) {
+        int n = mesh.vertexCount();
+        FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
+        IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
+        try {
+            float[] reach = new float[m.slotCount()];
+            for (int slot = 0; slot < reach.length; slot++) {
+                reach[slot] = reach(m.slotPoseTable(slot, 0));
+            }
+            for (int v = 0; v < n; v++) {
+                int slot = mesh.vertexSlot(v);
+                ComponentDef def = m.component(m.slotComponent(slot)).def();
+                Rgb rgb = def.colour();
+                int points = m.slotPoseTable(slot, 0).points();
+                fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
+                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
+                        .put(3 * points).put(kind(def)).put(reach[slot]);
+            }
+            for (int i = 0; i < mesh.indexCount(); i++) {
+                iv.put(mesh.index(i));
+            }
+            fv.position(0).limit(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
+            iv.position(0).limit(Math.max(1, mesh.indexCount()));
+            GlVertexArray vao = own(owned, new GlVertexArray(t));
+            vao.bind();
+            own(owned, GlBuffer.of(t, GL_ARRAY_BUFFER, fv, GL_STATIC_DRAW));
+            glEnableVertexAttribArray(0);
+            glVertexAttribPointer(0, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 0);
+            glEnableVertexAttribArray(1);
+            glVertexAttribPointer(1, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 16);
+            glEnableVertexAttribArray(2);
+            glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
+            glEnableVertexAttribArray(3);
+            glVertexAttribPointer(3, 2, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
+            own(owned, GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
+            glBindVertexArray(0);
+            return vao;
+        } finally {
+            MemoryUtil.memFree(fv);
+            MemoryUtil.memFree(iv);
+        }
+    }
+
+    /**
+     * The look of every species slot for the resolve pass, 4 floats each (colour r, g, b, vertex
+     * kind), species after species. Construction time; allocates.
+     */
+    static float[] slotLooks(List<SpeciesModel> models) {
+        int n = 0;
+        for (SpeciesModel m : models) {
+            n += m.slotCount();
+        }
+        float[] looks = new float[4 * Math.max(1, n)];
+        int o = 0;
+        for (SpeciesModel m : models) {
+            for (int slot = 0; slot < m.slotCount(); slot++) {
+                ComponentDef def = m.component(m.slotComponent(slot)).def();
+                looks[o++] = def.colour().r();
+                looks[o++] = def.colour().g();
+                looks[o++] = def.colour().b();
+                looks[o++] = kind(def);
+            }
+        }
+        return looks;
+    }
+
+    /** The vertex kind of a component for {@code plant_common.glsl}. */
+    static int kind(ComponentDef def) {
+        return switch (def.type()) {
+            case STALK -> STEM;
+            case PETAL -> PETAL;
+            case HEAD -> def.shape() == ComponentShape.FAN ? HEAD : PETAL;
+            default -> BLADE;
+        };
+    }
+
+    /** The farthest a point of pose 0 reaches from the component's base, width included, metres. */
+    static float reach(PoseTable table) {
+        double most = 1e-4;
+        for (int j = 0; j < table.points(); j++) {
+            int o = j * PoseTable.STRIDE;
+            double p = Math.sqrt(sq(table.get(o)) + sq(table.get(o + 1)) + sq(table.get(o + 2)));
+            double w = Math.sqrt(sq(table.get(o + 3)) + sq(table.get(o + 4)) + sq(table.get(o + 5)));
+            most = Math.max(most, p + w);
+        }
+        return (float) most;
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+
+    /**
+     * The pose buffer's layout: species after species, component type after type, variant after
+     * variant, 3 texels (12 floats) per point of each pose. Fills {@code first[s][c][v]} with the
+     * first texel of that pose table and returns the texels in all. Construction time; allocates.
+     */
+    static long poseTexelLayout(List<SpeciesModel> models, int[][][] first) {
+        long texels = 0;
+        for (int s = 0; s < models.size(); s++) {
+            SpeciesModel m = models.get(s);
+            first[s] = new int[m.componentCount()][m.variants()];
+            for (int c = 0; c < m.componentCount(); c++) {
+                for (int v = 0; v < m.variants(); v++) {
+                    first[s][c][v] = (int) Math.min(texels, Integer.MAX_VALUE);
+                    PoseTable pt = m.component(c).poseTable(v);
+                    texels += 3L * pt.poses() * pt.points();
+                }
+            }
+        }
+        return texels;
+    }
+}

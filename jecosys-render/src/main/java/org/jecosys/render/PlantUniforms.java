@@ -1,0 +1,71 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
+
+import java.nio.FloatBuffer;
+import org.jecosys.math.Rgb;
+
+/**
+ * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
+ * missing one is set at location -1, which GL ignores); the constructor binds the two samplers
+ * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
+ */
+final class PlantUniforms {
+    final int viewProj;
+    final int eye;
+    final int slotCount;
+    final int componentBase;
+    final int fogColour;
+    final int fogStart;
+    final int fogEnd;
+    final int lightDir;
+    final int sunColour;
+    final int ambient;
+    final int pixelScale;
+    final int dryTips;
+    final int minPixels;
+    final int headPixels;
+    final int flowerTilt;
+    final int thin;
+
+    PlantUniforms(GlProgram p) {
+        p.use();
+        viewProj = p.optionalUniform("uViewProj");
+        eye = p.optionalUniform("uEye");
+        slotCount = p.optionalUniform("uSlotCount");
+        componentBase = p.optionalUniform("uComponentBase");
+        fogColour = p.optionalUniform("uFogColour");
+        fogStart = p.optionalUniform("uFogStart");
+        fogEnd = p.optionalUniform("uFogEnd");
+        lightDir = p.optionalUniform("uLightDir");
+        sunColour = p.optionalUniform("uSunColour");
+        ambient = p.optionalUniform("uAmbient");
+        pixelScale = p.optionalUniform("uPixelScale");
+        dryTips = p.optionalUniform("uDryTips");
+        minPixels = p.optionalUniform("uMinPixels");
+        headPixels = p.optionalUniform("uHeadPixels");
+        flowerTilt = p.optionalUniform("uFlowerTilt");
+        thin = p.optionalUniform("uThin");
+        glUniform1i(p.optionalUniform("uPoses"), 0);
+        glUniform1i(p.optionalUniform("uComponents"), 1);
+    }
+
+    /** Sets the per-frame values on the program in use. No allocation. */
+    void frame(PlantLook r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
+               float end, float lx, float ly, float lz) {
+        glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+        glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
+        glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
+        glUniform1f(minPixels, r.minPixels);
+        glUniform1f(headPixels, r.headPixels);
+        glUniform1f(flowerTilt, r.flowerTilt);
+        glUniform3f(lightDir, lx, ly, lz);
+        glUniform3f(eye, ex, ey, ez);
+        glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
+        glUniform1f(fogStart, start);
+        glUniform1f(fogEnd, end);
+    }
+}
