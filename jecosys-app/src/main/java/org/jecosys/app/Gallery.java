@@ -33,8 +33,8 @@ import org.lwjgl.system.MemoryUtil;
  * <li>{@code meadow-closeup.png}: 1 m from the middle of the densest patch of the meadow's second
  *     species (the yellow flowers), eye 0.6 m above the ground, looking at the flower heads;</li>
  * <li>{@code meadow-above.png}: straight down from 10 m above the middle of the meadow;</li>
- * <li>{@code meadow-backlit.png}: the start camera turned to look toward the sun ({@link #SUN_X},
- *     {@link #SUN_Z});</li>
+ * <li>{@code meadow-backlit.png}: the start camera turned to look toward the scene's sun (its
+ *     {@code <light sunAzimuth>});</li>
  * <li>{@code rose-level0.png}, {@code rose-level1.png}, {@code rose-level2.png}: the rose at 1.2 m,
  *     12 m and 20 m (each distance falls in one level of detail: triangles, fewer triangles, lines),
  *     from 45 degrees, the lens narrowed so that the rose fills the picture's height at every distance;</li>
@@ -52,12 +52,6 @@ final class Gallery {
     static final List<String> FILES = List.of("meadow-default.png", "meadow-closeup.png", "meadow-above.png",
             "meadow-backlit.png", "rose-level0.png", "rose-level1.png", "rose-level2.png", "c1.png", "c2.png",
             "c3.png");
-    /**
-     * Horizontal direction toward the sun (x, z), as the renderer lights today (SceneRenderer's fixed
-     * sun, -0.45, 0.80, 0.40). Follow the render settings' sun when it becomes configurable.
-     */
-    static final double SUN_X = -0.45;
-    static final double SUN_Z = 0.40;
 
     /** A scene file with problems (already printed). */
     static final class BadScene extends Exception {
@@ -124,7 +118,8 @@ final class Gallery {
                 views.add(new View("meadow-above.png", new ViewCamera().setPosition(0, gy + 10, 0)
                         .setOrientation(0, -Math.PI / 2 + 1e-3).setLens(def.camera().fovY(), aspect, 0.1, 200)));
                 ViewCamera back = ViewCamera.of(def.camera(), ground, aspect);
-                back.setOrientation(Math.atan2(SUN_X, -SUN_Z), def.camera().pitch());
+                double az = def.render().light().sunAzimuth(); // toward the sun: (cos az, sin az) on the ground
+                back.setOrientation(Math.atan2(Math.cos(az), -Math.sin(az)), def.camera().pitch());
                 views.add(new View("meadow-backlit.png", back));
             }
             case "rose.xml" -> {

@@ -142,43 +142,10 @@ public final class GlContext implements AutoCloseable {
      * @throws IllegalStateException when GLFW or the context cannot be made (e.g. no display)
      */
     public static GlContext windowed(String title, int width, int height, boolean debug) {
-        return create(title, width, height, false, debug, 0);
-    }
-
-    /**
-     * Like {@link #windowed(String, int, int, boolean)}, with a multisampled default framebuffer of
-     * {@code samples} samples per pixel (0 or 1: none) for anti-aliasing; a display that offers no
-     * such framebuffer gets a window without multisampling. Main thread; allocates.
-     *
-     * @param title   window title
-     * @param width   client width, pixels
-     * @param height  client height, pixels
-     * @param debug   whether to turn on KHR_debug output ({@link #debug()})
-     * @param samples samples per pixel of the window's framebuffer, in [0, 16]
-     * @return the context; owns the window and GLFW
-     * @throws IllegalArgumentException when {@code samples} is out of range
-     * @throws IllegalStateException    when GLFW or the context cannot be made (e.g. no display)
-     */
-    public static GlContext windowed(String title, int width, int height, boolean debug, int samples) {
-        if (samples < 0 || samples > 16) {
-            throw new IllegalArgumentException("samples must be in [0, 16], got " + samples);
-        }
-        if (samples > 1) {
-            try {
-                return create(title, width, height, false, debug, samples);
-            } catch (IllegalStateException e) {
-                return create(title, width, height, false, debug, 0);
-            }
-        }
-        return create(title, width, height, false, debug, 0);
+        return create(title, width, height, false, debug);
     }
 
     private static GlContext create(String title, int width, int height, boolean headless, boolean debug) {
-        return create(title, width, height, headless, debug, 0);
-    }
-
-    private static GlContext create(String title, int width, int height, boolean headless, boolean debug,
-                                    int samples) {
         String[] last = new String[1];
         GLFWErrorCallback cb = GLFWErrorCallback.create((code, description) ->
                 last[0] = "GLFW error 0x" + Integer.toHexString(code) + ": " + GLFWErrorCallback.getDescription(description));
@@ -202,7 +169,6 @@ public final class GlContext implements AutoCloseable {
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_CONTEXT_DEBUG, debug ? GLFW_TRUE : GLFW_FALSE);
-        glfwWindowHint(org.lwjgl.glfw.GLFW.GLFW_SAMPLES, samples);
         if (headless) {
             glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
             glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);

@@ -259,6 +259,8 @@ public final class GlFramebuffer extends GlResource {
         final GlVertexArray vao;
         final int uTexel;
         final int uWeights;
+        /** Allocation-free state queries: the filter runs every frame in the viewer. */
+        final GlInts query = new GlInts();
 
         Resolved(GlTracker tracker) {
             super(tracker, glGenFramebuffers());
@@ -298,11 +300,11 @@ public final class GlFramebuffer extends GlResource {
 
         /** Draws the box-averaged image through the tent filter into this framebuffer; puts back what it changes. */
         void filter(int width, int height, float tent) {
-            int program0 = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
-            int vao0 = glGetInteger(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
-            int unit0 = glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
+            int program0 = query.get(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+            int vao0 = query.get(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
+            int unit0 = query.get(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
             org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
-            int texture0 = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            int texture0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             boolean depth = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
             boolean blend = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_BLEND);
             boolean scissor = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
@@ -342,6 +344,7 @@ public final class GlFramebuffer extends GlResource {
         @Override
         void delete(int name) {
             glDeleteFramebuffers(name);
+            query.close();
             PlantRenderer.closeAll(vao, program, box, colour);
         }
     }
