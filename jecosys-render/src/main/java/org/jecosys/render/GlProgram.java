@@ -60,15 +60,41 @@ public final class GlProgram extends GlResource {
      * @throws IllegalStateException when a shader does not compile or the program does not link
      */
     public GlProgram(GlTracker tracker, String vertex, String fragment, String... captured) {
+        this(tracker, vertex, fragment, new String[0], captured);
+    }
+
+    /**
+     * Compiles and links a variant of {@code shaders/<vertex>} and {@code shaders/<fragment>}: each
+     * name in {@code defines} is defined ({@code #define NAME}) in both shaders, right after their
+     * {@code #version} line, for {@code #ifdef} in the source. Render thread; allocates.
+     *
+     * @param tracker  counts the object
+     * @param vertex   vertex shader resource name
+     * @param fragment fragment shader resource name
+     * @param defines  preprocessor names to define, each a GLSL identifier
+     * @return the linked program
+     * @throws IllegalArgumentException when a define is not an identifier
+     * @throws IllegalStateException    with the driver's log when compiling or linking fails
+     */
+    public static GlProgram variant(GlTracker tracker, String vertex, String fragment, String... defines) {
+        for (String d : defines) {
+            if (!d.matches("[A-Za-z_][A-Za-z0-9_]*")) {
+                throw new IllegalArgumentException("shader define must be an identifier, got '" + d + "'");
+            }
+        }
+        return new GlProgram(tracker, vertex, fragment, defines.clone(), new String[0]);
+    }
+
+    private GlProgram(GlTracker tracker, String vertex, String fragment, String[] defines, String[] captured) {
         super(tracker, glCreateProgram());
-        this.name = vertex + "+" + fragment;
+        this.name = vertex + "+" + fragment + (defines.length == 0 ? "" : " " + String.join(",", defines));
         int vs = 0;
         int fs = 0;
         try {
-            vs = compile(GL_VERTEX_SHADER, vertex);
+            vs = compile(GL_VERTEX_SHADER, vertex, defines);
             glAttachShader(id(), vs);
             if (fragment != null) {
-                fs = compile(GL_FRAGMENT_SHADER, fragment);
+                fs = compile(GL_FRAGMENT_SHADER, fragment, defines);
                 glAttachShader(id(), fs);
             }
             if (captured.length > 0) {
@@ -141,9 +167,24 @@ public final class GlProgram extends GlResource {
         }
     }
 
-    private static int compile(int type, String resource) {
+    /** The expanded source with {@code #define}s after its first line (the {@code #version}). */
+    static String variantSource(String resource, String... defines) {
+        String text = source(resource);
+        if (defines.length == 0) {
+            return text;
+        }
+        int eol = text.indexOf('\n');
+        StringBuilder out = new StringBuilder(text.length() + 32 * defines.length);
+        out.append(text, 0, eol + 1);
+        for (String d : defines) {
+            out.append("#define ").append(d).append('\n');
+        }
+        return out.append(text, eol + 1, text.length()).toString();
+    }
+
+    private static int compile(int type, String resource, String[] defines) {
         int s = glCreateShader(type);
-        glShaderSource(s, source(resource));
+        glShaderSource(s, variantSource(resource, defines));
         glCompileShader(s);
         if (glGetShaderi(s, GL_COMPILE_STATUS) == 0) {
             String log = glGetShaderInfoLog(s);

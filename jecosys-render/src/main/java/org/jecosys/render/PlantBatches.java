@@ -16,7 +16,11 @@ import org.jecosys.sim.World;
  * bands the animation used, see {@link org.jecosys.sim.DrawDecision}) without deciding anything
  * itself: a plant in a transition band is put in both lists, level L and L + 1, each with its share of
  * the screen-door dither thresholds ({@code plant.frag}), so the switch is gradual and never pops.
- * Counters: triangles and lines submitted = sum over lists of instances × that level's primitive
+ * Within a list the plants drawn whole (outside any band, window {@link #WHOLE}) come first and the
+ * plants in a band after them, each group in plant order: the renderer draws the first group with
+ * programs that have no dither test, which keeps early depth testing on in the rasteriser (a shader
+ * that may discard loses it on llvmpipe), and only the few in a band with the dither test
+ * ({@link #whole}). Counters: triangles and lines submitted = sum over lists of instances × that level's primitive
  * count.
  *
  * <p>Render thread (or any single thread); {@link #update} and {@link #writeInstances} allocate
@@ -35,6 +39,8 @@ public final class PlantBatches {
     private final int[] listCount;
     private final int[] plants;
     private final int[] keeps;          // per list entry: the packed dither window of its level
+    private final int[] whole;          // per list: plants drawn whole, listed first
+    private final int[] banded;         // per list: plants in a band, filled from the list's end
     private final int[] instanceOffset; // per list: first instance record in the packed stream
     private final int[] componentOffset; // per list: first component record
     private long triangles;
@@ -44,6 +50,8 @@ public final class PlantBatches {
     private final int[] runStart;       // component ranges holding the listed plants, gaps under GAP merged
     private final int[] runEnd;
     private int runs;
+    /** The dither window of a plant drawn whole at its level: keep every fragment, [0, 1). */
+    public static final int WHOLE = 0xFF;
     /** Gaps between listed plants' components up to this many are uploaded rather than split. */
     static final int GAP = 64;
 
@@ -77,6 +85,8 @@ public final class PlantBatches {
         lines = new boolean[lists];
         listStart = new int[lists + 1];
         listCount = new int[lists];
+        whole = new int[lists];
+        banded = new int[lists];
         instanceOffset = new int[lists];
         componentOffset = new int[lists];
         int at = 0;
@@ -112,7 +122,8 @@ public final class PlantBatches {
         }
         int lists = listBase[species];
         for (int li = 0; li < lists; li++) {
-            listCount[li] = 0;
+            whole[li] = 0;
+            banded[li] = 0;
         }
         runs = 0;
         for (int p = 0, n = world.plantCount(); p < n; p++) {
@@ -135,6 +146,9 @@ public final class PlantBatches {
                 add(listBase[s] + l + 1, p, keep >>> 16);
             }
         }
+        for (int li = 0; li < lists; li++) {
+            gather(li);
+        }
         triangles = 0;
         lineCount = 0;
         instances = 0;
@@ -156,9 +170,27 @@ public final class PlantBatches {
     }
 
     private void add(int list, int plant, int keep) {
-        int at = listStart[list] + listCount[list]++;
+        int at = keep == WHOLE ? listStart[list] + whole[list]++ : listStart[list + 1] - 1 - banded[list]++;
         plants[at] = plant;
         keeps[at] = keep;
+    }
+
+    /** Moves a list's banded plants (at the end of its room, last first) to follow its whole ones, in order. */
+    private void gather(int list) {
+        int n = banded[list];
+        int end = listStart[list + 1];
+        for (int i = end - n, j = end - 1; i < j; i++, j--) {
+            int t = plants[i];
+            plants[i] = plants[j];
+            plants[j] = t;
+            t = keeps[i];
+            keeps[i] = keeps[j];
+            keeps[j] = t;
+        }
+        int to = listStart[list] + whole[list];
+        System.arraycopy(plants, end - n, plants, to, n);
+        System.arraycopy(keeps, end - n, keeps, to, n);
+        listCount[list] = whole[list] + n;
     }
 
 
@@ -179,6 +211,16 @@ public final class PlantBatches {
         }
         dest.flip();
         return dest.limit() / 2;
+    }
+
+    /**
+     * {@return how many of a list's plants, its first ones, are drawn whole (dither window
+     * {@link #WHOLE}); the rest, up to {@link #count}, are in a transition band}
+     *
+     * @param list list index, in [0, listCount())
+     */
+    public int whole(int list) {
+        return whole[list];
     }
 
     /**

@@ -134,6 +134,16 @@ final class PlantMeshes {
         return looks;
     }
 
+    /** {@return whether any component of the species is a flower part (a petal or a head)} */
+    static boolean hasFlowerParts(SpeciesModel m) {
+        for (int slot = 0; slot < m.slotCount(); slot++) {
+            if (kind(m.component(m.slotComponent(slot)).def()) >= PETAL) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The vertex kind of a component for {@code plant_common.glsl}. */
     static int kind(ComponentDef def) {
         return switch (def.type()) {

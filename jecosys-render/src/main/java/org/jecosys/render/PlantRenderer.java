@@ -68,6 +68,9 @@ public final class PlantRenderer implements AutoCloseable {
      */
     public static final String PATH = "GL 3.3 core: worker-written states, GPU resolve (transform feedback), "
             + "instanced draws";
+    private static final int DITHER = 1;
+    private static final int LINES = 2;
+    private static final int FLOWERS = 4;
     /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
     static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
@@ -82,8 +85,6 @@ public final class PlantRenderer implements AutoCloseable {
     private final World world;
     private final PlantBatches batches;
     private final List<AutoCloseable> owned = new ArrayList<>();
-    private final GlProgram program;
-    private final GlProgram lineProgram;
     private final GlBuffer poseBuffer;
     private final GlBufferTexture poseTexture;
     private final ComponentResolver resolver;
@@ -91,8 +92,13 @@ public final class PlantRenderer implements AutoCloseable {
     private final int[] indexCount;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
-    private final PlantUniforms triangleUniforms;
-    private final PlantUniforms lineUniforms;
+    /**
+     * The draw programs and their uniforms, indexed by {@link #DITHER} | {@link #LINES} |
+     * {@link #FLOWERS}: triangle or line levels, with or without the dither test, for species with
+     * or without flower parts.
+     */
+    private final PlantUniforms[] passes = new PlantUniforms[8];
+    private final boolean[] flowers;
     private final PlantUniforms resolveUniforms;
     private final GlInts query = new GlInts();
     private final PlantLook look;
@@ -128,18 +134,34 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         }
+        flowers = new boolean[models.size()];
+        for (int s = 0; s < flowers.length; s++) {
+            flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));
+        }
         int[][][] poseTexel = new int[models.size()][][];
         long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
         FloatBuffer mat = null;
+        GlProgram[] programs = new GlProgram[passes.length];
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
             checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
-            program = own(new GlProgram(gl.tracker(), "plant.vert", "plant.frag"));
-            lineProgram = own(new GlProgram(gl.tracker(), "plant_line.vert", "plant_line.frag"));
+            for (int k = 0; k < passes.length; k++) {
+                List<String> d = new ArrayList<>(2);
+                if ((k & DITHER) != 0) {
+                    d.add("DITHER");
+                }
+                if ((k & FLOWERS) != 0) {
+                    d.add("FLOWERS");
+                }
+                String[] defines = d.toArray(new String[0]);
+                programs[k] = own((k & LINES) != 0
+                        ? GlProgram.variant(gl.tracker(), "plant_line.vert", "plant_line.frag", defines)
+                        : GlProgram.variant(gl.tracker(), "plant.vert", "plant.frag", defines));
+            }
             poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
@@ -164,8 +186,11 @@ public final class PlantRenderer implements AutoCloseable {
         }
         matrix = mat;
         resolveUniforms = new PlantUniforms(resolver.program());
-        lineUniforms = new PlantUniforms(lineProgram);
-        triangleUniforms = new PlantUniforms(program);
+        // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
+        // use here alive past its deletion
+        for (int k = 0; k < passes.length; k++) {
+            passes[k] = new PlantUniforms(programs[k]);
+        }
         look = new PlantLook(models.size());
         for (int s = 0; s < models.size(); s++) {
             VariationDef v = models.get(s).def().variation();
@@ -333,20 +358,16 @@ public final class PlantRenderer implements AutoCloseable {
         resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
-        lineProgram.use();
-        lineUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-        glUniform2f(lineUniforms.pixelScale, px, py);
-        glUniform3f(lineUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
-                (float) frame.thinMinFraction());
-        program.use();
-        triangleUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-        glUniform2f(triangleUniforms.pixelScale, px, py);
-        glUniform3f(triangleUniforms.thin, (float) frame.thinStart(), (float) frame.thinEnd(),
-                (float) frame.thinMinFraction());
+        for (PlantUniforms u : passes) {
+            u.program.use();
+            u.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+            glUniform2f(u.pixelScale, px, py);
+            glUniform3f(u.thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
+        }
         poseTexture.bind(0);
         resolver.bindRecords(1);
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        drawLists(false, triangleUniforms);
+        drawLists(false);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
 
@@ -360,39 +381,57 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         pending = false;
-        lineProgram.use();
         poseTexture.bind(0);
         resolver.bindRecords(1);
         if (query.get(GL13C.GL_SAMPLES) > 1) {
             // multisampled: coverage to samples, as the triangle levels, depth written
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            drawLists(true, lineUniforms);
+            drawLists(true);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             return;
         }
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
-        drawLists(true, lineUniforms);
+        drawLists(true);
         glDepthMask(true);
         glDisable(GL_BLEND);
     }
 
-    /** One instanced draw per list of the given primitive with the program in use. */
-    private void drawLists(boolean lines, PlantUniforms u) {
-        for (int s = 0; s < batches.speciesCount(); s++) {
-            for (int l = 0, levels = batches.levels(s); l < levels; l++) {
-                int li = batches.list(s, l);
-                int n = batches.count(li);
-                if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
+    /**
+     * The lists of one primitive: per list one instanced draw of its plants drawn whole, with a
+     * program without the dither test, then one of its plants in a transition band, with it; species
+     * with flower parts with the programs that place them.
+     */
+    private void drawLists(boolean lines) {
+        for (int k = 0; k < 4; k++) {
+            boolean dither = (k & 1) != 0;
+            boolean flowerPass = (k & 2) != 0;
+            PlantUniforms u = passes[(lines ? LINES : 0) | (dither ? DITHER : 0) | (flowerPass ? FLOWERS : 0)];
+            boolean inUse = false;
+            for (int s = 0; s < batches.speciesCount(); s++) {
+                if (flowers[s] != flowerPass) {
                     continue;
                 }
-                glUniform1i(u.slotCount, batches.slots(s));
-                glUniform1f(u.dryTips, look.dryTips(s));
-                glUniform1i(u.componentBase, batches.componentOffset(li));
-                vaos[li].bind();
-                glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
-                draws++;
+                for (int l = 0, levels = batches.levels(s); l < levels; l++) {
+                    int li = batches.list(s, l);
+                    int whole = batches.whole(li);
+                    int first = dither ? whole : 0;
+                    int n = dither ? batches.count(li) - whole : whole;
+                    if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
+                        continue;
+                    }
+                    if (!inUse) {
+                        u.program.use();
+                        inUse = true;
+                    }
+                    glUniform1i(u.slotCount, batches.slots(s));
+                    glUniform1f(u.dryTips, look.dryTips(s));
+                    glUniform1i(u.componentBase, batches.componentOffset(li) + first * batches.slots(s));
+                    vaos[li].bind();
+                    glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
+                    draws++;
+                }
             }
         }
         glBindVertexArray(0);

@@ -14,6 +14,7 @@ import org.jecosys.math.Rgb;
  * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
  */
 final class PlantUniforms {
+    final GlProgram program;
     final int viewProj;
     final int eye;
     final int slotCount;
@@ -32,6 +33,7 @@ final class PlantUniforms {
     final int thin;
 
     PlantUniforms(GlProgram p) {
+        program = p;
         p.use();
         viewProj = p.optionalUniform("uViewProj");
         eye = p.optionalUniform("uEye");

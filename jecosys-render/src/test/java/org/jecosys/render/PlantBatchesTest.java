@@ -163,4 +163,59 @@ class PlantBatchesTest {
         assertEquals(lo, b.runStart(0), "the first range starts at the lowest listed component");
         assertEquals(hi, b.runEnd(b.runs() - 1), "the last ends after the highest");
     }
+
+    @Test
+    void plantsDrawnWholeComeFirstInEachListThenThoseInABandEachInPlantOrder() {
+        PlantBatches b = new PlantBatches(world);
+        ViewCamera cam = looking(0, 1.7, 14, 0);
+        DrawDecision d = DrawDecision.of(world);
+        d.setTransition(2.0);
+        Frame f = d.decideAll(cam, new Frame(world.plantCount(), world.componentCount()));
+        b.update(f);
+        int banded = 0;
+        int whole = 0;
+        for (int li = 0; li < b.listCount(); li++) {
+            int s = b.speciesOf(li);
+            int level = li - b.list(s, 0);
+            int[] expectWhole = new int[world.plantCount()];
+            int[] expectBanded = new int[world.plantCount()];
+            int nw = 0;
+            int nb = 0;
+            for (int p = 0; p < world.plantCount(); p++) {
+                int l = f.drawLevel(p);
+                if (world.plantSpecies(p) != s || l < 0 || (l != level && l + 1 != level)) {
+                    continue;
+                }
+                int keep = f.drawKeep(p);
+                if (l + 1 == level && keep >>> 16 == 0) {
+                    continue;
+                }
+                int window = l == level ? keep & 0xFFFF : keep >>> 16;
+                if (window == PlantBatches.WHOLE) {
+                    expectWhole[nw++] = p;
+                } else {
+                    expectBanded[nb++] = p;
+                }
+            }
+            assertEquals(nw, b.whole(li), "list " + li + ": plants drawn whole");
+            assertEquals(nw + nb, b.count(li), "list " + li + ": every plant once");
+            for (int i = 0; i < nw; i++) {
+                assertEquals(expectWhole[i], b.plant(li, i), "list " + li + " entry " + i);
+                assertEquals(PlantBatches.WHOLE, b.keepOf(li, i));
+            }
+            for (int i = 0; i < nb; i++) {
+                assertEquals(expectBanded[i], b.plant(li, nw + i), "list " + li + " entry " + (nw + i));
+                assertTrue(b.keepOf(li, nw + i) != PlantBatches.WHOLE);
+            }
+            whole += nw;
+            banded += nb;
+        }
+        assertTrue(banded > 4 && whole > 4, "both kinds present: " + whole + " whole, " + banded + " banded");
+        // a second frame with no band: every plant whole again, the lists refilled from scratch
+        d.setTransition(0);
+        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.componentCount())));
+        for (int li = 0; li < b.listCount(); li++) {
+            assertEquals(b.count(li), b.whole(li), "no band, list " + li);
+        }
+    }
 }

@@ -1,14 +1,18 @@
 #version 330 core
 // Screen-door dither across a level-of-detail band: level L keeps pixels with lo <= bayer < hi, level
-// L + 1 the complementary ones, so the switch is gradual. Outside a band the window is [0, 1) and no
-// fragment is tested. Colour arrives lit and fogged from the vertex shader; alpha is the share of
-// the drawn width the real part covers (used by alpha-to-coverage when multisampling, ignored
-// otherwise: the plants are drawn opaque).
+// L + 1 the complementary ones, so the switch is gradual. Only plants in a band are drawn with the
+// test (compiled with DITHER); the others are drawn by the variant without it, which never
+// discards, so the rasteriser can test depth before shading. Colour arrives lit and fogged from
+// the vertex shader; alpha is the share of the drawn width the real part covers (used by
+// alpha-to-coverage when multisampling, ignored otherwise: the plants are drawn opaque).
 in vec3 vColour;
 in float vCover;
+#ifdef DITHER
 flat in vec2 vKeep;
+#endif
 out vec4 fragColour;
 
+#ifdef DITHER
 // 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
 float bayer4(vec2 p) {
     ivec2 q = ivec2(p) & 3;
@@ -16,13 +20,14 @@ float bayer4(vec2 p) {
     int m = ((a & 1) << 3) | ((q.y & 1) << 2) | (a & 2) | ((q.y & 2) >> 1);
     return (float(m) + 0.5) / 16.0;
 }
+#endif
 
 void main() {
-    if (vKeep.x > 0.0 || vKeep.y < 1.0) {
-        float b = bayer4(gl_FragCoord.xy);
-        if (b < vKeep.x || b >= vKeep.y) {
-            discard;
-        }
+#ifdef DITHER
+    float b = bayer4(gl_FragCoord.xy);
+    if (b < vKeep.x || b >= vKeep.y) {
+        discard;
     }
+#endif
     fragColour = vec4(vColour, vCover);
 }

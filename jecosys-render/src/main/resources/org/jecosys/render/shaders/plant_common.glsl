@@ -9,7 +9,8 @@
 // - stems face the camera (a ribbon turned about its own axis toward the eye), so they never vanish
 //   edge-on;
 // - flower parts (petals, heads) turn toward the viewer about their base by uFlowerTilt and are
-//   scaled up to at least uHeadPixels across within 15 m, fading to their real size at 30 m;
+//   scaled up to at least uHeadPixels across within 15 m, fading to their real size at 30 m (only
+//   in the programs compiled with FLOWERS, for species that have flower parts: the others skip it);
 // - colour varies per plant and per component: the resolve pass gives each component a hue turn, a
 //   brightness factor and the dryness of its patch (plant_resolve.vert); here tips and dry patches
 //   turn toward straw; light is sky ambient, sun diffuse, light through the blade when
@@ -83,6 +84,7 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     float pix = uPixelScale.x + d * uPixelScale.y;
     Placed r;
     r.cover = 1.0;
+#ifdef FLOWERS
     if (kind >= 2) {
         vec3 rel = pw + a * sw + b * nw;
         vec3 n = kind == 3 ? cross(sw, nw) : nw;  // a fan's disc faces along its axis
@@ -98,7 +100,9 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
         rel *= max(1.0, 0.5 * least * pix / max(aShape.y, 1e-4));
         r.world = base + rel;
         r.normal = n;
-    } else {
+    } else
+#endif
+    {
         float hw = length(sw);
         vec3 t = cross(sw, nw);                  // along the part
         vec3 across = cross(t, v);               // across the part, facing the eye

@@ -13,11 +13,19 @@
 // pixel's footprint at that distance, so once the two edges fall in the same pixels they add up to
 // the leaf's share of the pixel, and when they are a pixel or more apart each is about opaque.
 // Vertices on a centre line (a = 0) are opaque.
+//
+// Species with flower parts are drawn by the variant compiled with FLOWERS, which places every vertex
+// as plant.vert does. Without it (blades and stems only, most of a meadow) the vertex work is cut to
+// what a far component needs: its distance, pixel size and view direction are taken at its base (a
+// component is short against 15 m and more), and a ribbon's edge is moved to the least width along
+// the part of its half-width vector that crosses the view.
 
 #include "plant_common.glsl"
 
 flat out vec3 vColour;                           // fogged, one colour per line segment
+#ifdef DITHER
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
+#endif
 out float vCover;                                // alpha: the share of a pixel the ribbon covers
 
 void main() {
@@ -32,6 +40,7 @@ void main() {
     int u = t + int(aStride + 0.5);
     float w = c1.y;
     vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
+#ifdef FLOWERS
     vec3 side = vec3(0.0);
     vec3 normal = vec3(0.0);
     if (aVertex.z != 0.0) {
@@ -68,12 +77,33 @@ void main() {
             }
         }
     }
-    gl_Position = uViewProj * vec4(world, 1.0);
-    // the resolve pass lit the component at its middle (record texel 2); the base is darker
-    vColour = c2.rgb * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
     float halfWidth = abs(aVertex.z) * length(side);
     float pixel = max(uPixelScale.x + distance * uPixelScale.y, 1e-6);
     vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / pixel, 1.0 / 32.0, 1.0);
+#else
+    vec3 toEye = uEye - c0.xyz;
+    float distance = max(length(toEye), 1e-4);
+    float pixel = uPixelScale.x + distance * uPixelScale.y;
+    vec3 world = c0.xyz + rotY(p, c0.w, c1.z);
+    vCover = 1.0;
+    if (aVertex.z != 0.0) {
+        vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w) * thinWiden(distance);
+        vec3 offset = aVertex.z * rotY(side, c0.w, c1.z);
+        // the edge lines (a pixel wide each) move apart until together they span uMinPixels across
+        // the view: the part of the offset that crosses the view is lengthened to the least width
+        vec3 v = toEye / distance;
+        vec3 across = offset - dot(offset, v) * v;
+        float seen2 = dot(across, across);
+        float least = 0.5 * (uMinPixels - 1.0) * pixel;
+        world += least > 0.0 && seen2 < least * least && seen2 > 1e-18 ? across * (least * inversesqrt(seen2)) : offset;
+        vCover = clamp(abs(aVertex.z) * length(side) / pixel, 1.0 / 32.0, 1.0);
+    }
+#endif
+    gl_Position = uViewProj * vec4(world, 1.0);
+    // the resolve pass lit the component at its middle (record texel 2); the base is darker
+    vColour = c2.rgb * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
+#ifdef DITHER
     int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
+#endif
 }
