@@ -1,10 +1,10 @@
 #version 330 core
 // Plants drawn as lines (the far level, paper Table 3): the cheaper variant of plant.vert. The line
-// vertices are placed exactly as in plant.vert (plant_common.glsl, without widening: a line is a
+// vertices are placed as in plant.vert (plant_common.glsl, without widening: a line is a
 // pixel wide already, but the two edge lines of a ribbon move apart to span the same least width as
 // the triangle levels). Far away a component is a few pixels: the resolve pass has lit it once, at its
 // middle, with the same light as plant.vert (plant_light.glsl), into record texel 2; here only the
-// shade toward the base is applied, one flat colour per segment from its first vertex. The dither
+// shade toward the base is applied, one flat colour per segment from its provoking vertex. The dither
 // window is the same as for plant.vert.
 //
 // Coverage: a line is one pixel wide whatever the leaf's width, so far away, where a leaf is a
