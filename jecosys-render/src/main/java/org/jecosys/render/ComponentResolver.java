@@ -7,12 +7,10 @@ import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
-import static org.lwjgl.opengl.GL20C.glUniform3f;
-import static org.lwjgl.opengl.GL20C.glUniform4f;
-import static org.lwjgl.opengl.GL30C.glUniform1ui;
 import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
 import static org.lwjgl.opengl.GL30C.GL_RG32F;
 import static org.lwjgl.opengl.GL30C.GL_RG32I;
+import static org.lwjgl.opengl.GL30C.GL_RG32UI;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
 import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
@@ -67,8 +65,6 @@ final class ComponentResolver implements AutoCloseable {
     private final IntBuffer instanceStaging;
     private final int uInstanceBase;
     private final int uSlots;
-    private final int uVariation;
-    private final int uPatch;
     private final int uLines;
     private final int uSlotBase;
     private final int uDryTips;
@@ -77,8 +73,14 @@ final class ComponentResolver implements AutoCloseable {
     private final GlBufferTexture slotLookTexture;
     /** The texture unit of the species slots' looks (colour, vertex kind) during the resolve pass. */
     static final int SLOT_LOOK_UNIT = 6;
-    private final int uPatchSeed;
-    private final int uSeed;
+    /** The texture unit of the components' baked looks during the resolve pass. */
+    static final int LOOK_UNIT = 5;
+    private final ComponentLooks looks;
+    private final GlBuffer lookBuffer;
+    private final GlBufferTexture lookTexture;
+    private final int components;
+    /** The {@link PlantLook#version} the looks were baked for; -1 before the first bake. */
+    private int lookVersion = -1;
     private long uploadedBytes;
     private boolean closed;
 
@@ -99,6 +101,8 @@ final class ComponentResolver implements AutoCloseable {
                       int[][][] poseTexel, int components, long maxComponents, float[] slotLooks) {
         this.batches = batches;
         this.poseTexture = poseTexture;
+        this.components = components;
+        this.looks = new ComponentLooks(world);
         IntBuffer instances = null;
         try {
             resolveProgram = own(new GlProgram(t, "plant_resolve.vert", null, "vRecord0", "vRecord1",
@@ -120,6 +124,8 @@ final class ComponentResolver implements AutoCloseable {
             pointsVao = own(new GlVertexArray(t));
             slotLookBuffer = own(uploadFloats(t, slotLooks));
             slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
+            lookBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 8L * components));
+            lookTexture = own(new GlBufferTexture(t, lookBuffer, GL_RG32UI));
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree(instances);
             PlantRenderer.closeReverse(owned);
@@ -142,10 +148,7 @@ final class ComponentResolver implements AutoCloseable {
         }
         uInstanceBase = resolveProgram.uniform("uInstanceBase");
         uSlots = resolveProgram.uniform("uSlots");
-        uVariation = resolveProgram.uniform("uVariation");
-        uPatch = resolveProgram.uniform("uPatch");
-        uPatchSeed = resolveProgram.uniform("uPatchSeed");
-        uSeed = resolveProgram.uniform("uSeed");
+        glUniform1i(resolveProgram.uniform("uLooks"), LOOK_UNIT);
     }
 
     /** {@return the resolve program, for the lighting uniforms its line-level shading reads} */
@@ -201,15 +204,16 @@ final class ComponentResolver implements AutoCloseable {
     void resolve(PlantLook look) {
         glEnable(GL_RASTERIZER_DISCARD);
         resolveProgram.use();
-        glUniform3f(uPatch, 1f / look.patchScale(), look.patchStrength(), look.patchStrength() > 0 ? 1f : 0f);
-        glUniform1i(uPatchSeed, look.seed());
-        glUniform1ui(uSeed, look.seed());
+        if (look.version() != lookVersion) {
+            bakeLooks(look);
+        }
         poseTexture.bind(0);
         instanceTexture.bind(1);
         dynamicTexture.bind(2);
         staticTexture.bind(3);
         linkTexture.bind(4);
         slotLookTexture.bind(SLOT_LOOK_UNIT);
+        lookTexture.bind(LOOK_UNIT);
         pointsVao.bind();
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
         glBeginTransformFeedback(GL_POINTS);
@@ -220,7 +224,6 @@ final class ComponentResolver implements AutoCloseable {
             }
             int species = batches.speciesOf(li);
             int slots = batches.slots(species);
-            glUniform4f(uVariation, look.hue(species), look.value(species), 0f, 0f);
             glUniform1i(uLines, batches.lines(li) ? 1 : 0);
             glUniform1i(uSlotBase, slotBase[species]);
             glUniform1f(uDryTips, look.dryTips(species));
@@ -231,6 +234,23 @@ final class ComponentResolver implements AutoCloseable {
         glEndTransformFeedback();
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
         glDisable(GL_RASTERIZER_DISCARD);
+    }
+
+    /**
+     * Works out every component's look again ({@link ComponentLooks}) and uploads it: when the
+     * variation, patches or seed changed, not per frame. Render thread; allocates native memory for
+     * the staging copy and frees it.
+     */
+    private void bakeLooks(PlantLook look) {
+        IntBuffer staging = MemoryUtil.memAllocInt(2 * components);
+        try {
+            looks.bake(look, staging);
+            staging.flip();
+            lookBuffer.upload(0, staging);
+            lookVersion = look.version();
+        } finally {
+            MemoryUtil.memFree(staging);
+        }
     }
 
     /**

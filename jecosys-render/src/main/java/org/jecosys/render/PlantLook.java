@@ -6,9 +6,9 @@ import org.jecosys.math.Require;
  * The look of the plants, set through {@link PlantRenderer}: the light on them (sun and ambient), how
  * thin parts and flowers are kept visible, and the colour variation: per species the spread of a
  * plant's hue turn and brightness and how far its tips turn to straw, and for the whole scene the
- * healthy/dry patches (the ground's noise, {@link RenderSettings#patchLevel}) and the seed of it all. The resolve pass
- * turns it into each drawn component's hue turn, brightness factor and patch dryness. Render thread;
- * setters do not allocate.
+ * healthy/dry patches (the ground's noise, {@link RenderSettings#patchLevel}) and the seed of it all.
+ * {@code ComponentLooks} turns it into each component's hue turn, brightness factor and patch dryness
+ * when it changes ({@link #version}). Render thread; setters do not allocate.
  */
 final class PlantLook {
     /** Default patch size, metres. */
@@ -27,6 +27,8 @@ final class PlantLook {
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;
     private int seed;
+    /** Counts the changes of what the component looks are baked from: variation, patches, seed. */
+    private int version;
 
     /** No variation and no patches for {@code species} species. Allocates. */
     PlantLook(int species) {
@@ -38,7 +40,11 @@ final class PlantLook {
         Require.range("hue", hueDeg, 0, 60);
         Require.range("value", value, 0, 1);
         Require.range("dryTips", dryTips, 0, 1);
-        variation[3 * s] = (float) Math.toRadians(hueDeg);
+        float hue = (float) Math.toRadians(hueDeg);
+        if (hue != variation[3 * s] || value != variation[3 * s + 1]) {
+            version++;
+        }
+        variation[3 * s] = hue;
         variation[3 * s + 1] = value;
         variation[3 * s + 2] = dryTips;
     }
@@ -63,9 +69,20 @@ final class PlantLook {
     void setPatches(float scale, float strength, int seed) {
         Require.range("patchScale", scale, 0.5, 1000);
         Require.range("patchStrength", strength, 0, 1);
+        if (scale != patchScale || strength != patchStrength || seed != this.seed) {
+            version++;
+        }
         this.patchScale = scale;
         this.patchStrength = strength;
         this.seed = seed;
+    }
+
+    /**
+     * {@return a number that changes whenever the hue or brightness spread of a species, the patches
+     * or the seed change: what each component's baked look ({@code ComponentLooks}) is made from}
+     */
+    int version() {
+        return version;
     }
 
     /** {@return the hue turn's standard deviation of species s, radians} */

@@ -372,8 +372,16 @@ public final class RenderSettings {
      * @return the level, in [0, 1]
      */
     public float patchLevel(float x, float z) {
-        float n = 0.65f * valueNoise(x / patchScale, z / patchScale, patchSeed)
-                + 0.35f * valueNoise(2.7f * x / patchScale, 2.7f * z / patchScale, patchSeed + 1013);
+        return patchNoise(x / patchScale, z / patchScale, patchSeed);
+    }
+
+    /**
+     * {@link #patchLevel} at a point given in patch units (metres / patch size): two octaves of value
+     * noise made into patches with a smooth step; {@code patches.glsl} computes the same function.
+     * Any thread; no allocation.
+     */
+    static float patchNoise(float px, float pz, int seed) {
+        float n = 0.65f * valueNoise(px, pz, seed) + 0.35f * valueNoise(2.7f * px, 2.7f * pz, seed + 1013);
         float t = Math.max(0, Math.min(1, (n - 0.35f) / 0.3f));
         return t * t * (3 - 2 * t);
     }

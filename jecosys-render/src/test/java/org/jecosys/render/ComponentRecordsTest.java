@@ -331,6 +331,52 @@ class ComponentRecordsTest {
         }
     }
 
+    @Test
+    void theResolvePassReadsTheLooksBakedOnTheCpuComponentByComponent() {
+        try {
+            for (int s = 0; s < models.size(); s++) {
+                renderer.setVariation(s, 12f, 0.2f, 0f);
+            }
+            renderer.setPatches(4f, 0.8f, 7);
+            draw();
+            renderer.readRecords(rec);
+            // the same function, by an independent path: the public patch noise at each root's base
+            RenderSettings patches = new RenderSettings().patches(4f, 0.8f, 7);
+            int[] checked = new int[1];
+            forEachRecord((li, i, slot, r) -> {
+                if (batches.lines(li)) {
+                    return;
+                }
+                int p = batches.plant(li, i);
+                int first = world.firstComponent(p);
+                int ph = ComponentLooks.hash(first * 0x9e3779b9 ^ 7);
+                int ch = ComponentLooks.hash(ph ^ (slot + 1) * 0x85ebca6b);
+                double hue = Math.toRadians(12) * (ComponentLooks.spread(ph, 0) + 0.35 * ComponentLooks.spread(ch, 0));
+                assertEquals(Math.cos(hue), rec.get(r + 8), 1e-5, "cos of the hue turn");
+                assertEquals(Math.sin(hue), rec.get(r + 9), 1e-5, "sin of the hue turn");
+                double value = 1 + 0.2 * (ComponentLooks.spread(ph, 10) + 0.3 * ComponentLooks.spread(ch, 10));
+                assertEquals(Math.max(0.3, Math.min(1.8, value)), rec.get(r + 10), 1e-4, "brightness");
+                SpeciesModel m = models.get(world.plantSpecies(p));
+                if (m.slotParent(slot) < 0) {
+                    double rest = world.plantRestAzimuth(p);
+                    double x = world.plantX(p) + m.slotBaseX(slot) * Math.cos(rest) - m.slotBaseZ(slot) * Math.sin(rest);
+                    double z = world.plantZ(p) + m.slotBaseX(slot) * Math.sin(rest) + m.slotBaseZ(slot) * Math.cos(rest);
+                    assertEquals(0.8 * patches.patchLevel((float) x, (float) z), rec.get(r + 11), 2e-3,
+                            "dryness of the patch under component " + (first + slot));
+                    checked[0]++;
+                }
+            });
+            assertTrue(checked[0] > 50, "root components checked: " + checked[0]);
+        } finally {
+            for (int s = 0; s < models.size(); s++) {
+                renderer.setVariation(s, 0f, 0f, 0f);
+            }
+            renderer.setPatches(20f, 0f, 0);
+            draw();
+            renderer.readRecords(rec);
+        }
+    }
+
     private interface RecordCheck {
         void check(int list, int i, int slot, int at);
     }

@@ -11,7 +11,8 @@
 //
 // Record: r0 = (base xyz, cos azimuth), r1 = (texel of pose k point 0, blend weight w toward
 // pose k + 1, sin azimuth, dither window), r2 = (cos and sin of the component's hue turn, its
-// brightness factor, the dryness of the plant's patch): the colour variation, seeded (uSeed); for a
+// brightness factor, the dryness of the plant's patch): the colour variation, worked out per component
+// on the CPU when the look changes (ComponentLooks, texture uLooks), not per frame; for a
 // line (far) level r2 is instead the component's colour lit once at its middle point (rgb, 1).
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
@@ -22,7 +23,7 @@ uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point 
 uniform int uInstanceBase;                       // first instance record of this draw list
 uniform int uSlots;                              // components per plant of this species
 
-uniform vec4 uVariation;                         // this species: hue s.d. (radians), brightness s.d., -, -
+uniform usamplerBuffer uLooks;                   // RG32UI per component: its baked colour variation
 uniform int uLines;                              // 1: this list is a line level (texel 2 = lit colour)
 uniform samplerBuffer uSlotLooks;                // RGBA32F per species slot: colour, vertex kind
 uniform int uSlotBase;                           // first slot look of this list's species
@@ -31,8 +32,6 @@ out vec4 vRecord0;
 out vec4 vRecord1;
 out vec4 vRecord2;
 
-#include "plant_noise.glsl"
-#include "patches.glsl"
 #include "plant_light.glsl"
 
 struct Pose {
@@ -64,11 +63,9 @@ void main() {
     Pose own = pose(component, link, st.w);
     int stride = link.y;                         // texels per pose of this component (3 x points)
     vec3 base = vec3(0.0);
-    vec3 root = st.xyz;
     for (int depth = 0; depth < 4; depth++) {
         if (link.x < 0) {
             base += st.xyz;
-            root = st.xyz;
             break;
         }
         int parent = link.x;
@@ -81,14 +78,11 @@ void main() {
     }
     vRecord0 = vec4(base, own.c);
     vRecord1 = vec4(float(own.texel), own.w, own.s, float(instance.y));
-    // colour variation: the plant (named by its first component) and the component each draw a hue
-    // turn and a brightness factor; the patch noise at the plant's root gives its dryness
-    uint ph = hash(uint(instance.x) * 0x9e3779b9u ^ uSeed);
-    uint ch = hash(ph ^ (uint(slot) + 1u) * 0x85ebca6bu);
-    float hue = uVariation.x * (spread(ph, 0) + 0.35 * spread(ch, 0));
-    float value = clamp(1.0 + uVariation.y * (spread(ph, 10) + 0.3 * spread(ch, 10)), 0.3, 1.8);
-    float dry = uPatch.z > 0.5 ? uPatch.y * patchLevel(root.xz) : 0.0;
-    vec4 look = vec4(cos(hue), sin(hue), value, dry);
+    // colour variation, baked per component on the CPU when the look changes (ComponentLooks): the
+    // hue turn (radians, float bits), brightness factor x 32768 and patch dryness x 65535
+    uvec2 baked = texelFetch(uLooks, component).xy;
+    float hue = uintBitsToFloat(baked.x);
+    vec4 look = vec4(cos(hue), sin(hue), float(baked.y & 0xFFFFu) / 32768.0, float(baked.y >> 16) / 65535.0);
     if (uLines == 0) {
         vRecord2 = look;
     } else {
