@@ -77,8 +77,9 @@ import org.lwjgl.system.MemoryUtil;
  * same framebuffer. So: the same numbers of triangles and lines at the same places and sizes, with no
  * pose fetch, no animation, no lighting, no fog and no dither. Render only = the scene renderer drawing
  * the latest frame again, no step. A breakdown of the render-only frame follows (terrain only, plants
- * only, per level, per-frame CPU/upload only, tiny viewport for the vertex share, no dither band), one
- * block each.
+ * only, per level, per-frame CPU/upload only, tiny viewport for the vertex share, no dither band) and
+ * of the bare frame (its terrain alone, with its triangles, with its lines: against the scene's
+ * levels), one block each.
  *
  * <p>Writes target/bench/render.md. Run with {@code mvn -B verify -Pbench
  * -Dtest=RenderBenchmarkTest -Dsurefire.failIfNoSpecifiedTests=false}; {@code -Djecosys.renderRounds=N}
@@ -100,6 +101,9 @@ class RenderBenchmarkTest {
     private static final int OFF = 2;
     private static final int RENDER = 3;
     private static final int BARE = 4;
+    /** Bare draws: every primitive, or the terrain alone. */
+    private static final int ALL = -1;
+    private static final int TERRAIN = -2;
 
     @Test
     void renderBenchmark() throws Exception {
@@ -127,8 +131,9 @@ class RenderBenchmarkTest {
             parts.append("\n## Where a frame's time goes (render only, ms per frame, one block of ").append(FRAMES)
                     .append(" frames after ").append(WARM).append(")\n\n")
                     .append("| scene | full | clear only | terrain only | plants only | plants CPU+upload, no draw |")
-                    .append(" plants by level (L0/L1/L2/L3) | full, 16x9 viewport | full, no dither band | bare 16x9 |\n")
-                    .append("|---|---|---|---|---|---|---|---|---|---|\n");
+                    .append(" plants by level (L0/L1/L2/L3) | full, 16x9 viewport | full, no dither band | bare 16x9 |")
+                    .append(" bare: terrain only / with triangles / with lines |\n")
+                    .append("|---|---|---|---|---|---|---|---|---|---|---|\n");
             for (String name : List.of("c1.xml", "c2.xml", "c3.xml", "meadow.xml")) {
                 SceneDef def = RenderScenes.load(name);
                 World world = RenderScenes.build(def);
@@ -175,7 +180,7 @@ class RenderBenchmarkTest {
                             () -> { },
                         };
                         Runnable[] frame = {stepAndRender, stepAndRender, stepAndRender,
-                            () -> r.render(sim.latestFrame(), cam, W, H), () -> bare.draw(W, H)};
+                            () -> r.render(sim.latestFrame(), cam, W, H), () -> bare.draw(W, H, ALL)};
                         Rounds m = new Rounds(CONFIGS.length, rounds(big), blockFrames(big));
                         double[] cpuMs = new double[rounds(big) * blockFrames(big)];
                         int cpuN = 0;
@@ -212,8 +217,10 @@ class RenderBenchmarkTest {
                                 m.fps(OFF), m.ratio(OFF, S3), median(cpuMs, cpuN), step1, step3, stepOff,
                                 (renderMs + step1) / (renderMs + step3), (renderMs + stepOff) / (renderMs + step3),
                                 m.fps(RENDER), m.fps(BARE), m.ratio(BARE, S3), m.ratio(BARE, RENDER)));
-                        double bareTiny = bare.ms(16, 9);
-                        parts.append(breakdown(def.name(), r, sim.latestFrame(), cam)).append(String.format(" %.1f |%n", bareTiny));
+                        double bareTiny = bare.ms(16, 9, ALL);
+                        parts.append(breakdown(def.name(), r, sim.latestFrame(), cam)).append(String.format(
+                                " %.1f | %.1f / %.1f / %.1f |%n", bareTiny, bare.ms(W, H, TERRAIN), bare.ms(W, H, GL_TRIANGLES),
+                                bare.ms(W, H, GL_LINES)));
                     }
                 }
                 assertEquals(0, gl.tracker().live() - 3);
@@ -488,8 +495,12 @@ class RenderBenchmarkTest {
             draws.add(new int[] {primitive, count, instances});
         }
 
-        /** One bare frame over a {@code w x h} viewport: clear, the draws, glFinish left to the caller. */
-        void draw(int w, int h) {
+        /**
+         * One bare frame over a {@code w x h} viewport: clear, the terrain and the plant draws of the
+         * given primitive ({@link #ALL}, GL_TRIANGLES, GL_LINES or {@link #TERRAIN}: none), glFinish
+         * left to the caller.
+         */
+        void draw(int w, int h, int primitive) {
             prog.use();
             glUniformMatrix4fv(prog.uniform("uViewProj"), false, viewProj);
             glViewport(0, 0, w, h);
@@ -498,6 +509,9 @@ class RenderBenchmarkTest {
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             for (int d = 0; d < draws.size(); d++) {
                 int[] dr = draws.get(d);
+                if (d > 0 && primitive != ALL && primitive != dr[0]) {
+                    continue; // draw 0 is the terrain
+                }
                 vaos.get(d).bind();
                 glDrawElementsInstanced(dr[0], dr[1], GL_UNSIGNED_INT, 0L, dr[2]);
             }
@@ -505,14 +519,14 @@ class RenderBenchmarkTest {
             glBindVertexArray(0);
         }
 
-        /** Milliseconds per bare frame over a {@code w x h} viewport, one block. */
-        double ms(int w, int h) {
+        /** Milliseconds per bare frame over a {@code w x h} viewport, one block (see {@link #draw}). */
+        double ms(int w, int h, int primitive) {
             long t0 = 0;
             for (int i = 0; i < WARM + FRAMES; i++) {
                 if (i == WARM) {
                     t0 = System.nanoTime();
                 }
-                draw(w, h);
+                draw(w, h, primitive);
                 glFinish();
             }
             return (System.nanoTime() - t0) / 1e6 / FRAMES;
