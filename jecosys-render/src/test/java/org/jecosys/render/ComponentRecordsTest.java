@@ -269,12 +269,7 @@ class ComponentRecordsTest {
             assertEquals(0f, rec.get(r + 11), 0f);
         });
         try {
-            for (int s = 0; s < models.size(); s++) {
-                renderer.setVariation(s, 10f, 0.15f, 0f);
-            }
-            renderer.setPatches(5f, 1f, 42);
-            draw();
-            renderer.readRecords(rec);
+            applyLook(10f, 0.15f, 5f, 1f, 42);
             double[] sum = new double[4];
             double[] sq = new double[4];
             int[] n = new int[1];
@@ -322,24 +317,14 @@ class ComponentRecordsTest {
                 org.lwjgl.system.MemoryUtil.memFree(first);
             }
         } finally {
-            for (int s = 0; s < models.size(); s++) {
-                renderer.setVariation(s, 0f, 0f, 0f);
-            }
-            renderer.setPatches(20f, 0f, 0);
-            draw();
-            renderer.readRecords(rec);
+            applyLook(0f, 0f, 20f, 0f, 0);
         }
     }
 
     @Test
     void theResolvePassReadsTheLooksBakedOnTheCpuComponentByComponent() {
         try {
-            for (int s = 0; s < models.size(); s++) {
-                renderer.setVariation(s, 12f, 0.2f, 0f);
-            }
-            renderer.setPatches(4f, 0.8f, 7);
-            draw();
-            renderer.readRecords(rec);
+            applyLook(12f, 0.2f, 4f, 0.8f, 7);
             // the same function, by an independent path: the public patch noise at each root's base
             RenderSettings patches = new RenderSettings().patches(4f, 0.8f, 7);
             int[] checked = new int[1];
@@ -368,13 +353,18 @@ class ComponentRecordsTest {
             });
             assertTrue(checked[0] > 50, "root components checked: " + checked[0]);
         } finally {
-            for (int s = 0; s < models.size(); s++) {
-                renderer.setVariation(s, 0f, 0f, 0f);
-            }
-            renderer.setPatches(20f, 0f, 0);
-            draw();
-            renderer.readRecords(rec);
+            applyLook(0f, 0f, 20f, 0f, 0);
         }
+    }
+
+    /** Sets every species' hue and brightness spread and the patches, draws, and reads the records back. */
+    private void applyLook(float hueDeg, float value, float patchScale, float patchStrength, int seed) {
+        for (int s = 0; s < models.size(); s++) {
+            renderer.setVariation(s, hueDeg, value, 0f);
+        }
+        renderer.setPatches(patchScale, patchStrength, seed);
+        draw();
+        renderer.readRecords(rec);
     }
 
     private interface RecordCheck {
