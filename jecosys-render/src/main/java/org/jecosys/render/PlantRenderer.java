@@ -46,8 +46,10 @@ import org.lwjgl.system.MemoryUtil;
  * component) and 8 bytes per drawn plant and level, resolves on the GPU (transform feedback,
  * {@code plant_resolve.vert}) each drawn component's record (3 texels: base, cos/sin of the bend
  * azimuth, pose texel and weight, dither window, and its colour variation: hue turn, brightness,
- * patch dryness), then issues one instanced draw per species and
- * level (triangles near, lines far: Table 3). Triangle
+ * patch dryness, worked out on the CPU only when the look changes), then issues per species and
+ * level (triangles near, lines far: Table 3) one instanced draw of the plants drawn whole and one
+ * of those in a transition band, the only ones whose shaders have the dither test (programs
+ * compiled with {@code DITHER}; species with flower parts use the {@code FLOWERS} variants). Triangle
  * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
  * and lights the same vertices and writes one flat colour per segment, with the share of a pixel the
  * leaf's true width covers as opacity: the line levels are drawn last, blended
