@@ -152,17 +152,7 @@ public final class PlantRenderer implements AutoCloseable {
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             for (int k = 0; k < passes.length; k++) {
-                List<String> d = new ArrayList<>(2);
-                if ((k & DITHER) != 0) {
-                    d.add("DITHER");
-                }
-                if ((k & FLOWERS) != 0) {
-                    d.add("FLOWERS");
-                }
-                String[] defines = d.toArray(new String[0]);
-                programs[k] = own((k & LINES) != 0
-                        ? GlProgram.variant(gl.tracker(), "plant_line.vert", "plant_line.frag", defines)
-                        : GlProgram.variant(gl.tracker(), "plant.vert", "plant.frag", defines));
+                programs[k] = own(drawProgram(gl.tracker(), k));
             }
             poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
@@ -198,6 +188,21 @@ public final class PlantRenderer implements AutoCloseable {
             VariationDef v = models.get(s).def().variation();
             look.setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
         }
+    }
+
+    /** The draw program of pass {@code k} ({@link #DITHER} | {@link #LINES} | {@link #FLOWERS}). */
+    private static GlProgram drawProgram(GlTracker t, int k) {
+        List<String> d = new ArrayList<>(2);
+        if ((k & DITHER) != 0) {
+            d.add("DITHER");
+        }
+        if ((k & FLOWERS) != 0) {
+            d.add("FLOWERS");
+        }
+        String[] defines = d.toArray(new String[0]);
+        return (k & LINES) != 0
+                ? GlProgram.variant(t, "plant_line.vert", "plant_line.frag", defines)
+                : GlProgram.variant(t, "plant.vert", "plant.frag", defines);
     }
 
     private <T extends AutoCloseable> T own(T resource) {
