@@ -51,14 +51,16 @@ class CommandFloodTest {
                             switch ((int) (i % 5)) {
                                 case 0 -> agent = sim.addFlow(FlowDef.point("p" + me + "-" + i, FlowKind.SOURCE, 1, 2, 3));
                                 case 1 -> {
-                                    if (agent != null) {
-                                        sim.removeFlow(agent);
+                                    if (agent == null) {
+                                        continue; // nothing sent, nothing to count
                                     }
+                                    sim.removeFlow(agent);
                                 }
                                 case 2 -> {
-                                    if (agent != null) {
-                                        sim.moveAgent(agent, i % 7, 3);
+                                    if (agent == null) {
+                                        continue;
                                     }
+                                    sim.moveAgent(agent, i % 7, 3);
                                 }
                                 case 3 -> sim.blast("b" + me + "-" + i, 0, 0, 50, 0.05);
                                 default -> sim.setMode(i % 2 == 0 ? AnimationMode.CONSTRAINT : AnimationMode.RANDOM);
