@@ -3,22 +3,13 @@ package org.jecosys.render;
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
-import static org.lwjgl.opengl.GL11C.GL_LINES;
-import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
-import static org.lwjgl.opengl.GL11C.GL_UNSIGNED_INT;
 import static org.lwjgl.opengl.GL11C.glBlendFunc;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL20C.glUniform1f;
-import static org.lwjgl.opengl.GL20C.glUniform2f;
-import static org.lwjgl.opengl.GL20C.glUniform1i;
-import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
-import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
-import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
 
 import java.nio.FloatBuffer;
 import java.util.ArrayList;
@@ -56,7 +47,7 @@ import org.lwjgl.system.MemoryUtil;
  * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
  * The per-component uploads and the resolve pass live in {@code ComponentResolver}, which this
- * renderer owns and closes.
+ * renderer owns and closes; the draw programs' variants and the draws in {@code PlantPasses}.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
@@ -70,9 +61,6 @@ public final class PlantRenderer implements AutoCloseable {
      */
     public static final String PATH = "GL 3.3 core: worker-written states, GPU resolve (transform feedback), "
             + "instanced draws";
-    private static final int DITHER = 1;
-    private static final int LINES = 2;
-    private static final int FLOWERS = 4;
     /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
     static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
@@ -94,13 +82,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final int[] indexCount;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
-    /**
-     * The draw programs and their uniforms, indexed by {@link #DITHER} | {@link #LINES} |
-     * {@link #FLOWERS}: triangle or line levels, with or without the dither test, for species with
-     * or without flower parts.
-     */
-    private final PlantUniforms[] passes = new PlantUniforms[8];
-    private final boolean[] flowers;
+    private final PlantPasses passes;
     private final PlantUniforms resolveUniforms;
     private final GlInts query = new GlInts();
     private final PlantLook look;
@@ -136,7 +118,7 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         }
-        flowers = new boolean[models.size()];
+        boolean[] flowers = new boolean[models.size()];
         for (int s = 0; s < flowers.length; s++) {
             flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));
         }
@@ -145,14 +127,14 @@ public final class PlantRenderer implements AutoCloseable {
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
         FloatBuffer mat = null;
-        GlProgram[] programs = new GlProgram[passes.length];
+        GlProgram[] programs = new GlProgram[PlantPasses.COUNT];
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
             checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
-            for (int k = 0; k < passes.length; k++) {
-                programs[k] = own(drawProgram(gl.tracker(), k));
+            for (int k = 0; k < programs.length; k++) {
+                programs[k] = own(PlantPasses.compile(gl.tracker(), k));
             }
             poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
@@ -180,29 +162,12 @@ public final class PlantRenderer implements AutoCloseable {
         resolveUniforms = new PlantUniforms(resolver.program());
         // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
         // use here alive past its deletion
-        for (int k = 0; k < passes.length; k++) {
-            passes[k] = new PlantUniforms(programs[k]);
-        }
+        passes = new PlantPasses(programs, flowers);
         look = new PlantLook(models.size());
         for (int s = 0; s < models.size(); s++) {
             VariationDef v = models.get(s).def().variation();
             look.setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
         }
-    }
-
-    /** The draw program of pass {@code k} ({@link #DITHER} | {@link #LINES} | {@link #FLOWERS}). */
-    private static GlProgram drawProgram(GlTracker t, int k) {
-        List<String> d = new ArrayList<>(2);
-        if ((k & DITHER) != 0) {
-            d.add("DITHER");
-        }
-        if ((k & FLOWERS) != 0) {
-            d.add("FLOWERS");
-        }
-        String[] defines = d.toArray(new String[0]);
-        return (k & LINES) != 0
-                ? GlProgram.variant(t, "plant_line.vert", "plant_line.frag", defines)
-                : GlProgram.variant(t, "plant.vert", "plant.frag", defines);
     }
 
     private <T extends AutoCloseable> T own(T resource) {
@@ -369,16 +334,11 @@ public final class PlantRenderer implements AutoCloseable {
         resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
-        for (PlantUniforms u : passes) {
-            u.program.use();
-            u.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-            glUniform2f(u.pixelScale, px, py);
-            glUniform3f(u.thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
-        }
+        passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
         poseTexture.bind(0);
         resolver.bindRecords(1);
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        drawLists(false);
+        draws += passes.draw(false, batches, vaos, indexCount, look, levelMask);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
 
@@ -397,56 +357,18 @@ public final class PlantRenderer implements AutoCloseable {
         if (query.get(GL13C.GL_SAMPLES) > 1) {
             // multisampled: coverage to samples, as the triangle levels, depth written
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            drawLists(true);
+            draws += passes.draw(true, batches, vaos, indexCount, look, levelMask);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             return;
         }
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
-        drawLists(true);
+        draws += passes.draw(true, batches, vaos, indexCount, look, levelMask);
         glDepthMask(true);
         glDisable(GL_BLEND);
     }
 
-    /**
-     * The lists of one primitive: per list one instanced draw of its plants drawn whole, with a
-     * program without the dither test, then one of its plants in a transition band, with it; species
-     * with flower parts with the programs that place them.
-     */
-    private void drawLists(boolean lines) {
-        for (int k = 0; k < 4; k++) {
-            boolean dither = (k & 1) != 0;
-            boolean flowerPass = (k & 2) != 0;
-            PlantUniforms u = passes[(lines ? LINES : 0) | (dither ? DITHER : 0) | (flowerPass ? FLOWERS : 0)];
-            boolean inUse = false;
-            for (int s = 0; s < batches.speciesCount(); s++) {
-                if (flowers[s] != flowerPass) {
-                    continue;
-                }
-                for (int l = 0, levels = batches.levels(s); l < levels; l++) {
-                    int li = batches.list(s, l);
-                    int whole = batches.whole(li);
-                    int first = dither ? whole : 0;
-                    int n = dither ? batches.count(li) - whole : whole;
-                    if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
-                        continue;
-                    }
-                    if (!inUse) {
-                        u.program.use();
-                        inUse = true;
-                    }
-                    glUniform1i(u.slotCount, batches.slots(s));
-                    glUniform1f(u.dryTips, look.dryTips(s));
-                    glUniform1i(u.componentBase, batches.componentOffset(li) + first * batches.slots(s));
-                    vaos[li].bind();
-                    glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
-                    draws++;
-                }
-            }
-        }
-        glBindVertexArray(0);
-    }
 
     /**
      * Reads back the component records of the last {@link #drawNear} (tests). Render thread; waits
