@@ -19,9 +19,9 @@ import org.jecosys.sim.World;
  * Within a list the plants drawn whole (outside any band, window {@link #WHOLE}) come first and the
  * plants in a band after them, each group in plant order: the renderer draws the first group with
  * programs that have no dither test, which keeps early depth testing on in the rasteriser (a shader
- * that may discard loses it on llvmpipe), and only the few in a band with the dither test
- * ({@link #whole}). Counters: triangles and lines submitted = sum over lists of instances × that level's primitive
- * count.
+ * that may discard loses it on llvmpipe), and only those in a band with the dither test
+ * ({@link #whole}). Counters: triangles and lines submitted = sum over lists of instances × that
+ * level's primitive count.
  *
  * <p>Render thread (or any single thread); {@link #update} and {@link #writeInstances} allocate
  * nothing. Lists are stored in preallocated arrays sized for every plant at every level.
