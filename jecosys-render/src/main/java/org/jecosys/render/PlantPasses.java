@@ -37,6 +37,8 @@ final class PlantPasses {
 
     private final PlantUniforms[] passes = new PlantUniforms[COUNT];
     private final boolean[] flowers;
+    private int draws;
+    private long instances;
 
     /**
      * Compiles program {@code k} of {@link #COUNT} (bit 0: the dither test, bit 1: line levels, bit 2:
@@ -93,11 +95,10 @@ final class PlantPasses {
      * @param indexCount per list: the mesh's index count
      * @param look       the plants' look (dry tips per species)
      * @param levelMask  bit l set: draw level l
-     * @return the number of draw calls issued
+     * @see #draws()
      */
-    int draw(boolean lines, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
-             int levelMask) {
-        int draws = 0;
+    void draw(boolean lines, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+              int levelMask) {
         for (int k = 0; k < 4; k++) {
             boolean dither = (k & 1) != 0;
             boolean flowerPass = (k & 2) != 0;
@@ -125,10 +126,26 @@ final class PlantPasses {
                     vaos[li].bind();
                     glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
                     draws++;
+                    instances += n;
                 }
             }
         }
         glBindVertexArray(0);
+    }
+
+    /** Starts counting the draws and instances of a frame anew. */
+    void resetCounts() {
+        draws = 0;
+        instances = 0;
+    }
+
+    /** {@return the instanced draw calls issued since {@link #resetCounts}} */
+    int draws() {
         return draws;
+    }
+
+    /** {@return the instances (plants at a level) drawn since {@link #resetCounts}} */
+    long instances() {
+        return instances;
     }
 }

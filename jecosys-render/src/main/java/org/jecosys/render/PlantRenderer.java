@@ -87,7 +87,6 @@ public final class PlantRenderer implements AutoCloseable {
     private final GlInts query = new GlInts();
     private final PlantLook look;
     private boolean pending;
-    private int draws;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
     private boolean closed;
@@ -267,7 +266,12 @@ public final class PlantRenderer implements AutoCloseable {
 
     /** {@return the number of instanced draw calls issued by the last {@link #draw}} */
     public int drawCalls() {
-        return draws;
+        return passes.draws();
+    }
+
+    /** {@return the instances (plants at a level) drawn by the last {@link #draw}: tests} */
+    long instancesDrawn() {
+        return passes.instances();
     }
 
     /**
@@ -318,7 +322,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
         batches.update(frame);
-        draws = 0;
+        passes.resetCounts();
         pending = batches.instances() > 0;
         if (!pending) {
             return;
@@ -338,7 +342,7 @@ public final class PlantRenderer implements AutoCloseable {
         poseTexture.bind(0);
         resolver.bindRecords(1);
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        draws += passes.draw(false, batches, vaos, indexCount, look, levelMask);
+        passes.draw(false, batches, vaos, indexCount, look, levelMask);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
 
@@ -357,14 +361,14 @@ public final class PlantRenderer implements AutoCloseable {
         if (query.get(GL13C.GL_SAMPLES) > 1) {
             // multisampled: coverage to samples, as the triangle levels, depth written
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            draws += passes.draw(true, batches, vaos, indexCount, look, levelMask);
+            passes.draw(true, batches, vaos, indexCount, look, levelMask);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             return;
         }
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
-        draws += passes.draw(true, batches, vaos, indexCount, look, levelMask);
+        passes.draw(true, batches, vaos, indexCount, look, levelMask);
         glDepthMask(true);
         glDisable(GL_BLEND);
     }

@@ -357,6 +357,36 @@ class ComponentRecordsTest {
         }
     }
 
+    @Test
+    void everyListedPlantIsDrawnOnceAtEachOfItsLevelsInTwoDrawsAtMostPerList() {
+        double transition = decision.transition();
+        try {
+            // a wide band: plants in it are listed at two levels, and go through the dithered draws
+            decision.setTransition(3.0);
+            decision.decideAll(cam, frame);
+            draw();
+            long listed = 0;
+            int calls = 0;
+            int banded = 0;
+            for (int li = 0; li < batches.listCount(); li++) {
+                int whole = batches.whole(li);
+                int inBand = batches.count(li) - whole;
+                listed += batches.count(li);
+                calls += (whole > 0 ? 1 : 0) + (inBand > 0 ? 1 : 0);
+                banded += inBand;
+            }
+            assertTrue(banded > 4, "plants in a band: " + banded);
+            assertEquals(batches.instances(), listed);
+            assertEquals(listed, renderer.instancesDrawn(), "every listed plant drawn once per list");
+            assertEquals(calls, renderer.drawCalls(), "one draw for the whole plants, one for those in a band");
+        } finally {
+            decision.setTransition(transition);
+            decision.decideAll(cam, frame);
+            draw();
+            renderer.readRecords(rec);
+        }
+    }
+
     /** Sets every species' hue and brightness spread and the patches, draws, and reads the records back. */
     private void applyLook(float hueDeg, float value, float patchScale, float patchStrength, int seed) {
         for (int s = 0; s < models.size(); s++) {
