@@ -143,24 +143,7 @@ final class Gallery {
     /** 1 m south of the yellow flowers' densest patch, eye 0.6 m up, looking at the flower heads. */
     private static ViewCamera closeUp(SceneDef def, World world, double aspect) {
         int species = Math.min(1, world.plants().species().size() - 1);
-        int best = 0;
-        int most = -1;
-        for (int p = 0; p < world.plantCount(); p++) {
-            if (world.plantSpecies(p) != species) {
-                continue;
-            }
-            int n = 0;
-            for (int q = 0; q < world.plantCount(); q++) {
-                if (world.plantSpecies(q) == species && Math.hypot(world.plantX(p) - world.plantX(q),
-                        world.plantZ(p) - world.plantZ(q)) < 1) {
-                    n++;
-                }
-            }
-            if (n > most) {
-                most = n;
-                best = p;
-            }
-        }
+        int best = Math.max(0, world.densestPlant(species, 1));
         double x = world.plantX(best);
         double z = world.plantZ(best) + 1;
         double eye = world.terrain().heightfield().height(x, z) + 0.6;

@@ -306,6 +306,37 @@ public final class World {
     }
 
     /**
+     * {@return the plant of species {@code s} with the most plants of that species within
+     * {@code radius} metres of it (horizontally), the middle of the species' densest patch; ties go
+     * to the lowest index; -1 when the species has no plant}. For tools that place a camera (the
+     * gallery, look tests): quadratic in the number of plants, no allocation, any thread.
+     *
+     * @param s      index of the species in the def's species list
+     * @param radius metres, &gt; 0
+     */
+    public int densestPlant(int s, double radius) {
+        Require.positive("radius", radius);
+        int best = -1;
+        int most = -1;
+        for (int p = 0; p < this.species.length; p++) {
+            if (this.species[p] != s) {
+                continue;
+            }
+            int n = 0;
+            for (int q = 0; q < this.species.length; q++) {
+                if (this.species[q] == s && Math.hypot(plantX(p) - plantX(q), plantZ(p) - plantZ(q)) < radius) {
+                    n++;
+                }
+            }
+            if (n > most) {
+                most = n;
+                best = p;
+            }
+        }
+        return best;
+    }
+
+    /**
      * {@return the plant's shape variant in its species model}
      *
      * @param p world plant index, in [0, plantCount())

@@ -53,7 +53,7 @@ class FlowerHeadsTest {
                 if (MeadowSpots.stalkSlot(m) < 0 || !hasHead(m)) {
                     continue;
                 }
-                int c = MeadowSpots.densest(world, s, 2);
+                int c = world.densestPlant(s, 2);
                 double x = world.plantX(c);
                 double y = world.plantY(c);
                 double z = world.plantZ(c);

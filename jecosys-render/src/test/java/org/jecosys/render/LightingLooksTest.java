@@ -39,7 +39,7 @@ class LightingLooksTest {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
         int grass = 0; // the meadow's first species, grass tuft A
-        int best = MeadowSpots.densest(world, grass, 2);
+        int best = world.densestPlant(grass, 2);
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             double[] sun = sunDirection(s.renderer);
             double sunYaw = Math.atan2(sun[0], -sun[2]); // yaw looking along the sun's horizontal direction

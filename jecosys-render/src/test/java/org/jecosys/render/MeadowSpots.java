@@ -11,33 +11,6 @@ final class MeadowSpots {
     private MeadowSpots() {
     }
 
-    /**
-     * The plant of the species that has most plants of its own species within {@code radius} metres
-     * (the middle of the densest patch); ties go to the lowest index. -1 when the species has none.
-     * O(n^2) over that species' plants.
-     */
-    static int densest(World world, int species, double radius) {
-        int best = -1;
-        int most = -1;
-        for (int p = 0; p < world.plantCount(); p++) {
-            if (world.plantSpecies(p) != species) {
-                continue;
-            }
-            int n = 0;
-            for (int q = 0; q < world.plantCount(); q++) {
-                if (world.plantSpecies(q) == species && Math.hypot(world.plantX(p) - world.plantX(q),
-                        world.plantZ(p) - world.plantZ(q)) < radius) {
-                    n++;
-                }
-            }
-            if (n > most) {
-                most = n;
-                best = p;
-            }
-        }
-        return best;
-    }
-
     /** {@return the slot of the species' stalk, or -1 when it has none} */
     static int stalkSlot(SpeciesModel m) {
         for (int slot = 0; slot < m.slotCount(); slot++) {

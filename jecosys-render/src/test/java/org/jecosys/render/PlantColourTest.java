@@ -52,7 +52,7 @@ class PlantColourTest {
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             collect(s, world, def, 0, 0, HEIGHT, colours, cores);
             for (int sp = 1; sp < speciesCount; sp++) {
-                int c = MeadowSpots.densest(world, sp, 2);
+                int c = world.densestPlant(sp, 2);
                 if (c >= 0) {
                     collect(s, world, def, world.plantX(c), world.plantZ(c), PATCH_HEIGHT, colours, cores);
                 }
