@@ -24,9 +24,6 @@ import org.jecosys.sim.Simulation;
  * Java strings); edits allocate.
  */
 final class ViewerPanel {
-    /** The rendering path, as the HUD names it. */
-    private static final String RENDER_PATH = "render path: " + org.jecosys.render.PlantRenderer.PATH;
-
     private static final String[] MODES = {"static", "random", "constraint"};
     private static final String[] TINTS = {"none", "water", "nutrients"};
 
@@ -38,6 +35,8 @@ final class ViewerPanel {
     private final FlowPanel flows;
     private final SaveDialogs saving;
     private final Legends legends;
+    /** The rendering path, as the HUD names it. */
+    private final String renderPath;
     private final ImInt mode = new ImInt();
     private final ImInt tint = new ImInt();
     private final float[] edit = new float[1];
@@ -49,6 +48,7 @@ final class ViewerPanel {
         this.editor = controls.editor();
         this.sim = sim;
         this.renderer = renderer;
+        this.renderPath = "render path: " + renderer.plants().path().description();
         this.flows = new FlowPanel(controls, sim.world().terrain().heightfield());
         this.saving = new SaveDialogs(controls);
         this.legends = new Legends(sim.world().terrain().heightfield());
@@ -103,7 +103,7 @@ final class ViewerPanel {
         ImGui.text(String.format(Locale.ROOT, "field %.2f ms  animation %.2f ms (%d thread%s%s)  render %.2f ms",
                 frame.fieldNanos() / 1e6, frame.animationNanos() / 1e6, threads, threads == 1 ? "" : "s",
                 threads == 1 ? ", one after the other" : ", side by side", renderMs));
-        ImGui.text(RENDER_PATH);
+        ImGui.text(renderPath);
         ImGui.text(fly.playing() ? "camera path playing (P stops)"
                 : "WASD QE, right-drag look, H frame scene, F add flow, T agent, P path (view --help lists all)");
         if (!controls.message().isEmpty()) {

@@ -9,7 +9,6 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.GlFramebuffer;
-import org.jecosys.render.PlantRenderer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;
@@ -108,7 +107,7 @@ final class RenderScaleSection implements Section {
                     double median = Stats.median(frameMs);
                     t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
                             Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
-                            Stats.median(javaMs), Stats.median(uploaded), PlantRenderer.PATH);
+                            Stats.median(javaMs), Stats.median(uploaded), r.plants().path().description());
                     raw.put(def.name(), Map.of("frameMs", frameMs, "stepMs", stepMs, "renderCpuMs", cpuMs,
                             "uploadedKiB", uploaded, "drawnComponents", drawn, "listsAndRecordsJavaMs", javaMs));
                 }

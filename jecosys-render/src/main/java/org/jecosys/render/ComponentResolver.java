@@ -16,13 +16,20 @@ import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
 import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
 import static org.lwjgl.opengl.GL30C.glBeginTransformFeedback;
 import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+import static org.lwjgl.opengl.GL30C.glBindBufferRange;
 import static org.lwjgl.opengl.GL30C.glEndTransformFeedback;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
+import static org.lwjgl.opengl.GL42C.GL_BUFFER_UPDATE_BARRIER_BIT;
+import static org.lwjgl.opengl.GL42C.GL_TEXTURE_FETCH_BARRIER_BIT;
+import static org.lwjgl.opengl.GL42C.glMemoryBarrier;
+import static org.lwjgl.opengl.GL43C.GL_SHADER_STORAGE_BUFFER;
+import static org.lwjgl.opengl.GL43C.glDispatchCompute;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
+import org.jecosys.math.Rgb;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.Frame;
@@ -50,7 +57,11 @@ final class ComponentResolver implements AutoCloseable {
     private final PlantBatches batches;
     private final GlBufferTexture poseTexture;
     private final List<AutoCloseable> owned = new ArrayList<>();
-    private final GlProgram resolveProgram;
+    private final ResolvePath path;
+    /** The resolve programs: [0] for species whose components all stand on the ground, [1] with ATTACHED. */
+    private final Pass[] passes = new Pass[2];
+    /** Per species: whether a component is attached to another (its list needs the ATTACHED variant). */
+    private final boolean[] attached;
     private final GlBuffer componentBuffer;
     private final GlBufferTexture componentTexture;
     private final GlBuffer staticBuffer;
@@ -63,14 +74,13 @@ final class ComponentResolver implements AutoCloseable {
     private final GlBufferTexture instanceTexture;
     private final GlVertexArray pointsVao;
     private final IntBuffer instanceStaging;
-    private final int uInstanceBase;
-    private final int uSlots;
-    private final int uLines;
-    private final int uSlotBase;
-    private final int uDryTips;
     private final int[] slotBase;
     private final GlBuffer slotLookBuffer;
     private final GlBufferTexture slotLookTexture;
+    /** Invocations per compute work group ({@code local_size_x} of {@code plant_resolve.comp}). */
+    private static final int GROUP = 64;
+    /** Most invocations in one dispatch: 65535 groups, the least every 4.3 context allows. */
+    private static final int MAX_DISPATCH = GROUP * 65535;
     /** The texture unit of the species slots' looks (colour, vertex kind) during the resolve pass. */
     static final int SLOT_LOOK_UNIT = 6;
     /** The texture unit of the components' baked looks during the resolve pass. */
@@ -98,15 +108,21 @@ final class ComponentResolver implements AutoCloseable {
      * @param maxComponents most components drawn in one frame, &ge; 1
      */
     ComponentResolver(GlTracker t, World world, PlantBatches batches, GlBufferTexture poseTexture,
-                      int[][][] poseTexel, int components, long maxComponents, float[] slotLooks) {
+                      int[][][] poseTexel, int components, long maxComponents, float[] slotLooks, ResolvePath path) {
         this.batches = batches;
+        this.path = path;
         this.poseTexture = poseTexture;
         this.components = components;
         this.looks = new ComponentLooks(world);
         IntBuffer instances = null;
         try {
-            resolveProgram = own(new GlProgram(t, "plant_resolve.vert", null, "vRecord0", "vRecord1",
-                    "vRecord2"));
+            for (int k = 0; k < passes.length; k++) {
+                String[] defines = k == 0 ? new String[0] : new String[] {"ATTACHED"};
+                passes[k] = new Pass(own(path == ResolvePath.COMPUTE
+                        ? GlProgram.compute(t, "plant_resolve.comp", defines)
+                        : GlProgram.captureVariant(t, "plant_resolve.vert", defines, "vRecord0", "vRecord1",
+                                "vRecord2")));
+            }
             instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
             componentBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
                     4L * PlantRenderer.RECORD_FLOATS * maxComponents));
@@ -132,28 +148,63 @@ final class ComponentResolver implements AutoCloseable {
             throw e;
         }
         instanceStaging = instances;
-        resolveProgram.use();
-        glUniform1i(resolveProgram.uniform("uPoses"), 0);
-        glUniform1i(resolveProgram.uniform("uInstances"), 1);
-        glUniform1i(resolveProgram.uniform("uDynamic"), 2);
-        glUniform1i(resolveProgram.uniform("uStatic"), 3);
-        glUniform1i(resolveProgram.uniform("uLinks"), 4);
-        glUniform1i(resolveProgram.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
-        uLines = resolveProgram.uniform("uLines");
-        uSlotBase = resolveProgram.uniform("uSlotBase");
-        uDryTips = resolveProgram.uniform("uDryTips");
         slotBase = new int[world.plants().species().size()];
-        for (int s = 1; s < slotBase.length; s++) {
-            slotBase[s] = slotBase[s - 1] + world.plants().species().get(s - 1).slotCount();
+        attached = new boolean[slotBase.length];
+        for (int s = 0; s < slotBase.length; s++) {
+            SpeciesModel m = world.plants().species().get(s);
+            slotBase[s] = s == 0 ? 0 : slotBase[s - 1] + world.plants().species().get(s - 1).slotCount();
+            for (int slot = 0; slot < m.slotCount(); slot++) {
+                attached[s] |= m.slotParent(slot) >= 0;
+            }
         }
-        uInstanceBase = resolveProgram.uniform("uInstanceBase");
-        uSlots = resolveProgram.uniform("uSlots");
-        glUniform1i(resolveProgram.uniform("uLooks"), LOOK_UNIT);
     }
 
-    /** {@return the resolve program, for the lighting uniforms its line-level shading reads} */
-    GlProgram program() {
-        return resolveProgram;
+    /** {@return the path this resolver runs} */
+    ResolvePath path() {
+        return path;
+    }
+
+    /**
+     * Sets the per-frame uniforms (view, light, fog: the line levels' records are lit) on every
+     * resolve program. Render thread; no allocation; leaves a resolve program in use.
+     */
+    void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
+               float fogEnd, float lx, float ly, float lz) {
+        for (Pass p : passes) {
+            p.uniforms.program.use();
+            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        }
+    }
+
+    /** One resolve program, its samplers bound to their units, and the locations of its per-list uniforms. */
+    private static final class Pass {
+        final PlantUniforms uniforms;
+        final int instanceBase;
+        final int slots;
+        final int lines;
+        final int slotBase;
+        final int dryTips;
+        final int count;
+        final int recordBase;
+        final int first;
+
+        Pass(GlProgram p) {
+            uniforms = new PlantUniforms(p);
+            glUniform1i(p.uniform("uInstances"), 1);
+            glUniform1i(p.uniform("uDynamic"), 2);
+            glUniform1i(p.uniform("uStatic"), 3);
+            glUniform1i(p.optionalUniform("uLinks"), 4);
+            glUniform1i(p.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
+            glUniform1i(p.uniform("uLooks"), LOOK_UNIT);
+            instanceBase = p.uniform("uInstanceBase");
+            slots = p.uniform("uSlots");
+            lines = p.uniform("uLines");
+            slotBase = p.uniform("uSlotBase");
+            dryTips = p.uniform("uDryTips");
+            count = p.optionalUniform("uCount");
+            recordBase = p.optionalUniform("uRecordBase");
+            first = p.optionalUniform("uFirst");
+        }
     }
 
     private static GlBuffer uploadFloats(GlTracker t, float[] values) {
@@ -202,8 +253,6 @@ final class ComponentResolver implements AutoCloseable {
      * allocation.
      */
     void resolve(PlantLook look) {
-        glEnable(GL_RASTERIZER_DISCARD);
-        resolveProgram.use();
         if (look.version() != lookVersion) {
             bakeLooks(look);
         }
@@ -214,9 +263,13 @@ final class ComponentResolver implements AutoCloseable {
         linkTexture.bind(4);
         slotLookTexture.bind(SLOT_LOOK_UNIT);
         lookTexture.bind(LOOK_UNIT);
-        pointsVao.bind();
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id());
-        glBeginTransformFeedback(GL_POINTS);
+        boolean compute = path == ResolvePath.COMPUTE;
+        if (compute) {
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
+        } else {
+            glEnable(GL_RASTERIZER_DISCARD);
+            pointsVao.bind();
+        }
         for (int li = 0, lists = batches.listCount(); li < lists; li++) {
             int n = batches.count(li);
             if (n == 0) {
@@ -224,16 +277,39 @@ final class ComponentResolver implements AutoCloseable {
             }
             int species = batches.speciesOf(li);
             int slots = batches.slots(species);
-            glUniform1i(uLines, batches.lines(li) ? 1 : 0);
-            glUniform1i(uSlotBase, slotBase[species]);
-            glUniform1f(uDryTips, look.dryTips(species));
-            glUniform1i(uInstanceBase, batches.instanceOffset(li));
-            glUniform1i(uSlots, slots);
-            glDrawArrays(GL_POINTS, 0, n * slots);
+            Pass p = passes[attached[species] ? 1 : 0];
+            p.uniforms.program.use();
+            glUniform1i(p.lines, batches.lines(li) ? 1 : 0);
+            glUniform1i(p.slotBase, slotBase[species]);
+            glUniform1f(p.dryTips, look.dryTips(species));
+            glUniform1i(p.instanceBase, batches.instanceOffset(li));
+            glUniform1i(p.slots, slots);
+            int count = n * slots;
+            long recordBase = batches.componentOffset(li);
+            if (compute) {
+                glUniform1i(p.count, count);
+                glUniform1i(p.recordBase, (int) recordBase);
+                for (int first = 0; first < count; first += MAX_DISPATCH) {
+                    int size = Math.min(MAX_DISPATCH, count - first);
+                    glUniform1i(p.first, first);
+                    glDispatchCompute((size + GROUP - 1) / GROUP, 1, 1);
+                }
+            } else {
+                long bytes = 4L * PlantRenderer.RECORD_FLOATS;
+                glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id(), bytes * recordBase,
+                        bytes * count);
+                glBeginTransformFeedback(GL_POINTS);
+                glDrawArrays(GL_POINTS, 0, count);
+                glEndTransformFeedback();
+            }
         }
-        glEndTransformFeedback();
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-        glDisable(GL_RASTERIZER_DISCARD);
+        if (compute) {
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        } else {
+            glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+            glDisable(GL_RASTERIZER_DISCARD);
+        }
     }
 
     /**
@@ -276,6 +352,9 @@ final class ComponentResolver implements AutoCloseable {
         }
         dest.clear();
         dest.limit(PlantRenderer.RECORD_FLOATS * batches.components());
+        if (path == ResolvePath.COMPUTE) {
+            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        }
         componentBuffer.bind();
         org.lwjgl.opengl.GL15C.glGetBufferSubData(GL_TEXTURE_BUFFER, 0, dest);
     }

@@ -20,6 +20,7 @@ import static org.lwjgl.opengl.GL20C.glGetShaderi;
 import static org.lwjgl.opengl.GL20C.glGetUniformLocation;
 import static org.lwjgl.opengl.GL20C.glShaderSource;
 import static org.lwjgl.opengl.GL20C.glUseProgram;
+import static org.lwjgl.opengl.GL43C.GL_COMPUTE_SHADER;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -44,7 +45,7 @@ public final class GlProgram extends GlResource {
      *                               resource is missing
      */
     public GlProgram(GlTracker tracker, String vertex, String fragment) {
-        this(tracker, vertex, fragment, new String[0]);
+        this(tracker, new String[] {vertex, fragment}, new String[0], new String[0]);
     }
 
     /**
@@ -60,7 +61,7 @@ public final class GlProgram extends GlResource {
      * @throws IllegalStateException when a shader does not compile or the program does not link
      */
     public GlProgram(GlTracker tracker, String vertex, String fragment, String... captured) {
-        this(tracker, vertex, fragment, new String[0], captured);
+        this(tracker, new String[] {vertex, fragment}, new String[0], captured.clone());
     }
 
     /**
@@ -77,25 +78,69 @@ public final class GlProgram extends GlResource {
      * @throws IllegalStateException    with the driver's log when compiling or linking fails
      */
     public static GlProgram variant(GlTracker tracker, String vertex, String fragment, String... defines) {
+        return new GlProgram(tracker, new String[] {vertex, fragment}, checked(defines), new String[0]);
+    }
+
+    /**
+     * Compiles and links a variant (as {@link #variant}) of a vertex shader with no fragment shader
+     * whose outputs are captured by transform feedback, interleaved in the order given (as the
+     * constructor with captured outputs). Render thread; allocates.
+     *
+     * @param tracker  counts the object
+     * @param vertex   vertex shader resource name
+     * @param defines  preprocessor names to define, each a GLSL identifier
+     * @param captured names of the vertex outputs written to the transform feedback buffer, in order
+     * @return the linked program
+     * @throws IllegalArgumentException when a define is not an identifier
+     * @throws IllegalStateException    with the driver's log when compiling or linking fails
+     */
+    static GlProgram captureVariant(GlTracker tracker, String vertex, String[] defines, String... captured) {
+        return new GlProgram(tracker, new String[] {vertex, null}, checked(defines), captured.clone());
+    }
+
+    /**
+     * Compiles and links a compute program (OpenGL 4.3+) from {@code shaders/<compute>}, with each
+     * name in {@code defines} defined after its {@code #version} line. Render thread; allocates.
+     *
+     * @param tracker counts the object
+     * @param compute compute shader resource name, e.g. {@code "plant_resolve.comp"}
+     * @param defines preprocessor names to define, each a GLSL identifier
+     * @return the linked program
+     * @throws IllegalArgumentException when a define is not an identifier
+     * @throws IllegalStateException    with the driver's log when compiling or linking fails
+     */
+    static GlProgram compute(GlTracker tracker, String compute, String... defines) {
+        return new GlProgram(tracker, new String[] {null, null, compute}, checked(defines), new String[0]);
+    }
+
+    private static String[] checked(String[] defines) {
         for (String d : defines) {
             if (!d.matches("[A-Za-z_][A-Za-z0-9_]*")) {
                 throw new IllegalArgumentException("shader define must be an identifier, got '" + d + "'");
             }
         }
-        return new GlProgram(tracker, vertex, fragment, defines.clone(), new String[0]);
+        return defines.clone();
     }
 
-    private GlProgram(GlTracker tracker, String vertex, String fragment, String[] defines, String[] captured) {
+    /** Stages by index in {@code shaders}: vertex, fragment, compute; null = none. */
+    private static final int[] STAGES = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER};
+
+    private GlProgram(GlTracker tracker, String[] shaders, String[] defines, String[] captured) {
         super(tracker, glCreateProgram());
-        this.name = vertex + "+" + fragment + (defines.length == 0 ? "" : " " + String.join(",", defines));
-        int vs = 0;
-        int fs = 0;
+        StringBuilder label = new StringBuilder();
+        for (String s : shaders) {
+            if (s != null) {
+                label.append(label.length() == 0 ? "" : "+").append(s);
+            }
+        }
+        this.name = label + (defines.length == 0 ? "" : " " + String.join(",", defines));
+        int[] made = new int[shaders.length];
         try {
-            vs = compile(GL_VERTEX_SHADER, vertex, defines);
-            glAttachShader(id(), vs);
-            if (fragment != null) {
-                fs = compile(GL_FRAGMENT_SHADER, fragment, defines);
-                glAttachShader(id(), fs);
+            for (int k = 0; k < shaders.length; k++) {
+                if (shaders[k] != null) {
+                    made[k] = compile(STAGES[k], shaders[k], defines);
+                    glAttachShader(id(), made[k]);
+                }
             }
             if (captured.length > 0) {
                 org.lwjgl.opengl.GL30C.glTransformFeedbackVaryings(id(), captured,
@@ -105,19 +150,19 @@ public final class GlProgram extends GlResource {
             if (glGetProgrami(id(), GL_LINK_STATUS) == 0) {
                 throw new IllegalStateException("linking " + name + " failed: " + glGetProgramInfoLog(id()));
             }
-            glDetachShader(id(), vs);
-            if (fs != 0) {
-                glDetachShader(id(), fs);
+            for (int shader : made) {
+                if (shader != 0) {
+                    glDetachShader(id(), shader);
+                }
             }
         } catch (RuntimeException e) {
             close();
             throw e;
         } finally {
-            if (vs != 0) {
-                glDeleteShader(vs);
-            }
-            if (fs != 0) {
-                glDeleteShader(fs);
+            for (int shader : made) {
+                if (shader != 0) {
+                    glDeleteShader(shader);
+                }
             }
         }
     }

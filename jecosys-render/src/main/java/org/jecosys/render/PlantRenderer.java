@@ -10,6 +10,7 @@ import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
+import static org.lwjgl.opengl.GL43C.GL_MAX_SHADER_STORAGE_BLOCK_SIZE;
 
 import java.nio.FloatBuffer;
 import java.util.ArrayList;
@@ -54,13 +55,6 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class PlantRenderer implements AutoCloseable {
     private static final int MAX_LEVELS = 8;
-    /**
-     * The rendering path, for the HUD and benchmark reports: OpenGL 3.3 core; the animation workers
-     * write 8 bytes per visible component; a transform-feedback pass on the GPU resolves them into
-     * the records the instanced draws read.
-     */
-    public static final String PATH = "GL 3.3 core: worker-written states, GPU resolve (transform feedback), "
-            + "instanced draws";
     /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
     static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
@@ -78,12 +72,12 @@ public final class PlantRenderer implements AutoCloseable {
     private final GlBuffer poseBuffer;
     private final GlBufferTexture poseTexture;
     private final ComponentResolver resolver;
+    private final ResolvePath path;
     private final GlVertexArray[] vaos;
     private final int[] indexCount;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
     private final PlantPasses passes;
-    private final PlantUniforms resolveUniforms;
     private final GlInts query = new GlInts();
     private final PlantLook look;
     private boolean pending;
@@ -95,10 +89,29 @@ public final class PlantRenderer implements AutoCloseable {
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
      * allocates. If it throws, every GL object it had made is deleted again.
      *
+     * The per-component pass runs on the faster {@link ResolvePath} the context supports
+     * ({@link ResolvePath#best}), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's
+     * records would not fit one shader storage buffer of this context.
+     *
      * @param gl        the render context, current on this thread
      * @param world     the plants: species models (pose tables, meshes) and positions
      */
     public PlantRenderer(GlContext gl, World world) {
+        this(gl, world, null);
+    }
+
+    /**
+     * As {@link #PlantRenderer(GlContext, World)}, with the per-component pass on the path named.
+     * Render thread; allocates.
+     *
+     * @param gl    the render context, current on this thread
+     * @param world the plants
+     * @param path  the path of the per-component pass; null: the one {@link #PlantRenderer(GlContext,
+     *              World)} chooses
+     * @throws IllegalArgumentException when the context cannot run {@code path} (compute needs
+     *                                  OpenGL 4.3 and a shader storage buffer the size of the records)
+     */
+    public PlantRenderer(GlContext gl, World world, ResolvePath path) {
         gl.checkThread();
         this.world = world;
         this.batches = new PlantBatches(world);
@@ -125,6 +138,7 @@ public final class PlantRenderer implements AutoCloseable {
         long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
+        this.path = choosePath(gl, path, 4L * RECORD_FLOATS * maxComponents);
         FloatBuffer mat = null;
         GlProgram[] programs = new GlProgram[PlantPasses.COUNT];
         try {
@@ -139,7 +153,7 @@ public final class PlantRenderer implements AutoCloseable {
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
             resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
-                    maxComponents, PlantMeshes.slotLooks(models)));
+                    maxComponents, PlantMeshes.slotLooks(models), path));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -158,7 +172,6 @@ public final class PlantRenderer implements AutoCloseable {
             throw e;
         }
         matrix = mat;
-        resolveUniforms = new PlantUniforms(resolver.program());
         // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
         // use here alive past its deletion
         passes = new PlantPasses(programs, flowers);
@@ -172,6 +185,30 @@ public final class PlantRenderer implements AutoCloseable {
     private <T extends AutoCloseable> T own(T resource) {
         owned.add(resource);
         return resource;
+    }
+
+    private static ResolvePath choosePath(GlContext gl, ResolvePath asked, long recordBytes) {
+        ResolvePath want = asked == null ? ResolvePath.best(gl.capabilities()) : asked;
+        if (want != ResolvePath.COMPUTE) {
+            return want;
+        }
+        boolean supported = ResolvePath.COMPUTE.supported(gl.capabilities());
+        long most = supported ? Integer.toUnsignedLong(GL11C.glGetInteger(GL_MAX_SHADER_STORAGE_BLOCK_SIZE)) : 0;
+        if (supported && recordBytes <= most) {
+            return want;
+        }
+        if (asked == null) {
+            return ResolvePath.TRANSFORM_FEEDBACK;
+        }
+        throw new IllegalArgumentException(supported
+                ? "the compute resolve path needs a shader storage buffer of " + recordBytes
+                        + " bytes for this world's component records; this GL allows " + most
+                : "the compute resolve path needs OpenGL 4.3; this context is " + gl.describe());
+    }
+
+    /** {@return the path the per-component pass runs on, for the HUD and reports} */
+    public ResolvePath path() {
+        return path;
     }
 
     private static void checkTexels(String what, long texels, int max) {
@@ -333,8 +370,7 @@ public final class PlantRenderer implements AutoCloseable {
         float ex = (float) camera.x();
         float ey = (float) camera.y();
         float ez = (float) camera.z();
-        resolver.program().use();
-        resolveUniforms.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+        resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
         resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);

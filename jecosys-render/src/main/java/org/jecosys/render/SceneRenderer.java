@@ -53,6 +53,21 @@ public final class SceneRenderer implements AutoCloseable {
      * @param settings read every frame; the caller may change it between frames
      */
     public SceneRenderer(GlContext gl, World world, RenderSettings settings) {
+        this(gl, world, settings, null);
+    }
+
+    /**
+     * As {@link #SceneRenderer(GlContext, World, RenderSettings)}, with the plants' per-component
+     * pass on the path named (see {@link PlantRenderer#PlantRenderer(GlContext, World, ResolvePath)}).
+     * Render thread; allocates.
+     *
+     * @param gl       the render context, current on this thread
+     * @param world    the terrain and plants to draw
+     * @param settings read every frame; the caller may change it between frames
+     * @param path     the plants' resolve path; null: the best the context supports
+     * @throws IllegalArgumentException when the context cannot run {@code path}
+     */
+    public SceneRenderer(GlContext gl, World world, RenderSettings settings, ResolvePath path) {
         gl.checkThread();
         this.gl = gl;
         this.settings = settings;
@@ -63,7 +78,7 @@ public final class SceneRenderer implements AutoCloseable {
         GlStateGuard g = new GlStateGuard();
         try {
             t = new TerrainRenderer(gl, world, settings.tint());
-            p = new PlantRenderer(gl, world);
+            p = new PlantRenderer(gl, world, path);
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {

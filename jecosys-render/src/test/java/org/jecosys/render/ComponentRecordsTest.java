@@ -3,6 +3,7 @@ package org.jecosys.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.lang.management.ManagementFactory;
 import java.nio.FloatBuffer;
@@ -21,25 +22,28 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 
 /**
- * The per-frame component pass, which runs on the GPU ({@code plant_resolve.vert}, captured by
- * transform feedback): every record the renderer reads back is checked against an independent
- * derivation from the world, the pose tables and the frame (C1, whose flowers carry a head and
- * petals on the tip of their stalk); drawing allocates nothing on the render thread.
+ * The per-frame component pass, which runs on the GPU ({@code plant_resolve.glsl}) on one of the two
+ * {@link ResolvePath}s, each tested by a subclass: every record the renderer reads back is checked
+ * against an independent derivation from the world, the pose tables and the frame (C1, whose flowers
+ * carry a head and petals on the tip of their stalk); drawing allocates nothing on the render thread.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
-class ComponentRecordsTest {
+abstract class ComponentRecordsTest {
     private static final int F = PlantRenderer.RECORD_FLOATS;
-    private GlContext gl;
+    GlContext gl;
     private GlFramebuffer fb;
-    private PlantRenderer renderer;
+    PlantRenderer renderer;
     private DrawDecision decision;
-    private World world;
+    World world;
     private List<SpeciesModel> models;
     private int[][][] poseTexel;
     private PlantBatches batches;
-    private Frame frame;
-    private FloatBuffer rec;
-    private ViewCamera cam;
+    Frame frame;
+    FloatBuffer rec;
+    ViewCamera cam;
+
+    /** {@return the path under test} */
+    abstract ResolvePath path();
 
     @BeforeAll
     void build() {
@@ -61,7 +65,9 @@ class ComponentRecordsTest {
         gl = GlContext.headless(true);
         fb = new GlFramebuffer(gl.tracker(), 320, 180);
         fb.bind();
-        renderer = new PlantRenderer(gl, world);
+        assumeTrue(path().supported(gl.capabilities()), path() + " needs a newer GL than " + gl.describe());
+        renderer = new PlantRenderer(gl, world, path());
+        assertEquals(path(), renderer.path());
         decision = DrawDecision.of(world);
         decision.decideAll(cam, frame);
         draw();
@@ -72,8 +78,12 @@ class ComponentRecordsTest {
 
     private static final org.jecosys.math.Rgb SKY = new org.jecosys.math.Rgb(0.6f, 0.7f, 0.9f);
 
-    private void draw() {
-        renderer.draw(frame, cam, 0.3f, 0.9f, 0.3f, SKY, 25f, 160f, 180);
+    void draw() {
+        draw(renderer);
+    }
+
+    void draw(PlantRenderer r) {
+        r.draw(frame, cam, 0.3f, 0.9f, 0.3f, SKY, 25f, 160f, 180);
     }
 
     @AfterAll
@@ -81,6 +91,8 @@ class ComponentRecordsTest {
         org.lwjgl.system.MemoryUtil.memFree(rec);
         if (renderer != null) {
             renderer.close();
+        }
+        if (gl != null) {
             fb.close();
             gl.debug().check("the component records test");
             gl.close();

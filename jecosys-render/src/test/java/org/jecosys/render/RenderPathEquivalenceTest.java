@@ -25,7 +25,8 @@ import org.lwjgl.system.MemoryUtil;
  * to leave the picture alone is caught. The references were first made by the renderer that resolved
  * every component on the render thread (the GPU resolve matched them to 0.000/255); they were
  * regenerated when the look changed on purpose: the sun-lit terrain with contact darkening, then the
- * plants' light, colour variation and thin-part widening. Run with the environment variable
+ * plants' light, colour variation and thin-part widening. Every {@link ResolvePath} the context
+ * supports is checked against the same references. Run with the environment variable
  * {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
@@ -37,6 +38,7 @@ class RenderPathEquivalenceTest {
     private GlFramebuffer fb;
     private World world;
     private SceneRenderer renderer;
+    private SceneRenderer feedback;
     private ByteBuffer px;
     private ByteBuffer bare;
 
@@ -46,6 +48,7 @@ class RenderPathEquivalenceTest {
         fb = new GlFramebuffer(gl.tracker(), W, H);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         renderer = new SceneRenderer(gl, world, new RenderSettings());
+        feedback = new SceneRenderer(gl, world, new RenderSettings(), ResolvePath.TRANSFORM_FEEDBACK);
         px = MemoryUtil.memAlloc(4 * W * H);
         bare = MemoryUtil.memAlloc(4 * W * H);
     }
@@ -56,6 +59,7 @@ class RenderPathEquivalenceTest {
         MemoryUtil.memFree(bare);
         if (renderer != null) {
             renderer.close();
+            feedback.close();
             fb.close();
             gl.debug().check("the render path test");
             gl.close();
@@ -98,7 +102,7 @@ class RenderPathEquivalenceTest {
      * {@code [1]} over the pixels where plants are in either image (those that differ from the same
      * view drawn without plants).
      */
-    private double[] meanDifference(int i) throws IOException {
+    private double[] meanDifference(SceneRenderer renderer, int i) throws IOException {
         fb.bind();
         renderer.drawPlants = false;
         renderer.render(TestFrames.decide(world, frame(world, i), view(world, i)), view(world, i), W, H);
@@ -145,12 +149,16 @@ class RenderPathEquivalenceTest {
 
     @Test
     void theRendererDrawsWhatThePreviousRendererDrewOnC1() throws IOException {
-        for (int i = 0; i < 3; i++) {
-            double[] d = meanDifference(i);
-            System.out.printf("render path view %d: mean difference %.3f / 255, over plant pixels %.3f / 255%n", i,
-                    d[0], d[1]);
-            assertTrue(d[0] <= 2.0, "view " + i + ": mean colour difference " + d[0] + " / 255");
-            assertTrue(d[1] <= 2.0, "view " + i + ": mean colour difference over plant pixels " + d[1] + " / 255");
+        assertEquals(ResolvePath.best(gl.capabilities()), renderer.plants().path(), "the best path by default");
+        for (SceneRenderer r : new SceneRenderer[] {renderer, feedback}) {
+            for (int i = 0; i < 3; i++) {
+                double[] d = meanDifference(r, i);
+                String at = r.plants().path() + " view " + i;
+                System.out.printf("render path %s: mean difference %.3f / 255, over plant pixels %.3f / 255%n", at,
+                        d[0], d[1]);
+                assertTrue(d[0] <= 2.0, at + ": mean colour difference " + d[0] + " / 255");
+                assertTrue(d[1] <= 2.0, at + ": mean colour difference over plant pixels " + d[1] + " / 255");
+            }
         }
     }
 }

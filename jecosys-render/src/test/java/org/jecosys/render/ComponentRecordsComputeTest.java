@@ -1,0 +1,48 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.FloatBuffer;
+import org.junit.jupiter.api.Test;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * {@link ComponentRecordsTest} on the OpenGL 4.3 path (skipped on an older context): the records
+ * stored by the compute shader; and they are the transform-feedback path's records, value for value.
+ */
+class ComponentRecordsComputeTest extends ComponentRecordsTest {
+    @Override
+    ResolvePath path() {
+        return ResolvePath.COMPUTE;
+    }
+
+    @Test
+    void theComputePathStoresTheRecordsTheTransformFeedbackPathCaptures() {
+        assertEquals(ResolvePath.COMPUTE, ResolvePath.best(gl.capabilities()), "the best path of a 4.3 context");
+        FloatBuffer other = MemoryUtil.memAllocFloat(rec.capacity());
+        try (PlantRenderer feedback = new PlantRenderer(gl, world, ResolvePath.TRANSFORM_FEEDBACK)) {
+            draw(feedback);
+            feedback.readRecords(other);
+            draw();
+            renderer.readRecords(rec);
+            assertEquals(rec.limit(), other.limit());
+            assertTrue(rec.limit() > 1000, "records compared: " + rec.limit() / PlantRenderer.RECORD_FLOATS);
+            int differ = 0;
+            float worst = 0;
+            for (int i = 0; i < rec.limit(); i++) {
+                float a = rec.get(i);
+                float b = other.get(i);
+                if (Float.floatToIntBits(a) != Float.floatToIntBits(b)) {
+                    differ++;
+                    worst = Math.max(worst, Math.abs(a - b) / Math.max(1f, Math.abs(b)));
+                }
+            }
+            System.out.printf("resolve paths: %d of %d record values differ, largest relative difference %.2e%n",
+                    differ, rec.limit(), worst);
+            assertTrue(worst <= 1e-6f, "largest difference " + worst + " over " + differ + " values");
+        } finally {
+            MemoryUtil.memFree(other);
+        }
+    }
+}

@@ -1,0 +1,9 @@
+package org.jecosys.render;
+
+/** {@link ComponentRecordsTest} on the OpenGL 3.3 path: the records captured by transform feedback. */
+class ComponentRecordsFeedbackTest extends ComponentRecordsTest {
+    @Override
+    ResolvePath path() {
+        return ResolvePath.TRANSFORM_FEEDBACK;
+    }
+}
