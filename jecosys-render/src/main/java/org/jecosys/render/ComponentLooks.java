@@ -11,7 +11,7 @@ import org.jecosys.sim.World;
  * depends on nothing that moves. Per component: a hue turn and a brightness factor drawn from seeded
  * hashes of its plant (named by the plant's first component) and, a third as much, of the component
  * itself, and the dryness of the ground patch its root stands on ({@link RenderSettings#patchLevel},
- * the noise the terrain shows). {@code plant_resolve.vert} reads the result.
+ * the noise the terrain shows). {@code plant_resolve.glsl} reads the result.
  *
  * <p>Packing, 2 ints per component (an RG32UI buffer texture): the hue turn in radians as float
  * bits; the brightness factor times 32768 in the low 16 bits (it lies in [0.3, 1.8], and 1 stays

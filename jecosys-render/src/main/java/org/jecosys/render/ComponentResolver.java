@@ -7,6 +7,7 @@ import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUseProgram;
 import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
 import static org.lwjgl.opengl.GL30C.GL_RG32F;
 import static org.lwjgl.opengl.GL30C.GL_RG32I;
@@ -41,10 +42,12 @@ import org.lwjgl.system.MemoryUtil;
  * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component, as the
  * animation workers wrote them) and 8 bytes per drawn plant and level, then resolves each drawn
  * component's record (3 RGBA32F texels: base, cos/sin of the bend azimuth, pose texel and weight,
- * dither window, colour variation) by transform feedback through {@code plant_resolve.vert} into the component buffer
- * the instanced draws read.
+ * dither window, colour variation) into the component buffer the instanced draws read, on its
+ * {@link ResolvePath}: a compute shader ({@code plant_resolve.comp}) or transform feedback
+ * ({@code plant_resolve.vert}), both around {@code plant_resolve.glsl}, each compiled twice: with
+ * the parent walk ({@code ATTACHED}) for species with attached components, without it for the others.
  *
- * <p>Holds the resolve program, the static per-component data (root bases and pose texels; parent
+ * <p>Holds the resolve programs, the static per-component data (root bases and pose texels; parent
  * links), the dynamic render-state and instance buffers with their buffer textures, the component
  * record buffer, an empty VAO for the points and the instance staging memory. It reads the renderer's
  * pose texture and {@link PlantBatches}, which it does not own.
@@ -116,6 +119,7 @@ final class ComponentResolver implements AutoCloseable {
         this.looks = new ComponentLooks(world);
         IntBuffer instances = null;
         try {
+            detach();
             for (int k = 0; k < passes.length; k++) {
                 String[] defines = k == 0 ? new String[0] : new String[] {"ATTACHED"};
                 passes[k] = new Pass(own(path == ResolvePath.COMPUTE
@@ -147,6 +151,7 @@ final class ComponentResolver implements AutoCloseable {
             PlantRenderer.closeReverse(owned);
             throw e;
         }
+        detach();
         instanceStaging = instances;
         slotBase = new int[world.plants().species().size()];
         attached = new boolean[slotBase.length];
@@ -165,14 +170,29 @@ final class ComponentResolver implements AutoCloseable {
     }
 
     /**
-     * Sets the per-frame uniforms (view, light, fog: the line levels' records are lit) on every
-     * resolve program. Render thread; no allocation; leaves a resolve program in use.
+     * Sets the per-frame uniforms (view, light, fog, pixel size, thinning: the line levels' records
+     * are lit and carry what their vertices share) on every resolve program. Render thread; no
+     * allocation; leaves a resolve program in use (none on the compute path).
      */
     void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
-               float fogEnd, float lx, float ly, float lz) {
+               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+        detach();
         for (Pass p : passes) {
             p.uniforms.program.use();
-            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
+            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame);
+        }
+        detach();
+    }
+
+    /**
+     * On the compute path, makes no program current: Mesa (22.3, llvmpipe) keeps the graphics
+     * program that was current when a compute program is made current directly, or the other way
+     * round, alive past its deletion; going through program 0 avoids it (the GL object census
+     * tests catch it). No allocation.
+     */
+    private void detach() {
+        if (path == ResolvePath.COMPUTE) {
+            glUseProgram(0);
         }
     }
 
@@ -247,10 +267,10 @@ final class ComponentResolver implements AutoCloseable {
     }
 
     /**
-     * The per-component pass on the GPU: one point per drawn component through
-     * {@code plant_resolve.vert}, rasterisation discarded, its records captured by transform feedback
-     * into the component buffer in list order. Leaves the resolve program in use. Render thread; no
-     * allocation.
+     * The per-component pass on the GPU, list by list, each list's records at its place in the
+     * component buffer: one compute invocation per drawn component, or one point per drawn component
+     * with rasterisation discarded and its record captured by transform feedback. Leaves a resolve
+     * program in use (none on the compute path). Render thread; no allocation.
      */
     void resolve(PlantLook look) {
         if (look.version() != lookVersion) {
@@ -264,6 +284,7 @@ final class ComponentResolver implements AutoCloseable {
         slotLookTexture.bind(SLOT_LOOK_UNIT);
         lookTexture.bind(LOOK_UNIT);
         boolean compute = path == ResolvePath.COMPUTE;
+        detach();
         if (compute) {
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
         } else {
@@ -304,6 +325,7 @@ final class ComponentResolver implements AutoCloseable {
             }
         }
         if (compute) {
+            detach();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         } else {

@@ -79,9 +79,7 @@ final class PlantPasses {
                float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
         for (PlantUniforms u : passes) {
             u.program.use();
-            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-            glUniform2f(u.pixelScale, pixelX, pixelY);
-            glUniform3f(u.thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
+            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame);
         }
     }
 

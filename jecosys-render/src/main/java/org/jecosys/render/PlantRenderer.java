@@ -35,8 +35,8 @@ import org.lwjgl.system.MemoryUtil;
  * the component baked into each vertex), and static per-component data (root bases, pose texels,
  * parents). Per frame, {@link #draw} draws what the frame's decision lists ({@link PlantBatches}),
  * uploads only the render states the animation workers wrote for the drawn plants (8 bytes per
- * component) and 8 bytes per drawn plant and level, resolves on the GPU (transform feedback,
- * {@code plant_resolve.vert}) each drawn component's record (3 texels: base, cos/sin of the bend
+ * component) and 8 bytes per drawn plant and level, resolves on the GPU (a compute shader on
+ * OpenGL 4.3, transform feedback on 3.3: {@link ResolvePath}) each drawn component's record (3 texels: base, cos/sin of the bend
  * azimuth, pose texel and weight, dither window, and its colour variation: hue turn, brightness,
  * patch dryness, worked out on the CPU only when the look changes), then issues per species and
  * level (triangles near, lines far: Table 3) one instanced draw of the plants drawn whole and one
@@ -72,7 +72,6 @@ public final class PlantRenderer implements AutoCloseable {
     private final GlBuffer poseBuffer;
     private final GlBufferTexture poseTexture;
     private final ComponentResolver resolver;
-    private final ResolvePath path;
     private final GlVertexArray[] vaos;
     private final int[] indexCount;
     private final FloatBuffer matrix;
@@ -138,7 +137,7 @@ public final class PlantRenderer implements AutoCloseable {
         long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
-        this.path = choosePath(gl, path, 4L * RECORD_FLOATS * maxComponents);
+        ResolvePath resolvePath = choosePath(gl, path, 4L * RECORD_FLOATS * maxComponents);
         FloatBuffer mat = null;
         GlProgram[] programs = new GlProgram[PlantPasses.COUNT];
         try {
@@ -153,7 +152,7 @@ public final class PlantRenderer implements AutoCloseable {
             poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
             resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
-                    maxComponents, PlantMeshes.slotLooks(models), path));
+                    maxComponents, PlantMeshes.slotLooks(models), resolvePath));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
@@ -208,7 +207,7 @@ public final class PlantRenderer implements AutoCloseable {
 
     /** {@return the path the per-component pass runs on, for the HUD and reports} */
     public ResolvePath path() {
-        return path;
+        return resolver.path();
     }
 
     private static void checkTexels(String what, long texels, int max) {
@@ -370,10 +369,10 @@ public final class PlantRenderer implements AutoCloseable {
         float ex = (float) camera.x();
         float ey = (float) camera.y();
         float ez = (float) camera.z();
-        resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz);
-        resolver.resolve(look);
         float px = (float) (camera.viewHeightAtEye() / viewportHeight);
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
+        resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
+        resolver.resolve(look);
         passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
         poseTexture.bind(0);
         resolver.bindRecords(1);

@@ -2,11 +2,13 @@ package org.jecosys.render;
 
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
 import java.nio.FloatBuffer;
 import org.jecosys.math.Rgb;
+import org.jecosys.sim.Frame;
 
 /**
  * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
@@ -55,9 +57,14 @@ final class PlantUniforms {
         glUniform1i(p.optionalUniform("uComponents"), 1);
     }
 
-    /** Sets the per-frame values on the program in use. No allocation. */
+    /**
+     * Sets the per-frame values on the program in use: view, eye, light, fog, the pixel's size
+     * ({@code pixelX + distance * pixelY} metres) and the frame's distance thinning. No allocation.
+     */
     void frame(PlantLook r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
-               float end, float lx, float ly, float lz) {
+               float end, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+        glUniform2f(pixelScale, pixelX, pixelY);
+        glUniform3f(thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
         glUniformMatrix4fv(viewProj, false, viewProjMatrix);
         glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
         glUniform3f(ambient, r.ambR, r.ambG, r.ambB);

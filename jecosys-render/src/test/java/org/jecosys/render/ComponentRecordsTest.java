@@ -266,13 +266,9 @@ abstract class ComponentRecordsTest {
 
     @Test
     void theColourVariationIsSeededPerPlantAndOffWhenUnset() {
-        // unset: no hue turn, brightness 1, no dryness; a line level's texel 2 is its lit colour
+        // unset: no hue turn, brightness 1, no dryness; a line level's texel 2 is what its vertices share
         forEachRecord((li, i, slot, r) -> {
             if (batches.lines(li)) {
-                for (int c = 8; c < 11; c++) {
-                    assertTrue(rec.get(r + c) >= 0f && rec.get(r + c) <= 1.5f, "lit colour " + rec.get(r + c));
-                }
-                assertEquals(1f, rec.get(r + 11), 0f);
                 return;
             }
             assertEquals(1f, rec.get(r + 8), 0f);
@@ -397,6 +393,58 @@ abstract class ComponentRecordsTest {
             draw();
             renderer.readRecords(rec);
         }
+    }
+
+    @Test
+    void aLineLevelsRecordCarriesItsLitColourItsWideningOneOverItsDistanceAndThePixelThere() {
+        double[] thinning = {decision.thinStart(), decision.thinEnd(), decision.thinMinFraction()};
+        try {
+            checkFarRecords(); // no thinning: no widening
+            // thinning from 5 m, down to half the plants at 20 m: the kept far blades are widened by 1 / kept
+            decision.setThinning(5, 20, 0.5);
+            decision.decideAll(cam, frame);
+            draw();
+            renderer.readRecords(rec);
+            checkFarRecords();
+        } finally {
+            decision.setThinning(thinning[0], thinning[1], thinning[2]);
+            decision.decideAll(cam, frame);
+            draw();
+            renderer.readRecords(rec);
+        }
+    }
+
+    private void checkFarRecords() {
+        // the resolve pass's pixel scale, as PlantRenderer.drawNear sets it for a 180-pixel viewport
+        double px = cam.viewHeightAtEye() / 180;
+        double py = cam.viewHeightPerMetre() / 180;
+        int[] checked = new int[2];
+        forEachRecord((li, i, slot, r) -> {
+            if (!batches.lines(li)) {
+                return;
+            }
+            String at = "list " + li + " plant " + batches.plant(li, i) + " slot " + slot;
+            int a = (int) rec.get(r + 8);
+            int b = (int) rec.get(r + 9);
+            assertEquals(a, rec.get(r + 8), 0f, at + ": a whole number");
+            assertEquals(b, rec.get(r + 9), 0f, at + ": a whole number");
+            assertTrue(a >= 0 && a < 1 << 24 && b >= 0 && b < 1 << 24, at + ": 24 bits");
+            float red = (a & 4095) / 4095f;
+            float green = (a >> 12) / 4095f;
+            float blue = (b & 4095) / 4095f;
+            assertTrue(red + green + blue > 0.02f, at + ": lit, not black: " + red + ", " + green + ", " + blue);
+            double d = Math.sqrt(Math.pow(cam.x() - rec.get(r), 2) + Math.pow(cam.y() - rec.get(r + 1), 2)
+                    + Math.pow(cam.z() - rec.get(r + 2), 2));
+            double kept = decision.thinKept(d);
+            double widen = decision.thinMinFraction() >= 1 ? 1 : Math.min(1 / Math.max(kept, 0.05), 4);
+            assertEquals(widen, 1 + 3 * (b >> 12) / 4095.0, 1e-3, at + ": widening at " + d + " m");
+            checked[1] += widen > 1.05 ? 1 : 0;
+            assertEquals(1 / d, rec.get(r + 10), 1e-5 / d, at + ": 1 / the distance of the component's base");
+            assertEquals(px + d * py, rec.get(r + 11), 1e-5 * (px + d * py), at + ": a pixel's height there");
+            checked[0]++;
+        });
+        assertTrue(checked[0] > 100, "line-level components checked: " + checked[0]);
+        assertTrue(decision.thinMinFraction() >= 1 || checked[1] > 50, "widened components: " + checked[1]);
     }
 
     /** Sets every species' hue and brightness spread and the patches, draws, and reads the records back. */

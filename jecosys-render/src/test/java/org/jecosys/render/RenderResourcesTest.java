@@ -86,22 +86,31 @@ class RenderResourcesTest {
 
     @Test
     void everyGlObjectTheRendererMakesIsTrackedAndReleased() {
+        for (ResolvePath path : ResolvePath.values()) {
+            if (path.supported(gl.capabilities())) {
+                everyGlObjectIsTrackedAndReleased(path);
+            }
+        }
+    }
+
+    private void everyGlObjectIsTrackedAndReleased(ResolvePath path) {
         // the driver's own count of live objects, whoever made them, against GlTracker's
         GlCensus before = GlCensus.take();
         int tracked = gl.tracker().live();
         GlCensus during;
-        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings());
+        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings(), path);
              FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
             fb.bind();
             r.render(TestFrames.wind(world, 0.5, camera), camera, W, H);
             during = GlCensus.take().minus(before);
             assertTrue(during.total() > 10, "objects: " + during);
+            assertEquals(path, r.plants().path());
             assertEquals(gl.tracker().live() - tracked, during.total(),
-                    "every object made is a tracked Gl* wrapper (no stray shader or buffer): " + during);
+                    path + ": every object made is a tracked Gl* wrapper (no stray shader or buffer): " + during);
             assertEquals(0, during.shaders(), "shaders are deleted once linked");
         }
         assertEquals(tracked, gl.tracker().live());
-        assertEquals(before, GlCensus.take(), "closing released every object the driver knows of (there were "
+        assertEquals(before, GlCensus.take(), path + ": closing released every object the driver knows of (there were "
                 + during + ")");
     }
 

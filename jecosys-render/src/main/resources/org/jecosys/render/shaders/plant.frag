@@ -5,8 +5,7 @@
 // discards, so the rasteriser can test depth before shading. Colour arrives lit and fogged from
 // the vertex shader; alpha is the share of the drawn width the real part covers (used by
 // alpha-to-coverage when multisampling, ignored otherwise: the plants are drawn opaque).
-in vec3 vColour;
-in float vCover;
+in vec4 vShade;
 #ifdef DITHER
 flat in vec2 vKeep;
 #endif
@@ -29,5 +28,5 @@ void main() {
         discard;
     }
 #endif
-    fragColour = vec4(vColour, vCover);
+    fragColour = vShade;
 }

@@ -10,8 +10,9 @@
 
 #include "plant_common.glsl"
 
-out vec3 vColour;                                // lit and fogged per vertex
-out float vCover;                                // share of the drawn width the part covers
+out vec4 vShade;                                 // rgb: lit and fogged per vertex; a: the share of the
+                                                 // drawn width the part covers (one varying: a software
+                                                 // rasteriser sets up each varying of each primitive)
 #ifdef DITHER
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
 #endif
@@ -31,8 +32,7 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    vColour = shade(v, c2, false);
-    vCover = v.cover;
+    vShade = vec4(shade(v, c2, false), v.cover);
 #ifdef DITHER
     int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;

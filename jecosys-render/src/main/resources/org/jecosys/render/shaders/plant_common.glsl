@@ -17,6 +17,7 @@
 //   back-lit, a specular term toward the tip, and darkening toward the base.
 
 #include "plant_light.glsl"
+#include "plant_far.glsl"
 
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
 layout(location = 1) in vec4 aColour;           // component colour (0..1), fraction along it
@@ -28,11 +29,9 @@ uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point 
 uniform samplerBuffer uComponents;               // RGBA32F: 3 texels per drawn component
 uniform int uSlotCount;
 uniform int uComponentBase;
-uniform vec2 uPixelScale;                        // a pixel's height, metres: x + distance * y
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
 uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
-uniform vec3 uThin;                              // the frame's distance thinning: start, end (m), least share
 
 
 struct Placed {
@@ -52,17 +51,6 @@ vec3 rotY(vec3 v, float c, float s) {
 vec3 rotAxis(vec3 v, vec3 k, float t) {
     float c = cos(t);
     return v * c + cross(k, v) * sin(t) + k * dot(k, v) * (1.0 - c);
-}
-
-// How much wider a kept far blade is drawn to make up for the plants the frame's decision thinned
-// out at distance d: 1 / the kept share, so the kept ones carry about the same ink, at most 4 times
-// (wider, far blades turn into blobs); 1 without thinning.
-float thinWiden(float d) {
-    if (uThin.z >= 1.0) {
-        return 1.0;
-    }
-    float kept = 1.0 - (1.0 - uThin.z) * smoothstep(uThin.x, uThin.y, d);
-    return min(1.0 / max(kept, 0.05), 4.0);
 }
 
 // Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the

@@ -17,8 +17,9 @@
 // Species with flower parts are drawn by the variant compiled with FLOWERS, which places every vertex
 // as plant.vert does. Without it (blades and stems only, most of a meadow) the vertex work is cut to
 // what a far component needs: its distance, pixel size and view direction are taken at its base (a
-// component is short against 15 m and more), and a ribbon's edge is moved to the least width along
-// the part of its half-width vector that crosses the view.
+// component is short against 15 m and more), worked out once per component by the resolve pass
+// (plant_far.glsl), and a ribbon's edge is moved to the least width along the part of its
+// half-width vector that crosses the view.
 
 #include "plant_common.glsl"
 
@@ -35,7 +36,7 @@ void main() {
     int ci = (uComponentBase + gl_InstanceID * uSlotCount + slot) * 3;
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
     vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
-    vec4 c2 = texelFetch(uComponents, ci + 2);   // the component's lit colour (line levels)
+    vec4 c2 = texelFetch(uComponents, ci + 2);   // lit colour, widening, 1 / distance, pixel (plant_far.glsl)
     int t = int(c1.x + 0.5) + point * 3;
     int u = t + int(aStride + 0.5);
     float w = c1.y;
@@ -46,7 +47,7 @@ void main() {
     if (aVertex.z != 0.0) {
         side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
         if (kind < 2) {
-            side *= thinWiden(length(uEye - c0.xyz));
+            side *= farWiden(c2);
         }
     }
     if (aVertex.w != 0.0 || kind == 3) {
@@ -81,17 +82,17 @@ void main() {
     float pixel = max(uPixelScale.x + distance * uPixelScale.y, 1e-6);
     vCover = aVertex.z == 0.0 ? 1.0 : clamp(halfWidth / pixel, 1.0 / 32.0, 1.0);
 #else
+    // the component's distance and the pixel's size at its base, from the resolve pass
     vec3 toEye = uEye - c0.xyz;
-    float distance = max(length(toEye), 1e-4);
-    float pixel = uPixelScale.x + distance * uPixelScale.y;
+    float pixel = c2.w;
     vec3 world = c0.xyz + rotY(p, c0.w, c1.z);
     vCover = 1.0;
     if (aVertex.z != 0.0) {
-        vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w) * thinWiden(distance);
+        vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w) * farWiden(c2);
         vec3 offset = aVertex.z * rotY(side, c0.w, c1.z);
         // the edge lines (a pixel wide each) move apart until together they span uMinPixels across
         // the view: the part of the offset that crosses the view is lengthened to the least width
-        vec3 v = toEye / distance;
+        vec3 v = toEye * c2.z;
         vec3 across = offset - dot(offset, v) * v;
         float seen2 = dot(across, across);
         float least = 0.5 * (uMinPixels - 1.0) * pixel;
@@ -101,7 +102,7 @@ void main() {
 #endif
     gl_Position = uViewProj * vec4(world, 1.0);
     // the resolve pass lit the component at its middle (record texel 2); the base is darker
-    vColour = c2.rgb * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
+    vColour = farColour(c2) * (baseShade(kind, aColour.w) / baseShade(kind, 0.5));
 #ifdef DITHER
     int keep = int(c1.w + 0.5);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;

@@ -15,7 +15,8 @@
 // pose k + 1, sin azimuth, dither window), r2 = (cos and sin of the component's hue turn, its
 // brightness factor, the dryness of the plant's patch): the colour variation, worked out per component
 // on the CPU when the look changes (ComponentLooks, texture uLooks), not per frame; for a
-// line (far) level r2 is instead the component's colour lit once at its middle point (rgb, 1).
+// line (far) level r2 is instead what all the component's vertices share (plant_far.glsl): its
+// colour lit once at its middle point, its thinning widening, 1 / its distance, a pixel's size there.
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
 uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend azimuth (radians)
@@ -31,6 +32,7 @@ uniform samplerBuffer uSlotLooks;                // RGBA32F per species slot: co
 uniform int uSlotBase;                           // first slot look of this list's species
 
 #include "plant_light.glsl"
+#include "plant_far.glsl"
 
 struct Pose {
     int texel;                                   // texel of pose k, point 0
@@ -89,7 +91,8 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
     if (uLines == 0) {
         record2 = look;
     } else {
-        // a line level: light the component once, at its middle point
+        // a line level: light the component once, at its middle point; its distance and the
+        // widening and pixel size there, once for all its vertices
         vec4 slotLook = texelFetch(uSlotLooks, uSlotBase + slot);  // colour, kind
         int kind = int(slotLook.w + 0.5);
         int points = stride / 3;
@@ -104,6 +107,6 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
         n = vec3(n.x * own.c - n.z * own.s, n.y, n.x * own.s + n.z * own.c);
         vec3 toEye = uEye - world;
         vec3 c = albedo(slotLook.rgb, look, kind, along);
-        record2 = vec4(lit(c, kind, along, n, toEye, length(toEye), true), 1.0);
+        record2 = farRecord(lit(c, kind, along, n, toEye, length(toEye), true), max(length(uEye - base), 1e-4));
     }
 }
