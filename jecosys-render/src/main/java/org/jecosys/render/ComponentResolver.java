@@ -80,6 +80,16 @@ final class ComponentResolver implements AutoCloseable {
     private final int[] slotBase;
     private final GlBuffer slotLookBuffer;
     private final GlBufferTexture slotLookTexture;
+    /** The texture unit of the list table during the compute resolve pass. */
+    static final int LIST_UNIT = 7;
+    /** Per variant, this frame: its first entry in the list table, its entries, its invocations. */
+    private final int[] listFirst = new int[2];
+    private final int[] listCount = new int[2];
+    private final int[] listInvocations = new int[2];
+    /** The list table of the compute path (8 ints per non-empty list), staged and uploaded per frame. */
+    private final IntBuffer listStaging;
+    private final GlBuffer listBuffer;
+    private final GlBufferTexture listTexture;
     /** Invocations per compute work group ({@code local_size_x} of {@code plant_resolve.comp}). */
     private static final int GROUP = 64;
     /** Most invocations in one dispatch: 65535 groups, the least every 4.3 context allows. */
@@ -118,6 +128,8 @@ final class ComponentResolver implements AutoCloseable {
         this.components = components;
         this.looks = new ComponentLooks(world);
         IntBuffer instances = null;
+        IntBuffer lists = null;
+        int tableInts = 8 * Math.max(1, batches.listCount());
         try {
             detach();
             for (int k = 0; k < passes.length; k++) {
@@ -146,13 +158,18 @@ final class ComponentResolver implements AutoCloseable {
             slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
             lookBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 8L * components));
             lookTexture = own(new GlBufferTexture(t, lookBuffer, GL_RG32UI));
+            listBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 4L * tableInts));
+            listTexture = own(new GlBufferTexture(t, listBuffer, GL_RGBA32I));
+            lists = MemoryUtil.memAllocInt(tableInts);
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree(instances);
+            MemoryUtil.memFree(lists);
             PlantRenderer.closeReverse(owned);
             throw e;
         }
         detach();
         instanceStaging = instances;
+        listStaging = lists;
         slotBase = new int[world.plants().species().size()];
         attached = new boolean[slotBase.length];
         for (int s = 0; s < slotBase.length; s++) {
@@ -196,7 +213,11 @@ final class ComponentResolver implements AutoCloseable {
         }
     }
 
-    /** One resolve program, its samplers bound to their units, and the locations of its per-list uniforms. */
+    /**
+     * One resolve program, its samplers bound to their units, and the locations of its per-dispatch
+     * uniforms: per list on the transform-feedback path, per variant (the list table's range) on the
+     * compute path; a location the program lacks is -1, which GL ignores.
+     */
     private static final class Pass {
         final PlantUniforms uniforms;
         final int instanceBase;
@@ -204,8 +225,9 @@ final class ComponentResolver implements AutoCloseable {
         final int lines;
         final int slotBase;
         final int dryTips;
+        final int listFirst;
+        final int listCount;
         final int count;
-        final int recordBase;
         final int first;
 
         Pass(GlProgram p) {
@@ -216,13 +238,15 @@ final class ComponentResolver implements AutoCloseable {
             glUniform1i(p.optionalUniform("uLinks"), 4);
             glUniform1i(p.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
             glUniform1i(p.uniform("uLooks"), LOOK_UNIT);
-            instanceBase = p.uniform("uInstanceBase");
-            slots = p.uniform("uSlots");
-            lines = p.uniform("uLines");
-            slotBase = p.uniform("uSlotBase");
-            dryTips = p.uniform("uDryTips");
+            glUniform1i(p.optionalUniform("uLists"), LIST_UNIT);
+            instanceBase = p.optionalUniform("uInstanceBase");
+            slots = p.optionalUniform("uSlots");
+            lines = p.optionalUniform("uLines");
+            slotBase = p.optionalUniform("uSlotBase");
+            dryTips = p.optionalUniform("uDryTips");
+            listFirst = p.optionalUniform("uListFirst");
+            listCount = p.optionalUniform("uListCount");
             count = p.optionalUniform("uCount");
-            recordBase = p.optionalUniform("uRecordBase");
             first = p.optionalUniform("uFirst");
         }
     }
@@ -267,10 +291,11 @@ final class ComponentResolver implements AutoCloseable {
     }
 
     /**
-     * The per-component pass on the GPU, list by list, each list's records at its place in the
-     * component buffer: one compute invocation per drawn component, or one point per drawn component
-     * with rasterisation discarded and its record captured by transform feedback. Leaves a resolve
-     * program in use (none on the compute path). Render thread; no allocation.
+     * The per-component pass on the GPU, each list's records at its place in the component buffer:
+     * on the compute path one dispatch per program variant over all its lists (one invocation per
+     * drawn component, its list found in a table uploaded here), on the transform-feedback path one
+     * draw of points per list with rasterisation discarded. Leaves a resolve program in use (none on
+     * the compute path). Render thread; no allocation.
      */
     void resolve(PlantLook look) {
         if (look.version() != lookVersion) {
@@ -283,14 +308,13 @@ final class ComponentResolver implements AutoCloseable {
         linkTexture.bind(4);
         slotLookTexture.bind(SLOT_LOOK_UNIT);
         lookTexture.bind(LOOK_UNIT);
-        boolean compute = path == ResolvePath.COMPUTE;
         detach();
-        if (compute) {
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
-        } else {
-            glEnable(GL_RASTERIZER_DISCARD);
-            pointsVao.bind();
+        if (path == ResolvePath.COMPUTE) {
+            resolveByCompute(look);
+            return;
         }
+        glEnable(GL_RASTERIZER_DISCARD);
+        pointsVao.bind();
         for (int li = 0, lists = batches.listCount(); li < lists; li++) {
             int n = batches.count(li);
             if (n == 0) {
@@ -306,32 +330,63 @@ final class ComponentResolver implements AutoCloseable {
             glUniform1i(p.instanceBase, batches.instanceOffset(li));
             glUniform1i(p.slots, slots);
             int count = n * slots;
-            long recordBase = batches.componentOffset(li);
-            if (compute) {
-                glUniform1i(p.count, count);
-                glUniform1i(p.recordBase, (int) recordBase);
-                for (int first = 0; first < count; first += MAX_DISPATCH) {
-                    int size = Math.min(MAX_DISPATCH, count - first);
-                    glUniform1i(p.first, first);
-                    glDispatchCompute((size + GROUP - 1) / GROUP, 1, 1);
+            long bytes = 4L * PlantRenderer.RECORD_FLOATS;
+            glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id(),
+                    bytes * batches.componentOffset(li), bytes * count);
+            glBeginTransformFeedback(GL_POINTS);
+            glDrawArrays(GL_POINTS, 0, count);
+            glEndTransformFeedback();
+        }
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+        glDisable(GL_RASTERIZER_DISCARD);
+    }
+
+    /** The compute path of {@link #resolve}: the list table, then at most one dispatch per variant. */
+    private void resolveByCompute(PlantLook look) {
+        listStaging.clear();
+        int entries = 0;
+        for (int k = 0; k < passes.length; k++) {
+            listFirst[k] = entries;
+            int invocations = 0;
+            for (int li = 0, lists = batches.listCount(); li < lists; li++) {
+                int n = batches.count(li);
+                int species = batches.speciesOf(li);
+                if (n == 0 || attached[species] != (k == 1)) {
+                    continue;
                 }
-            } else {
-                long bytes = 4L * PlantRenderer.RECORD_FLOATS;
-                glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, componentBuffer.id(), bytes * recordBase,
-                        bytes * count);
-                glBeginTransformFeedback(GL_POINTS);
-                glDrawArrays(GL_POINTS, 0, count);
-                glEndTransformFeedback();
+                int slots = batches.slots(species);
+                listStaging.put(invocations).put(batches.instanceOffset(li)).put(slots).put(batches.componentOffset(li));
+                listStaging.put(slotBase[species]).put(batches.lines(li) ? 1 : 0)
+                        .put(Float.floatToRawIntBits(look.dryTips(species))).put(0);
+                invocations += n * slots;
+                entries++;
+            }
+            listCount[k] = entries - listFirst[k];
+            listInvocations[k] = invocations;
+        }
+        listStaging.flip();
+        listBuffer.orphan();
+        listBuffer.upload(0, listStaging);
+        listTexture.bind(LIST_UNIT);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
+        for (int k = 0; k < passes.length; k++) {
+            int count = listInvocations[k];
+            if (count == 0) {
+                continue;
+            }
+            Pass p = passes[k];
+            p.uniforms.program.use();
+            glUniform1i(p.listFirst, listFirst[k]);
+            glUniform1i(p.listCount, listCount[k]);
+            glUniform1i(p.count, count);
+            for (int at = 0; at < count; at += MAX_DISPATCH) {
+                glUniform1i(p.first, at);
+                glDispatchCompute((Math.min(MAX_DISPATCH, count - at) + GROUP - 1) / GROUP, 1, 1);
             }
         }
-        if (compute) {
-            detach();
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        } else {
-            glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-            glDisable(GL_RASTERIZER_DISCARD);
-        }
+        detach();
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
 
     /**
@@ -463,5 +518,6 @@ final class ComponentResolver implements AutoCloseable {
         closed = true;
         PlantRenderer.closeReverse(owned);
         MemoryUtil.memFree(instanceStaging);
+        MemoryUtil.memFree(listStaging);
     }
 }

@@ -50,14 +50,16 @@ import static org.lwjgl.opengl.GL30C.glBindBufferRange;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
+import org.lwjgl.opengl.GL43C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
  * Saves, and puts back, every piece of GL state the scene renderer changes, so that it composes with a
  * host's own drawing: the program, vertex array and array-buffer bindings, the active texture unit,
  * the buffer textures of the units the renderer uses, the 2D texture of unit {@link #UNIT_2D}, the
- * buffers bound to {@code GL_TEXTURE_BUFFER}
- * and {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index 0), rasteriser discard, alpha-to-coverage,
+ * buffers bound to {@code GL_TEXTURE_BUFFER}, {@code GL_TRANSFORM_FEEDBACK_BUFFER} (generic and index
+ * 0) and, on OpenGL 4.3, {@code GL_SHADER_STORAGE_BUFFER} (generic and index 0: the compute resolve
+ * pass), rasteriser discard, alpha-to-coverage,
  * the depth test, depth function and depth mask, face culling, blending (switch, factors, equations),
  * the scissor test and box, the clear colour and the viewport. The framebuffer binding is not changed
  * by the renderer and so not saved.
@@ -68,10 +70,11 @@ import org.lwjgl.system.MemoryUtil;
  */
 final class GlStateGuard implements AutoCloseable {
     /**
-     * The texture units whose buffer-texture binding the renderer changes: 0 to 6 (poses, component
-     * records or instances, render states, static data, links, -, the species slots' looks).
+     * The texture units whose buffer-texture binding the renderer changes: 0 to 7 (poses, component
+     * records or instances, render states, static data, links, the components' looks, the species
+     * slots' looks, the compute resolve pass's list table).
      */
-    static final int UNITS = 7;
+    static final int UNITS = 8;
 
     /** The texture unit whose 2D texture binding the renderer changes: the terrain's occlusion map. */
     static final int UNIT_2D = 5;
@@ -93,6 +96,12 @@ final class GlStateGuard implements AutoCloseable {
     private int feedbackBuffer0;
     private long feedbackStart0;
     private long feedbackSize0;
+    /** Whether the context has shader storage buffers (OpenGL 4.3), whose bindings are then kept too. */
+    private final boolean storage = org.lwjgl.opengl.GL.getCapabilities().OpenGL43;
+    private int storageBuffer;
+    private int storageBuffer0;
+    private long storageStart0;
+    private long storageSize0;
     private int activeTexture;
     private int depthFunc;
     private boolean depthMask;
@@ -114,6 +123,12 @@ final class GlStateGuard implements AutoCloseable {
         feedbackBuffer0 = query.get(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0);
         feedbackStart0 = query.get64(GL_TRANSFORM_FEEDBACK_BUFFER_START, 0);
         feedbackSize0 = query.get64(GL_TRANSFORM_FEEDBACK_BUFFER_SIZE, 0);
+        if (storage) {
+            storageBuffer = query.get(GL43C.GL_SHADER_STORAGE_BUFFER_BINDING);
+            storageBuffer0 = query.get(GL43C.GL_SHADER_STORAGE_BUFFER_BINDING, 0);
+            storageStart0 = query.get64(GL43C.GL_SHADER_STORAGE_BUFFER_START, 0);
+            storageSize0 = query.get64(GL43C.GL_SHADER_STORAGE_BUFFER_SIZE, 0);
+        }
         activeTexture = query.get(GL_ACTIVE_TEXTURE);
         for (int u = 0; u < UNITS; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
@@ -172,6 +187,14 @@ final class GlStateGuard implements AutoCloseable {
             glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer0);
         }
         glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer);
+        if (storage) {
+            if (storageSize0 > 0) {
+                glBindBufferRange(GL43C.GL_SHADER_STORAGE_BUFFER, 0, storageBuffer0, storageStart0, storageSize0);
+            } else {
+                glBindBufferBase(GL43C.GL_SHADER_STORAGE_BUFFER, 0, storageBuffer0);
+            }
+            glBindBuffer(GL43C.GL_SHADER_STORAGE_BUFFER, storageBuffer);
+        }
         for (int u = 0; u < UNITS; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_BUFFER, unitTextures[u]);

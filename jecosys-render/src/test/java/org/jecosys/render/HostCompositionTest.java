@@ -155,6 +155,12 @@ class HostCompositionTest {
                 org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING)));
         s.put("transform feedback buffer 0", Integer.toString(org.lwjgl.opengl.GL30C.glGetIntegeri(
                 org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER_BINDING, 0)));
+        if (org.lwjgl.opengl.GL.getCapabilities().OpenGL43) {
+            s.put("shader storage buffer", Integer.toString(glGetInteger(
+                    org.lwjgl.opengl.GL43C.GL_SHADER_STORAGE_BUFFER_BINDING)));
+            s.put("shader storage buffer 0", Integer.toString(org.lwjgl.opengl.GL30C.glGetIntegeri(
+                    org.lwjgl.opengl.GL43C.GL_SHADER_STORAGE_BUFFER_BINDING, 0)));
+        }
         s.put("rasterizer discard", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD)));
         s.put("alpha to coverage", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE)));
         for (int u = 0; u < 8; u++) {
@@ -188,6 +194,12 @@ class HostCompositionTest {
             org.lwjgl.opengl.GL30C.glBindBufferRange(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, 0,
                     feedback, 64, 128);
             glBindBuffer(org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER, ebo);
+            if (org.lwjgl.opengl.GL.getCapabilities().OpenGL43) {
+                // a game's own storage buffers, which the compute resolve pass must leave as found
+                org.lwjgl.opengl.GL30C.glBindBufferRange(org.lwjgl.opengl.GL43C.GL_SHADER_STORAGE_BUFFER, 0,
+                        feedback, 0, 64);
+                glBindBuffer(org.lwjgl.opengl.GL43C.GL_SHADER_STORAGE_BUFFER, vbo);
+            }
             for (int u = 0; u < textures.length; u++) {
                 glActiveTexture(GL_TEXTURE0 + u);
                 glBindTexture(GL_TEXTURE_BUFFER, textures[u]);

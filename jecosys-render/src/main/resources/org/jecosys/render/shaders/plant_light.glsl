@@ -11,7 +11,11 @@ uniform vec3 uAmbient;                           // sky light
 uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
+#ifdef LIST_TABLE
+float uDryTips;                                  // set per list by plant_resolve.comp
+#else
 uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
+#endif
 
 const vec3 STRAW = vec3(0.74, 0.66, 0.38);
 const vec3 THROUGH = vec3(1.05, 1.22, 0.6);      // light through a blade: yellower than reflected light

@@ -23,13 +23,21 @@ uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend
 uniform samplerBuffer uStatic;                   // RGBA32F: root base xyz (world), texel of pose 0
 uniform isamplerBuffer uLinks;                   // RGBA32I: parent component or -1, texels per pose, tip, poses
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
+#ifdef LIST_TABLE
+// the compute form resolves many lists in one dispatch: each invocation sets these from its list
+int uInstanceBase;
+int uSlots;
+int uLines;
+int uSlotBase;
+#else
 uniform int uInstanceBase;                       // first instance record of this draw list
 uniform int uSlots;                              // components per plant of this species
+uniform int uLines;                              // 1: this list is a line level (texel 2 = far record)
+uniform int uSlotBase;                           // first slot look of this list's species
+#endif
 
 uniform usamplerBuffer uLooks;                   // RG32UI per component: its baked colour variation
-uniform int uLines;                              // 1: this list is a line level (texel 2 = lit colour)
 uniform samplerBuffer uSlotLooks;                // RGBA32F per species slot: colour, vertex kind
-uniform int uSlotBase;                           // first slot look of this list's species
 
 #include "plant_light.glsl"
 #include "plant_far.glsl"
