@@ -88,9 +88,10 @@ public final class PlantRenderer implements AutoCloseable {
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
      * allocates. If it throws, every GL object it had made is deleted again.
      *
-     * The per-component pass runs on the faster {@link ResolvePath} the context supports
-     * ({@link ResolvePath#best}), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's
-     * records would not fit one shader storage buffer of this context.
+     * The per-component pass runs on the {@link ResolvePath} that is faster on this context
+     * ({@link ResolvePath#best(org.lwjgl.opengl.GLCapabilities, String)}: compute on OpenGL 4.3
+     * hardware), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit
+     * one shader storage buffer of this context.
      *
      * @param gl        the render context, current on this thread
      * @param world     the plants: species models (pose tables, meshes) and positions
@@ -187,7 +188,8 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     private static ResolvePath choosePath(GlContext gl, ResolvePath asked, long recordBytes) {
-        ResolvePath want = asked == null ? ResolvePath.best(gl.capabilities()) : asked;
+        ResolvePath want = asked == null ? ResolvePath.best(gl.capabilities(), GL11C.glGetString(GL11C.GL_RENDERER))
+                : asked;
         if (want != ResolvePath.COMPUTE) {
             return want;
         }

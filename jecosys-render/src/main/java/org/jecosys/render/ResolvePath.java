@@ -7,8 +7,9 @@ import org.lwjgl.opengl.GLCapabilities;
  * 8 bytes per component and the instanced draws (paper §4.1-4.2: each drawn component's base, bend
  * azimuth, pose pair and weight, and colour). Both paths run the same shader code
  * ({@code plant_resolve.glsl}) and give the same records; they differ in how the GPU is asked.
- * Chosen once per renderer from the context's capabilities ({@link #best}) unless the caller names
- * one; the HUD and the benchmark reports name it ({@link #description}).
+ * Chosen once per renderer from the context's capabilities and renderer
+ * ({@link #best(GLCapabilities, String)}) unless the caller names one; the HUD and the benchmark
+ * reports name it ({@link #description}).
  *
  * <p>Immutable; any thread.
  */
@@ -56,5 +57,21 @@ public enum ResolvePath {
      */
     public static ResolvePath best(GLCapabilities caps) {
         return COMPUTE.supported(caps) ? COMPUTE : TRANSFORM_FEEDBACK;
+    }
+
+    /**
+     * The path a renderer takes by itself: {@link #best(GLCapabilities)}, except on a software
+     * rasteriser (Mesa's llvmpipe or softpipe, SwiftShader), which runs a compute dispatch slower than
+     * the same work as transform feedback (measured with llvmpipe on 2 cores: the meadow's frames
+     * alike, C1's 8.3-8.9 ms against 7.8-7.9) and so gets {@link #TRANSFORM_FEEDBACK}. No allocation.
+     *
+     * @param caps     the context's capabilities
+     * @param renderer the context's {@code GL_RENDERER} string (null: unknown)
+     * @return the path to use
+     */
+    public static ResolvePath best(GLCapabilities caps, String renderer) {
+        boolean software = renderer != null && (renderer.startsWith("llvmpipe") || renderer.startsWith("softpipe")
+                || renderer.contains("SwiftShader"));
+        return software ? TRANSFORM_FEEDBACK : best(caps);
     }
 }

@@ -20,6 +20,10 @@ class ComponentRecordsComputeTest extends ComponentRecordsTest {
     @Test
     void theComputePathStoresTheRecordsTheTransformFeedbackPathCaptures() {
         assertEquals(ResolvePath.COMPUTE, ResolvePath.best(gl.capabilities()), "the best path of a 4.3 context");
+        assertEquals(ResolvePath.COMPUTE, ResolvePath.best(gl.capabilities(), "NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+        assertEquals(ResolvePath.COMPUTE, ResolvePath.best(gl.capabilities(), null));
+        assertEquals(ResolvePath.TRANSFORM_FEEDBACK, ResolvePath.best(gl.capabilities(),
+                "llvmpipe (LLVM 15.0.6, 256 bits)"), "a software rasteriser resolves faster by transform feedback");
         FloatBuffer other = MemoryUtil.memAllocFloat(rec.capacity());
         try (PlantRenderer feedback = new PlantRenderer(gl, world, ResolvePath.TRANSFORM_FEEDBACK)) {
             draw(feedback);
