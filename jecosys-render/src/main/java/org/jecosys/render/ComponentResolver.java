@@ -4,7 +4,6 @@ import static org.lwjgl.opengl.GL11C.GL_POINTS;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUseProgram;
@@ -31,7 +30,6 @@ import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.math.Rgb;
-import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
@@ -48,9 +46,10 @@ import org.lwjgl.system.MemoryUtil;
  * the parent walk ({@code ATTACHED}) for species with attached components, without it for the others.
  *
  * <p>Holds the resolve programs, the static per-component data (root bases and pose texels; parent
- * links), the dynamic render-state and instance buffers with their buffer textures, the component
- * record buffer, an empty VAO for the points and the instance staging memory. It reads the renderer's
- * pose texture and {@link PlantBatches}, which it does not own.
+ * links; made by {@link PlantMeshes}), the dynamic render-state and instance buffers with their
+ * buffer textures, the component record buffer, the compute path's list table, an empty VAO for the
+ * points and the staging memory. It reads the renderer's pose texture and {@link PlantBatches}, which
+ * it does not own.
  *
  * <p>Render thread only. The constructor allocates (and releases what it had made if it fails);
  * {@link #upload}, {@link #resolve} and {@link #bindRecords} allocate nothing. {@link #close()} is
@@ -143,9 +142,9 @@ final class ComponentResolver implements AutoCloseable {
             componentBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
                     4L * PlantRenderer.RECORD_FLOATS * maxComponents));
             componentTexture = own(new GlBufferTexture(t, componentBuffer, GL_RGBA32F));
-            staticBuffer = own(uploadStatic(t, world, poseTexel));
+            staticBuffer = own(PlantMeshes.uploadStatic(t, world, poseTexel));
             staticTexture = own(new GlBufferTexture(t, staticBuffer, GL_RGBA32F));
-            linkBuffer = own(uploadLinks(t, world));
+            linkBuffer = own(PlantMeshes.uploadLinks(t, world));
             linkTexture = own(new GlBufferTexture(t, linkBuffer, GL_RGBA32I));
             dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
                     * components));
@@ -154,7 +153,7 @@ final class ComponentResolver implements AutoCloseable {
                     8L * Math.max(1, batches.maxInstances())));
             instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
             pointsVao = own(new GlVertexArray(t));
-            slotLookBuffer = own(uploadFloats(t, slotLooks));
+            slotLookBuffer = own(PlantMeshes.uploadFloats(t, slotLooks));
             slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
             lookBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 8L * components));
             lookTexture = own(new GlBufferTexture(t, lookBuffer, GL_RG32UI));
@@ -248,16 +247,6 @@ final class ComponentResolver implements AutoCloseable {
             listCount = p.optionalUniform("uListCount");
             count = p.optionalUniform("uCount");
             first = p.optionalUniform("uFirst");
-        }
-    }
-
-    private static GlBuffer uploadFloats(GlTracker t, float[] values) {
-        FloatBuffer b = MemoryUtil.memAllocFloat(values.length);
-        try {
-            b.put(values).flip();
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(b);
         }
     }
 
@@ -439,74 +428,6 @@ final class ComponentResolver implements AutoCloseable {
     /** {@return bytes uploaded by the last {@link #upload}: instance records and component render states} */
     long uploadedBytes() {
         return uploadedBytes;
-    }
-
-    /**
-     * Static per-component data for the resolve pass, one RGBA32F texel per component: the world
-     * position of a root component's base (its plant's base plus the slot's ground offset rotated by
-     * the plant's rest azimuth; 0 for attached components) and the texel of pose 0, point 0 of its
-     * pose table.
-     */
-    private static GlBuffer uploadStatic(GlTracker t, World world, int[][][] poseTexel) {
-        int n = Math.max(1, world.componentCount());
-        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
-        try {
-            for (int p = 0; p < world.plantCount(); p++) {
-                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
-                int v = world.plantVariant(p);
-                int s = world.plantSpecies(p);
-                double rest = world.plantRestAzimuth(p);
-                double rc = Math.cos(rest);
-                double rs = Math.sin(rest);
-                for (int slot = 0; slot < m.slotCount(); slot++) {
-                    int o = 4 * (world.firstComponent(p) + slot);
-                    if (m.slotParent(slot) < 0) {
-                        double ox = m.slotBaseX(slot);
-                        double oz = m.slotBaseZ(slot);
-                        b.put(o, world.plantX(p) + (float) (ox * rc - oz * rs));
-                        b.put(o + 1, world.plantY(p));
-                        b.put(o + 2, world.plantZ(p) + (float) (ox * rs + oz * rc));
-                    } else {
-                        b.put(o, 0f).put(o + 1, 0f).put(o + 2, 0f);
-                    }
-                    b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
-                }
-            }
-            b.position(0).limit(4 * n);
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(b);
-        }
-    }
-
-    /**
-     * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
-     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
-     * tip point in a pose (where its children attach), and its pose count.
-     */
-    private static GlBuffer uploadLinks(GlTracker t, World world) {
-        int n = Math.max(1, world.componentCount());
-        IntBuffer b = MemoryUtil.memAllocInt(4 * n);
-        try {
-            for (int p = 0; p < world.plantCount(); p++) {
-                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
-                int v = world.plantVariant(p);
-                int first = world.firstComponent(p);
-                for (int slot = 0; slot < m.slotCount(); slot++) {
-                    PoseTable pt = m.slotPoseTable(slot, v);
-                    int o = 4 * (first + slot);
-                    int parent = m.slotParent(slot);
-                    b.put(o, parent < 0 ? -1 : first + parent);
-                    b.put(o + 1, 3 * pt.points());
-                    b.put(o + 2, 3 * (pt.points() - 1));
-                    b.put(o + 3, pt.poses());
-                }
-            }
-            b.position(0).limit(4 * n);
-            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
-        } finally {
-            MemoryUtil.memFree(b);
-        }
     }
 
     /** Deletes every GL object it made and frees the staging memory. Render thread; idempotent. */

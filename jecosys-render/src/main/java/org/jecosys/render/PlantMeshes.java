@@ -18,6 +18,7 @@ import org.jecosys.plant.ComponentShape;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.sim.World;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -189,5 +190,84 @@ final class PlantMeshes {
             }
         }
         return texels;
+    }
+
+    /** A float buffer for a buffer texture, uploaded once. Construction time; allocates. */
+    static GlBuffer uploadFloats(GlTracker t, float[] values) {
+        FloatBuffer b = MemoryUtil.memAllocFloat(values.length);
+        try {
+            b.put(values).flip();
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
+    /**
+     * Static per-component data for the resolve pass, one RGBA32F texel per component: the world
+     * position of a root component's base (its plant's base plus the slot's ground offset rotated by
+     * the plant's rest azimuth; 0 for attached components) and the texel of pose 0, point 0 of its
+     * pose table.
+     */
+    static GlBuffer uploadStatic(GlTracker t, World world, int[][][] poseTexel) {
+        int n = Math.max(1, world.componentCount());
+        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int s = world.plantSpecies(p);
+                double rest = world.plantRestAzimuth(p);
+                double rc = Math.cos(rest);
+                double rs = Math.sin(rest);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    int o = 4 * (world.firstComponent(p) + slot);
+                    if (m.slotParent(slot) < 0) {
+                        double ox = m.slotBaseX(slot);
+                        double oz = m.slotBaseZ(slot);
+                        b.put(o, world.plantX(p) + (float) (ox * rc - oz * rs));
+                        b.put(o + 1, world.plantY(p));
+                        b.put(o + 2, world.plantZ(p) + (float) (ox * rs + oz * rc));
+                    } else {
+                        b.put(o, 0f).put(o + 1, 0f).put(o + 2, 0f);
+                    }
+                    b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
+    }
+
+    /**
+     * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
+     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
+     * tip point in a pose (where its children attach), and its pose count.
+     */
+    static GlBuffer uploadLinks(GlTracker t, World world) {
+        int n = Math.max(1, world.componentCount());
+        IntBuffer b = MemoryUtil.memAllocInt(4 * n);
+        try {
+            for (int p = 0; p < world.plantCount(); p++) {
+                SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
+                int v = world.plantVariant(p);
+                int first = world.firstComponent(p);
+                for (int slot = 0; slot < m.slotCount(); slot++) {
+                    PoseTable pt = m.slotPoseTable(slot, v);
+                    int o = 4 * (first + slot);
+                    int parent = m.slotParent(slot);
+                    b.put(o, parent < 0 ? -1 : first + parent);
+                    b.put(o + 1, 3 * pt.points());
+                    b.put(o + 2, 3 * (pt.points() - 1));
+                    b.put(o + 3, pt.poses());
+                }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(b);
+        }
     }
 }

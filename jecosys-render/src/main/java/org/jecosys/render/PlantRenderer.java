@@ -36,9 +36,11 @@ import org.lwjgl.system.MemoryUtil;
  * parents). Per frame, {@link #draw} draws what the frame's decision lists ({@link PlantBatches}),
  * uploads only the render states the animation workers wrote for the drawn plants (8 bytes per
  * component) and 8 bytes per drawn plant and level, resolves on the GPU (a compute shader on
- * OpenGL 4.3, transform feedback on 3.3: {@link ResolvePath}) each drawn component's record (3 texels: base, cos/sin of the bend
- * azimuth, pose texel and weight, dither window, and its colour variation: hue turn, brightness,
- * patch dryness, worked out on the CPU only when the look changes), then issues per species and
+ * OpenGL 4.3 hardware, transform feedback on 3.3 and on software rasterisers: {@link ResolvePath})
+ * each drawn component's record (3 texels: base, cos/sin of the bend azimuth, pose texel and
+ * weight, dither window, and its colour variation: hue turn, brightness, patch dryness, worked out on
+ * the CPU only when the look changes; for a line level what its vertices share instead of the
+ * variation), then issues per species and
  * level (triangles near, lines far: Table 3) one instanced draw of the plants drawn whole and one
  * of those in a transition band, the only ones whose shaders have the dither test (programs
  * compiled with {@code DITHER}; species with flower parts use the {@code FLOWERS} variants). Triangle
@@ -88,9 +90,9 @@ public final class PlantRenderer implements AutoCloseable {
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
      * allocates. If it throws, every GL object it had made is deleted again.
      *
-     * The per-component pass runs on the {@link ResolvePath} that is faster on this context
+     * <p>The per-component pass runs on the {@link ResolvePath} that is faster on this context
      * ({@link ResolvePath#best(org.lwjgl.opengl.GLCapabilities, String)}: compute on OpenGL 4.3
-     * hardware), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit
+     * hardware, transform feedback on 3.3 and on software rasterisers), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit
      * one shader storage buffer of this context.
      *
      * @param gl        the render context, current on this thread
