@@ -12,7 +12,7 @@ uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
 #ifdef LIST_TABLE
-float uDryTips;                                  // set per list by plant_resolve.comp
+float uDryTips = 0.0;                            // set per list by plant_resolve.comp
 #else
 uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
 #endif

@@ -25,10 +25,11 @@ uniform isamplerBuffer uLinks;                   // RGBA32I: parent component or
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
 #ifdef LIST_TABLE
 // the compute form resolves many lists in one dispatch: each invocation sets these from its list
-int uInstanceBase;
-int uSlots;
-int uLines;
-int uSlotBase;
+// (initialised here too: the compiler cannot see that main sets them before any use, and warns)
+int uInstanceBase = 0;
+int uSlots = 1;
+int uLines = 0;
+int uSlotBase = 0;
 #else
 uniform int uInstanceBase;                       // first instance record of this draw list
 uniform int uSlots;                              // components per plant of this species
