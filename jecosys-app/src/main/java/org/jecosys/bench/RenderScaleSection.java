@@ -10,6 +10,7 @@ import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
+import org.jecosys.render.ResolvePath;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
@@ -18,12 +19,13 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 
 /**
- * Render scale: frames of the meadow (91,800 components), large (1,000,000) and prairie (about
+ * Render scale: frames of the meadow (417,004 components), large (1,000,000) and prairie (about
  * 4,000,000) at 1920x1080 with the camera walking each scene's path, one fixed step per frame: frames
  * per second, frame time (step, render and the GPU finishing), the render thread's CPU time inside
  * {@link SceneRenderer#render} (what the library costs the thread that submits; on a software
  * rasteriser it includes the driver's vertex work), bytes uploaded per frame, components drawn, and
- * the GL renderer and path. A smoke run renders the meadow only, small.
+ * the GL renderer and path: each scene on every {@link ResolvePath} the context supports, the one
+ * a renderer takes by itself first. A smoke run renders the meadow only, small.
  */
 final class RenderScaleSection implements Section {
     private static final String[] FILES = {"meadow.xml", "large.xml", "prairie.xml"};
@@ -59,57 +61,36 @@ final class RenderScaleSection implements Section {
         try (GlContext gl = GlContext.headless(false);
              GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
             report.glRenderer(gl.describe());
+            ResolvePath best = ResolvePath.best(gl.capabilities(), org.lwjgl.opengl.GL11C.glGetString(
+                    org.lwjgl.opengl.GL11C.GL_RENDERER));
+            java.util.List<ResolvePath> paths = new java.util.ArrayList<>(java.util.List.of(best));
+            for (ResolvePath p : ResolvePath.values()) {
+                if (p != best && p.supported(gl.capabilities())) {
+                    paths.add(p);
+                }
+            }
+            StringBuilder skipped = new StringBuilder();
             for (int s = 0; s < count; s++) {
                 SceneDef def = SceneFiles.load(scenes.resolve(FILES[s]));
-                try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE);
-                     SceneRenderer r = new SceneRenderer(gl, sim.world(), new RenderSettings().sky(def.render().sky()))) {
+                try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
                     sim.setLodTransition(def.render().lodTransition());
                     if (quality != null) {
                         quality.applyTo(sim);
                     }
-                    CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
-                            width / (double) height);
-                    double[] frameMs = new double[frames];
-                    double[] stepMs = new double[frames];
-                    double[] cpuMs = new double[frames];
-                    double[] uploaded = new double[frames];
-                    double[] drawn = new double[frames];
-                    double[] javaMs = new double[frames];
-                    java.nio.IntBuffer scratch = java.nio.IntBuffer.allocate(
-                            2 * Math.max(1, r.plants().batches().maxInstances()));
-                    fb.bind();
-                    for (int i = 0; i < warm + frames; i++) {
-                        ViewCamera cam = walk.at(i * DT);
-                        long t0 = System.nanoTime();
-                        sim.step(DT, cam);
-                        long t1 = System.nanoTime();
-                        Frame f = sim.latestFrame();
-                        long c0 = threads.getCurrentThreadCpuTime();
-                        r.render(f, cam, width, height);
-                        long c1 = threads.getCurrentThreadCpuTime();
-                        gl.finish();
-                        long t2 = System.nanoTime();
-                        int k = i - warm;
-                        if (k >= 0) {
-                            frameMs[k] = (t2 - t0) / 1e6;
-                            stepMs[k] = (t1 - t0) / 1e6;
-                            cpuMs[k] = (c1 - c0) / 1e6;
-                            uploaded[k] = r.plants().uploadedBytes() / 1024.0;
-                            drawn[k] = r.plants().batches().components();
-                            // the library's own per-frame Java work, apart from the driver: lists from the
-                            // frame's decision and the instance records (done again here, timed alone)
-                            long j0 = threads.getCurrentThreadCpuTime();
-                            r.plants().batches().update(f);
-                            r.plants().batches().writeInstances(scratch);
-                            javaMs[k] = (threads.getCurrentThreadCpuTime() - j0) / 1e6;
+                    for (ResolvePath path : paths) {
+                        SceneRenderer r;
+                        try {
+                            r = new SceneRenderer(gl, sim.world(), new RenderSettings().sky(def.render().sky()), path);
+                        } catch (IllegalArgumentException e) {
+                            // a path the context cannot run for this scene (a storage buffer too small)
+                            skipped.append(" ").append(def.name()).append(" not on ").append(path.name())
+                                    .append(": ").append(e.getMessage()).append('.');
+                            continue;
+                        }
+                        try (r) {
+                            measure(gl, def, sim, r, fb, t, raw, width, height, warm, frames, threads);
                         }
                     }
-                    double median = Stats.median(frameMs);
-                    t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
-                            Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
-                            Stats.median(javaMs), Stats.median(uploaded), r.plants().path().description());
-                    raw.put(def.name(), Map.of("frameMs", frameMs, "stepMs", stepMs, "renderCpuMs", cpuMs,
-                            "uploadedKiB", uploaded, "drawnComponents", drawn, "listsAndRecordsJavaMs", javaMs));
                 }
             }
             t.note("GL renderer: " + gl.describe() + ". Frame = one fixed step + render + glFinish; render-thread CPU"
@@ -117,9 +98,60 @@ final class RenderScaleSection implements Section {
                     + " includes the driver's vertex processing); of which the library's Java work: building the draw lists"
                     + " from the frame's decision and writing the instance records. Uploads: 8 bytes per component of the drawn plants'"
                     + " range (pose coordinate and azimuth, written by the animation workers) plus 8 bytes per drawn"
-                    + " plant and level.");
+                    + " plant and level. Each scene runs on every resolve path the context supports, the one a renderer"
+                    + " takes by itself first." + skipped);
         }
         report.add(t);
         report.raw("renderScale", raw);
+    }
+
+    /** Frames of one scene with one renderer: a row of {@code t} and the raw series. */
+    private static void measure(GlContext gl, SceneDef def, Simulation sim, SceneRenderer r, GlFramebuffer fb,
+                                Table t, Map<String, Object> raw, int width, int height, int warm, int frames,
+                                ThreadMXBean threads) {
+        CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
+                width / (double) height);
+        double[] frameMs = new double[frames];
+        double[] stepMs = new double[frames];
+        double[] cpuMs = new double[frames];
+        double[] uploaded = new double[frames];
+        double[] drawn = new double[frames];
+        double[] javaMs = new double[frames];
+        java.nio.IntBuffer scratch = java.nio.IntBuffer.allocate(
+                2 * Math.max(1, r.plants().batches().maxInstances()));
+        fb.bind();
+        for (int i = 0; i < warm + frames; i++) {
+            ViewCamera cam = walk.at(i * DT);
+            long t0 = System.nanoTime();
+            sim.step(DT, cam);
+            long t1 = System.nanoTime();
+            Frame f = sim.latestFrame();
+            long c0 = threads.getCurrentThreadCpuTime();
+            r.render(f, cam, width, height);
+            long c1 = threads.getCurrentThreadCpuTime();
+            gl.finish();
+            long t2 = System.nanoTime();
+            int k = i - warm;
+            if (k >= 0) {
+                frameMs[k] = (t2 - t0) / 1e6;
+                stepMs[k] = (t1 - t0) / 1e6;
+                cpuMs[k] = (c1 - c0) / 1e6;
+                uploaded[k] = r.plants().uploadedBytes() / 1024.0;
+                drawn[k] = r.plants().batches().components();
+                // the library's own per-frame Java work, apart from the driver: lists from the
+                // frame's decision and the instance records (done again here, timed alone)
+                long j0 = threads.getCurrentThreadCpuTime();
+                r.plants().batches().update(f);
+                r.plants().batches().writeInstances(scratch);
+                javaMs[k] = (threads.getCurrentThreadCpuTime() - j0) / 1e6;
+            }
+        }
+        double median = Stats.median(frameMs);
+        t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
+                Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
+                Stats.median(javaMs), Stats.median(uploaded), r.plants().path().description());
+        raw.put(def.name() + " / " + r.plants().path().name(), Map.of("frameMs", frameMs, "stepMs", stepMs,
+                "renderCpuMs", cpuMs, "uploadedKiB", uploaded, "drawnComponents", drawn, "listsAndRecordsJavaMs",
+                javaMs));
     }
 }

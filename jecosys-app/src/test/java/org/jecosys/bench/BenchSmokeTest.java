@@ -35,6 +35,10 @@ class BenchSmokeTest {
             assertTrue(md.contains("### " + title), title);
         }
         assertTrue(md.contains("## Machine") && md.contains("- CPU: "));
+        // render scale: the meadow on every resolve path the context runs, transform feedback always
+        assertTrue(md.contains("### Render scale"), "render scale");
+        assertTrue(md.contains(org.jecosys.render.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
+        assertTrue(json.contains("\"renderScale\"") && json.contains("/ TRANSFORM_FEEDBACK\""), "render scale raw");
         for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
                 "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
                 "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
