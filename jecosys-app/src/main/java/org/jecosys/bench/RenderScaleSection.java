@@ -61,8 +61,7 @@ final class RenderScaleSection implements Section {
         try (GlContext gl = GlContext.headless(false);
              GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
             report.glRenderer(gl.describe());
-            ResolvePath best = ResolvePath.best(gl.capabilities(), org.lwjgl.opengl.GL11C.glGetString(
-                    org.lwjgl.opengl.GL11C.GL_RENDERER));
+            ResolvePath best = ResolvePath.best(gl);
             java.util.List<ResolvePath> paths = new java.util.ArrayList<>(java.util.List.of(best));
             for (ResolvePath p : ResolvePath.values()) {
                 if (p != best && p.supported(gl.capabilities())) {

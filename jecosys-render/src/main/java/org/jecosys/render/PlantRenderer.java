@@ -190,8 +190,7 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     private static ResolvePath choosePath(GlContext gl, ResolvePath asked, long recordBytes) {
-        ResolvePath want = asked == null ? ResolvePath.best(gl.capabilities(), GL11C.glGetString(GL11C.GL_RENDERER))
-                : asked;
+        ResolvePath want = asked == null ? ResolvePath.best(gl) : asked;
         if (want != ResolvePath.COMPUTE) {
             return want;
         }

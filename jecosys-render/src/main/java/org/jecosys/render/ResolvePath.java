@@ -60,6 +60,17 @@ public enum ResolvePath {
     }
 
     /**
+     * {@link #best(GLCapabilities, String)} for the context {@code gl} wraps. Render thread (the
+     * context current); no allocation past the renderer string.
+     *
+     * @param gl the context
+     * @return the path a renderer on it takes by itself
+     */
+    public static ResolvePath best(GlContext gl) {
+        return best(gl.capabilities(), org.lwjgl.opengl.GL11C.glGetString(org.lwjgl.opengl.GL11C.GL_RENDERER));
+    }
+
+    /**
      * The path a renderer takes by itself: {@link #best(GLCapabilities)}, except on a software
      * rasteriser (Mesa's llvmpipe or softpipe, SwiftShader), which runs a compute dispatch slower than
      * the same work as transform feedback (measured with llvmpipe on 2 cores: the meadow's frames
