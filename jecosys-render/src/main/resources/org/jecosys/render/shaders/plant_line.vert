@@ -65,9 +65,9 @@ void main() {
         vec3 offset = rotY(aVertex.z * side + aVertex.w * normal, c0.w, c1.z);
         world = centre + offset;
         distance = length(uEye - world);
-        if (aVertex.z != 0.0 && uMinPixels > 0.0) {
+        if (aVertex.z != 0.0 && uMinPixels > 0.0 && point < int(aStride + 0.5) / 3 - 1) {
             // like the triangle levels' widening: the two edge lines (a pixel wide each) move apart
-            // until together they span uMinPixels across the view
+            // until together they span uMinPixels across the view (not at the tip, as below)
             vec3 v = (uEye - centre) / max(length(uEye - centre), 1e-6);
             vec3 across = offset - dot(offset, v) * v;
             float seen = length(across);
@@ -91,12 +91,17 @@ void main() {
         vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w) * farWiden(c2);
         vec3 offset = aVertex.z * rotY(side, c0.w, c1.z);
         // the edge lines (a pixel wide each) move apart until together they span uMinPixels across
-        // the view: the part of the offset that crosses the view is lengthened to the least width
+        // the view: the part of the offset that crosses the view is lengthened to the least width;
+        // not at the tip, which stays as narrow as it is (a pointed blade's tip is one vertex on
+        // its centre line anyway): widened, a blunt tip's edge became a line of most of a pixel
+        // across a tip a fraction of a pixel wide, nearly transparent and costly to draw
         vec3 v = toEye * c2.z;
         vec3 across = offset - dot(offset, v) * v;
         float seen2 = dot(across, across);
         float least = 0.5 * (uMinPixels - 1.0) * pixel;
-        world += least > 0.0 && seen2 < least * least && seen2 > 1e-18 ? across * (least * inversesqrt(seen2)) : offset;
+        bool tip = point == int(aStride + 0.5) / 3 - 1;
+        world += !tip && least > 0.0 && seen2 < least * least && seen2 > 1e-18
+                ? across * (least * inversesqrt(seen2)) : offset;
         vCover = clamp(abs(aVertex.z) * length(side) / pixel, 1.0 / 32.0, 1.0);
     }
 #endif
