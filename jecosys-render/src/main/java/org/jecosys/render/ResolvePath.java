@@ -72,9 +72,10 @@ public enum ResolvePath {
 
     /**
      * The path a renderer takes by itself: {@link #best(GLCapabilities)}, except on a software
-     * rasteriser (Mesa's llvmpipe or softpipe, SwiftShader), which runs a compute dispatch slower than
-     * the same work as transform feedback (measured with llvmpipe on 2 cores: the meadow's frames
-     * alike, C1's 8.3-8.9 ms against 7.8-7.9) and so gets {@link #TRANSFORM_FEEDBACK}. No allocation.
+     * rasteriser (Mesa's llvmpipe or softpipe, SwiftShader), which gets {@link #TRANSFORM_FEEDBACK}:
+     * measured with llvmpipe on 2 cores, compute was slower for small scenes (C1: 8.3-8.9 ms per
+     * frame against 7.8-7.9), alike or a little faster for the meadow, and llvmpipe's storage blocks
+     * (128 MiB) cannot hold the records of the larger shipped scenes at all. No allocation.
      *
      * @param caps     the context's capabilities
      * @param renderer the context's {@code GL_RENDERER} string (null: unknown)
