@@ -344,7 +344,8 @@ final class ComponentResolver implements AutoCloseable {
                     continue;
                 }
                 int slots = batches.slots(species);
-                listStaging.put(invocations).put(batches.instanceOffset(li)).put(slots).put(batches.componentOffset(li));
+                listStaging.put(invocations).put(batches.instanceOffset(li)).put(slots)
+                        .put(batches.componentOffset(li));
                 listStaging.put(slotBase[species]).put(batches.lines(li) ? 1 : 0)
                         .put(Float.floatToRawIntBits(look.dryTips(species))).put(0);
                 invocations += n * slots;

@@ -92,8 +92,9 @@ public final class PlantRenderer implements AutoCloseable {
      *
      * <p>The per-component pass runs on the {@link ResolvePath} that is faster on this context
      * ({@link ResolvePath#best(org.lwjgl.opengl.GLCapabilities, String)}: compute on OpenGL 4.3
-     * hardware, transform feedback on 3.3 and on software rasterisers), or on {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit
-     * one shader storage buffer of this context.
+     * hardware, transform feedback on 3.3 and on software rasterisers), or on
+     * {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit one shader
+     * storage buffer of this context.
      *
      * @param gl        the render context, current on this thread
      * @param world     the plants: species models (pose tables, meshes) and positions
