@@ -83,7 +83,8 @@ import org.lwjgl.system.MemoryUtil;
  *
  * <p>Writes target/bench/render.md. Run with {@code mvn -B verify -Pbench
  * -Dtest=RenderBenchmarkTest -Dsurefire.failIfNoSpecifiedTests=false}; {@code -Djecosys.renderRounds=N}
- * changes the number of rounds (default 40, half for meadow). No timing assertions.
+ * changes the number of rounds (default 40, half for meadow) and {@code -Djecosys.renderScenes=meadow.xml}
+ * (comma-separated) measures only the scenes named. No timing assertions.
  */
 @Tag("benchmark")
 class RenderBenchmarkTest {
@@ -93,6 +94,9 @@ class RenderBenchmarkTest {
     private static final int FRAMES = 64;
     private static final double DT = 1.0 / 30;
     private static final int ROUNDS = Integer.getInteger("jecosys.renderRounds", 40);
+    /** Scenes measured, in order; {@code -Djecosys.renderScenes=meadow.xml} (comma-separated) picks some. */
+    private static final List<String> SCENES = List.of(
+            System.getProperty("jecosys.renderScenes", "c1.xml,c2.xml,c3.xml,meadow.xml").split(","));
 
     /** Configurations measured in rounds, in their first round's order. */
     private static final String[] CONFIGS = {"S1", "S3", "field off", "render", "bare"};
@@ -134,7 +138,7 @@ class RenderBenchmarkTest {
                     .append(" plants by level (L0/L1/L2/L3) | full, 16x9 viewport | full, no dither band | bare 16x9 |")
                     .append(" bare: terrain only / with triangles / with lines |\n")
                     .append("|---|---|---|---|---|---|---|---|---|---|---|\n");
-            for (String name : List.of("c1.xml", "c2.xml", "c3.xml", "meadow.xml")) {
+            for (String name : SCENES) {
                 SceneDef def = RenderScenes.load(name);
                 World world = RenderScenes.build(def);
                 ViewCamera cam = RenderScenes.camera(def, world, W, H);
