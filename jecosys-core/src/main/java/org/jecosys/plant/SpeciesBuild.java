@@ -1,0 +1,274 @@
+package org.jecosys.plant;
+
+import java.util.List;
+import org.jecosys.math.Require;
+
+/**
+ * The build pipeline of {@link SpeciesModel#build(SpeciesDef, long, double)} (paper §4.1, see
+ * {@link SpeciesModel} for the slots and variants it lays out): link each component type to its
+ * parent type, sample the shape variants and their lengths and masses, solve the gravity-bent rest
+ * pose of every (type, variant) into its pose table, build the per-level component meshes, lay out
+ * the slots and concatenate the whole-plant meshes. Build time; allocates; any thread; deterministic
+ * for {@code (def, seed, gravity)}.
+ */
+final class SpeciesBuild {
+    private static final double GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
+
+    private SpeciesBuild() {
+    }
+
+    /** See {@link SpeciesModel#build(SpeciesDef, long, double)}. */
+    static SpeciesModel build(SpeciesDef def, long seed, double gravity) {
+        long t0 = System.nanoTime();
+        Require.nonNull("def", def);
+        Require.range("gravity", gravity, 0, 100);
+        List<ComponentDef> cdefs = def.components();
+        int[] parent = parentTypes(cdefs);
+        checkNoCycle(cdefs, parent);
+        ComponentVariant[][] variants = sampleVariants(def, seed);
+        double[][] lengths = variantLengths(cdefs, variants);
+        double[][] masses = variantMasses(cdefs, variants);
+        PoseTable[][] tables = restPoseTables(def, gravity, parent, variants, lengths, masses);
+        ComponentModel[] models = componentModels(def, tables, lengths, masses);
+        SlotLayout slots = new SlotLayout(cdefs, parent, def.componentsPerPlant());
+        LodMesh[] meshes = plantMeshes(def, slots.component, models);
+        return new SpeciesModel(def, seed, models, meshes, slots.component, slots.parent, slots.azimuth,
+                slots.baseX, slots.baseZ, slots.variantOffset, System.nanoTime() - t0);
+    }
+
+    /**
+     * Per component type, the index of the type its {@code attachTo} names (the last of that id), or
+     * -1 for a type on the ground (no {@code attachTo}). Build time; allocates the result.
+     */
+    private static int[] parentTypes(List<ComponentDef> cdefs) {
+        int nc = cdefs.size();
+        int[] parent = new int[nc];
+        for (int c = 0; c < nc; c++) {
+            parent[c] = -1;
+            String a = cdefs.get(c).attachTo();
+            for (int p = 0; a != null && p < nc; p++) {
+                if (cdefs.get(p).id().equals(a)) {
+                    parent[c] = p;
+                }
+            }
+        }
+        return parent;
+    }
+
+    /**
+     * The shape variants, indexed {@code [variant][component type]}: {@link ComponentVariant#sample}
+     * {@code (variation, seed, v, c)}. Build time; allocates the result.
+     */
+    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed) {
+        int nv = def.variation().variants();
+        int nc = def.components().size();
+        ComponentVariant[][] variants = new ComponentVariant[nv][nc];
+        for (int v = 0; v < nv; v++) {
+            for (int c = 0; c < nc; c++) {
+                variants[v][c] = ComponentVariant.sample(def.variation(), seed, v, c);
+            }
+        }
+        return variants;
+    }
+
+    /**
+     * Length of each component type in each variant, metres, indexed {@code [type][variant]}: the
+     * type's length times the variant's length scale. Build time; allocates the result.
+     */
+    private static double[][] variantLengths(List<ComponentDef> cdefs, ComponentVariant[][] variants) {
+        double[][] lengths = new double[cdefs.size()][variants.length];
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
+                lengths[c][v] = cdefs.get(c).length() * variants[v][c].lengthScale();
+            }
+        }
+        return lengths;
+    }
+
+    /**
+     * Mass of each component type in each variant, kg, indexed {@code [type][variant]}: the type's
+     * mass times the variant's length and width scales. Build time; allocates the result.
+     */
+    private static double[][] variantMasses(List<ComponentDef> cdefs, ComponentVariant[][] variants) {
+        double[][] masses = new double[cdefs.size()][variants.length];
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
+                ComponentVariant cv = variants[v][c];
+                masses[c][v] = cdefs.get(c).mass() * cv.lengthScale() * cv.widthScale();
+            }
+        }
+        return masses;
+    }
+
+    /**
+     * The pose table of each component type in each variant, indexed {@code [type][variant]}: the
+     * rest shape bent under {@code gravity} (m/s^2) by its own mass and its tip load
+     * ({@link #tipMass}) with {@link GravityBend#solve}, widths scaled and curvature and tilt
+     * varied by the variant, then {@link PoseTable#build}. Build time; allocates the tables and one
+     * scratch array of rest angles.
+     */
+    private static PoseTable[][] restPoseTables(SpeciesDef def, double gravity, int[] parent,
+                                                ComponentVariant[][] variants, double[][] lengths, double[][] masses) {
+        List<ComponentDef> cdefs = def.components();
+        PoseTable[][] tables = new PoseTable[cdefs.size()][variants.length];
+        double[] angles = new double[32];
+        for (int v = 0; v < variants.length; v++) {
+            for (int c = 0; c < cdefs.size(); c++) {
+                ComponentDef d = cdefs.get(c);
+                ComponentVariant cv = variants[v][c];
+                double length = lengths[c][v];
+                double base = d.baseWidth() * cv.widthScale();
+                double tip = d.tipWidth() * cv.widthScale();
+                double curvature = Math.max(-Math.PI, Math.min(Math.PI, d.curvature() * cv.curvatureScale()));
+                double tilt = Math.min(Math.PI / 2, d.tilt() + cv.extraTilt());
+                GravityBend.solve(d.type(), d.segments(), length, base, tip, tilt, curvature, masses[c][v],
+                        tipMass(cdefs, parent, masses, c, v), gravity, angles);
+                tables[c][v] = PoseTable.build(angles, d.segments(), length, base, tip, d.twist(),
+                        def.poses(), def.maxBend());
+            }
+        }
+        return tables;
+    }
+
+    /**
+     * The load at the tip of one instance of component type {@code c} in variant {@code v}, kg: the
+     * masses (in variant v) of all instances of the types attached to it, shared among c's
+     * instances. No allocation.
+     */
+    private static double tipMass(List<ComponentDef> cdefs, int[] parent, double[][] masses, int c, int v) {
+        double tipMass = 0;
+        for (int ch = 0; ch < parent.length; ch++) {
+            if (parent[ch] == c) {
+                tipMass += masses[ch][v] * cdefs.get(ch).count() / cdefs.get(c).count();
+            }
+        }
+        return tipMass;
+    }
+
+    /**
+     * The component models: per type its pose tables, lengths and masses (per variant) and per level
+     * of detail its point subset ({@link ComponentMesh#lodPoints}) and mesh ({@link ComponentMesh#build},
+     * in the level's primitive). Build time; allocates.
+     */
+    private static ComponentModel[] componentModels(SpeciesDef def, PoseTable[][] tables, double[][] lengths,
+                                                    double[][] masses) {
+        List<ComponentDef> cdefs = def.components();
+        int levels = def.lods().size();
+        ComponentModel[] models = new ComponentModel[cdefs.size()];
+        for (int c = 0; c < models.length; c++) {
+            ComponentDef d = cdefs.get(c);
+            int[][] pts = new int[levels][];
+            ComponentMesh[] ms = new ComponentMesh[levels];
+            for (int l = 0; l < levels; l++) {
+                int n = d.lodSegments().get(l);
+                pts[l] = ComponentMesh.lodPoints(d.shape(), d.segments(), n);
+                ms[l] = ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n,
+                        def.lods().get(l).primitive());
+            }
+            models[c] = new ComponentModel(d, tables[c], lengths[c], masses[c], pts, ms);
+        }
+        return models;
+    }
+
+    /**
+     * Per level of detail the whole-plant mesh: the meshes of the slots' component types at that
+     * level, concatenated in slot order ({@link LodMesh#concat}). Build time; allocates.
+     */
+    private static LodMesh[] plantMeshes(SpeciesDef def, int[] slotComponent, ComponentModel[] models) {
+        LodMesh[] meshes = new LodMesh[def.lods().size()];
+        for (int l = 0; l < meshes.length; l++) {
+            ComponentMesh[] meshOfComponent = new ComponentMesh[models.length];
+            for (int c = 0; c < models.length; c++) {
+                meshOfComponent[c] = models[c].mesh(l);
+            }
+            meshes[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent,
+                    meshOfComponent);
+        }
+        return meshes;
+    }
+
+    /**
+     * The slots of one plant (see the class comment), component types expanded in definition order:
+     * per slot its component type, parent slot (-1 on the ground), azimuth about Y (radians), base
+     * offset in the ground plane (metres; 0 for attached slots) and variant offset. Build time;
+     * allocates its arrays, which the model then keeps.
+     */
+    private static final class SlotLayout {
+        final int[] component;
+        final int[] parent;
+        final double[] azimuth;
+        final double[] baseX;
+        final double[] baseZ;
+        final int[] variantOffset;
+
+        /**
+         * @param cdefs      the component types
+         * @param parentType per type its parent type, or -1 ({@link #parentTypes})
+         * @param slots      component instances per plant (the sum of the types' counts)
+         */
+        SlotLayout(List<ComponentDef> cdefs, int[] parentType, int slots) {
+            component = new int[slots];
+            parent = new int[slots];
+            azimuth = new double[slots];
+            baseX = new double[slots];
+            baseZ = new double[slots];
+            variantOffset = new int[slots];
+            int[] firstSlot = firstSlots(cdefs);
+            for (int c = 0; c < cdefs.size(); c++) {
+                ComponentDef d = cdefs.get(c);
+                for (int j = 0; j < d.count(); j++) {
+                    int slot = firstSlot[c] + j;
+                    component[slot] = c;
+                    variantOffset[slot] = j;
+                    int pt = parentType[c];
+                    if (pt >= 0) { // at the tip of instance j mod count of the parent type, spread evenly
+                        parent[slot] = firstSlot[pt] + j % cdefs.get(pt).count();
+                        azimuth[slot] = 2 * Math.PI * j / d.count();
+                    } else {
+                        placeOnGround(slot, d, j);
+                    }
+                }
+            }
+        }
+
+        /** Per component type the first of its slots. */
+        private static int[] firstSlots(List<ComponentDef> cdefs) {
+            int[] firstSlot = new int[cdefs.size()];
+            int s = 0;
+            for (int c = 0; c < cdefs.size(); c++) {
+                firstSlot[c] = s;
+                s += cdefs.get(c).count();
+            }
+            return firstSlot;
+        }
+
+        /**
+         * Ground instance {@code j} of type {@code d} in {@code slot}: leaves at the golden angle
+         * {@code j * 2.39996}, other types spread evenly ({@code 2 pi j / count}); a multi-instance
+         * type sits on a phyllotaxis disc, radius {@code 0.5 baseWidth sqrt(j + 0.5)} metres.
+         */
+        private void placeOnGround(int slot, ComponentDef d, int j) {
+            parent[slot] = -1;
+            boolean leaf = d.type() == ComponentType.LEAF;
+            azimuth[slot] = leaf ? (j * GOLDEN_ANGLE) % (2 * Math.PI) : 2 * Math.PI * j / d.count();
+            if (d.count() > 1) {
+                double r = 0.5 * d.baseWidth() * Math.sqrt(j + 0.5);
+                baseX[slot] = r * Math.cos(azimuth[slot]);
+                baseZ[slot] = r * Math.sin(azimuth[slot]);
+            }
+        }
+    }
+
+    private static void checkNoCycle(List<ComponentDef> cdefs, int[] parent) {
+        for (int c = 0; c < parent.length; c++) {
+            int p = parent[c];
+            for (int steps = 0; p >= 0; steps++) {
+                if (steps > parent.length) {
+                    throw new IllegalArgumentException("components attachTo form a cycle through '"
+                            + cdefs.get(c).id() + "'");
+                }
+                p = parent[p];
+            }
+        }
+    }
+}
