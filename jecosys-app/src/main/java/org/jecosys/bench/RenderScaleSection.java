@@ -23,8 +23,9 @@ import org.jecosys.sim.Simulation;
  * 4,000,000) at 1920x1080 with the camera walking each scene's path, one fixed step per frame: frames
  * per second, frame time (step, render and the GPU finishing), the render thread's CPU time inside
  * {@link SceneRenderer#render} (what the library costs the thread that submits; on a software
- * rasteriser it includes the driver's vertex work), bytes uploaded per frame, components drawn, and
- * the GL renderer and path: each scene on every {@link ResolvePath} the context supports, the one
+ * rasteriser it includes the driver's vertex work), bytes uploaded per frame, components drawn, the
+ * plants' instanced draw calls (what a hardware driver's submit cost grows with), and the GL renderer
+ * and path: each scene on every {@link ResolvePath} the context supports, the one
  * a renderer takes by itself first. A smoke run renders the meadow only, small.
  */
 final class RenderScaleSection implements Section {
@@ -55,7 +56,7 @@ final class RenderScaleSection implements Section {
         Table t = new Table("render-scale", "Render scale: " + width + "x" + height + ", camera walking, one step per "
                 + "frame", java.util.List.of("scene", "components", "drawn (median)", "fps", "frame ms (median)",
                 "frame ms (p90)", "step ms", "render-thread CPU ms", "of which lists and records, Java ms",
-                "KiB uploaded / frame", "path"));
+                "KiB uploaded / frame", "plant draw calls", "path"));
         Map<String, Object> raw = new LinkedHashMap<>();
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         try (GlContext gl = GlContext.headless(false);
@@ -97,7 +98,8 @@ final class RenderScaleSection implements Section {
                     + " includes the driver's vertex processing); of which the library's Java work: building the draw lists"
                     + " from the frame's decision and writing the instance records. Uploads: 8 bytes per component of the drawn plants'"
                     + " range (pose coordinate and azimuth, written by the animation workers) plus 8 bytes per drawn"
-                    + " plant and level. Each scene runs on every resolve path the context supports, the one a renderer"
+                    + " plant and level. Plant draw calls: the instanced draws of the plants (per species and level, one for"
+                    + " the plants drawn whole and one for those in a transition band). Each scene runs on every resolve path the context supports, the one a renderer"
                     + " takes by itself first." + skipped);
         }
         report.add(t);
@@ -116,6 +118,7 @@ final class RenderScaleSection implements Section {
         double[] uploaded = new double[frames];
         double[] drawn = new double[frames];
         double[] javaMs = new double[frames];
+        double[] draws = new double[frames];
         java.nio.IntBuffer scratch = java.nio.IntBuffer.allocate(
                 2 * Math.max(1, r.plants().batches().maxInstances()));
         fb.bind();
@@ -137,6 +140,7 @@ final class RenderScaleSection implements Section {
                 cpuMs[k] = (c1 - c0) / 1e6;
                 uploaded[k] = r.plants().uploadedBytes() / 1024.0;
                 drawn[k] = r.plants().batches().components();
+                draws[k] = r.plants().drawCalls();
                 // the library's own per-frame Java work, apart from the driver: lists from the
                 // frame's decision and the instance records (done again here, timed alone)
                 long j0 = threads.getCurrentThreadCpuTime();
@@ -148,9 +152,10 @@ final class RenderScaleSection implements Section {
         double median = Stats.median(frameMs);
         t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
                 Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
-                Stats.median(javaMs), Stats.median(uploaded), r.plants().path().description());
+                Stats.median(javaMs), Stats.median(uploaded), (long) Stats.median(draws),
+                r.plants().path().description());
         raw.put(def.name() + " / " + r.plants().path().name(), Map.of("frameMs", frameMs, "stepMs", stepMs,
                 "renderCpuMs", cpuMs, "uploadedKiB", uploaded, "drawnComponents", drawn, "listsAndRecordsJavaMs",
-                javaMs));
+                javaMs, "plantDrawCalls", draws));
     }
 }

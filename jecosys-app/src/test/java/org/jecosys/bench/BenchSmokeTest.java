@@ -39,6 +39,20 @@ class BenchSmokeTest {
         assertTrue(md.contains("### Render scale"), "render scale");
         assertTrue(md.contains(org.jecosys.render.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
         assertTrue(json.contains("\"renderScale\"") && json.contains("/ TRANSFORM_FEEDBACK\""), "render scale raw");
+        // the plants' draw calls: some, and at most two per species and level (plants drawn whole, plants
+        // in a transition band)
+        int lists = 0;
+        for (org.jecosys.plant.SpeciesDef sp : org.jecosys.scene.SceneFiles.load(Path.of("scenes", "meadow.xml"))
+                .simulationDef().species()) {
+            lists += sp.lods().size();
+        }
+        Table scale = r.tables().stream().filter(t -> t.id().equals("render-scale")).findFirst().orElseThrow();
+        int callsColumn = scale.headers().indexOf("plant draw calls");
+        assertTrue(callsColumn >= 0, "plant draw calls column");
+        for (List<Object> row : scale.rows()) {
+            long calls = ((Number) row.get(callsColumn)).longValue();
+            assertTrue(calls > 0 && calls <= 2L * lists, "plant draw calls " + calls + " for " + lists + " lists");
+        }
         for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
                 "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
                 "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
