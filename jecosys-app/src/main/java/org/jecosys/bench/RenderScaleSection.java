@@ -98,9 +98,9 @@ final class RenderScaleSection implements Section {
                     + " includes the driver's vertex processing); of which the library's Java work: building the draw lists"
                     + " from the frame's decision and writing the instance records. Uploads: 8 bytes per component of the drawn plants'"
                     + " range (pose coordinate and azimuth, written by the animation workers) plus 8 bytes per drawn"
-                    + " plant and level. Plant draw calls: the instanced draws of the plants (per species and level, one for"
-                    + " the plants drawn whole and one for those in a transition band). Each scene runs on every resolve path the context supports, the one a renderer"
-                    + " takes by itself first." + skipped);
+                    + " plant and level. Plant draw calls: the instanced draws of the plants (per species and level,"
+                    + " one for the plants drawn whole and one for those in a transition band). Each scene runs on"
+                    + " every resolve path the context supports, the one a renderer takes by itself first." + skipped);
         }
         report.add(t);
         report.raw("renderScale", raw);
