@@ -4,12 +4,9 @@ import java.util.List;
 import org.jecosys.math.Require;
 
 /**
- * The build pipeline of {@link SpeciesModel#build(SpeciesDef, long, double)} (paper §4.1, see
- * {@link SpeciesModel} for the slots and variants it lays out): link each component type to its
- * parent type, sample the shape variants and their lengths and masses, solve the gravity-bent rest
- * pose of every (type, variant) into its pose table, build the per-level component meshes, lay out
- * the slots and concatenate the whole-plant meshes. Build time; allocates; any thread; deterministic
- * for {@code (def, seed, gravity)}.
+ * The build pipeline of {@link SpeciesModel#build(SpeciesDef, long, double)} (paper §4.1): its steps
+ * are listed there, the slots and variants it lays out in {@link SpeciesModel}'s class comment.
+ * Build time; allocates; any thread.
  */
 final class SpeciesBuild {
     private static final double GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
