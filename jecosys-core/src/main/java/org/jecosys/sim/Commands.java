@@ -28,6 +28,8 @@ final class Commands {
     private final ConcurrentHashMap<String, Object> flowIds = new ConcurrentHashMap<>();
     /** Flows held or queued; at most {@link Simulation#MAX_FLOWS}. */
     private final AtomicInteger flowsReserved = new AtomicInteger();
+    /** Set by {@link #close()}. */
+    private volatile boolean closed;
     /** Blasts made by {@link Simulation#blast}, with their id tokens, until they expire. Stepping thread. */
     private WindSource[] blasts = new WindSource[4];
     private Object[] blastTokens = new Object[4];
@@ -57,8 +59,25 @@ final class Commands {
         }
     }
 
-    /** Queues a command, or refuses it past {@link Simulation#MAX_PENDING_COMMANDS}. */
+    /** Refuses every later command and reservation, and drops those still queued. Any thread. */
+    void close() {
+        closed = true;
+        queue.clear();
+        pendingCommands.set(0);
+    }
+
+    private void checkOpen() {
+        if (closed) {
+            throw new IllegalStateException(Simulation.CLOSED);
+        }
+    }
+
+    /**
+     * Queues a command, or refuses it past {@link Simulation#MAX_PENDING_COMMANDS} or after
+     * {@link #close()}.
+     */
     void enqueue(Runnable command) {
+        checkOpen();
         if (pendingCommands.incrementAndGet() > Simulation.MAX_PENDING_COMMANDS) {
             pendingCommands.decrementAndGet();
             throw new IllegalStateException("the simulation's command queue is full: "
@@ -81,6 +100,7 @@ final class Commands {
 
     /** Reserves a flow id for {@code owner}, refusing a duplicate or a flow past {@link Simulation#MAX_FLOWS}. */
     void reserveFlow(String id, Object owner) {
+        checkOpen();
         Require.nonNull("id", id);
         if (id.isEmpty()) {
             throw new IllegalArgumentException("a flow id must not be empty");
@@ -105,10 +125,20 @@ final class Commands {
         }
     }
 
-    /** Queues a command for a flow whose id was just reserved; releases the id when it is refused. */
+    /**
+     * Queues a command for a flow whose id was just reserved; releases the id when the command is
+     * refused here, or when it throws in the step (the flow then never joins the field).
+     */
     void enqueueReserved(String id, Object owner, Runnable command) {
         try {
-            enqueue(command);
+            enqueue(() -> {
+                try {
+                    command.run();
+                } catch (RuntimeException e) {
+                    releaseFlow(id, owner);
+                    throw e;
+                }
+            });
         } catch (RuntimeException e) {
             releaseFlow(id, owner);
             throw e;

@@ -2,6 +2,7 @@ package org.jecosys.sim;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.concurrent.locks.ReentrantLock;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
@@ -13,6 +14,7 @@ import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Camera;
+import org.jecosys.terrain.ImageSource;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.WindField;
 import org.jecosys.wind.WindSource;
@@ -74,7 +76,9 @@ import org.jecosys.wind.WindSource;
  * time, and a command past that is refused with an IllegalStateException (back-pressure: step more
  * often or send fewer). They allocate a small command; steps allocate nothing after warm-up, on the
  * stepping thread and on every worker.</li>
- * <li>{@link #close()}: stops the workers; call it once no step runs. Idempotent.</li>
+ * <li>{@link #close()}: any thread, any time, idempotent: it refuses every later step and command
+ * ({@code IllegalStateException}), waits for a running step to end its fixed step, and stops the
+ * workers.</li>
  * </ul>
  */
 public final class Simulation implements AutoCloseable {
@@ -120,7 +124,13 @@ public final class Simulation implements AutoCloseable {
     private double time;
     private long droppedSteps;
     private volatile long steppingThread = -1;
-    private boolean closed;
+    /** Set first by {@link #close()}: steps and commands are refused from then on. */
+    private volatile boolean closed;
+    /**
+     * Held by a step for its whole run and by {@link #close()} while it stops the workers, so close
+     * waits for a running step instead of pulling its workers away (no allocation uncontended).
+     */
+    private final ReentrantLock stepLock = new ReentrantLock();
     boolean stampFrames;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
@@ -192,7 +202,8 @@ public final class Simulation implements AutoCloseable {
      * [0, 256]; 0 keeps the def's setting (whose 0 means the available processors).
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
-     * @param baseDir  folder that relative image paths resolve against
+     * @param baseDir  folder that relative image paths resolve against; images must lie in its tree
+     *                 ({@link ImageSource#folder})
      * @param progress receives the long generation steps
      * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
@@ -200,9 +211,26 @@ public final class Simulation implements AutoCloseable {
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress, int threads)
             throws IOException {
+        return create(def, ImageSource.folder(Require.nonNull("baseDir", baseDir)), progress, threads);
+    }
+
+    /**
+     * Like {@link #create(SimulationDef, Path, Progress, int)} with the images the def names read
+     * from {@code images} (e.g. {@code org.jecosys.scene.Scene#images()}: the bytes checked when the
+     * scene was loaded, or a game's assets).
+     *
+     * @param def      terrain, species, distributions, flows, field and animation settings
+     * @param images   where the heightmap and resource images come from
+     * @param progress receives the long generation steps
+     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
+     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
+     * @throws IOException when an image of the def cannot be read or decoded
+     */
+    public static Simulation create(SimulationDef def, ImageSource images, Progress progress, int threads)
+            throws IOException {
         Require.nonNull("def", def);
         int t = workers(def, threads);
-        World world = World.build(def, Require.nonNull("baseDir", baseDir), t, Require.nonNull("progress", progress));
+        World world = World.build(def, Require.nonNull("images", images), t, Require.nonNull("progress", progress));
         return new Simulation(world, def, t, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
     }
 
@@ -266,15 +294,30 @@ public final class Simulation implements AutoCloseable {
      * @param camera the viewer, for visibility and level of detail (read, not kept)
      * @return fixed steps run, in [0, maxSubSteps]
      * @throws IllegalArgumentException when {@code dt} is negative, NaN or infinite, or the camera is null
-     * @throws IllegalStateException    when the simulation is closed and a step is due
+     * @throws IllegalStateException    when the simulation is closed (a step that {@link #close()}
+     *                                  interrupts from another thread returns after the fixed step it
+     *                                  runs, and the next call throws)
      */
     public int step(double dt, Camera camera) {
         Require.nonNegative("dt", dt);
         Require.nonNull("camera", camera);
+        stepLock.lock();
+        try {
+            return stepLocked(dt, camera);
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    private int stepLocked(double dt, Camera camera) {
+        checkOpen();
         accumulator += dt;
         int n = 0;
         while (accumulator >= fixedStep && n < maxSubSteps) {
-            stepFixed(camera);
+            if (closed) {
+                return n; // close() waits for this step: stop at a fixed-step boundary
+            }
+            stepFixedLocked(camera);
             accumulator -= fixedStep;
             n++;
         }
@@ -297,11 +340,28 @@ public final class Simulation implements AutoCloseable {
      */
     public void stepFixed(Camera camera) {
         Require.nonNull("camera", camera);
-        if (closed) {
-            throw new IllegalStateException("the simulation is closed");
+        stepLock.lock();
+        try {
+            checkOpen();
+            stepFixedLocked(camera);
+        } finally {
+            stepLock.unlock();
         }
+    }
+
+    private void checkOpen() {
+        if (closed) {
+            throw new IllegalStateException(CLOSED);
+        }
+    }
+
+    /** The message of every call refused after {@link #close()}. */
+    static final String CLOSED = "the simulation is closed";
+
+    private void stepFixedLocked(Camera camera) {
         steppingThread = Thread.currentThread().getId();
         commands.drain();
+        checkOpen(); // a command may have closed the simulation (close() from this very thread)
         if (!primed) {
             prime(camera);
             primed = true;
@@ -479,14 +539,16 @@ public final class Simulation implements AutoCloseable {
      * @param x        centre X, metres, |x| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
      * @param z        centre Z, metres, |z| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
      * @param strength peak strength, m^2/s, in (0, {@link FlowDef#MAX_STRENGTH}]
-     * @param duration seconds, in (0, {@link org.jecosys.wind.ActivationDef#MAX_TIME}]
-     * @throws IllegalArgumentException when a value is out of range or a flow with this id is held or
-     *                                  queued
+     * @param duration seconds, finite, in (0, {@link org.jecosys.wind.ActivationDef#MAX_TIME}]
+     * @throws IllegalArgumentException when a value is out of range (NaN and infinities included) or a
+     *                                  flow with this id is held or queued
      * @throws IllegalStateException    when {@link #MAX_FLOWS} flows or {@link #MAX_PENDING_COMMANDS}
      *                                  commands are already there
      */
     public void blast(String id, double x, double z, double strength, double duration) {
         Require.positive("strength", strength);
+        // a blast is removed when it ends: it must end (the step would refuse +Infinity)
+        Require.above("duration", duration, 0, org.jecosys.wind.ActivationDef.MAX_TIME);
         FlowDef.builder(id, org.jecosys.wind.FlowKind.BLAST).centre(x, z).strength(strength).duration(duration)
                 .build(); // checks every value with the scene schema's ranges
         Object token = new Object();
@@ -767,10 +829,22 @@ public final class Simulation implements AutoCloseable {
         return pool.allocatedBytes(steppingThread);
     }
 
-    /** Stops the workers. Idempotent; call it when no step runs. */
+    /**
+     * Closes the simulation: from now on every step and every command call throws
+     * {@code IllegalStateException("the simulation is closed")}; then waits for a step running on
+     * another thread to finish the fixed step it is in (that step returns normally) and stops the
+     * workers. Safe from any thread at any time, also from the stepping thread and during a step;
+     * idempotent. Commands still queued are dropped. Allocates nothing unless it has to wait.
+     */
     @Override
     public void close() {
         closed = true;
-        pool.close();
+        commands.close();
+        stepLock.lock();
+        try {
+            pool.close();
+        } finally {
+            stepLock.unlock();
+        }
     }
 }

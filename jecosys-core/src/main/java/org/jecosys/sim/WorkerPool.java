@@ -127,6 +127,12 @@ final class WorkerPool implements AutoCloseable {
         runChunks();
         int spins = 0;
         while (pending.get() != 0) {
+            if (stopped) {
+                // closed during the step: every chunk was claimed (the loop above ran the rest), and a
+                // pool thread only ends after finishing the chunk it holds, so joining them finishes the step
+                joinThreads();
+                break;
+            }
             if (spins < SPINS) {
                 spins++;
                 Thread.onSpinWait();
@@ -178,23 +184,30 @@ final class WorkerPool implements AutoCloseable {
                     LockSupport.park(this);
                 }
             }
-            if (stopped) {
-                return;
+            if (generation == seen) {
+                return; // stopped, and no step is waiting for this thread
             }
             seen = generation;
-            try {
-                runChunks();
-            } catch (Throwable t) {
-                failure = t;
-                next.set(chunks);
+            if (!stopped) {
+                try {
+                    runChunks();
+                } catch (Throwable t) {
+                    failure = t;
+                    next.set(chunks);
+                }
             }
+            // always signalled, also when stopped: the owner's await() runs the chunks left itself
             if (pending.decrementAndGet() == 0) {
                 LockSupport.unpark(owner);
             }
         }
     }
 
-    /** Stops and joins the workers; idempotent. */
+    /**
+     * Stops and joins the workers; idempotent; any thread. A step in progress still completes: the
+     * workers finish the chunks they hold and the owner's {@link #await()} runs the rest, so it
+     * returns instead of waiting for threads that are gone.
+     */
     @Override
     public void close() {
         if (stopped) {
@@ -204,6 +217,14 @@ final class WorkerPool implements AutoCloseable {
         for (Thread t : threads) {
             LockSupport.unpark(t);
         }
+        Thread o = owner;
+        if (o != null) {
+            LockSupport.unpark(o);
+        }
+        joinThreads();
+    }
+
+    private void joinThreads() {
         boolean interrupted = false;
         for (Thread t : threads) {
             while (t.isAlive()) {
