@@ -1,9 +1,12 @@
 package org.jecosys.app;
 
+import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStream;
+import java.io.OutputStreamWriter;
 import java.io.PrintWriter;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -19,8 +22,9 @@ import org.jecosys.field.ForceFieldDef;
 import org.jecosys.field.ForceField;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.AtomicFiles;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
-import org.jecosys.scene.Scenes;
 import org.jecosys.sim.CameraWalk;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.SimulationDef;
@@ -45,6 +49,8 @@ final class SimulateCommand implements Callable<Integer> {
     CommandSpec spec;
     @Mixin
     Verbose verbose;
+    @Mixin
+    SceneImages images;
     @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file.")
     String scene;
     @Option(names = "--steps", paramLabel = "N", defaultValue = "600", description = "Fixed steps to run, "
@@ -79,17 +85,18 @@ final class SimulateCommand implements Callable<Integer> {
         }
         OutputPaths.file(spec.commandLine(), "--json", json);
         OutputPaths.file(spec.commandLine(), "--dump", dump);
-        SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
-        if (def == null) {
+        Path file = SceneArgs.resolve(scene);
+        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
-        Path file = SceneArgs.resolve(scene);
+        SceneDef def = loaded.def();
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         SimulationDef sd = overridden(def);
         Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
         Run run;
-        try (Simulation sim = Simulation.create(sd, Scenes.baseDir(file), progress, threads == null ? 0 : threads)) {
+        try (Simulation sim = Simulation.create(sd, loaded.images(), progress, threads == null ? 0 : threads)) {
             BuildReport.print(sim.world(), err, err); // stdout stays the results only, for scripts
             CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                     (double) def.render().width() / def.render().height());
@@ -106,10 +113,11 @@ final class SimulateCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "state hash            %016x%n", run.hash);
             out.flush();
             if (json != null) {
-                write(json, json(file, sim, sd, run));
+                String text = json(file, sim, sd, run);
+                AtomicFiles.write(json, "write", o -> o.write(text.getBytes(StandardCharsets.UTF_8)));
             }
             if (dump != null) {
-                write(dump, dump(sim));
+                AtomicFiles.write(dump, "write", o -> dump(sim, o));
             }
         } catch (IOException e) {
             return fail(err, e);
@@ -124,18 +132,6 @@ final class SimulateCommand implements Callable<Integer> {
         }
         err.flush();
         return ExitCodes.FAILURE;
-    }
-
-    private static void write(Path file, String text) throws IOException {
-        try {
-            Files.writeString(file, text, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            String why = e instanceof java.nio.file.NoSuchFileException ? "no such folder"
-                    : e instanceof java.nio.file.AccessDeniedException ? "permission denied"
-                    : e instanceof java.nio.file.FileSystemException fse && fse.getReason() != null ? fse.getReason()
-                    : e.getMessage();
-            throw new IOException("cannot write " + file + ": " + why, e);
-        }
     }
 
     private SimulationDef overridden(SceneDef def) {
@@ -217,11 +213,19 @@ final class SimulateCommand implements Callable<Integer> {
     static final String DUMP_HEADER = "plant,component,species,x,z,windX,windZ,forceX,forceZ,devX,devZ,velX,velZ,"
             + "bend,azimuth,node,nodeDepth";
 
-    private static String dump(Simulation sim) {
+    /**
+     * Streams the final state as CSV, one row per component: memory stays one row whatever the
+     * scene's size (the prairie's dump is over 500 MB).
+     */
+    static void dump(Simulation sim, OutputStream o) throws IOException {
         World w = sim.world();
         AnimationView s = sim.state();
         ForceField f = sim.forceField();
-        StringBuilder sb = new StringBuilder(DUMP_HEADER).append('\n');
+        Writer out = new BufferedWriter(new OutputStreamWriter(o, StandardCharsets.UTF_8), 1 << 16);
+        out.write(DUMP_HEADER);
+        out.write('\n');
+        StringBuilder sb = new StringBuilder(256);
+        char[] row = new char[256];
         for (int p = 0; p < w.plantCount(); p++) {
             String species = w.plants().species().get(w.plantSpecies(p)).def().id();
             int node = sim.fieldEnabled() ? f.effectiveNode(p) : -1;
@@ -238,8 +242,15 @@ final class SimulateCommand implements Callable<Integer> {
                         .append(s.velocityX(c)).append(',').append(s.velocityZ(c)).append(',')
                         .append(s.bend(c)).append(',').append(s.azimuth(c)).append(',')
                         .append(node).append(',').append(depth).append('\n');
+                int n = sb.length();
+                if (n > row.length) {
+                    row = new char[2 * n];
+                }
+                sb.getChars(0, n, row, 0); // Writer.append(CharSequence) would make a String per row
+                out.write(row, 0, n);
+                sb.setLength(0);
             }
         }
-        return sb.toString();
+        out.flush();
     }
 }

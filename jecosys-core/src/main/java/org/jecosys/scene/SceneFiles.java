@@ -5,32 +5,27 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
-import java.nio.channels.Channels;
-import java.nio.channels.FileChannel;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFilePermission;
-import java.util.Set;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.function.UnaryOperator;
+import org.jecosys.math.Require;
+import org.jecosys.terrain.ImageSource;
 
 /**
  * Loads, validates and saves scene files ({@code <scene version="1">}, documented by
  * {@code scenes/jecosys-scene.xsd}). Loading either returns a complete, valid {@link SceneDef} or
  * throws {@link SceneLoadException} listing every problem as {@code FILE:LINE:COL: message}; it
  * never returns a half-loaded scene. Files are read through Jackson XML's hardened parser: no DTDs,
- * no entities, no external access of any kind. Saving is atomic: a temporary file in the same
- * folder, forced to disk, then moved over the target, so a failure leaves the original untouched.
+ * no entities, no external access of any kind. Saving is atomic ({@link AtomicFiles}): a temporary
+ * file in the same folder, forced to disk, then moved over the target, so a failure leaves the
+ * original untouched.
  *
  * <p>All methods may be called from any thread; they share no state. They allocate (this is load
  * time, not frame time).
@@ -44,22 +39,59 @@ public final class SceneFiles {
 
     /**
      * Loads and validates a scene file; relative paths inside it (heightmaps, images) are resolved
-     * against its folder and must exist.
+     * against its folder, must exist and must lie in its folder tree ({@link ImageSource#folder}).
      *
      * @param file the scene file; its name as given appears in every problem
      * @return the complete scene
      * @throws SceneLoadException if the file cannot be read, is not a valid scene, names an image that
-     *                            is missing, too large ({@link org.jecosys.terrain.ImageFiles#MAX_SIDE})
-     *                            or corrupt, or needs more memory than this JVM's heap allows
+     *                            is missing, outside its folder, too large
+     *                            ({@link org.jecosys.terrain.ImageFiles#MAX_SIDE}) or corrupt, or needs
+     *                            more memory than this JVM's heap allows
      */
     public static SceneDef load(Path file) throws SceneLoadException {
+        return read(file).def();
+    }
+
+    /**
+     * Loads and validates a scene file like {@link #load}, keeping the bytes of the images it names
+     * as they were checked ({@link Scene#images()}), so that building it reads no file again.
+     * Images must lie in the file's folder tree.
+     *
+     * @param file the scene file; its name as given appears in every problem
+     * @return the scene and its checked images
+     * @throws SceneLoadException as {@link #load}
+     */
+    public static Scene read(Path file) throws SceneLoadException {
+        Require.nonNull("file", file);
+        return read(file, ImageSource.folder(Scenes.baseDir(file)));
+    }
+
+    /**
+     * Loads and validates a scene file whose images come from {@code images}: for example
+     * {@link ImageSource#anywhere} for a scene the user trusts to name images outside its folder.
+     * Paths that are not regular files (folders, pipes, devices) are refused before they are opened.
+     *
+     * @param file   the scene file; its name as given appears in every problem
+     * @param images where the images it names are read from, once each
+     * @return the scene and its checked images
+     * @throws SceneLoadException as {@link #load}
+     */
+    public static Scene read(Path file, ImageSource images) throws SceneLoadException {
+        Require.nonNull("file", file);
+        Require.nonNull("images", images);
         String name = file.toString();
         byte[] bytes;
         try {
-            if (Files.isDirectory(file)) {
+            // refuse what is not a regular file before opening it: opening a FIFO blocks until a
+            // writer comes, and a device can be read forever
+            BasicFileAttributes attrs = Files.readAttributes(file, BasicFileAttributes.class);
+            if (attrs.isDirectory()) {
                 throw fail(name, "is a directory, not a scene file");
             }
-            long size = Files.size(file);
+            if (!attrs.isRegularFile()) {
+                throw fail(name, "is not a regular file (a pipe, device or socket); scene files are regular files");
+            }
+            long size = attrs.size();
             if (size > MAX_FILE_BYTES) {
                 throw fail(name, "file is " + size + " bytes; scene files are limited to " + MAX_FILE_BYTES
                         + " bytes (8 MiB)");
@@ -74,8 +106,34 @@ public final class SceneFiles {
         } catch (IOException e) {
             throw fail(name, "cannot read: " + e.getMessage());
         }
-        Path parent = file.toAbsolutePath().getParent();
-        return parse(bytes, name, parent);
+        return parse(bytes, name, images);
+    }
+
+    /**
+     * Loads and validates a scene from a stream (an engine's asset, a classpath resource, a network
+     * download), with the images it names read from {@code images} (a game's resolver over its own
+     * assets, {@link ImageSource#folder}, or {@link ImageSource#NONE} for a scene that names none).
+     * Reads at most {@link #MAX_FILE_BYTES} + 1 bytes; does not close the stream.
+     *
+     * @param in     the scene's XML, UTF-8
+     * @param name   the name every problem is reported under (e.g. the asset's path)
+     * @param images where the images it names are read from, once each
+     * @return the scene and its checked images
+     * @throws SceneLoadException when the stream cannot be read or is not a valid scene, an image
+     *                            cannot be read or is too large or corrupt, or the scene needs more
+     *                            memory than this JVM's heap allows
+     */
+    public static Scene read(InputStream in, String name, ImageSource images) throws SceneLoadException {
+        Require.nonNull("in", in);
+        Require.nonNull("name", name);
+        Require.nonNull("images", images);
+        byte[] bytes;
+        try {
+            bytes = in.readNBytes((int) MAX_FILE_BYTES + 1);
+        } catch (IOException e) {
+            throw fail(name, "cannot read: " + e.getMessage());
+        }
+        return parse(bytes, name, images);
     }
 
     /**
@@ -83,14 +141,19 @@ public final class SceneFiles {
      *
      * @param bytes    the file's bytes, UTF-8
      * @param fileName the name used in problems
-     * @param baseDir  folder that relative paths resolve against and must exist in, or null to skip
-     *                 the existence checks
+     * @param baseDir  folder that relative paths resolve against and whose tree the images must lie
+     *                 in, or null to skip the image checks
      * @return the complete scene
      * @throws SceneLoadException if the bytes are not a valid scene, or the scene needs more memory
      *                            than this JVM's heap allows (plants, components, pose tables, grids
      *                            and, with a baseDir, images, estimated before anything is built)
      */
     public static SceneDef parse(byte[] bytes, String fileName, Path baseDir) throws SceneLoadException {
+        return parse(bytes, fileName, baseDir == null ? null : ImageSource.folder(baseDir)).def();
+    }
+
+    /** Parses, validates and budgets; {@code images} null skips the image checks. */
+    private static Scene parse(byte[] bytes, String fileName, ImageSource images) throws SceneLoadException {
         if (bytes.length > MAX_FILE_BYTES) {
             throw fail(fileName, "file is " + bytes.length + " bytes; scene files are limited to " + MAX_FILE_BYTES
                     + " bytes (8 MiB)");
@@ -106,7 +169,7 @@ public final class SceneFiles {
         if (values == null || !validator.problems().isEmpty()) {
             throw new SceneLoadException(validator.problems());
         }
-        SceneBinder binder = new SceneBinder(validator, baseDir);
+        SceneBinder binder = new SceneBinder(validator, images);
         SceneDef scene = binder.bind(values);
         if (scene == null || !validator.problems().isEmpty()) {
             throw new SceneLoadException(validator.problems());
@@ -115,7 +178,7 @@ public final class SceneFiles {
         if (!new SceneBudget(validator, Runtime.getRuntime().maxMemory()).check(scene, values, binder.images)) {
             throw new SceneLoadException(validator.problems());
         }
-        return scene;
+        return new Scene(scene, fileName, binder.checked.isEmpty() ? ImageSource.NONE : ImageSource.of(binder.checked));
     }
 
     /**
@@ -148,137 +211,11 @@ public final class SceneFiles {
     /** {@link #save(Path, SceneDef)} with the output stream wrapped, for failure-injection tests. */
     static void save(Path target, SceneDef scene, UnaryOperator<OutputStream> wrap) throws IOException {
         byte[] bytes = toXml(scene).getBytes(StandardCharsets.UTF_8);
-        Path abs = followLinks(target);
-        if (Files.exists(abs) && !Files.isRegularFile(abs)) {
-            throw new IOException("cannot save " + target + ": " + (target.equals(abs) ? "it" : abs)
-                    + " is not a regular file (" + (Files.isDirectory(abs) ? "a folder" : "a device, pipe or socket")
-                    + "); choose a file name");
-        }
-        Path dir = abs.getParent();
-        removeStaleTemporaries(dir, abs.getFileName().toString());
-        Set<PosixFilePermission> mode = null;
-        try {
-            if (Files.exists(abs)) {
-                mode = Files.getPosixFilePermissions(abs);
-            }
-        } catch (UnsupportedOperationException | IOException e) {
-            mode = null; // not a POSIX file system, or unreadable attributes: the new file gets the defaults
-        }
-        Path tmp;
-        try {
-            tmp = createTemporary(dir, abs.getFileName().toString());
-        } catch (IOException e) {
-            throw new IOException("cannot save " + target + ": cannot create a file in " + dir + " (" + e + ")", e);
-        }
-        boolean moved = false;
-        try {
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING);
-                 OutputStream out = wrap.apply(Channels.newOutputStream(ch))) {
-                out.write(bytes);
-                out.flush();
-                ch.force(true);
-            }
-            if (mode != null) {
-                Files.setPosixFilePermissions(tmp, mode);
-            }
-            try {
-                Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                throw new IOException("cannot save " + target + ": the file system cannot replace files atomically", e);
-            }
-            moved = true;
-            forceDirectory(dir);
-        } catch (IOException | RuntimeException e) {
-            throw new IOException("cannot save " + target + ": " + e.getMessage(), e);
-        } finally {
-            if (!moved) {
-                Files.deleteIfExists(tmp);
-            }
-        }
-    }
-
-    /** Most symbolic links followed from a save's target. */
-    private static final int MAX_LINKS = 40;
-    /** A temporary file left by a live process is stale after this long anyway, milliseconds. */
-    static final long STALE_TEMPORARY_MILLIS = 60L * 60 * 1000;
-
-    /** The absolute path a save writes: {@code target} with every symbolic link followed (the last may dangle). */
-    private static Path followLinks(Path target) throws IOException {
-        Path p = target.toAbsolutePath();
-        for (int i = 0; Files.isSymbolicLink(p); i++) {
-            if (i == MAX_LINKS) {
-                throw new IOException("cannot save " + target + ": more than " + MAX_LINKS + " symbolic links");
-            }
-            Path link = Files.readSymbolicLink(p);
-            p = p.getParent().resolve(link).normalize();
-        }
-        return p;
-    }
-
-    /** {@code .NAME.PID.RANDOM.tmp} in {@code dir}, created empty with the default permissions. */
-    private static Path createTemporary(Path dir, String name) throws IOException {
-        long pid = ProcessHandle.current().pid();
-        for (int attempt = 0; ; attempt++) {
-            Path tmp = dir.resolve("." + name + "." + pid + "." + Long.toUnsignedString(RANDOM.nextLong(), 36) + ".tmp");
-            try {
-                Files.newByteChannel(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
-                return tmp;
-            } catch (java.nio.file.FileAlreadyExistsException e) {
-                if (attempt == 10) {
-                    throw e;
-                }
-            }
-        }
-    }
-
-    private static final java.security.SecureRandom RANDOM = new java.security.SecureRandom();
-
-    /**
-     * Deletes temporary files of earlier saves of {@code name} in {@code dir} ({@code .NAME.DIGITS.*tmp})
-     * whose process no longer runs or that are older than {@link #STALE_TEMPORARY_MILLIS}; errors are
-     * ignored (another save may be removing them too).
-     */
-    private static void removeStaleTemporaries(Path dir, String name) {
-        String prefix = "." + name + ".";
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, p -> {
-            String f = p.getFileName().toString();
-            return f.startsWith(prefix) && f.endsWith(".tmp") && f.length() > prefix.length() + 4;
-        })) {
-            long now = System.currentTimeMillis();
-            for (Path p : files) {
-                String rest = p.getFileName().toString().substring(prefix.length());
-                int dot = rest.indexOf('.');
-                String digits = rest.substring(0, Math.max(dot, 0));
-                if (digits.isEmpty() || !digits.chars().allMatch(Character::isDigit) || digits.length() > 20) {
-                    continue;
-                }
-                // before 0.1.0 the number was random (File.createTempFile), not a process id: such a
-                // file names no live process and is removed too
-                long pid = new java.math.BigInteger(digits).bitLength() > 62 ? -1 : Long.parseLong(digits);
-                boolean gone = pid < 0 || ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true);
-                try {
-                    if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
-                        continue;
-                    }
-                    if (gone || now - Files.getLastModifiedTime(p).toMillis() > STALE_TEMPORARY_MILLIS) {
-                        Files.deleteIfExists(p);
-                    }
-                } catch (IOException ignored) {
-                    // removed by someone else, or not ours to remove
-                }
-            }
-        } catch (IOException | RuntimeException ignored) {
-            // the folder cannot be listed: the save itself will report what is wrong
-        }
-    }
-
-    /** Makes the rename durable; some platforms cannot open folders, which is harmless. */
-    private static void forceDirectory(Path dir) {
-        try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
-            ch.force(true);
-        } catch (IOException ignored) {
-            // not supported on this platform; the file itself is already on disk
-        }
+        AtomicFiles.write(target, "save", out -> {
+            OutputStream o = wrap.apply(out);
+            o.write(bytes);
+            o.flush();
+        });
     }
 
     private static String decode(byte[] bytes, String fileName) throws SceneLoadException {
