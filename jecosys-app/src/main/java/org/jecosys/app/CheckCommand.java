@@ -3,6 +3,8 @@ package org.jecosys.app;
 import java.io.PrintWriter;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.nio.file.Path;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -19,6 +21,8 @@ final class CheckCommand implements Callable<Integer> {
     CommandSpec spec;
     @Mixin
     Verbose verbose;
+    @Mixin
+    SceneImages images;
     @Parameters(arity = "1..*", paramLabel = "SCENE", description = "Scene files to validate.")
     List<String> scenes;
 
@@ -28,11 +32,13 @@ final class CheckCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         int bad = 0;
         for (String s : scenes) {
-            SceneDef scene = SceneArgs.load(SceneArgs.resolve(s), err);
-            if (scene == null) {
+            Path file = SceneArgs.resolve(s);
+            Scene loaded = SceneArgs.load(file, images.of(file), err);
+            if (loaded == null) {
                 bad++;
                 continue;
             }
+            SceneDef scene = loaded.def();
             long plants = scene.placements().size(); // 256 distributions of 10,000,000 overflow an int
             for (var d : scene.distributions()) {
                 plants += Math.max(d.count(), 0);

@@ -17,7 +17,9 @@ import org.jecosys.render.GlFramebuffer;
 import org.jecosys.render.Pixels;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.RenderDef;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.terrain.ImageSource;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
@@ -76,11 +78,12 @@ final class Gallery {
         try (GlContext gl = GlContext.headless(false);
              GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, RenderDef.DEFAULT_ANTIALIASING)) {
             for (String name : SCENES) {
-                SceneDef def = SceneArgs.load(scenes.resolve(name), err);
-                if (def == null) {
+                Scene loaded = SceneArgs.load(scenes.resolve(name), ImageSource.folder(scenes), err);
+                if (loaded == null) {
                     throw new BadScene(name);
                 }
-                World world = World.build(def.simulationDef(), scenes.toAbsolutePath(),
+                SceneDef def = loaded.def();
+                World world = World.build(def.simulationDef(), loaded.images(),
                         Runtime.getRuntime().availableProcessors(), Progress.NONE);
                 List<View> views = views(name, def, world, aspect);
                 try (SceneRenderer renderer = new SceneRenderer(gl, world, HeadlessRender.settings(def.render()))) {

@@ -14,6 +14,7 @@ import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.DrawQuality;
 import org.jecosys.sim.Frame;
@@ -55,12 +56,13 @@ final class HeadlessRender {
                 .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
-    static void run(SceneDef def, Path baseDir, DrawQuality quality, int frames, Path out, int width, int height,
+    static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
                     boolean maps, PrintWriter log, Progress progress) throws IOException {
+        SceneDef def = scene.def();
         Files.createDirectories(out);
         log.println("Building '" + def.name() + "' ...");
         log.flush();
-        try (Simulation sim = Simulation.create(def.simulationDef(), baseDir, progress)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, 0)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);

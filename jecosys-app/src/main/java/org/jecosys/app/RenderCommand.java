@@ -2,6 +2,7 @@ package org.jecosys.app;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.DrawQuality;
 import picocli.CommandLine.Command;
@@ -21,6 +22,8 @@ final class RenderCommand implements Callable<Integer> {
     CommandSpec spec;
     @Mixin
     Verbose verbose;
+    @Mixin
+    SceneImages images;
     @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file.")
     String scene;
     @Option(names = "--frames", paramLabel = "N", required = true, description = "Frames to render, 1 to 100000.")
@@ -48,16 +51,16 @@ final class RenderCommand implements Callable<Integer> {
         }
         OutputPaths.folder(spec.commandLine(), "--out", out);
         OutputPaths.file(spec.commandLine(), "--gif", gif);
-        SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
-        if (def == null) {
+        Path file = SceneArgs.resolve(scene);
+        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
-        Path file = SceneArgs.resolve(scene);
-        Path base = file.toAbsolutePath().getParent();
+        SceneDef def = loaded.def();
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {
-            HeadlessRender.run(def, base, quality, frames, out, w, h, maps, spec.commandLine().getOut(),
+            HeadlessRender.run(loaded, quality, frames, out, w, h, maps, spec.commandLine().getOut(),
                     new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
             if (gif != null) {
                 java.util.List<Path> pngs = new java.util.ArrayList<>();

@@ -3,10 +3,11 @@ package org.jecosys.app;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.scene.SceneLoadException;
 import org.jecosys.scene.SceneProblem;
+import org.jecosys.terrain.ImageSource;
 
 /** Resolves and loads the scene named on a command line, printing problems as FILE:LINE:COL. */
 final class SceneArgs {
@@ -29,10 +30,13 @@ final class SceneArgs {
         return p;
     }
 
-    /** Loads the scene, or prints every problem to {@code err} and returns null. */
-    static SceneDef load(Path file, PrintWriter err) {
+    /**
+     * Loads the scene with its images read once from {@code images}, or prints every problem to
+     * {@code err} and returns null.
+     */
+    static Scene load(Path file, ImageSource images, PrintWriter err) {
         try {
-            return SceneFiles.load(file);
+            return SceneFiles.read(file, images);
         } catch (SceneLoadException e) {
             for (SceneProblem p : e.problems()) {
                 err.println(p);

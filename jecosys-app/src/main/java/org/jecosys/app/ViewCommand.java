@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jecosys.render.GlContext;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.DrawQuality;
 import picocli.CommandLine.Command;
@@ -38,6 +39,8 @@ final class ViewCommand implements Callable<Integer> {
     }
     @Mixin
     Verbose verbose;
+    @Mixin
+    SceneImages images;
     @Parameters(arity = "0..1", paramLabel = "SCENE", defaultValue = SceneArgs.DEFAULT_SCENE,
             description = "Scene file (default: ${DEFAULT-VALUE}).")
     String scene;
@@ -47,14 +50,14 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        SceneDef def = SceneArgs.load(SceneArgs.resolve(scene), spec.commandLine().getErr());
-        if (def == null) {
+        Path file = SceneArgs.resolve(scene);
+        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
+        SceneDef def = loaded.def();
         spec.commandLine().getOut().println("Scene '" + def.name() + "' (" + scene + ") is valid.");
         spec.commandLine().getOut().flush();
-        Path file = SceneArgs.resolve(scene);
-        Path base = file.toAbsolutePath().getParent();
         try {
             if (!GlContext.hasDisplay()) {
                 Path out = Path.of(System.getProperty(FALLBACK_OUT, "jecosys-frames"));
@@ -62,12 +65,12 @@ final class ViewCommand implements Callable<Integer> {
                 spec.commandLine().getOut().println("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering "
                         + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
                 spec.commandLine().getOut().flush();
-                HeadlessRender.run(def, base, quality, frames, out, def.render().width(), def.render().height(), true,
+                HeadlessRender.run(loaded, quality, frames, out, def.render().width(), def.render().height(), true,
                         spec.commandLine().getOut(),
                         new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
                 return ExitCodes.OK;
             }
-            new Viewer(def, file, base, quality).run(new ConsoleProgress(spec.commandLine().getErr(),
+            new Viewer(loaded, file, quality).run(new ConsoleProgress(spec.commandLine().getErr(),
                     ConsoleProgress.stderrIsTerminal()));
             return ExitCodes.OK;
         } catch (IOException e) {

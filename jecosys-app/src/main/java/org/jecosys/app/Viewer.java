@@ -25,7 +25,9 @@ import org.jecosys.render.GlFramebuffer;
 import org.jecosys.render.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
+import org.jecosys.terrain.ImageSource;
 import org.jecosys.sim.DrawQuality;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
@@ -50,7 +52,8 @@ import org.lwjgl.system.MemoryUtil;
 final class Viewer {
     private final SceneDef def;
     private final Path file;
-    private final Path base;
+    /** The images the scene was checked with: the build decodes these bytes. */
+    private final ImageSource images;
     private final DrawQuality quality;
     private final double[] cx = new double[1];
     private final double[] cy = new double[1];
@@ -59,16 +62,16 @@ final class Viewer {
     private final int[] ww = new int[1];
     private final int[] wh = new int[1];
 
-    Viewer(SceneDef def, Path file, Path base, DrawQuality quality) {
-        this.def = def;
+    Viewer(Scene scene, Path file, DrawQuality quality) {
+        this.def = scene.def();
         this.file = file;
-        this.base = base;
+        this.images = scene.images();
         this.quality = quality;
     }
 
     void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
-        try (Simulation sim = Simulation.create(def.simulationDef(), base, progress)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), images, progress, 0)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);

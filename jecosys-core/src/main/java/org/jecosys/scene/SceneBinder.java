@@ -1,8 +1,5 @@
 package org.jecosys.scene;
 
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -25,6 +22,7 @@ import org.jecosys.plant.SpeciesDef;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.terrain.ImageFiles;
+import org.jecosys.terrain.ImageSource;
 import org.jecosys.terrain.PlacementDef;
 import org.jecosys.terrain.ResourceMapDef;
 import org.jecosys.terrain.TerrainDef;
@@ -36,19 +34,22 @@ import org.jecosys.wind.MotionDef;
 /**
  * Builds the Def records from validated {@link Values}, checking what a single attribute cannot
  * show: unique ids, references to species and components, ascending levels of detail, min below
- * max, ramps within durations, image paths that exist. Every problem is reported at the attribute
+ * max, ramps within durations, images that can be read (through the scene's {@link ImageSource}, once:
+ * their bytes are kept in {@link #checked}) and decoded. Every problem is reported at the attribute
  * or element it concerns. One instance per load; not thread-safe.
  */
 final class SceneBinder {
     private final SceneValidator out;
-    /** Folder relative paths are resolved against, or null when loading from bytes. */
-    private final Path baseDir;
+    /** Where the images the scene names are read from, or null to skip the image checks. */
+    private final ImageSource source;
     /** The images the scene names, with their sizes (from their headers). */
     final List<SceneBudget.Image> images = new ArrayList<>();
+    /** The bytes of each image that was checked, by the path the scene writes: the bytes the build decodes. */
+    final Map<String, byte[]> checked = new HashMap<>();
 
-    SceneBinder(SceneValidator out, Path baseDir) {
+    SceneBinder(SceneValidator out, ImageSource source) {
         this.out = out;
-        this.baseDir = baseDir;
+        this.source = source;
     }
 
     private void problem(Values v, String attr, String message) {
@@ -136,6 +137,12 @@ final class SceneBinder {
         CameraDef camera = camera(root.child("camera"));
         AnimationDef animation = animation(root.child("animation"));
         RenderDef render = render(root.child("render"));
+        if (out.problems().isEmpty() && species.isEmpty()) {
+            // the schema allows it (a scene is written top down), a run does not: nothing to animate
+            int[] w = {root.node.line, root.node.column};
+            out.problem(w[0], w[1], "<scene> has no <species>: a scene needs at least one species to grow plants "
+                    + "(paper section 4.1), even when it places none");
+        }
         if (!out.problems().isEmpty() || terrain == null || field == null || camera == null || animation == null
                 || render == null) {
             return null;
@@ -195,24 +202,20 @@ final class SceneBinder {
     }
 
     private void checkFile(Values v, String attr, String path) {
-        if (path == null || baseDir == null) {
+        if (path == null || source == null) {
             return;
         }
         try {
-            Path p = baseDir.resolve(path);
-            if (!Files.isRegularFile(p)) {
-                problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: file '" + path
-                        + "' not found (looked at " + p.toAbsolutePath().normalize() + ")");
-                return;
+            byte[] bytes = checked.get(path);
+            if (bytes == null) {
+                bytes = source.read(path); // read once: the bytes checked here are the bytes the build decodes
             }
-            try {
-                // the size from the header, bounded before decoding; then the data, at reduced resolution
-                images.add(new SceneBudget.Image(v, attr, ImageFiles.verify(p)));
-            } catch (java.io.IOException e) {
-                problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: " + e.getMessage());
-            }
-        } catch (InvalidPathException e) {
-            problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: '" + path + "' is not a valid path");
+            // the size from the header, bounded before decoding; then the data, at reduced resolution
+            ImageFiles.Size size = ImageFiles.verify("'" + path + "'", bytes);
+            images.add(new SceneBudget.Image(v, attr, size, checked.containsKey(path) ? 0 : bytes.length));
+            checked.put(path, bytes);
+        } catch (java.io.IOException e) {
+            problem(v, attr, "attribute '" + attr + "' of <" + v.node.name + ">: " + e.getMessage());
         }
     }
 

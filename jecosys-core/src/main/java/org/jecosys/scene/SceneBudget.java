@@ -37,8 +37,14 @@ final class SceneBudget {
     /** Most plants or components: they are indexed by int. */
     static final long MAX_INDEX = Integer.MAX_VALUE - 8;
 
-    /** An image the scene names, where, and its size from its header. */
-    record Image(Values where, String attr, ImageFiles.Size size) {
+    /**
+     * An image the scene names, where, its size from its header, and the bytes of its file held
+     * until the build (0 when another attribute names the same file).
+     */
+    record Image(Values where, String attr, ImageFiles.Size size, long fileBytes) {
+        long bytes() {
+            return size.bytes() + fileBytes;
+        }
     }
 
     private final SceneValidator out;
@@ -120,7 +126,7 @@ final class SceneBudget {
         }
         long imageBytes = 0;
         for (Image im : images) {
-            long b = im.size().bytes();
+            long b = im.bytes();
             imageBytes += b;
             if (b > biggest) {
                 biggest = b;

@@ -25,9 +25,24 @@ public final class Scenes {
      * @throws IOException        when an image it names cannot be read
      */
     public static Simulation simulation(Path file, Progress progress) throws SceneLoadException, IOException {
-        Require.nonNull("file", file);
-        SceneDef def = SceneFiles.load(file);
-        Simulation sim = Simulation.create(def.simulationDef(), baseDir(file), progress);
+        return simulation(SceneFiles.read(Require.nonNull("file", file)), 0, progress);
+    }
+
+    /**
+     * Builds the simulation of a loaded scene from the images it was checked with (no file is read
+     * again), with the scene's LOD transition band.
+     *
+     * @param scene    a scene from {@link SceneFiles#read(Path)} or its stream variant
+     * @param workers  animation workers, in [0, 256]; 0 keeps the scene's setting (whose 0 means the
+     *                 available processors)
+     * @param progress told the progress of each generation step, on the calling thread
+     * @return a new simulation; the caller closes it
+     * @throws IOException when an image cannot be decoded
+     */
+    public static Simulation simulation(Scene scene, int workers, Progress progress) throws IOException {
+        Require.nonNull("scene", scene);
+        SceneDef def = scene.def();
+        Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, workers);
         sim.setLodTransition(def.render().lodTransition());
         return sim;
     }

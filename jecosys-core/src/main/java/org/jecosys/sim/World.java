@@ -12,6 +12,7 @@ import org.jecosys.plant.SpeciesDef;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.terrain.CompetitiveDistributor;
 import org.jecosys.terrain.PlantLayout;
+import org.jecosys.terrain.ImageSource;
 import org.jecosys.terrain.Terrain;
 import org.jecosys.terrain.TerrainDistributor;
 
@@ -98,7 +99,8 @@ public final class World {
      * competitive distributor (paper §4.3). Deterministic for the def's seed whatever {@code threads}.
      *
      * @param def      what to build
-     * @param baseDir  folder that relative image paths in the def resolve against
+     * @param baseDir  folder that relative image paths in the def resolve against; images must lie
+     *                 in its tree ({@link ImageSource#folder})
      * @param threads  worker threads for generation, &gt;= 1
      * @param progress receives progress of the long steps
      * @return the world
@@ -147,8 +149,46 @@ public final class World {
      */
     public static World build(SimulationDef def, Path baseDir, int threads, Progress progress,
                               TerrainDistributor distributor, ComponentFactories components) throws IOException {
-        Require.nonNull("def", def);
         Require.nonNull("baseDir", baseDir);
+        return build(def, ImageSource.folder(baseDir), threads, progress, distributor, components);
+    }
+
+    /**
+     * {@link #build(SimulationDef, Path, int, Progress)} with the images the def names read from
+     * {@code images} (for example the bytes a loaded scene was checked with,
+     * {@code org.jecosys.scene.Scene#images()}, or a game's assets).
+     *
+     * @param def      what to build
+     * @param images   where the heightmap and resource images the def names come from
+     * @param threads  worker threads for generation, &gt;= 1
+     * @param progress receives progress of the long steps
+     * @return the world
+     * @throws IOException when a heightmap or resource image cannot be read or decoded
+     */
+    public static World build(SimulationDef def, ImageSource images, int threads, Progress progress) throws IOException {
+        return build(def, images, threads, progress, new CompetitiveDistributor(), ComponentFactories.NONE);
+    }
+
+    /**
+     * The full form of the builds above: images from {@code images}, plants placed by
+     * {@code distributor}, user components from {@code components}. Build time; allocates.
+     *
+     * @param def         what to build
+     * @param images      where the heightmap and resource images the def names come from
+     * @param threads     worker threads for generation, &gt;= 1
+     * @param progress    receives progress of the long steps
+     * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
+     * @param components  user components ({@link ComponentFactories#NONE} for none)
+     * @return the world
+     * @throws IOException              when a heightmap or resource image cannot be read or decoded
+     * @throws IllegalArgumentException on a null argument, fewer than 1 thread, no species, or a
+     *                                  factory that names an unknown species or component or returns a
+     *                                  component that does not match its species
+     */
+    public static World build(SimulationDef def, ImageSource images, int threads, Progress progress,
+                              TerrainDistributor distributor, ComponentFactories components) throws IOException {
+        Require.nonNull("def", def);
+        Require.nonNull("images", images);
         Require.nonNull("progress", progress);
         Require.nonNull("distributor", distributor);
         Require.nonNull("components", components);
@@ -156,7 +196,7 @@ public final class World {
             throw new IllegalArgumentException("threads must be >= 1, got " + threads);
         }
         long t0 = System.nanoTime();
-        Terrain terrain = Terrain.build(def.terrain(), baseDir, threads, progress);
+        Terrain terrain = Terrain.build(def.terrain(), images, threads, progress);
         long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
                 progress, components);

@@ -3,8 +3,6 @@ package org.jecosys.terrain;
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
 import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.jecosys.math.Require;
 
@@ -26,31 +24,49 @@ final class GreyImage {
         this.levels = levels;
     }
 
+    /** Share of the free heap one image may take while it is decoded. */
+    static final double HEAP_SHARE = 0.8;
+
     /**
-     * Reads the image at {@code path}.
+     * Reads the image {@code path} from {@code images} and decodes those same bytes: the size from
+     * the header is bounded by {@link ImageFiles#MAX_SIDE} and by the heap free now before anything is
+     * decoded, so an image swapped for a larger one after the scene was checked is refused, never
+     * an OutOfMemoryError.
      *
-     * @param name argument name used in error messages
-     * @throws IOException              naming the file when it cannot be read or decoded, or a side
-     *                                  is above {@link ImageFiles#MAX_SIDE}
-     * @throws IllegalArgumentException when the path is null or the file is not an image
+     * @param name   argument name used in error messages ("heightmap", "image")
+     * @param images where the image comes from
+     * @param path   the path as the scene writes it
+     * @throws IOException              naming the image when it cannot be read or decoded, a side is
+     *                                  above {@link ImageFiles#MAX_SIDE}, or decoding it needs more
+     *                                  memory than the heap has free
+     * @throws IllegalArgumentException when an argument is null or the file is not an image
      */
-    static GreyImage read(String name, Path path) throws IOException {
+    static GreyImage read(String name, ImageSource images, String path) throws IOException {
         Require.nonNull(name, path);
-        if (!Files.isRegularFile(path)) {
-            throw new IllegalArgumentException(name + " is not a readable file: " + path);
-        }
+        Require.nonNull("images", images);
+        byte[] bytes = images.read(path);
+        String label = "'" + path + "'";
+        ImageFiles.Size size;
         try {
-            ImageFiles.header(path); // the size is bounded before anything is decoded
+            size = ImageFiles.header(label, bytes); // the size is bounded before anything is decoded
         } catch (ImageFiles.NotAnImage e) {
             throw new IllegalArgumentException(name + " is not an image ImageIO can read: " + path, e);
         }
+        Runtime rt = Runtime.getRuntime();
+        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
+        if (size.bytes() > HEAP_SHARE * free) {
+            throw new IOException("image " + label + " is " + size.width() + " x " + size.height()
+                    + " pixels: decoding it needs about " + (size.bytes() >> 20) + " MiB, more than the "
+                    + (long) (HEAP_SHARE * free) / (1 << 20) + " MiB the Java heap has free (set it with -Xmx; "
+                    + "was the file replaced after the scene was checked?)");
+        }
         BufferedImage img;
         try {
-            img = ImageIO.read(path.toFile());
+            img = ImageIO.read(ImageFiles.stream(bytes)); // closes the stream
         } catch (IOException e) {
-            throw ImageFiles.named(path, e);
+            throw ImageFiles.named(label, e);
         } catch (RuntimeException e) {
-            throw new IOException("image " + path + ": cannot decode its data (" + e + ")", e);
+            throw new IOException("image " + label + ": cannot decode its data (" + e + ")", e);
         }
         if (img == null) {
             throw new IllegalArgumentException(name + " is not an image ImageIO can read: " + path);

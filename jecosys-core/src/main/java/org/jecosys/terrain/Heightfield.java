@@ -1,7 +1,6 @@
 package org.jecosys.terrain;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
@@ -131,20 +130,25 @@ public final class Heightfield {
      * Reads relief from a greyscale image (8- or 16-bit grey, or colour reduced to luminance):
      * black is 0 m, white is {@code heightScale} m. The image is resampled bilinearly onto
      * {@code def.resolution()} vertices per side; image column grows with X, row with Z, and the
-     * image's corner pixel centres sit on the terrain's corners. {@code def.heightmap()} is not read:
-     * the caller resolves it to {@code image}.
+     * image's corner pixel centres sit on the terrain's corners. The image is
+     * {@code def.heightmap()}, read once from {@code images} and decoded from those bytes.
      *
-     * @param def      size, resolution and {@code heightScale}, metres
-     * @param image    absolute path of the image
+     * @param def      size, resolution, {@code heightScale} (metres) and the heightmap's path
+     * @param images   where the heightmap comes from (e.g. {@link ImageSource#folder})
      * @param progress told "terrain" progress in rows; called on the calling thread
      * @return a new heightfield
-     * @throws IOException              when the file cannot be read
-     * @throws IllegalArgumentException when def or image is null or the file is not an image
+     * @throws IOException              when the image cannot be read, or decoding it would not fit in
+     *                                  the heap
+     * @throws IllegalArgumentException when an argument is null, the def names no heightmap or the
+     *                                  file is not an image
      */
-    public static Heightfield fromImage(TerrainDef def, Path image, Progress progress) throws IOException {
+    public static Heightfield fromImage(TerrainDef def, ImageSource images, Progress progress) throws IOException {
         Require.nonNull("def", def);
         Require.nonNull("progress", progress);
-        GreyImage img = GreyImage.read("heightmap", image);
+        if (def.heightmap() == null) {
+            throw new IllegalArgumentException("the terrain names no heightmap");
+        }
+        GreyImage img = GreyImage.read("heightmap", images, def.heightmap());
         int res = def.resolution();
         float[] h = new float[res * res];
         double su = (img.width - 1) / (double) (res - 1);

@@ -1,21 +1,21 @@
 package org.jecosys.terrain;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Iterator;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReadParam;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
+import javax.imageio.stream.MemoryCacheImageInputStream;
 import org.jecosys.math.Require;
 
 /**
  * Checks of the greyscale images a terrain reads (heightmaps and IMAGE resource maps, paper §4.3)
- * before they are decoded: the size from the file's header only, bounded by {@link #MAX_SIDE}, and a
- * decoding pass at reduced resolution that finds corrupt or truncated data without holding the full
- * image. Every failure is an {@link IOException} whose message names the file. Any thread;
- * allocates (load time).
+ * before they are decoded, on the bytes read once through an {@link ImageSource}: the size from the
+ * header only, bounded by {@link #MAX_SIDE}, and a decoding pass at reduced resolution that finds
+ * corrupt or truncated data without holding the full image. Every failure is an {@link IOException}
+ * whose message names the image. Any thread; allocates (load time).
  */
 public final class ImageFiles {
     /**
@@ -58,23 +58,22 @@ public final class ImageFiles {
      * Reads an image's size from its header and checks it against {@link #MAX_SIDE}, before anything
      * is decoded. Any thread; allocates a little.
      *
-     * @param file the image
+     * @param name  the image's name for messages (the path the scene writes)
+     * @param bytes the whole image file
      * @return its size
-     * @throws IOException naming the file when it cannot be read, is not an image ImageIO reads, or
-     *                     has a side above {@link #MAX_SIDE}
+     * @throws IOException naming the image when it is not an image ImageIO reads ({@link NotAnImage})
+     *                     or has a side above {@link #MAX_SIDE}
      */
-    public static Size header(Path file) throws IOException {
-        Require.nonNull("file", file);
-        if (!Files.isRegularFile(file)) {
-            throw new IOException("image " + file + ": not a readable file");
-        }
-        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
-            ImageReader reader = reader(in, file);
+    public static Size header(String name, byte[] bytes) throws IOException {
+        Require.nonNull("name", name);
+        Require.nonNull("bytes", bytes);
+        try (ImageInputStream in = stream(bytes)) {
+            ImageReader reader = reader(in, name);
             try {
                 int w = reader.getWidth(0);
                 int h = reader.getHeight(0);
                 if (w < 1 || h < 1 || w > MAX_SIDE || h > MAX_SIDE) {
-                    throw new IOException("image " + file + " is " + w + " x " + h + " pixels; images are limited to "
+                    throw new IOException("image " + name + " is " + w + " x " + h + " pixels; images are limited to "
                             + MAX_SIDE + " pixels a side (ImageFiles.MAX_SIDE)");
                 }
                 return new Size(w, h);
@@ -82,9 +81,9 @@ public final class ImageFiles {
                 reader.dispose();
             }
         } catch (IOException e) {
-            throw named(file, e);
+            throw named(name, e);
         } catch (RuntimeException e) {
-            throw new IOException("image " + file + ": cannot read its header (" + e + ")", e);
+            throw new IOException("image " + name + ": cannot read its header (" + e + ")", e);
         }
     }
 
@@ -94,14 +93,15 @@ public final class ImageFiles {
      * before a scene is accepted, without holding the full image. Checks the header first
      * ({@link #header}). Any thread; allocates at most a 64th of the image.
      *
-     * @param file the image
+     * @param name  the image's name for messages (the path the scene writes)
+     * @param bytes the whole image file
      * @return its size
-     * @throws IOException naming the file when the header or the data cannot be read
+     * @throws IOException naming the image when the header or the data cannot be read
      */
-    public static Size verify(Path file) throws IOException {
-        Size size = header(file);
-        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
-            ImageReader reader = reader(in, file);
+    public static Size verify(String name, byte[] bytes) throws IOException {
+        Size size = header(name, bytes);
+        try (ImageInputStream in = stream(bytes)) {
+            ImageReader reader = reader(in, name);
             try {
                 ImageReadParam p = reader.getDefaultReadParam();
                 p.setSourceSubsampling(8, 8, 0, 0);
@@ -110,17 +110,19 @@ public final class ImageFiles {
                 reader.dispose();
             }
         } catch (IOException e) {
-            throw named(file, e);
+            throw named(name, e);
         } catch (RuntimeException e) {
-            throw new IOException("image " + file + ": cannot decode its data (" + e + ")", e);
+            throw new IOException("image " + name + ": cannot decode its data (" + e + ")", e);
         }
         return size;
     }
 
-    private static ImageReader reader(ImageInputStream in, Path file) throws IOException {
-        if (in == null) {
-            throw new IOException("image " + file + ": cannot be opened");
-        }
+    /** An image stream over bytes in memory (no cache file: ImageIO's default may write one). */
+    static ImageInputStream stream(byte[] bytes) throws IOException {
+        return new MemoryCacheImageInputStream(new ByteArrayInputStream(bytes));
+    }
+
+    static ImageReader reader(ImageInputStream in, String file) throws IOException {
         Iterator<ImageReader> readers = ImageIO.getImageReaders(in);
         if (!readers.hasNext()) {
             throw new NotAnImage("image " + file + ": not an image format Java reads (use a greyscale PNG)");
@@ -140,7 +142,7 @@ public final class ImageFiles {
     }
 
     /** An IOException whose message names the file (once). */
-    static IOException named(Path file, IOException e) {
+    static IOException named(String file, IOException e) {
         String m = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
         if (m.startsWith("image " + file)) {
             return e;

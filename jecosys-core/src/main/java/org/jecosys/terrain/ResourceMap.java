@@ -1,7 +1,6 @@
 package org.jecosys.terrain;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Require;
 
@@ -49,17 +48,20 @@ public final class ResourceMap {
      * {@code def.amount()}. UNIFORM: level 1. NOISE: fractal value noise of feature size
      * {@code def.scale()} metres from {@code seed}, stretched to [0, 1] over the map. VALLEYS: water
      * gathering in low ground and along valleys (see {@link ValleyWater}), in [0, 1]. IMAGE: the
-     * greyscale image at {@code image}, resampled bilinearly (column along X, row along Z).
+     * greyscale image {@code def.image()}, read once from {@code images} and resampled bilinearly
+     * (column along X, row along Z).
      *
      * @param def     the map's source, resolution, amount and noise scale
      * @param terrain gives the extent (and, for VALLEYS, the relief)
      * @param seed    seed of NOISE maps (ignored otherwise)
-     * @param image   absolute path of the image for IMAGE maps; ignored (may be null) otherwise
+     * @param images  where an IMAGE map's image comes from; ignored (may be null) otherwise
      * @return a new, mutable map
-     * @throws IOException              when an IMAGE map's file cannot be read
+     * @throws IOException              when an IMAGE map's file cannot be read or would not fit in the
+     *                                  heap
      * @throws IllegalArgumentException on a null def/terrain, or a missing or unreadable image
      */
-    public static ResourceMap build(ResourceMapDef def, Heightfield terrain, long seed, Path image) throws IOException {
+    public static ResourceMap build(ResourceMapDef def, Heightfield terrain, long seed, ImageSource images)
+            throws IOException {
         Require.nonNull("def", def);
         Require.nonNull("terrain", terrain);
         int res = def.resolution();
@@ -80,7 +82,7 @@ public final class ResourceMap {
             }
             case VALLEYS -> ValleyWater.compute(terrain, res, v);
             case IMAGE -> {
-                GreyImage img = GreyImage.read("image", image);
+                GreyImage img = GreyImage.read("image", Require.nonNull("images", images), def.image());
                 for (int j = 0; j < res; j++) {
                     double vv = (j + 0.5) / res * img.height - 0.5;
                     for (int i = 0; i < res; i++) {

@@ -40,10 +40,8 @@ public final class Terrain {
     }
 
     /**
-     * Builds the terrain {@code def} describes: the heightfield (generated, or read from
-     * {@code def.heightmap()} resolved against {@code baseDir}) and both resource maps (IMAGE maps
-     * resolved against {@code baseDir}; NOISE maps seeded from {@code def.seed()} with
-     * {@link #WATER_SALT} / {@link #NUTRIENT_SALT}). Deterministic for a def whatever the thread count.
+     * {@link #build(TerrainDef, ImageSource, int, Progress)} with images from {@code baseDir}'s
+     * folder tree ({@link ImageSource#folder}).
      *
      * @param def      the terrain's size, relief and resource maps
      * @param baseDir  directory relative image paths are resolved against (the scene file's folder);
@@ -52,21 +50,40 @@ public final class Terrain {
      * @param progress told "terrain" progress (in thousandths), on the calling thread
      * @return a new terrain
      * @throws IOException              when an image cannot be read
-     * @throws IllegalArgumentException on null arguments, a missing baseDir, or an unreadable image
+     * @throws IllegalArgumentException on null arguments or an unreadable image
      */
     public static Terrain build(TerrainDef def, Path baseDir, int threads, Progress progress) throws IOException {
+        return build(def, baseDir == null ? ImageSource.NONE : ImageSource.folder(baseDir), threads, progress);
+    }
+
+    /**
+     * Builds the terrain {@code def} describes: the heightfield (generated, or decoded from the
+     * bytes of {@code def.heightmap()} read from {@code images}) and both resource maps (IMAGE maps
+     * likewise; NOISE maps seeded from {@code def.seed()} with {@link #WATER_SALT} /
+     * {@link #NUTRIENT_SALT}). Each image is read once, and the bytes read are the bytes decoded.
+     * Deterministic for a def whatever the thread count.
+     *
+     * @param def      the terrain's size, relief and resource maps
+     * @param images   where the images the def names come from ({@link ImageSource#NONE} when none)
+     * @param threads  worker threads, at least 1
+     * @param progress told "terrain" progress (in thousandths), on the calling thread
+     * @return a new terrain
+     * @throws IOException              when an image cannot be read, or decoding it would not fit
+     *                                  in the heap
+     * @throws IllegalArgumentException on null arguments or a file that is not an image
+     */
+    public static Terrain build(TerrainDef def, ImageSource images, int threads, Progress progress) throws IOException {
         Require.nonNull("def", def);
+        Require.nonNull("images", images);
         Require.nonNull("progress", progress);
         // one "terrain" bar: the heightfield is the first 80 %, each map 10 %
         Progress relief = (step, done, total) -> progress.report("terrain", done * 800 / total, 1000);
         Heightfield hf = def.heightmap() == null
                 ? Heightfield.generate(def, threads, relief)
-                : Heightfield.fromImage(def, resolve("heightmap", baseDir, def.heightmap()), relief);
-        ResourceMap w = ResourceMap.build(def.water(), hf, Rng.mix(def.seed() ^ WATER_SALT),
-                def.water().image() == null ? null : resolve("water image", baseDir, def.water().image()));
+                : Heightfield.fromImage(def, images, relief);
+        ResourceMap w = ResourceMap.build(def.water(), hf, Rng.mix(def.seed() ^ WATER_SALT), images);
         progress.report("terrain", 900, 1000);
-        ResourceMap n = ResourceMap.build(def.nutrients(), hf, Rng.mix(def.seed() ^ NUTRIENT_SALT),
-                def.nutrients().image() == null ? null : resolve("nutrients image", baseDir, def.nutrients().image()));
+        ResourceMap n = ResourceMap.build(def.nutrients(), hf, Rng.mix(def.seed() ^ NUTRIENT_SALT), images);
         progress.report("terrain", 1000, 1000);
         return new Terrain(hf, w.freeze(), n.freeze());
     }
@@ -84,17 +101,6 @@ public final class Terrain {
     /** {@return the initial nutrient map (frozen)} */
     public ResourceMap nutrients() {
         return nutrients;
-    }
-
-    private static Path resolve(String name, Path baseDir, String file) {
-        Path p = Path.of(file);
-        if (p.isAbsolute()) {
-            return p;
-        }
-        if (baseDir == null) {
-            throw new IllegalArgumentException(name + " '" + file + "' is relative but no baseDir was given");
-        }
-        return baseDir.resolve(p);
     }
 
     private static void checkExtent(String name, ResourceMap m, Heightfield hf) {

@@ -76,7 +76,8 @@ class HostileXmlTest {
 
     @Test
     void predefinedEntitiesStillWork() throws Exception {
-        String xml = "<scene version=\"1\" name=\"Tom &amp; Jerry &lt;3\"><terrain sizeX=\"1\" sizeZ=\"1\"/></scene>";
+        String xml = "<scene version=\"1\" name=\"Tom &amp; Jerry &lt;3\"><terrain sizeX=\"1\" sizeZ=\"1\"/>"
+                + SceneFilesTest.SPECIES + "</scene>";
         SceneDef d = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "ok.xml", null);
         assertEquals("Tom & Jerry <3", d.name());
         assertTrue(SceneFiles.toXml(d).contains("name=\"Tom &amp; Jerry &lt;3\""));

@@ -24,6 +24,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 class SceneFilesTest {
     static final Path SCENES = Path.of("scenes");
     static final Path XSD = SCENES.resolve("jecosys-scene.xsd");
+    /** The smallest species a scene can run with (a scene needs at least one). */
+    static final String SPECIES = "<species id=\"g\"><lod/><component id=\"l\" type=\"leaf\" segments=\"4\" length=\"0.2\" baseWidth=\"0.005\" mass=\"0.001\" stiffness=\"0.5\" dragArea=\"0.001\" lodSegments=\"4\"/></species>";
 
     static Stream<Path> sceneFiles() throws Exception {
         try (Stream<Path> s = Files.list(SCENES)) {
@@ -107,7 +109,7 @@ class SceneFilesTest {
 
     @Test
     void anglesAreDegreesInFilesAndRadiansInDefs() throws Exception {
-        String xml = "<scene version=\"1\"><terrain sizeX=\"1\" sizeZ=\"1\"/><camera pitch=\"-10\" fovY=\"45\"/>"
+        String xml = "<scene version=\"1\"><terrain sizeX=\"1\" sizeZ=\"1\"/>" + SPECIES + "<camera pitch=\"-10\" fovY=\"45\"/>"
                 + "</scene>";
         SceneDef d = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "a.xml", null);
         assertEquals(Math.toRadians(-10), d.camera().pitch());
@@ -117,21 +119,25 @@ class SceneFilesTest {
 
     @Test
     void defaultsFillWhatTheFileLeavesOut() throws Exception {
-        String xml = "<scene version=\"1\"><terrain sizeX=\"10\" sizeZ=\"20\"/></scene>";
+        String xml = "<scene version=\"1\"><terrain sizeX=\"10\" sizeZ=\"20\"/>" + SPECIES + "</scene>";
         SceneDef d = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "d.xml", null);
         assertEquals(org.jecosys.field.ForceFieldDef.defaults(), d.field());
         assertEquals(org.jecosys.anim.AnimationDef.defaults(), d.animation());
         assertEquals(RenderDef.defaults(), d.render());
         assertEquals(org.jecosys.math.CameraDef.defaults(), d.camera());
         assertEquals(65, d.terrain().resolution());
-        assertEquals("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<scene xmlns:xsi=\"http://www.w3.org/2001/"
+        String xml2 = SceneFiles.toXml(d);
+        assertTrue(xml2.startsWith("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<scene xmlns:xsi=\"http://www.w3.org/2001/"
                 + "XMLSchema-instance\" xsi:noNamespaceSchemaLocation=\"jecosys-scene.xsd\"\n    version=\"1\">\n"
-                + "  <terrain sizeX=\"10\" sizeZ=\"20\"/>\n</scene>\n", SceneFiles.toXml(d));
+                + "  <terrain sizeX=\"10\" sizeZ=\"20\"/>\n  <species "), xml2);
+        for (String left : new String[] {"<field", "<camera", "<animation", "<render", "<wind"}) {
+            assertFalse(xml2.contains(left), "defaults are not written: " + left + "\n" + xml2);
+        }
     }
 
     @Test
     void aVortexMayTurnClockwiseButASourceCannotBeNegative() throws Exception {
-        String ok = "<scene version=\"1\"><terrain sizeX=\"1\" sizeZ=\"1\"/><wind><vortex id=\"v\" strength=\"-4\"/>"
+        String ok = "<scene version=\"1\"><terrain sizeX=\"1\" sizeZ=\"1\"/>" + SPECIES + "<wind><vortex id=\"v\" strength=\"-4\"/>"
                 + "</wind></scene>";
         SceneDef d = SceneFiles.parse(ok.getBytes(StandardCharsets.UTF_8), "v.xml", null);
         assertEquals(-4, d.flows().get(0).strength());

@@ -20,7 +20,7 @@ class CompetitiveDistributorTest {
         TerrainDef def = new TerrainDef(40, 40, 129, 4, 0.5, seed, null,
                 new ResourceMapDef(ResourceMapDef.Source.VALLEYS, 64, 1, 1, null),
                 new ResourceMapDef(ResourceMapDef.Source.NOISE, 64, 1, 8, null));
-        return Terrain.build(def, null, 1, Progress.NONE);
+        return Terrain.build(def, ImageSource.NONE, 1, Progress.NONE);
     }
 
     /** Grass tuft: footprint 0.3 m, tolerant. */

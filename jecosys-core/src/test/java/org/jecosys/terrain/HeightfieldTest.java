@@ -103,7 +103,7 @@ class HeightfieldTest {
         TerrainDef def = new TerrainDef(50, 20, 65, 10, 0.5, 1, "ramp.png", ResourceMapDef.UNIFORM_FULL,
                 ResourceMapDef.UNIFORM_FULL);
         AtomicLong reports = new AtomicLong();
-        Heightfield hf = Heightfield.fromImage(def, png, (step, done, total) -> {
+        Heightfield hf = Heightfield.fromImage(def, ImageSource.folder(dir), (step, done, total) -> {
             assertEquals("terrain", step);
             reports.incrementAndGet();
         });
@@ -121,9 +121,11 @@ class HeightfieldTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> Heightfield.generate(hills(1, 9), 0, Progress.NONE));
         assertTrue(e.getMessage().contains("threads"));
-        Path notImage = dir.resolve("x.png");
-        Files.writeString(notImage, "hello");
-        e = assertThrows(IllegalArgumentException.class, () -> Heightfield.fromImage(hills(1, 9), notImage, Progress.NONE));
+        Files.writeString(dir.resolve("x.png"), "hello");
+        TerrainDef notImage = new TerrainDef(10, 10, 9, 1, 0.5, 1, "x.png", ResourceMapDef.UNIFORM_FULL,
+                ResourceMapDef.UNIFORM_FULL);
+        e = assertThrows(IllegalArgumentException.class,
+                () -> Heightfield.fromImage(notImage, ImageSource.folder(dir), Progress.NONE));
         assertTrue(e.getMessage().contains("heightmap"));
         e = assertThrows(IllegalArgumentException.class,
                 () -> Heightfield.of(10, 10, 3, new float[8]));

@@ -85,7 +85,7 @@ class ResourceMapTest {
         img.setRGB(1, 0, 0xFFFFFF);
         Path png = dir.resolve("w.png");
         ImageIO.write(img, "png", png.toFile());
-        ResourceMap m = ResourceMap.build(new ResourceMapDef(ResourceMapDef.Source.IMAGE, 8, 0.5, 1, "w.png"), FLAT, 0, png);
+        ResourceMap m = ResourceMap.build(new ResourceMapDef(ResourceMapDef.Source.IMAGE, 8, 0.5, 1, "w.png"), FLAT, 0, ImageSource.folder(dir));
         assertEquals(0, m.level(0, 3), 1e-9);
         assertEquals(0.5, m.level(7, 3), 1e-9);
         assertTrue(m.sample(-5, 0) < m.sample(5, 0));
@@ -124,7 +124,8 @@ class ResourceMapTest {
                 () -> ResourceMap.of(10, 10, 2, new double[] {0, 0.5, 1.5, 0}));
         assertTrue(e.getMessage().contains("levels"));
         TerrainDef def = new TerrainDef(10, 10, 9, 1, 0.5, 1, "hm.png", ResourceMapDef.UNIFORM_FULL, ResourceMapDef.UNIFORM_FULL);
-        e = assertThrows(IllegalArgumentException.class, () -> Terrain.build(def, null, 1, Progress.NONE));
-        assertTrue(e.getMessage().contains("heightmap"));
+        java.io.IOException io = assertThrows(java.io.IOException.class,
+                () -> Terrain.build(def, ImageSource.NONE, 1, Progress.NONE));
+        assertTrue(io.getMessage().contains("'hm.png'"), io.getMessage());
     }
 }

@@ -27,7 +27,7 @@ class TerrainBenchmarkTest {
                 new ResourceMapDef(ResourceMapDef.Source.VALLEYS, 128, 1, 1, null),
                 new ResourceMapDef(ResourceMapDef.Source.NOISE, 128, 1, 20, null));
         long t0 = System.nanoTime();
-        Terrain terrain = Terrain.build(def, null, 2, Progress.NONE);
+        Terrain terrain = Terrain.build(def, ImageSource.NONE, 2, Progress.NONE);
         double terrainMs = (System.nanoTime() - t0) / 1e6;
         List<String> species = List.of("tuft", "yellow", "purple");
         List<DistributionDef> defs = List.of(
