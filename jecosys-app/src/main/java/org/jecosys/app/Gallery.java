@@ -106,7 +106,7 @@ final class Gallery {
                 }
             }
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
     }
 

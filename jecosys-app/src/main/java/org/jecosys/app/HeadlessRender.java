@@ -38,22 +38,9 @@ final class HeadlessRender {
     private HeadlessRender() {
     }
 
-    /** The render settings a scene asks for. */
+    /** The render settings a scene asks for, with the library's sky and terrain (the whole picture). */
     static RenderSettings settings(RenderDef def) {
-        TerrainTint tint = switch (def.terrainTint()) {
-            case WATER -> TerrainTint.WATER;
-            case NUTRIENTS -> TerrainTint.NUTRIENTS;
-            default -> TerrainTint.NONE;
-        };
-        RenderDef.Light l = def.light();
-        RenderDef.Patches p = def.patches();
-        return new RenderSettings().sky(def.sky()).tint(tint)
-                .showField(def.showField()).showWind(def.showWind())
-                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
-                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
-                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd())
-                .patches((float) p.scale(), (float) p.strength(), p.seed());
+        return RenderSettings.of(def).clear(true).terrain(true);
     }
 
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
@@ -106,7 +93,7 @@ final class HeadlessRender {
                 }
             }
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
         log.println("Wrote " + frames + " frame(s) of " + width + "x" + height + " to " + out.toAbsolutePath());
         log.flush();

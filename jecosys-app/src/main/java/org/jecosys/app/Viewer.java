@@ -198,7 +198,7 @@ final class Viewer {
             Pixels.writePng(out, px, w, h);
             System.out.println("Saved " + out.toAbsolutePath());
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
     }
 

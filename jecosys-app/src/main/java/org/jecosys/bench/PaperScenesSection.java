@@ -72,7 +72,7 @@ final class PaperScenesSection implements Section {
             try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), WIDTH, HEIGHT)) {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
-                    RenderSettings settings = new RenderSettings().sky(scene.render().sky());
+                    RenderSettings settings = RenderSettings.standalone().sky(scene.render().sky());
                     try (SceneRenderer renderer = new SceneRenderer(gl, worlds.get(s), settings)) {
                         fb.bind();
                         int frames = s == 3 ? Math.max(2, renderFrames / 4) : renderFrames;

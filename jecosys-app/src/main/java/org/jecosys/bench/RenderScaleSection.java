@@ -80,7 +80,7 @@ final class RenderScaleSection implements Section {
                     for (ResolvePath path : paths) {
                         SceneRenderer r;
                         try {
-                            r = new SceneRenderer(gl, sim.world(), new RenderSettings().sky(def.render().sky()), path);
+                            r = new SceneRenderer(gl, sim.world(), RenderSettings.standalone().sky(def.render().sky()), path);
                         } catch (IllegalArgumentException e) {
                             // a path the context cannot run for this scene (a storage buffer too small)
                             skipped.append(" ").append(def.name()).append(" not on ").append(path.name())

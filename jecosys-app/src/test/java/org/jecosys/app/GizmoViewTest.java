@@ -84,7 +84,7 @@ class GizmoViewTest {
             assertEquals(EnumSet.allOf(GizmoKind.class), seen, "every kind of gizmo is in the picture");
             try (GlContext gl = GlContext.headless(true);
                  GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
-                 SceneRenderer scene = new SceneRenderer(gl, sim.world(), new RenderSettings());
+                 SceneRenderer scene = new SceneRenderer(gl, sim.world(), RenderSettings.standalone());
                  GizmoRenderer gizmos = new GizmoRenderer(gl, sim.world().terrain().heightfield())) {
                 scene.setField(sim.forceField().debugView());
                 fb.bind();
@@ -129,7 +129,7 @@ class GizmoViewTest {
                 gl.debug().check("the gizmo view test");
             }
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
     }
 

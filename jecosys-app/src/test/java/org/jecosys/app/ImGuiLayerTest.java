@@ -32,7 +32,7 @@ class ImGuiLayerTest {
         ByteBuffer other = MemoryUtil.memAlloc(4 * W * H);
         try (GlContext gl = GlContext.headless(true);
              GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
-             SceneRenderer renderer = new SceneRenderer(gl, world, new RenderSettings())) {
+             SceneRenderer renderer = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();
             renderer.render(TestFrames.rest(world, cam), cam, W, H);
             Pixels.read(W, H, other);
@@ -74,8 +74,8 @@ class ImGuiLayerTest {
             assertTrue(changed > 5000, "panel pixels: " + changed);
             gl.debug().check("the ImGui test");
         } finally {
-            MemoryUtil.memFree(px);
-            MemoryUtil.memFree(other);
+            MemoryUtil.memFree((java.nio.Buffer) px);
+            MemoryUtil.memFree((java.nio.Buffer) other);
         }
     }
 }

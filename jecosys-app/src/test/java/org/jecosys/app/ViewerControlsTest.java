@@ -70,7 +70,7 @@ class ViewerControlsTest {
                 .height(def.camera().x(), def.camera().z()), W / (double) H);
         fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());
         input = new ViewerInput();
-        editor = new SceneEditor(def, sim, new RenderSettings());
+        editor = new SceneEditor(def, sim, RenderSettings.standalone());
         controls = new ViewerControls(def, sim, editor, new SceneSaver(file, shipped), fly, input);
     }
 

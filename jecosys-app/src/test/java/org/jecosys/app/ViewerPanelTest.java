@@ -102,7 +102,7 @@ class ViewerPanelTest {
                 gl.debug().check("the viewer frame");
             }
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
         assertEquals(FlowKind.BLAST, ViewerControls.NEW_KINDS[5]);
     }

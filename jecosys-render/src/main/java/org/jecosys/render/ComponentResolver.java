@@ -161,8 +161,8 @@ final class ComponentResolver implements AutoCloseable {
             listTexture = own(new GlBufferTexture(t, listBuffer, GL_RGBA32I));
             lists = MemoryUtil.memAllocInt(tableInts);
         } catch (RuntimeException | Error e) {
-            MemoryUtil.memFree(instances);
-            MemoryUtil.memFree(lists);
+            MemoryUtil.memFree((java.nio.Buffer) instances);
+            MemoryUtil.memFree((java.nio.Buffer) lists);
             PlantRenderer.closeReverse(owned);
             throw e;
         }
@@ -268,7 +268,7 @@ final class ComponentResolver implements AutoCloseable {
         int n = batches.writeInstances(instanceStaging);
         instanceBuffer.orphan();
         instanceBuffer.upload(0, instanceStaging);
-        long base = MemoryUtil.memAddress0(frame.renderStates());
+        long base = MemoryUtil.memAddress0((java.nio.Buffer) frame.renderStates());
         long bytes = 0;
         for (int i = 0, runs = batches.runs(); i < runs; i++) {
             long c0 = batches.runStart(i);
@@ -392,7 +392,7 @@ final class ComponentResolver implements AutoCloseable {
             lookBuffer.upload(0, staging);
             lookVersion = look.version();
         } finally {
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree((java.nio.Buffer) staging);
         }
     }
 
@@ -439,7 +439,7 @@ final class ComponentResolver implements AutoCloseable {
         }
         closed = true;
         PlantRenderer.closeReverse(owned);
-        MemoryUtil.memFree(instanceStaging);
-        MemoryUtil.memFree(listStaging);
+        MemoryUtil.memFree((java.nio.Buffer) instanceStaging);
+        MemoryUtil.memFree((java.nio.Buffer) listStaging);
     }
 }

@@ -67,7 +67,7 @@ public final class FieldOverlay implements AutoCloseable {
             vao = va;
             reserve(1024);
         } catch (RuntimeException e) {
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree((java.nio.Buffer) staging);
             PlantRenderer.closeAll(va, program);
             throw e;
         }
@@ -76,7 +76,7 @@ public final class FieldOverlay implements AutoCloseable {
     private void reserve(int nodes) {
         if (vertices != null) {
             vertices.close();
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree((java.nio.Buffer) staging);
         }
         capacityNodes = nodes;
         int verts = nodes * (TRI_PER_NODE + LINE_PER_NODE + LINE_PER_WIND) + EXTRA;
@@ -256,7 +256,7 @@ public final class FieldOverlay implements AutoCloseable {
         if (!closed) {
             closed = true;
             PlantRenderer.closeAll(vertices, vao, program);
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree((java.nio.Buffer) staging);
         }
     }
 }

@@ -464,8 +464,8 @@ final class GizmoMesh implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            MemoryUtil.memFree(groundPart);
-            MemoryUtil.memFree(handlePart);
+            MemoryUtil.memFree((java.nio.Buffer) groundPart);
+            MemoryUtil.memFree((java.nio.Buffer) handlePart);
         }
     }
 }

@@ -235,7 +235,7 @@ public final class GizmoRenderer implements AutoCloseable {
         if (!closed) {
             closed = true;
             PlantRenderer.closeAll(vertices, vao, program, state, mesh);
-            MemoryUtil.memFree(matrix);
+            MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
     }
 }

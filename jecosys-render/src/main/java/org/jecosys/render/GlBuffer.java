@@ -150,7 +150,7 @@ public final class GlBuffer extends GlResource {
      * for a range of a direct buffer without slicing it. Render thread; no heap allocation.
      *
      * @param offset  first byte written, &gt;= 0
-     * @param address native address of the first byte to read (e.g. {@code MemoryUtil.memAddress0(buf)
+     * @param address native address of the first byte to read (e.g. {@code MemoryUtil.memAddress0((java.nio.Buffer) buf)
      *                + start}); the caller keeps the memory alive and unchanged during the call
      * @param bytes   bytes to write, &gt;= 0
      * @throws IllegalArgumentException when the upload does not fit the capacity

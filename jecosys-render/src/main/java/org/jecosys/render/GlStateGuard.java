@@ -223,8 +223,8 @@ final class GlStateGuard implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            MemoryUtil.memFree(ints);
-            MemoryUtil.memFree(clear);
+            MemoryUtil.memFree((java.nio.Buffer) ints);
+            MemoryUtil.memFree((java.nio.Buffer) clear);
             query.close();
         }
     }

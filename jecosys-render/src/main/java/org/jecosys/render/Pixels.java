@@ -103,7 +103,7 @@ public final class Pixels {
                 throw new IOException("cannot write PNG " + file);
             }
         } finally {
-            MemoryUtil.memFree(flipped);
+            MemoryUtil.memFree((java.nio.Buffer) flipped);
         }
     }
 }

@@ -61,7 +61,7 @@ final class PlantMeshes {
             poses.position(0).limit((int) Math.max(4, texels * 4));
             return GlBuffer.of(t, GL_TEXTURE_BUFFER, poses, GL_STATIC_DRAW);
         } finally {
-            MemoryUtil.memFree(poses);
+            MemoryUtil.memFree((java.nio.Buffer) poses);
         }
     }
 
@@ -107,8 +107,8 @@ final class PlantMeshes {
             glBindVertexArray(0);
             return vao;
         } finally {
-            MemoryUtil.memFree(fv);
-            MemoryUtil.memFree(iv);
+            MemoryUtil.memFree((java.nio.Buffer) fv);
+            MemoryUtil.memFree((java.nio.Buffer) iv);
         }
     }
 
@@ -199,7 +199,7 @@ final class PlantMeshes {
             b.put(values).flip();
             return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
         } finally {
-            MemoryUtil.memFree(b);
+            MemoryUtil.memFree((java.nio.Buffer) b);
         }
     }
 
@@ -237,7 +237,7 @@ final class PlantMeshes {
             b.position(0).limit(4 * n);
             return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
         } finally {
-            MemoryUtil.memFree(b);
+            MemoryUtil.memFree((java.nio.Buffer) b);
         }
     }
 
@@ -267,7 +267,7 @@ final class PlantMeshes {
             b.position(0).limit(4 * n);
             return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
         } finally {
-            MemoryUtil.memFree(b);
+            MemoryUtil.memFree((java.nio.Buffer) b);
         }
     }
 }

@@ -169,7 +169,7 @@ public final class PlantRenderer implements AutoCloseable {
                 }
             }
         } catch (RuntimeException | Error e) {
-            MemoryUtil.memFree(mat);
+            MemoryUtil.memFree((java.nio.Buffer) mat);
             query.close();
             closeReverse(owned);
             throw e;
@@ -434,7 +434,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         closed = true;
         closeReverse(owned);
-        MemoryUtil.memFree(matrix);
+        MemoryUtil.memFree((java.nio.Buffer) matrix);
         query.close();
     }
 

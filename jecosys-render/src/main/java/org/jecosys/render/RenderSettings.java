@@ -2,12 +2,14 @@ package org.jecosys.render;
 
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
+import org.jecosys.scene.RenderDef;
+import org.jecosys.scene.SceneDef;
 
 /**
  * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
- * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, overlays. The
- * app fills it from a scene's render settings ({@code RenderDef} and its {@code light} and
- * {@code patches}). Colours are linear RGB in [0, 1]. Render thread only; setters do not allocate
+ * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, overlays,
+ * and whether the library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it
+ * from a scene's {@code <render>} settings. Colours are linear RGB in [0, 1]. Render thread only; setters do not allocate
  * (they keep the {@link Rgb} given).
  *
  * <p>Per-plant colour variation is per species, not here: {@code world.plants().species().get(s).def()
@@ -39,17 +41,67 @@ public final class RenderSettings {
     private boolean showWind;
     private float fogStart = 20;
     private float fogEnd = 150;
-    private boolean clear = true;
-    private boolean terrain = true;
+    private boolean clear;
+    private boolean terrain;
 
     /**
-     * The defaults (equal to a scene file's defaults): a light blue horizon and a deeper blue zenith,
-     * the sun at azimuth 135 degrees and elevation 50 degrees, warm white at intensity 0.8, a cool
-     * ambient of about 0.45, contact shadow 0.5, haze from 20 m to 150 m, 12 m colour patches at
-     * strength 0.3 (seed 1), no terrain tint, overlays hidden, clearing and terrain on. Allocates.
+     * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
+     * clear, no sky, no terrain), lit like a scene file's defaults: a light blue horizon (the haze
+     * colour) and a deeper blue zenith, the sun at azimuth 135 degrees and elevation 50 degrees, warm
+     * white at intensity 0.8, a cool ambient of about 0.45, contact shadow 0.5, haze from 20 m to
+     * 150 m, 12 m colour patches at strength 0.3 (seed 1), no terrain tint, overlays hidden.
+     * {@link #standalone()} adds the library's sky and terrain. Allocates.
      */
     public RenderSettings() {
         sun(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION);
+    }
+
+    /**
+     * The defaults of {@link #RenderSettings()} with the library drawing the whole picture: it clears
+     * the viewport, draws its sky and the scene's terrain, then the plants (the viewer, headless
+     * rendering). Allocates.
+     *
+     * @return new settings with {@link #clear()} and {@link #terrain()} on
+     */
+    public static RenderSettings standalone() {
+        return new RenderSettings().clear(true).terrain(true);
+    }
+
+    /**
+     * The look a scene file asks for in its {@code <render>} element: sky and haze colours, sun, ambient
+     * light, contact shadow, fog, colour patches, terrain tint and overlays ({@code RenderDef}, its
+     * {@code <light>} and {@code <patches>}). Clearing and the terrain stay off, as for any guest; the
+     * viewer adds {@code .clear(true).terrain(true)}. Any thread; allocates.
+     *
+     * @param scene the scene
+     * @return new settings
+     */
+    public static RenderSettings of(SceneDef scene) {
+        return of(Require.nonNull("scene", scene).render());
+    }
+
+    /**
+     * Like {@link #of(SceneDef)}, from the {@code <render>} element alone.
+     *
+     * @param def a scene's render settings
+     * @return new settings, clearing and terrain off
+     */
+    public static RenderSettings of(RenderDef def) {
+        Require.nonNull("def", def);
+        TerrainTint tint = switch (def.terrainTint()) {
+            case WATER -> TerrainTint.WATER;
+            case NUTRIENTS -> TerrainTint.NUTRIENTS;
+            default -> TerrainTint.NONE;
+        };
+        RenderDef.Light l = def.light();
+        RenderDef.Patches p = def.patches();
+        return new RenderSettings().sky(def.sky()).tint(tint)
+                .showField(def.showField()).showWind(def.showWind())
+                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
+                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
+                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
+                .fog((float) l.fogStart(), (float) l.fogEnd())
+                .patches((float) p.scale(), (float) p.strength(), p.seed());
     }
 
     /**
@@ -320,8 +372,8 @@ public final class RenderSettings {
     /**
      * Whether {@link SceneRenderer#render(org.jecosys.sim.Frame, org.jecosys.math.Camera)} first clears
      * its viewport to depth 1 and draws the library's sky (the gradient with the sun) behind
-     * everything. On by default (the viewer, headless rendering); a game that draws its own sky and
-     * ground first turns it off.
+     * everything. Off by default (a guest draws over the game's frame); on in {@link #standalone()}
+     * (the viewer, headless rendering).
      *
      * @return whether the viewport is cleared before drawing
      */
@@ -341,8 +393,8 @@ public final class RenderSettings {
     }
 
     /**
-     * Whether the library draws the scene's terrain mesh. On by default; a game that draws its own
-     * ground turns it off, and the plants are depth-tested against the game's depth buffer.
+     * Whether the library draws the scene's terrain mesh. Off by default: the plants are
+     * depth-tested against the game's own ground in its depth buffer; on in {@link #standalone()}.
      *
      * @return whether the terrain is drawn
      */

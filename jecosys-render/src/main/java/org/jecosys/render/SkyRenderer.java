@@ -86,7 +86,7 @@ public final class SkyRenderer implements AutoCloseable {
         if (!closed) {
             closed = true;
             PlantRenderer.closeAll(vao, program);
-            MemoryUtil.memFree(matrix);
+            MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
     }
 }

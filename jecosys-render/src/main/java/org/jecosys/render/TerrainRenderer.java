@@ -139,9 +139,9 @@ public final class TerrainRenderer implements AutoCloseable {
             PlantRenderer.closeAll(vb, va, prog, occ);
             throw e;
         } finally {
-            MemoryUtil.memFree(v);
-            MemoryUtil.memFree(idx);
-            MemoryUtil.memFree(texels);
+            MemoryUtil.memFree((java.nio.Buffer) v);
+            MemoryUtil.memFree((java.nio.Buffer) idx);
+            MemoryUtil.memFree((java.nio.Buffer) texels);
         }
         occlusion = occ;
         program = prog;
@@ -258,7 +258,7 @@ public final class TerrainRenderer implements AutoCloseable {
             fill(v, tint);
             vertices.upload(0, v);
         } finally {
-            MemoryUtil.memFree(v);
+            MemoryUtil.memFree((java.nio.Buffer) v);
         }
         this.tint = tint;
     }
@@ -307,7 +307,7 @@ public final class TerrainRenderer implements AutoCloseable {
         if (!closed) {
             closed = true;
             PlantRenderer.closeAll(vao, vertices, indices, program, occlusion);
-            MemoryUtil.memFree(matrix);
+            MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
     }
 }

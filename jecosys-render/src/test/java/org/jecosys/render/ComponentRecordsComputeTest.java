@@ -46,7 +46,7 @@ class ComponentRecordsComputeTest extends ComponentRecordsTest {
                     differ, rec.limit(), worst);
             assertTrue(worst <= 1e-6f, "largest difference " + worst + " over " + differ + " values");
         } finally {
-            MemoryUtil.memFree(other);
+            MemoryUtil.memFree((java.nio.Buffer) other);
         }
     }
 }

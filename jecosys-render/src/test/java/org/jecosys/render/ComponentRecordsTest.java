@@ -88,7 +88,7 @@ abstract class ComponentRecordsTest {
 
     @AfterAll
     void close() {
-        org.lwjgl.system.MemoryUtil.memFree(rec);
+        org.lwjgl.system.MemoryUtil.memFree((java.nio.Buffer) rec);
         if (renderer != null) {
             renderer.close();
         }
@@ -260,7 +260,7 @@ abstract class ComponentRecordsTest {
             renderer.readRecords(again);
             assertEquals(rec, again, "the same records every frame");
         } finally {
-            org.lwjgl.system.MemoryUtil.memFree(again);
+            org.lwjgl.system.MemoryUtil.memFree((java.nio.Buffer) again);
         }
     }
 
@@ -322,7 +322,7 @@ abstract class ComponentRecordsTest {
                 renderer.readRecords(rec);
                 assertEquals(first, rec, "the same seed, the same variation");
             } finally {
-                org.lwjgl.system.MemoryUtil.memFree(first);
+                org.lwjgl.system.MemoryUtil.memFree((java.nio.Buffer) first);
             }
         } finally {
             applyLook(0f, 0f, 20f, 0f, 0);
@@ -334,7 +334,7 @@ abstract class ComponentRecordsTest {
         try {
             applyLook(12f, 0.2f, 4f, 0.8f, 7);
             // the same function, by an independent path: the public patch noise at each root's base
-            RenderSettings patches = new RenderSettings().patches(4f, 0.8f, 7);
+            RenderSettings patches = RenderSettings.standalone().patches(4f, 0.8f, 7);
             int[] checked = new int[1];
             forEachRecord((li, i, slot, r) -> {
                 if (batches.lines(li)) {

@@ -62,7 +62,7 @@ class GizmoRendererTest {
 
     @AfterAll
     void tearDown() {
-        MemoryUtil.memFree(px);
+        MemoryUtil.memFree((java.nio.Buffer) px);
         if (fb != null) {
             fb.close();
         }
@@ -120,7 +120,7 @@ class GizmoRendererTest {
     void eachKindIsDrawnInItsColourWhereItsCentreProjectsAndItsRingLiesOnTheTerrain() {
         ViewCamera cam = camera();
         Gizmos gizmos = grid();
-        try (SceneRenderer scene = new SceneRenderer(gl, world, new RenderSettings());
+        try (SceneRenderer scene = new SceneRenderer(gl, world, RenderSettings.standalone());
              GizmoRenderer renderer = new GizmoRenderer(gl, world.terrain().heightfield())) {
             fb.bind();
             scene.render(TestFrames.rest(world, cam), cam, W, H);

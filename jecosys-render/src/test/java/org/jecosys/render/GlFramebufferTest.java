@@ -32,7 +32,7 @@ class GlFramebufferTest {
         ByteBuffer tent = MemoryUtil.memAlloc(4 * W * H);
         try (GlContext gl = GlContext.headless(true)) {
             GlCensus before = GlCensus.take();
-            try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+            try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
                 try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
                     fb.bind();
                     r.render(frame, cam, W, H);
@@ -60,7 +60,7 @@ class GlFramebufferTest {
                             Pixels.read(W, H, copy);
                             assertEquals(tent, copy, "resolveTo shows what resolve reads");
                         } finally {
-                            MemoryUtil.memFree(copy);
+                            MemoryUtil.memFree((java.nio.Buffer) copy);
                         }
                     }
                     gl.debug().check("multisampled rendering and resolving");
@@ -83,9 +83,9 @@ class GlFramebufferTest {
                 assertEquals(Pixels.blue(box, W, x, H - 2), Pixels.blue(tent, W, x, H - 2), 1.0, "sky at " + x);
             }
         } finally {
-            MemoryUtil.memFree(single);
-            MemoryUtil.memFree(box);
-            MemoryUtil.memFree(tent);
+            MemoryUtil.memFree((java.nio.Buffer) single);
+            MemoryUtil.memFree((java.nio.Buffer) box);
+            MemoryUtil.memFree((java.nio.Buffer) tent);
         }
     }
 

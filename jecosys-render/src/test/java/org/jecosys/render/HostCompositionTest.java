@@ -93,8 +93,8 @@ class HostCompositionTest {
 
     @AfterAll
     void tearDown() {
-        MemoryUtil.memFree(px);
-        MemoryUtil.memFree(other);
+        MemoryUtil.memFree((java.nio.Buffer) px);
+        MemoryUtil.memFree((java.nio.Buffer) other);
         if (fb != null) {
             fb.close();
         }
@@ -247,7 +247,7 @@ class HostCompositionTest {
 
     @Test
     void everyGlStateTheRendererTouchesIsTheSameAfterRender() {
-        RenderSettings settings = new RenderSettings().sky(SKY).showField(true).showWind(true);
+        RenderSettings settings = RenderSettings.standalone().sky(SKY).showField(true).showWind(true);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             try (HostState host = new HostState()) {
@@ -267,7 +267,7 @@ class HostCompositionTest {
 
     @Test
     void drawsOnlyInTheBoundViewportAndOverTheHostsBackgroundWhenNotClearing() {
-        RenderSettings settings = new RenderSettings().sky(SKY).clear(false).terrain(false);
+        RenderSettings settings = RenderSettings.standalone().sky(SKY).clear(false).terrain(false);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             // the host's own background: magenta, depth 1
@@ -307,7 +307,7 @@ class HostCompositionTest {
 
     @Test
     void aCameraFromTheHostsMatricesDrawsWhatTheEquivalentViewCameraDraws() {
-        RenderSettings settings = new RenderSettings().sky(SKY);
+        RenderSettings settings = RenderSettings.standalone().sky(SKY);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             ViewCamera vc = camera(W, H);
             fb.bind();

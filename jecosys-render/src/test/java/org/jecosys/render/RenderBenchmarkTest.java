@@ -144,7 +144,7 @@ class RenderBenchmarkTest {
                 ViewCamera cam = RenderScenes.camera(def, world, W, H);
                 boolean big = world.plantCount() > 1000;
                 try (Simulation sim = Simulation.of(world, def.simulationDef(), 0);
-                     SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+                     SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
                     fb.bind();
                     sim.setMode(AnimationMode.CONSTRAINT);
                     sim.setFieldEnabled(true);
@@ -429,9 +429,9 @@ class RenderBenchmarkTest {
                                 triangles += (long) n * mesh.indexCount() / 3;
                             }
                         } finally {
-                            MemoryUtil.memFree(v);
-                            MemoryUtil.memFree(idx);
-                            MemoryUtil.memFree(off);
+                            MemoryUtil.memFree((java.nio.Buffer) v);
+                            MemoryUtil.memFree((java.nio.Buffer) idx);
+                            MemoryUtil.memFree((java.nio.Buffer) off);
                         }
                     }
                 }
@@ -439,7 +439,7 @@ class RenderBenchmarkTest {
                 close();
                 throw e;
             } finally {
-                MemoryUtil.memFree(rec);
+                MemoryUtil.memFree((java.nio.Buffer) rec);
             }
         }
 
@@ -476,9 +476,9 @@ class RenderBenchmarkTest {
                 mesh(t, v, idx, off, GL_TRIANGLES, idx.limit(), 1);
                 triangles += idx.limit() / 3;
             } finally {
-                MemoryUtil.memFree(v);
-                MemoryUtil.memFree(idx);
-                MemoryUtil.memFree(off);
+                MemoryUtil.memFree((java.nio.Buffer) v);
+                MemoryUtil.memFree((java.nio.Buffer) idx);
+                MemoryUtil.memFree((java.nio.Buffer) off);
             }
         }
 
@@ -542,7 +542,7 @@ class RenderBenchmarkTest {
             owned.clear();
             if (!freed) {
                 freed = true;
-                MemoryUtil.memFree(viewProj);
+                MemoryUtil.memFree((java.nio.Buffer) viewProj);
             }
         }
     }

@@ -53,7 +53,7 @@ class RenderC1Test {
         gl = GlContext.headless(true);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         // a flat sky (zenith = horizon, no sun glow), so that every sky pixel has one known colour
-        renderer = new SceneRenderer(gl, world, new RenderSettings().sky(SKY).skyZenith(SKY).sunIntensity(0));
+        renderer = new SceneRenderer(gl, world, RenderSettings.standalone().sky(SKY).skyZenith(SKY).sunIntensity(0));
         px = MemoryUtil.memAlloc(4 * 1024 * 1024);
         other = MemoryUtil.memAlloc(4 * 1024 * 1024);
     }
@@ -65,8 +65,8 @@ class RenderC1Test {
 
     @AfterAll
     void tearDown() {
-        MemoryUtil.memFree(px);
-        MemoryUtil.memFree(other);
+        MemoryUtil.memFree((java.nio.Buffer) px);
+        MemoryUtil.memFree((java.nio.Buffer) other);
         if (renderer != null) {
             renderer.close();
             fb.close();
@@ -294,7 +294,7 @@ class RenderC1Test {
     @Test
     void closingReleasesEveryGlObject() {
         int before = gl.tracker().live();
-        SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings());
+        SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone());
         GlFramebuffer f = new GlFramebuffer(gl.tracker(), 64, 64);
         assertTrue(gl.tracker().live() > before + 10);
         f.bind();

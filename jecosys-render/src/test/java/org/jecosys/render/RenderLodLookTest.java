@@ -43,7 +43,7 @@ class RenderLodLookTest {
         ByteBuffer near = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer far = MemoryUtil.memAlloc(4 * W * H);
         try (GlContext gl = GlContext.headless(true); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H, 4);
-             SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+             SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();
             r.drawPlants = false;
             r.render(frame, cam, W, H);
@@ -86,9 +86,9 @@ class RenderLodLookTest {
                         + fmt(n) + " (ground " + fmt(g) + ")");
             }
         } finally {
-            MemoryUtil.memFree(ground);
-            MemoryUtil.memFree(near);
-            MemoryUtil.memFree(far);
+            MemoryUtil.memFree((java.nio.Buffer) ground);
+            MemoryUtil.memFree((java.nio.Buffer) near);
+            MemoryUtil.memFree((java.nio.Buffer) far);
         }
     }
 

@@ -48,10 +48,10 @@ class RenderPathEquivalenceTest {
         gl = GlContext.headless(true);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
-        renderer = new SceneRenderer(gl, world, new RenderSettings());
-        feedback = new SceneRenderer(gl, world, new RenderSettings(), ResolvePath.TRANSFORM_FEEDBACK);
+        renderer = new SceneRenderer(gl, world, RenderSettings.standalone());
+        feedback = new SceneRenderer(gl, world, RenderSettings.standalone(), ResolvePath.TRANSFORM_FEEDBACK);
         if (ResolvePath.COMPUTE.supported(gl.capabilities())) {
-            compute = new SceneRenderer(gl, world, new RenderSettings(), ResolvePath.COMPUTE);
+            compute = new SceneRenderer(gl, world, RenderSettings.standalone(), ResolvePath.COMPUTE);
         }
         px = MemoryUtil.memAlloc(4 * W * H);
         bare = MemoryUtil.memAlloc(4 * W * H);
@@ -59,8 +59,8 @@ class RenderPathEquivalenceTest {
 
     @AfterAll
     void tearDown() {
-        MemoryUtil.memFree(px);
-        MemoryUtil.memFree(bare);
+        MemoryUtil.memFree((java.nio.Buffer) px);
+        MemoryUtil.memFree((java.nio.Buffer) bare);
         if (renderer != null) {
             renderer.close();
             feedback.close();

@@ -62,7 +62,7 @@ class RenderResourcesTest {
     void aConstructorFailingPartWayReleasesWhatItMade() {
         int before = gl.tracker().live();
         long created = gl.tracker().createdTotal();
-        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+        try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             assertTrue(r.triangles() >= 0);
         }
         int objects = (int) (gl.tracker().createdTotal() - created);
@@ -71,7 +71,7 @@ class RenderResourcesTest {
             gl.tracker().failAfter(n);
             int failAt = n;
             IllegalStateException e = assertThrows(IllegalStateException.class,
-                    () -> new SceneRenderer(gl, world, new RenderSettings()), "failure at object " + n);
+                    () -> new SceneRenderer(gl, world, RenderSettings.standalone()), "failure at object " + n);
             assertTrue(e.getMessage().contains("injected"), e.getMessage());
             assertEquals(before, gl.tracker().live(), "GL objects left after a failure at object " + failAt);
         }
@@ -98,7 +98,7 @@ class RenderResourcesTest {
         GlCensus before = GlCensus.take();
         int tracked = gl.tracker().live();
         GlCensus during;
-        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings(), path);
+        try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone(), path);
              FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
             fb.bind();
             r.render(TestFrames.wind(world, 0.5, camera), camera, W, H);
@@ -121,7 +121,7 @@ class RenderResourcesTest {
             frames[i] = TestFrames.wind(world, 0.25 * i, camera);
         }
         long thread = Thread.currentThread().getId();
-        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings())) {
+        try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();
             for (int i = 0; i < 200; i++) {
                 r.render(frames[i % frames.length], camera, W, H);

@@ -35,19 +35,6 @@ public final class RenderScenes {
 
     /** The render settings a scene file asks for (the app's HeadlessRender.settings, for the look tests). */
     static RenderSettings settings(SceneDef def) {
-        org.jecosys.scene.RenderDef r = def.render();
-        TerrainTint tint = switch (r.terrainTint()) {
-            case WATER -> TerrainTint.WATER;
-            case NUTRIENTS -> TerrainTint.NUTRIENTS;
-            default -> TerrainTint.NONE;
-        };
-        org.jecosys.scene.RenderDef.Light l = r.light();
-        org.jecosys.scene.RenderDef.Patches p = r.patches();
-        return new RenderSettings().sky(r.sky()).tint(tint)
-                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
-                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
-                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd())
-                .patches((float) p.scale(), (float) p.strength(), p.seed());
+        return RenderSettings.of(def).clear(true).terrain(true);
     }
 }

@@ -43,7 +43,7 @@ class RoseStemTest {
         assertTrue(hi - lo > 0.2, "stalk tip at " + tip + " m");
         List<String> failures = new ArrayList<>();
         double worst = 1;
-        try (Shots s = new Shots(world, new RenderSettings(), W, H)) {
+        try (Shots s = new Shots(world, RenderSettings.standalone(), W, H)) {
             for (int level = 0; level < DISTANCES.length; level++) {
                 double d = DISTANCES[level];
                 for (int yawDeg : YAWS) {

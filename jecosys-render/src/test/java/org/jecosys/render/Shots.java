@@ -95,7 +95,7 @@ final class Shots implements AutoCloseable {
             }
             return d;
         } finally {
-            MemoryUtil.memFree(depth);
+            MemoryUtil.memFree((java.nio.Buffer) depth);
         }
     }
 
@@ -144,7 +144,7 @@ final class Shots implements AutoCloseable {
             depthFb.close();
             gl.close();
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
     }
 }

@@ -52,14 +52,14 @@ class SkyAndGroundTest {
                 .replace("<plant species=\"rose\" x=\"0\" z=\"0\"/>", plants.toString());
         SceneDef def = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "contact.xml", Path.of("scenes"));
         world = RenderScenes.build(def);
-        settings = new RenderSettings().patches(10, 0, 1);
+        settings = RenderSettings.standalone().patches(10, 0, 1);
         renderer = new SceneRenderer(gl, world, settings);
         px = MemoryUtil.memAlloc(4 * W * H);
     }
 
     @AfterAll
     void tearDown() {
-        MemoryUtil.memFree(px);
+        MemoryUtil.memFree((java.nio.Buffer) px);
         if (renderer != null) {
             renderer.close();
             fb.close();

@@ -156,7 +156,7 @@ public final class MeadowGame implements AutoCloseable {
         }
         sim = s;
         gl = GlContext.current(false);
-        plants = new SceneRenderer(gl, sim.world(), new RenderSettings().clear(false).terrain(false));
+        plants = new SceneRenderer(gl, sim.world(), new RenderSettings());
         Heightfield terrain = sim.world().terrain().heightfield();
         passes = new GamePasses(terrain, 96);
         centreX = terrain.minX() + terrain.sizeX() / 2;
@@ -282,7 +282,7 @@ public final class MeadowGame implements AutoCloseable {
                     game.read(px);
                     Pixels.writePng(Path.of(args[2]), px, o.width(), o.height());
                 } finally {
-                    MemoryUtil.memFree(px);
+                    MemoryUtil.memFree((java.nio.Buffer) px);
                 }
                 return;
             }

@@ -66,7 +66,7 @@ class MeadowGameTest {
             }
             return new Run(nearPlayer, nearBreeze, sky, hud, ground, plants);
         } finally {
-            MemoryUtil.memFree(px);
+            MemoryUtil.memFree((java.nio.Buffer) px);
         }
     }
 
