@@ -1,25 +1,19 @@
 package org.jecosys.render;
 
 import static org.lwjgl.glfw.GLFW.GLFW_CLIENT_API;
-import static org.lwjgl.glfw.GLFW.GLFW_CONTEXT_CREATION_API;
 import static org.lwjgl.glfw.GLFW.GLFW_CONTEXT_DEBUG;
 import static org.lwjgl.glfw.GLFW.GLFW_CONTEXT_VERSION_MAJOR;
 import static org.lwjgl.glfw.GLFW.GLFW_CONTEXT_VERSION_MINOR;
-import static org.lwjgl.glfw.GLFW.GLFW_EGL_CONTEXT_API;
 import static org.lwjgl.glfw.GLFW.GLFW_FALSE;
 import static org.lwjgl.glfw.GLFW.GLFW_OPENGL_API;
 import static org.lwjgl.glfw.GLFW.GLFW_OPENGL_CORE_PROFILE;
 import static org.lwjgl.glfw.GLFW.GLFW_OPENGL_FORWARD_COMPAT;
 import static org.lwjgl.glfw.GLFW.GLFW_OPENGL_PROFILE;
-import static org.lwjgl.glfw.GLFW.GLFW_PLATFORM;
-import static org.lwjgl.glfw.GLFW.GLFW_PLATFORM_NULL;
 import static org.lwjgl.glfw.GLFW.GLFW_TRUE;
-import static org.lwjgl.glfw.GLFW.GLFW_VISIBLE;
 import static org.lwjgl.glfw.GLFW.glfwCreateWindow;
 import static org.lwjgl.glfw.GLFW.glfwDefaultWindowHints;
 import static org.lwjgl.glfw.GLFW.glfwDestroyWindow;
 import static org.lwjgl.glfw.GLFW.glfwInit;
-import static org.lwjgl.glfw.GLFW.glfwInitHint;
 import static org.lwjgl.glfw.GLFW.glfwMakeContextCurrent;
 import static org.lwjgl.glfw.GLFW.glfwSetErrorCallback;
 import static org.lwjgl.glfw.GLFW.glfwTerminate;
@@ -41,14 +35,15 @@ import org.lwjgl.opengl.GLCapabilities;
  * with any windowing library: no window is made, no GLFW call is made and no callback is touched;
  * {@link #close()} frees only what the library made (its debug callback, when asked for one) and
  * leaves the context, the window and GLFW to their owner.</li>
- * <li>{@link #headless} makes a hidden window on GLFW's null platform with an EGL context, which works
- * on Mesa's llvmpipe with no X server (tests, CI, servers).</li>
+ * <li>{@link #headless} makes a context through EGL with no window and no display server, on Mesa's
+ * llvmpipe (tests, CI) or a GPU server's driver.</li>
  * <li>{@link #windowed} opens a visible window on the desktop.</li>
  * </ul>
  *
- * <p>The last two own GLFW, which is process-global: one such context at a time; their
- * {@link #close()} (idempotent) destroys the window, frees the error callback and terminates GLFW.
- * Close every renderer first (see {@link #tracker()}).
+ * <p>{@link #windowed} owns GLFW, which is process-global: one such context at a time; its
+ * {@link #close()} (idempotent) destroys the window, frees the error callback and terminates GLFW. A
+ * headless context's {@link #close()} destroys its EGL context and display. Close every renderer
+ * first (see {@link #tracker()}).
  */
 public final class GlContext implements AutoCloseable {
     private final long window;
@@ -56,17 +51,16 @@ public final class GlContext implements AutoCloseable {
     private final GlTracker tracker = new GlTracker();
     private final GLCapabilities caps;
     private final GlDebug debug;
-    /** Null for a wrapped context: GLFW belongs to the host. */
-    private final GLFWErrorCallback errorCallback;
+    /** What {@link #close()} releases besides the debug callback; null for a wrapped context. */
+    private final Runnable release;
     private final String[] lastGlfwError;
     private boolean closed;
 
-    private GlContext(long window, GLCapabilities caps, GlDebug debug, GLFWErrorCallback errorCallback,
-                      String[] lastGlfwError) {
+    private GlContext(long window, GLCapabilities caps, GlDebug debug, Runnable release, String[] lastGlfwError) {
         this.window = window;
         this.caps = caps;
         this.debug = debug;
-        this.errorCallback = errorCallback;
+        this.release = release;
         this.lastGlfwError = lastGlfwError;
         this.thread = Thread.currentThread();
     }
@@ -83,9 +77,10 @@ public final class GlContext implements AutoCloseable {
      * @return a context object that does not own the context: its {@link #close()} leaves the context,
      *         the window and GLFW alone
      * @throws IllegalStateException when no context is current on this thread, or it is older than
-     *                               OpenGL 3.3
+     *                               OpenGL 3.3, or LWJGL is older than {@link LwjglVersion#MINIMUM_TEXT}
      */
     public static GlContext current(boolean debug) {
+        LwjglVersion.require();
         GLCapabilities caps;
         try {
             caps = GL.getCapabilities();
@@ -119,15 +114,44 @@ public final class GlContext implements AutoCloseable {
     }
 
     /**
-     * A hidden 16x16 window on GLFW's null platform with an EGL context: render into a
-     * {@link GlFramebuffer} of any size. Fails with a clear message when no context can be made.
+     * A context with no window and no display server, made through EGL (Mesa's surfaceless platform,
+     * e.g. llvmpipe; an EGL device on GPU drivers without it): render into a {@link GlFramebuffer} of
+     * any size. OpenGL 4.5, else 4.3, else 3.3, core profile. Calls no GLFW function. Fails with a
+     * clear message when no context can be made.
      *
      * @param debug whether to turn on KHR_debug output ({@link #debug()}); tests do
-     * @return a context current on this thread, which becomes the render thread; owns GLFW
-     * @throws IllegalStateException when GLFW or an OpenGL 3.3 core context cannot be made
+     * @return a context current on this thread, which becomes the render thread; owns the EGL
+     *         display and context
+     * @throws IllegalStateException when EGL or an OpenGL 3.3 core context cannot be made, or LWJGL is
+     *                               older than {@link LwjglVersion#MINIMUM_TEXT}
      */
     public static GlContext headless(boolean debug) {
-        return create("jecosys (headless)", 16, 16, true, debug);
+        LwjglVersion.require();
+        EglHeadless egl = EglHeadless.create(debug);
+        GLCapabilities caps;
+        try {
+            caps = GL.createCapabilities();
+            if (!caps.OpenGL33) {
+                throw new IllegalStateException("the headless context is older than OpenGL 3.3: " + glGetString(GL_VERSION));
+            }
+        } catch (RuntimeException e) {
+            egl.destroy();
+            throw e;
+        }
+        GlDebug dbg = null;
+        if (debug) {
+            try {
+                dbg = new GlDebug(caps);
+            } catch (RuntimeException e) {
+                GL.setCapabilities(null);
+                egl.destroy();
+                throw e;
+            }
+        }
+        return new GlContext(0, caps, dbg, () -> {
+            GL.setCapabilities(null);
+            egl.destroy();
+        }, new String[1]);
     }
 
     /**
@@ -142,10 +166,11 @@ public final class GlContext implements AutoCloseable {
      * @throws IllegalStateException when GLFW or the context cannot be made (e.g. no display)
      */
     public static GlContext windowed(String title, int width, int height, boolean debug) {
-        return create(title, width, height, false, debug);
+        LwjglVersion.require();
+        return create(title, width, height, debug);
     }
 
-    private static GlContext create(String title, int width, int height, boolean headless, boolean debug) {
+    private static GlContext create(String title, int width, int height, boolean debug) {
         String[] last = new String[1];
         GLFWErrorCallback cb = GLFWErrorCallback.create((code, description) ->
                 last[0] = "GLFW error 0x" + Integer.toHexString(code) + ": " + GLFWErrorCallback.getDescription(description));
@@ -153,14 +178,10 @@ public final class GlContext implements AutoCloseable {
         if (previous != null) {
             previous.free();
         }
-        if (headless) {
-            glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_NULL);
-        }
         if (!glfwInit()) {
             glfwSetErrorCallback(null);
             cb.free();
-            throw new IllegalStateException("cannot initialise GLFW" + (headless ? " (null platform)" : "")
-                    + (last[0] == null ? "" : ": " + last[0]));
+            throw new IllegalStateException("cannot initialise GLFW" + (last[0] == null ? "" : ": " + last[0]));
         }
         glfwDefaultWindowHints();
         glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
@@ -169,17 +190,12 @@ public final class GlContext implements AutoCloseable {
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_CONTEXT_DEBUG, debug ? GLFW_TRUE : GLFW_FALSE);
-        if (headless) {
-            glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
-            glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-        }
         long w = glfwCreateWindow(width, height, title, 0, 0);
         if (w == 0) {
             glfwTerminate();
             glfwSetErrorCallback(null);
             cb.free();
             throw new IllegalStateException("cannot create an OpenGL 3.3 core context"
-                    + (headless ? " headless (GLFW null platform + EGL; needs Mesa's EGL, e.g. llvmpipe)" : "")
                     + (last[0] == null ? "" : ": " + last[0]));
         }
         glfwMakeContextCurrent(w);
@@ -197,11 +213,18 @@ public final class GlContext implements AutoCloseable {
                 throw e;
             }
         }
-        return new GlContext(w, caps, dbg, cb, last);
+        return new GlContext(w, caps, dbg, () -> {
+            GL.setCapabilities(null);
+            glfwMakeContextCurrent(0);
+            glfwDestroyWindow(w);
+            glfwTerminate();
+            glfwSetErrorCallback(null);
+            cb.free();
+        }, last);
     }
 
     /**
-     * The GLFW window handle of a context this class made, 0 for a wrapped one ({@link #current}).
+     * The GLFW window handle of a {@link #windowed} context, 0 for a headless or wrapped one.
      *
      * @return the window handle, or 0
      */
@@ -258,14 +281,14 @@ public final class GlContext implements AutoCloseable {
      * @return true for {@link #headless} and {@link #windowed} contexts
      */
     public boolean ownsContext() {
-        return errorCallback != null;
+        return release != null;
     }
 
     /**
      * Frees what the library made. For a wrapped context ({@link #current}): only the debug callback,
      * if one was asked for; the context, its capabilities, the window and GLFW stay the host's. For a
-     * context this class made: also destroys the window and terminates GLFW. Close every renderer
-     * first. Render thread; idempotent.
+     * context this class made: also destroys it (a headless one's EGL display; a window and GLFW).
+     * Close every renderer first. Render thread; idempotent.
      */
     @Override
     public void close() {
@@ -277,14 +300,8 @@ public final class GlContext implements AutoCloseable {
         if (debug != null) {
             debug.close();
         }
-        if (errorCallback == null) {
-            return;
+        if (release != null) {
+            release.run();
         }
-        GL.setCapabilities(null);
-        glfwMakeContextCurrent(0);
-        glfwDestroyWindow(window);
-        glfwTerminate();
-        glfwSetErrorCallback(null);
-        errorCallback.free();
     }
 }
