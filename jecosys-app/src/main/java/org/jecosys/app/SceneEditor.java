@@ -367,7 +367,7 @@ final class SceneEditor {
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
                 a.seed());
         ForceFieldDef f = def.field();
-        ForceFieldDef nf = new ForceFieldDef(fieldEnabled, f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
+        ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept
         return new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),
                 def.placements(), flows, nf, def.camera(), na, nr);
     }

@@ -141,7 +141,7 @@ final class SimulateCommand implements Callable<Integer> {
                 a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.threads(), a.seed());
         ForceFieldDef f = sd.field();
         ForceFieldDef fd = field == null ? f
-                : new ForceFieldDef(field == OnOff.on, f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances());
+                : f.withEnabled(field == OnOff.on);
         return new SimulationDef(sd.terrain(), sd.species(), sd.distributions(), sd.placements(), sd.flows(), fd,
                 anim, sd.seed());
     }

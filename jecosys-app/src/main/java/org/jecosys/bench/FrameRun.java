@@ -37,7 +37,7 @@ final class FrameRun {
         AnimationDef a = d.animation();
         ForceFieldDef f = d.field();
         return new SimulationDef(d.terrain(), d.species(), d.distributions(), d.placements(), d.flows(),
-                new ForceFieldDef(field, f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances()),
+                f.withEnabled(field),
                 new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(), a.seed()),
                 d.seed());
     }

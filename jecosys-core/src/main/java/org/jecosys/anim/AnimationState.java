@@ -411,10 +411,12 @@ public final class AnimationState implements AnimationView {
         final double eyeX = step.eyeX;
         final double eyeY = step.eyeY;
         final double eyeZ = step.eyeZ;
+        final int views = step.views;
         cursor.begin(first);
         int updated = 0;
         for (int p = first; p < end; p++) {
-            int l = updateLevel(p, eyeX, eyeY, eyeZ);
+            int l = views <= 1 && (views == 0 || (step.viewScale2[0] == 1 && step.viewFixed2[0] < 0))
+                    ? updateLevel(p, eyeX, eyeY, eyeZ) : updateLevel(p, step);
             if (!visible[p]) {
                 live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
@@ -454,6 +456,24 @@ public final class AnimationState implements AnimationView {
         double dz = plantZ[p] - eyeZ;
         double d2 = dx * dx + dy * dy + dz * dz;
         int l = lod.level(plantSpecies[p], d2);
+        level[p] = (byte) l;
+        return l;
+    }
+
+    /**
+     * Recomputes plant p's level of detail for several views: the finest any view asks, each view's
+     * distance measured by projected size ({@link org.jecosys.math.ViewLod}).
+     */
+    private int updateLevel(int p, AnimationStep step) {
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int v = 0; v < step.views; v++) {
+            double dx = plantX[p] - step.viewX[v];
+            double dy = plantY[p] - step.viewY[v];
+            double dz = plantZ[p] - step.viewZ[v];
+            nearest = Math.min(nearest, org.jecosys.math.ViewLod.equivalent2(dx * dx + dy * dy + dz * dz,
+                    step.viewScale2[v], step.viewFixed2[v]));
+        }
+        int l = lod.level(plantSpecies[p], nearest);
         level[p] = (byte) l;
         return l;
     }

@@ -25,6 +25,13 @@ public final class AnimationStep {
     double eyeX;
     double eyeY;
     double eyeZ;
+    /** Views whose levels of detail count (0: the eye alone, at the reference lens). */
+    int views;
+    double[] viewX;
+    double[] viewY;
+    double[] viewZ;
+    double[] viewScale2;
+    double[] viewFixed2;
     Rng rng;
     float[] poseOut;
     float[] azimuthOut;
@@ -82,6 +89,36 @@ public final class AnimationStep {
         eyeX = x;
         eyeY = y;
         eyeZ = z;
+        views = 0;
+        return this;
+    }
+
+    /**
+     * Sets the views whose levels of detail the animation follows: a plant is updated at the finest
+     * level any view asks, each view measuring distance by projected size
+     * ({@link org.jecosys.math.ViewLod}). Replaces {@link #eye} (which is one view through the
+     * reference lens). The arrays are read, not copied; no allocation.
+     *
+     * @param count  number of views, at least 1
+     * @param x      per view, eye X, metres
+     * @param y      per view, eye Y, metres
+     * @param z      per view, eye Z, metres
+     * @param scale2 per view, the scale on squared distances
+     * @param fixed2 per view, the fixed squared equivalent distance of an orthographic view, else &lt; 0
+     * @return this
+     */
+    public AnimationStep views(int count, double[] x, double[] y, double[] z, double[] scale2, double[] fixed2) {
+        views = count;
+        viewX = x;
+        viewY = y;
+        viewZ = z;
+        viewScale2 = scale2;
+        viewFixed2 = fixed2;
+        if (count > 0) {
+            eyeX = x[0];
+            eyeY = y[0];
+            eyeZ = z[0];
+        }
         return this;
     }
 

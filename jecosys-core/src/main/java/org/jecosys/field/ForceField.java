@@ -55,6 +55,20 @@ public interface ForceField {
     void update(Camera camera);
 
     /**
+     * Like {@link #update(Camera)} for several views at once (split screen, a minimap, a shadow map's
+     * light): a plant is visible when any view sees it, and its node is as detailed as the view that
+     * needs the most detail asks. A field that knows only one view keeps this default, which updates for
+     * {@code camera} alone. No allocation.
+     *
+     * @param camera the main view
+     * @param others further views, the first {@code count} of them read
+     * @param count  how many of {@code others}, at least 0
+     */
+    default void update(Camera camera, Camera[] others, int count) {
+        update(camera);
+    }
+
+    /**
      * {@return whether the plant was on a visible node at the last update (invisible plants are not animated)}
      *
      * @param plant plant id, in [0, plantCount())

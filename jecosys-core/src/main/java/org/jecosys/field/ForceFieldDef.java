@@ -16,9 +16,14 @@ import org.jecosys.math.Require;
  * @param thinEnd           where the kept share reaches thinMinFraction, metres, &gt;= thinStart
  * @param thinMinFraction   share of plants kept at and beyond thinEnd, in [0, 1]; 1 (the default) for no
  *                          thinning
+ * @param lodFovY           the vertical field of view, radians, that every level-of-detail distance (the
+ *                          field's and the species') is meant for: a view with another lens, or an
+ *                          orthographic one, picks the level a plant's projected size on screen gives,
+ *                          as if it were seen through this lens (see {@code org.jecosys.sim.ViewLod});
+ *                          in [{@link #MIN_LOD_FOV_DEGREES}, {@link #MAX_LOD_FOV_DEGREES}] degrees
  */
 public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances,
-                            double thinStart, double thinEnd, double thinMinFraction) {
+                            double thinStart, double thinEnd, double thinMinFraction, double lodFovY) {
     /** Largest allowed {@link #maxDepth()}. */
     public static final int MAX_DEPTH = 16;
     /** Largest {@link #maxObjectsPerNode()} (the scene schema's range and the API's). */
@@ -33,6 +38,12 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
     public static final double DEFAULT_THIN_END = 60;
     /** Default {@link #thinMinFraction()}: 1, no thinning. */
     public static final double DEFAULT_THIN_MIN_FRACTION = 1;
+    /** Default {@link #lodFovY()}, radians: 60 degrees, the default camera's lens. */
+    public static final double DEFAULT_LOD_FOV_Y = Math.toRadians(60);
+    /** Smallest {@link #lodFovY()}, degrees. */
+    public static final double MIN_LOD_FOV_DEGREES = 1;
+    /** Largest {@link #lodFovY()}, degrees. */
+    public static final double MAX_LOD_FOV_DEGREES = 179;
 
     /**
      * Checks the components and copies the distances.
@@ -46,6 +57,8 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
      * @param thinEnd           where it reaches thinMinFraction, metres, in [thinStart,
      *                          {@link #MAX_LOD_DISTANCE}]
      * @param thinMinFraction   share of plants kept beyond thinEnd, in [0, 1]; 1 for none
+     * @param lodFovY           the lens the LOD distances are meant for, radians, in
+     *                          [{@link #MIN_LOD_FOV_DEGREES}, {@link #MAX_LOD_FOV_DEGREES}] degrees
      * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
      */
     public ForceFieldDef {
@@ -71,6 +84,26 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
             throw new IllegalArgumentException("thinEnd must be >= thinStart, got " + thinEnd + " < " + thinStart);
         }
         Require.range("thinMinFraction", thinMinFraction, 0, 1);
+        Require.degrees("lodFovY", lodFovY, MIN_LOD_FOV_DEGREES, MAX_LOD_FOV_DEGREES);
+    }
+
+    /**
+     * Settings with the default {@link #lodFovY()} ({@link #DEFAULT_LOD_FOV_Y}); checks as the canonical
+     * constructor does.
+     *
+     * @param enabled           whether the field evaluates flows
+     * @param maxObjectsPerNode split threshold, in [1, {@link #MAX_OBJECTS_PER_NODE}]
+     * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
+     * @param lodDistances      strictly ascending distances, metres
+     * @param thinStart         where distance thinning starts, metres
+     * @param thinEnd           where it reaches thinMinFraction, metres
+     * @param thinMinFraction   share of plants kept beyond thinEnd, in [0, 1]
+     * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
+     */
+    public ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances,
+                         double thinStart, double thinEnd, double thinMinFraction) {
+        this(enabled, maxObjectsPerNode, maxDepth, lodDistances, thinStart, thinEnd, thinMinFraction,
+                DEFAULT_LOD_FOV_Y);
     }
 
     /**
@@ -86,6 +119,16 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
     public ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
         this(enabled, maxObjectsPerNode, maxDepth, lodDistances, DEFAULT_THIN_START, DEFAULT_THIN_END,
                 DEFAULT_THIN_MIN_FRACTION);
+    }
+
+    /**
+     * {@return these settings with the field switched on or off, every other value kept}
+     *
+     * @param on whether the field evaluates flows
+     */
+    public ForceFieldDef withEnabled(boolean on) {
+        return new ForceFieldDef(on, maxObjectsPerNode, maxDepth, lodDistances, thinStart, thinEnd, thinMinFraction,
+                lodFovY);
     }
 
     /** {@return enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m} */

@@ -2,6 +2,7 @@ package org.jecosys.field;
 
 import java.util.Arrays;
 import org.jecosys.math.Require;
+import org.jecosys.math.ViewLod;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Noise;
 import org.jecosys.wind.WindField;
@@ -79,11 +80,20 @@ public final class QuadtreeForceField implements ForceField {
     private final FieldCounters counters = new FieldCounters();
     private final FieldDebugView debug;
     private final Matrix4f viewProj = new Matrix4f();
-    private final FrustumIntersection frustum = new FrustumIntersection();
     private final Vector2d tmp = new Vector2d();
-    private float eyeX;
-    private float eyeY;
-    private float eyeZ;
+    /** The views of the last update: the camera first, then the others given (at most {@link #MAX_VIEWS}). */
+    private final FrustumIntersection[] frustum = new FrustumIntersection[MAX_VIEWS];
+    private final float[] eyeX = new float[MAX_VIEWS];
+    private final float[] eyeY = new float[MAX_VIEWS];
+    private final float[] eyeZ = new float[MAX_VIEWS];
+    /** Per view its level-of-detail metric ({@link ViewLod}): scale^2 on squared distances, or a fixed one. */
+    private final double[] scale2 = new double[MAX_VIEWS];
+    private final double[] fixed2 = new double[MAX_VIEWS];
+    private final double[] metric = new double[2];
+    private final double reference;
+    private int views;
+    /** Most views one update takes: the camera and {@code MAX_VIEWS - 1} others. */
+    public static final int MAX_VIEWS = 9;
 
     /**
      * An empty field over the terrain's bounds.
@@ -117,6 +127,10 @@ public final class QuadtreeForceField implements ForceField {
         }
         allocNodeState(tree.nodeCapacity());
         debug = new FieldDebugView(this);
+        reference = ViewLod.referenceScale(def.lodFovY());
+        for (int v = 0; v < MAX_VIEWS; v++) {
+            frustum[v] = new FrustumIntersection();
+        }
     }
 
     /**
@@ -212,18 +226,44 @@ public final class QuadtreeForceField implements ForceField {
 
     @Override
     public void update(Camera camera) {
+        update(camera, NO_VIEWS, 0);
+    }
+
+    private static final Camera[] NO_VIEWS = {};
+
+    /**
+     * Recomputes visibility, LOD and the wind of every effective node for several views at once: a node
+     * is visible when any view's frustum meets it (or it holds any eye), and a node collapses into an
+     * ancestor only as far as every view allows, each view's distances measured by projected size
+     * ({@link ViewLod}: through the lens {@link ForceFieldDef#lodFovY()}). With no other view this is
+     * {@link #update(Camera)}. No allocation.
+     *
+     * @param camera the main view
+     * @param others further views (a second player, a minimap, a shadow map's light), the first
+     *               {@code count} of them read
+     * @param count  how many of {@code others}, in [0, {@link #MAX_VIEWS} - 1]
+     */
+    @Override
+    public void update(Camera camera, Camera[] others, int count) {
         Require.nonNull("camera", camera);
+        Require.range("count", count, 0, MAX_VIEWS - 1);
         ensureNodeState();
         if (current == Integer.MAX_VALUE) {
             Arrays.fill(stamp, 0);
             current = 0;
         }
         current++;
-        camera.viewProjection(viewProj);
-        frustum.set(viewProj, false);
-        eyeX = (float) camera.x();
-        eyeY = (float) camera.y();
-        eyeZ = (float) camera.z();
+        views = 1 + count;
+        for (int v = 0; v < views; v++) {
+            Camera c = v == 0 ? camera : Require.nonNull("view", others[v - 1]);
+            frustum[v].set(c.viewProjection(viewProj), false);
+            eyeX[v] = (float) c.x();
+            eyeY[v] = (float) c.y();
+            eyeZ[v] = (float) c.z();
+            ViewLod.metric(c, reference, viewProj, metric);
+            scale2[v] = metric[0];
+            fixed2[v] = metric[1];
+        }
         FieldCounters c = counters;
         c.nodes = tree.nodeCount();
         c.leaves = tree.leafCount();
@@ -234,19 +274,29 @@ public final class QuadtreeForceField implements ForceField {
         effectiveCount = 0;
         eddyTime = wind.time() * EDDY_FREQUENCY;
         eddy = def.enabled() ? finite(EDDY_GAIN * wind.eddySpeed()) : 0f;
-        visit(0, false, -1);
+        visit(0, 0, -1);
         for (int i = 0; i < effectiveCount; i++) {
             gradient(effective[i]);
         }
     }
 
-    private void visit(int n, boolean inside, int r) {
+    /**
+     * @param inside bit v set: node n's parent lies wholly inside view v's frustum (so n does too)
+     */
+    private void visit(int n, int inside, int r) {
         Quadtree t = tree;
-        if (!inside) {
-            int res = frustum.intersectAab(t.minX[n], minY, t.minZ[n], t.maxX[n], maxY, t.maxZ[n]);
-            if (res == FrustumIntersection.INSIDE) {
-                inside = true;
-            } else if (res != FrustumIntersection.INTERSECT && !holdsEye(n)) {
+        if (inside == 0) {
+            boolean seen = false;
+            for (int v = 0; v < views; v++) {
+                int res = frustum[v].intersectAab(t.minX[n], minY, t.minZ[n], t.maxX[n], maxY, t.maxZ[n]);
+                if (res == FrustumIntersection.INSIDE) {
+                    inside |= 1 << v;
+                    seen = true;
+                } else if (res == FrustumIntersection.INTERSECT || holdsEye(n, v)) {
+                    seen = true;
+                }
+            }
+            if (!seen) {
                 return;
             }
         }
@@ -270,20 +320,26 @@ public final class QuadtreeForceField implements ForceField {
         visit(fc + 3, inside, r);
     }
 
-    private boolean holdsEye(int n) {
+    private boolean holdsEye(int n, int v) {
         Quadtree t = tree;
-        return eyeX >= t.minX[n] && eyeX <= t.maxX[n] && eyeZ >= t.minZ[n] && eyeZ <= t.maxZ[n];
+        return eyeX[v] >= t.minX[n] && eyeX[v] <= t.maxX[n] && eyeZ[v] >= t.minZ[n] && eyeZ[v] <= t.maxZ[n];
     }
 
-    /** Levels that may collapse at node n: how many LOD distances lie below the eye-to-box distance. */
+    /**
+     * Levels that may collapse at node n: how many LOD distances lie below the eye-to-box distance,
+     * as projected size measures it ({@link ViewLod}), for the view that needs the most detail.
+     */
     private int lodLevel(int n) {
         Quadtree t = tree;
-        double dx = Math.max(Math.max(t.minX[n] - eyeX, eyeX - t.maxX[n]), 0);
-        double dy = Math.max(Math.max(minY - eyeY, eyeY - maxY), 0);
-        double dz = Math.max(Math.max(t.minZ[n] - eyeZ, eyeZ - t.maxZ[n]), 0);
-        double d2 = dx * dx + dy * dy + dz * dz;
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int v = 0; v < views; v++) {
+            double dx = Math.max(Math.max(t.minX[n] - eyeX[v], eyeX[v] - t.maxX[n]), 0);
+            double dy = Math.max(Math.max(minY - eyeY[v], eyeY[v] - maxY), 0);
+            double dz = Math.max(Math.max(t.minZ[n] - eyeZ[v], eyeZ[v] - t.maxZ[n]), 0);
+            nearest = Math.min(nearest, ViewLod.equivalent2(dx * dx + dy * dy + dz * dz, scale2[v], fixed2[v]));
+        }
         int l = 0;
-        while (l < lod2.length && d2 > lod2[l]) {
+        while (l < lod2.length && nearest > lod2[l]) {
             l++;
         }
         return l;

@@ -401,7 +401,8 @@ final class SceneBinder {
             return null;
         }
         return make(f, () -> new ForceFieldDef(f.bool("enabled"), f.integer("maxObjectsPerNode"),
-                f.integer("maxDepth"), distances, f.num("thinStart"), f.num("thinEnd"), f.num("thinMinFraction")));
+                f.integer("maxDepth"), distances, f.num("thinStart"), f.num("thinEnd"), f.num("thinMinFraction"),
+                f.num("lodFovY")));
     }
 
     private CameraDef camera(Values c) {

@@ -440,7 +440,11 @@ final class SceneSchema {
                         .get(d -> ((ForceFieldDef) d).thinEnd()))
                 .attr(num("thinMinFraction", "", "Share of plants drawn at and beyond thinEnd; 1 for no thinning.")
                         .range(0, 1).def(ForceFieldDef.DEFAULT_THIN_MIN_FRACTION)
-                        .get(d -> ((ForceFieldDef) d).thinMinFraction()));
+                        .get(d -> ((ForceFieldDef) d).thinMinFraction()))
+                .attr(angle("lodFovY", "The vertical field of view every level-of-detail distance is meant for: "
+                        + "another lens, or an orthographic view, picks the level a plant's size on screen gives.")
+                        .range(ForceFieldDef.MIN_LOD_FOV_DEGREES, ForceFieldDef.MAX_LOD_FOV_DEGREES)
+                        .def(ForceFieldDef.DEFAULT_LOD_FOV_Y).get(d -> ((ForceFieldDef) d).lodFovY()));
 
         ElementSpec camera = new ElementSpec("camera", "The viewer's start pose and optional path (paper section "
                 + "5.2).")

@@ -17,6 +17,7 @@ import org.jecosys.math.Rng;
  */
 final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final AnimationState state;
+    private final FieldSampler sampler;
     private final float[][] windX;
     private final float[][] windZ;
     private final boolean[][] visible;
@@ -33,6 +34,12 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * Each entry is touched only by the worker running that plant's chunk in a step.
      */
     private final long[][] framePlantVersion;
+    /**
+     * framePackedVersion[i][p]: the version of plant p whose render states frame i holds (-1: none).
+     * Plants out of view keep their version, so their states are packed once per frame buffer, not
+     * every step, and stay current for any view that draws them.
+     */
+    private final long[][] framePackedVersion;
     private final Rng[] chunkRng;
     /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
     private final AnimationStep[] chunkStep;
@@ -50,27 +57,26 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * Cuts the plants into chunks. Build time; allocates.
      *
      * @param first   per plant its first component, plus the total at the end
-     * @param windX   per buffer, per plant wind X (shared with the simulation, read here)
-     * @param windZ   per buffer, per plant wind Z
-     * @param visible per buffer, per plant visibility
-     * @param eye     per buffer, the eye (x, y, z)
+     * @param sampler the field's buffers: wind, visibility, views, frustum (shared with the simulation,
+     *                read here)
      * @param seed    the animation seed of the chunks' random streams
      */
-    ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, float[][] windX,
-                  float[][] windZ, boolean[][] visible, double[][] eye, long seed, DrawDecision draw,
-                  FrustumIntersection[] frustum) {
+    ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, FieldSampler sampler,
+                  long seed, DrawDecision draw) {
         this.state = state;
+        this.sampler = sampler;
         this.draw = draw;
-        this.frustum = frustum;
-        this.windX = windX;
-        this.windZ = windZ;
-        this.visible = visible;
-        this.eye = eye;
+        this.frustum = sampler.frustum;
+        this.windX = sampler.windX;
+        this.windZ = sampler.windZ;
+        this.visible = sampler.visible;
+        this.eye = sampler.eye;
         chunkFirstPlant = chunks(first, plants, chunkComponents);
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
         framePlantVersion = new long[3][plants];
+        framePackedVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
         for (int c = 0; c < chunks; c++) {
@@ -149,7 +155,9 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         int c0 = state.firstComponent(p0);
         int c1 = state.firstComponent(p1);
         long[] written = framePlantVersion[stepFrameIndex];
-        AnimationStep in = chunkStep[chunk].set(m, windX[b], windZ[b], visible[b]).eye(e[0], e[1], e[2])
+        FieldSampler fs = sampler;
+        AnimationStep in = chunkStep[chunk].set(m, windX[b], windZ[b], visible[b])
+                .views(fs.viewCount[b], fs.viewX[b], fs.viewY[b], fs.viewZ[b], fs.scale2[b], fs.fixed2[b])
                 .rng(chunkRng[chunk]);
         if (stamp) {
             chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
@@ -172,23 +180,27 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         }
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
-        packVisible(f, visible[b], p0, p1, reset || stamp);
-        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], frustum[b], f);
+        packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset || stamp, stamp);
+        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], f);
     }
 
     /**
-     * Packs the render states (the GPU's copy of pose and azimuth) of the chunk's visible plants, in
-     * runs of consecutive visible plants; of every plant when {@code all}. No allocation.
+     * Packs the render states (the GPU's copy of pose and azimuth) of the chunk's plants whose outputs
+     * in this frame changed since the frame's last packing (every animated plant, and a plant seen
+     * last in another frame buffer), in runs of consecutive plants; of every plant when {@code all}.
+     * So every plant's render state is current in every published frame, whichever view draws it.
+     * No allocation.
      */
-    private void packVisible(Frame f, boolean[] vis, int p0, int p1, boolean all) {
+    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, boolean stamped) {
         int p = p0;
         while (p < p1) {
-            if (!all && !vis[p]) {
+            if (!all && packed[p] == state.version(p)) {
                 p++;
                 continue;
             }
             int start = p;
-            while (p < p1 && (all || vis[p])) {
+            while (p < p1 && (all || packed[p] != state.version(p))) {
+                packed[p] = stamped ? -1 : state.version(p);
                 p++;
             }
             f.packRenderStates(state.firstComponent(start), state.firstComponent(p));

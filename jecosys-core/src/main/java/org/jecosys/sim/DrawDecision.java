@@ -64,6 +64,7 @@ public final class DrawDecision {
     private volatile double[] thinning = {ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END,
             ForceFieldDef.DEFAULT_THIN_MIN_FRACTION};
     private final Matrix4f viewProjection = new Matrix4f();
+    private final Matrix4f projection = new Matrix4f();
     private final FrustumIntersection frustum = new FrustumIntersection();
 
     DrawDecision(World world, Edges edges) {
@@ -225,59 +226,76 @@ public final class DrawDecision {
      * {@link Frame#drawKeep}. Worker threads, each on its own range; no allocation.
      *
      * @param visible per plant, whether the field found it visible (and it was animated)
+     * @param scale2  the camera's level-of-detail metric ({@link org.jecosys.math.ViewLod})
+     * @param fixed2  likewise, &lt; 0 for a perspective camera
      * @param frustum the camera's frustum, read only
      */
-    void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, FrustumIntersection frustum,
-                Frame frame) {
-        double band = transition;
+    void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, double scale2, double fixed2,
+                FrustumIntersection frustum, Frame frame) {
         double[] thin = thinning;
-        double thinStart = thin[0];
-        double thinEnd = thin[1];
-        double thinMin = thin[2];
+        decide(world, edges, radius, p0, p1, visible, true, ex, ey, ez, scale2, fixed2, frustum, transition,
+                thin[0], thin[1], thin[2], frame.drawLevel, frame.drawKeep);
+    }
+
+    /**
+     * The decision of plants {@code [p0, p1)}, written to {@code levelOut} and {@code keepOut}: the core
+     * of {@link #decide} and of {@link ViewDecision}. A plant not {@code visible} (when given) or whose
+     * bounding sphere misses the frustum (when {@code test}) is not drawn (level -1); otherwise its level
+     * is where its equivalent distance ({@link org.jecosys.math.ViewLod}) falls among the edges, with the
+     * next level too in a transition band, and distance thinning by its real distance. No allocation.
+     */
+    static void decide(World world, Edges edges, float[] radius, int p0, int p1, boolean[] visible, boolean test,
+                       double ex, double ey, double ez, double scale2, double fixed2, FrustumIntersection frustum,
+                       double band, double thinStart, double thinEnd, double thinMin, byte[] levelOut,
+                       int[] keepOut) {
         boolean thinned = thinMin < 1;
         for (int p = p0; p < p1; p++) {
             int s = world.plantSpecies(p);
             float x = world.plantX(p);
             float y = world.plantY(p);
             float z = world.plantZ(p);
-            if (!visible[p] || !frustum.testSphere(x, y, z, radius[s])) {
-                frame.drawLevel[p] = -1;
-                frame.drawKeep[p] = 0;
+            if ((visible != null && !visible[p]) || (test && !frustum.testSphere(x, y, z, radius[s]))) {
+                levelOut[p] = -1;
+                keepOut[p] = 0;
                 continue;
             }
             double dx = x - ex;
             double dy = y - ey;
             double dz = z - ez;
             double d2 = dx * dx + dy * dy + dz * dz;
+            double q2 = org.jecosys.math.ViewLod.equivalent2(d2, scale2, fixed2);
             int levels = edges.levels(s);
             int l = 0;
             while (l < levels - 1) {
                 double e = edges.edge(s, l);
-                if (d2 < e * e) {
+                if (q2 < e * e) {
                     break;
                 }
                 l++;
             }
-            double d = Math.sqrt(d2);
-            double b = Math.min(band, minGap(s, levels));
-            int keep = keep(s, l, levels, d, b);
-            if (l < levels - 1 && b > 0 && d > edges.edge(s, l) - b) {
-                keep |= keep(s, l + 1, levels, d, b) << 16;
+            double q = Math.sqrt(q2);
+            double b = Math.min(band, minGap(edges, s, levels));
+            int keep = keep(edges, s, l, levels, q, b);
+            if (l < levels - 1 && b > 0 && q > edges.edge(s, l) - b) {
+                keep |= keep(edges, s, l + 1, levels, q, b) << 16;
             }
-            if (thinned && d > thinStart) {
-                double r = (1 + THIN_FADE) * kept(d, thinStart, thinEnd, thinMin);
-                double a = (r - thinRank(p)) / THIN_FADE;
-                if (a < 1) {
-                    keep = a * 255 < 0.5 ? 0 : scaleKeep(keep, a);
-                    if (keep == 0) {
-                        frame.drawLevel[p] = -1;
-                        frame.drawKeep[p] = 0;
-                        continue;
+            if (thinned) {
+                double d = q2 == d2 ? q : Math.sqrt(d2);
+                if (d > thinStart) {
+                    double r = (1 + THIN_FADE) * kept(d, thinStart, thinEnd, thinMin);
+                    double a = (r - thinRank(p)) / THIN_FADE;
+                    if (a < 1) {
+                        keep = a * 255 < 0.5 ? 0 : scaleKeep(keep, a);
+                        if (keep == 0) {
+                            levelOut[p] = -1;
+                            keepOut[p] = 0;
+                            continue;
+                        }
                     }
                 }
             }
-            frame.drawLevel[p] = (byte) l;
-            frame.drawKeep[p] = keep;
+            levelOut[p] = (byte) l;
+            keepOut[p] = keep;
         }
     }
 
@@ -298,12 +316,18 @@ public final class DrawDecision {
         }
         frustum.set(camera.viewProjection(viewProjection), true); // normalised planes for testSphere
         java.util.Arrays.fill(frame.plantVisible, true);
-        decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), frustum, frame);
+        decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), 1, -1, frustum, frame);
         frame.setThinning(thinStart(), thinEnd(), thinMinFraction());
+        // the distances are taken as meant for this camera's own lens: another camera drawing the
+        // frame decides the same way relative to it
+        double p11 = Math.abs(camera.projection(projection).m11());
+        boolean perspective = projection.m23() != 0;
+        frame.recordDecision(viewProjection, camera.x(), camera.y(), camera.z(), this, perspective && p11 > 0
+                ? p11 : org.jecosys.math.ViewLod.referenceScale(ForceFieldDef.DEFAULT_LOD_FOV_Y));
         return frame;
     }
 
-    private double minGap(int s, int levels) {
+    private static double minGap(Edges edges, int s, int levels) {
         double gap = Double.POSITIVE_INFINITY;
         double prev = 0;
         for (int l = 0; l < levels - 1; l++) {
@@ -328,7 +352,7 @@ public final class DrawDecision {
      * @param band   transition band of the species, metres
      * @return the packed window, in [0, 65535]
      */
-    int keep(int s, int l, int levels, double d, double band) {
+    static int keep(Edges edges, int s, int l, int levels, double d, double band) {
         double handOver = l < levels - 1 ? fade(d, edges.edge(s, l), band) : 0;
         double received = l > 0 ? (d >= edges.edge(s, l - 1) ? 1 : fade(d, edges.edge(s, l - 1), band)) : 1;
         return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
@@ -336,7 +360,7 @@ public final class DrawDecision {
 
     /**
      * {@return the packed dither window of level l of species s at distance d, with this decision's
-     * band (see {@link #keep(int, int, int, double, double)})}
+     * band (see {@link #keep(Edges, int, int, int, double, double)})}
      *
      * @param s species index
      * @param l level
@@ -344,7 +368,7 @@ public final class DrawDecision {
      */
     public int keep(int s, int l, double d) {
         int levels = edges.levels(s);
-        return keep(s, l, levels, d, Math.min(transition, minGap(s, levels)));
+        return keep(edges, s, l, levels, d, Math.min(transition, minGap(edges, s, levels)));
     }
 
     /**
@@ -373,6 +397,11 @@ public final class DrawDecision {
             return d >= edge ? 1 : 0;
         }
         return Math.max(0, Math.min(1, (d - (edge - band)) / band));
+    }
+
+    /** {@return the number of species} */
+    public int speciesCount() {
+        return radius.length;
     }
 
     /**

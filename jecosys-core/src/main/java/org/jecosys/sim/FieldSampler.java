@@ -3,6 +3,7 @@ package org.jecosys.sim;
 import org.jecosys.anim.SpringKinds;
 import org.jecosys.field.ForceField;
 import org.jecosys.math.Camera;
+import org.jecosys.math.ViewLod;
 import org.jecosys.wind.WindField;
 import org.joml.FrustumIntersection;
 import org.joml.Matrix4f;
@@ -30,7 +31,20 @@ final class FieldSampler {
     final int[] edge = {-1, -1};
     /** Per buffer, the camera's view frustum. */
     final FrustumIntersection[] frustum = {new FrustumIntersection(), new FrustumIntersection()};
-    private final Matrix4f viewProjection = new Matrix4f();
+    /** Per buffer, the camera's view-projection matrix (recorded with the frame's decision). */
+    final Matrix4f[] viewProjection = {new Matrix4f(), new Matrix4f()};
+    /** Per buffer, the views the step follows: the camera, then the registered others. */
+    final int[] viewCount = new int[2];
+    final double[][] viewX = new double[2][Simulation.MAX_VIEWS];
+    final double[][] viewY = new double[2][Simulation.MAX_VIEWS];
+    final double[][] viewZ = new double[2][Simulation.MAX_VIEWS];
+    /** Per buffer and view, the level-of-detail metric ({@link ViewLod}). */
+    final double[][] scale2 = new double[2][Simulation.MAX_VIEWS];
+    final double[][] fixed2 = new double[2][Simulation.MAX_VIEWS];
+    /** {@link ViewLod#referenceScale} of the field's LOD lens. */
+    final double reference;
+    private final Matrix4f scratch = new Matrix4f();
+    private final double[] metric = new double[2];
     private final WindField wind;
     private final ForceField field;
     private final Commands commands;
@@ -47,9 +61,11 @@ final class FieldSampler {
      * @param plants       number of plants
      * @param fixedStep    fixed step, seconds
      * @param subIntervals spring sub-intervals per step
+     * @param lodFovY      the lens the level-of-detail distances are meant for, radians
      */
     FieldSampler(WindField wind, ForceField field, Commands commands, int plants, double fixedStep,
-            int subIntervals) {
+            int subIntervals, double lodFovY) {
+        this.reference = ViewLod.referenceScale(lodFovY);
         this.wind = wind;
         this.field = field;
         this.commands = commands;
@@ -67,21 +83,34 @@ final class FieldSampler {
      * Advances the wind one fixed step, notes where in the step the flows switched (if they did), and
      * writes the field's result for its end into buffer b.
      */
-    void update(Camera camera, int b, boolean fieldEnabled) {
+    void update(Camera camera, Camera[] others, int count, int b, boolean fieldEnabled) {
         wind.advance(fixedStep);
         edge[b] = SpringKinds.edgeBoundary(wind.lastEdge(), wind.time(), fixedStep, subIntervals);
         commands.releaseExpiredBlasts(wind.time());
-        sample(camera, b, fieldEnabled);
+        sample(camera, others, count, b, fieldEnabled);
     }
 
-    /** Writes the field's result for the wind's current time into buffer b. */
-    void sample(Camera camera, int b, boolean fieldEnabled) {
+    /**
+     * Writes the field's result for the wind's current time into buffer b, for the camera and the
+     * first {@code count} of {@code others} (visible: seen by any; detail: the finest any asks).
+     */
+    void sample(Camera camera, Camera[] others, int count, int b, boolean fieldEnabled) {
         eye[b][0] = camera.x();
         eye[b][1] = camera.y();
         eye[b][2] = camera.z();
-        frustum[b].set(camera.viewProjection(viewProjection), true); // normalised planes: the draw decision tests spheres
+        frustum[b].set(camera.viewProjection(viewProjection[b]), true); // normalised planes: the draw decision tests spheres
+        viewCount[b] = 1 + count;
+        for (int v = 0; v <= count; v++) {
+            Camera c = v == 0 ? camera : others[v - 1];
+            viewX[b][v] = c.x();
+            viewY[b][v] = c.y();
+            viewZ[b][v] = c.z();
+            ViewLod.metric(c, reference, scratch, metric);
+            scale2[b][v] = metric[0];
+            fixed2[b][v] = metric[1];
+        }
         if (fieldEnabled) {
-            field.update(camera);
+            field.update(camera, others, count);
             field.gather(0, plants, windX[b], windZ[b], visible[b]);
         } else {
             java.util.Arrays.fill(windX[b], 0f);

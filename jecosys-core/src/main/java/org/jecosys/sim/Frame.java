@@ -38,6 +38,19 @@ public final class Frame {
     private double thinStart = ForceFieldDef.DEFAULT_THIN_START;
     private double thinEnd = ForceFieldDef.DEFAULT_THIN_END;
     private double thinMinFraction = ForceFieldDef.DEFAULT_THIN_MIN_FRACTION;
+    /** Whether {@link #drawLevel} holds a decision for a camera recorded below. */
+    private boolean decided;
+    /** The camera the decision was made for: its view-projection (column-major) and eye, metres. */
+    private final float[] decisionViewProjection = new float[16];
+    private double decisionEyeX;
+    private double decisionEyeY;
+    private double decisionEyeZ;
+    /** Per species, the first of its edges in {@link #lodEdges}; one more entry ends the last. */
+    private int[] lodEdgeStart = new int[1];
+    /** The level-of-detail edges the decision used, metres, every species after the other. */
+    private double[] lodEdges = new double[0];
+    private double lodTransition = DrawDecision.DEFAULT_TRANSITION;
+    private double lodReference = org.jecosys.math.ViewLod.referenceScale(ForceFieldDef.DEFAULT_LOD_FOV_Y);
 
     /**
      * An empty frame sized for a world: every pose and azimuth 0, no plant visible. Allocates.
@@ -225,9 +238,10 @@ public final class Frame {
      * The compact render state of every component, {@link #RENDER_STATE_BYTES} bytes each, for upload
      * to the GPU as it is: at byte {@code 8 c} the pose coordinate of component c and at {@code 8 c +
      * 4} its bend azimuth (radians), little-endian floats. The simulation's workers write it as they
-     * animate: it is current for every plant the frame says is visible ({@link #plantVisible}); the
-     * entries of other plants may be older. A read-only view, direct (off the Java heap); its
-     * position and limit are not used. No allocation.
+     * animate: it is current for every plant, equal to {@link #poseCoord} and {@link #bendAzimuth}
+     * (a plant out of view keeps its last state), so a view other than the one the step followed can
+     * draw any plant. A read-only view, direct (off the Java heap); its position and limit are not
+     * used. No allocation.
      *
      * @return the read-only view, {@code 8 * componentCount()} bytes
      */
@@ -249,6 +263,92 @@ public final class Frame {
         }
     }
 
+    /**
+     * Records what the frame's decision was made with: the camera (its view-projection and eye), the
+     * level-of-detail edges of every species with the LOD scale applied, the transition band and the
+     * LOD lens ({@link org.jecosys.math.ViewLod#referenceScale}), so that a renderer can decide for another
+     * camera the same way ({@link ViewDecision}). Stepping thread, on the back frame; allocates only the
+     * first time (or when the species' levels grow).
+     */
+    void recordDecision(org.joml.Matrix4f viewProjection, double ex, double ey, double ez, DrawDecision d,
+                        double reference) {
+        decided = true;
+        viewProjection.get(decisionViewProjection);
+        decisionEyeX = ex;
+        decisionEyeY = ey;
+        decisionEyeZ = ez;
+        int species = d.speciesCount();
+        int n = 0;
+        for (int s = 0; s < species; s++) {
+            n += d.levels(s) - 1;
+        }
+        if (lodEdgeStart.length != species + 1 || lodEdges.length != n) {
+            lodEdgeStart = new int[species + 1];
+            lodEdges = new double[n];
+        }
+        int at = 0;
+        for (int s = 0; s < species; s++) {
+            lodEdgeStart[s] = at;
+            for (int l = 0, e = d.levels(s) - 1; l < e; l++) {
+                lodEdges[at++] = d.edge(s, l);
+            }
+        }
+        lodEdgeStart[species] = at;
+        lodTransition = d.transition();
+        lodReference = reference;
+    }
+
+    /**
+     * Whether this frame's decision ({@link #drawLevel}, {@link #drawKeep}) was made for exactly this
+     * camera (the same view-projection matrix and eye): a renderer then draws it as it is, and decides
+     * for itself otherwise ({@link ViewDecision}). Any thread reading the frame; no allocation.
+     *
+     * @param camera  the camera a view is drawn with
+     * @param scratch a matrix to hold its view-projection (overwritten)
+     * @return whether the decision is this camera's
+     */
+    public boolean decidedFor(org.jecosys.math.Camera camera, org.joml.Matrix4f scratch) {
+        if (!decided || camera.x() != decisionEyeX || camera.y() != decisionEyeY || camera.z() != decisionEyeZ) {
+            return false;
+        }
+        camera.viewProjection(scratch);
+        float[] m = decisionViewProjection;
+        return scratch.m00() == m[0] && scratch.m01() == m[1] && scratch.m02() == m[2] && scratch.m03() == m[3]
+                && scratch.m10() == m[4] && scratch.m11() == m[5] && scratch.m12() == m[6] && scratch.m13() == m[7]
+                && scratch.m20() == m[8] && scratch.m21() == m[9] && scratch.m22() == m[10] && scratch.m23() == m[11]
+                && scratch.m30() == m[12] && scratch.m31() == m[13] && scratch.m32() == m[14] && scratch.m33() == m[15];
+    }
+
+    /**
+     * {@return the number of level-of-detail edges recorded for species s (its levels minus one), 0
+     * before any decision}
+     *
+     * @param s species index
+     */
+    public int lodEdgeCount(int s) {
+        return s + 1 < lodEdgeStart.length ? lodEdgeStart[s + 1] - lodEdgeStart[s] : 0;
+    }
+
+    /**
+     * {@return where level l of species s ended in this frame's decision, metres (the LOD scale applied)}
+     *
+     * @param s species index
+     * @param l level, below {@link #lodEdgeCount}
+     */
+    public double lodEdge(int s, int l) {
+        return lodEdges[lodEdgeStart[s] + l];
+    }
+
+    /** {@return the transition band of this frame's decision, metres} */
+    public double lodTransition() {
+        return lodTransition;
+    }
+
+    /** {@return the LOD lens of this frame's decision, as {@link org.jecosys.math.ViewLod#referenceScale} gives it} */
+    public double lodReference() {
+        return lodReference;
+    }
+
     /** Copies everything from {@code src}, which must have the same sizes. No allocation. */
     void copyFrom(Frame src) {
         System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);
@@ -266,5 +366,19 @@ public final class Frame {
         thinStart = src.thinStart;
         thinEnd = src.thinEnd;
         thinMinFraction = src.thinMinFraction;
+        decided = src.decided;
+        System.arraycopy(src.decisionViewProjection, 0, decisionViewProjection, 0, 16);
+        decisionEyeX = src.decisionEyeX;
+        decisionEyeY = src.decisionEyeY;
+        decisionEyeZ = src.decisionEyeZ;
+        if (lodEdgeStart.length != src.lodEdgeStart.length || lodEdges.length != src.lodEdges.length) {
+            lodEdgeStart = src.lodEdgeStart.clone(); // the first copy of a reader only
+            lodEdges = src.lodEdges.clone();
+        } else {
+            System.arraycopy(src.lodEdgeStart, 0, lodEdgeStart, 0, lodEdgeStart.length);
+            System.arraycopy(src.lodEdges, 0, lodEdges, 0, lodEdges.length);
+        }
+        lodTransition = src.lodTransition;
+        lodReference = src.lodReference;
     }
 }

@@ -94,6 +94,9 @@ public final class Simulation implements AutoCloseable {
      * together, queued ones included (the scene format allows 256).
      */
     public static final int MAX_FLOWS = 1024;
+    /** Most views a step follows: its camera and {@code MAX_VIEWS - 1} registered with {@link #addView}. */
+    public static final int MAX_VIEWS = org.jecosys.field.QuadtreeForceField.MAX_VIEWS;
+    private static final Camera[] NO_VIEWS = {};
 
     private final World world;
     private final SimulationDef def;
@@ -131,6 +134,8 @@ public final class Simulation implements AutoCloseable {
      * waits for a running step instead of pulling its workers away (no allocation uncontended).
      */
     private final ReentrantLock stepLock = new ReentrantLock();
+    /** Views registered with {@link #addView}; replaced whole (copy on write), read once per step. */
+    private volatile Camera[] views = NO_VIEWS;
     boolean stampFrames;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
@@ -158,7 +163,7 @@ public final class Simulation implements AutoCloseable {
         int comps = world.componentCount();
         int[] first = SimulationBuild.firstComponents(world);
         state = AnimationStates.of(world, kinds, first, xs, ys, zs, def.seed());
-        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals);
+        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals, def.field().lodFovY());
         settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
         exchange = new FrameExchange(plants, comps);
         for (int i = 0; i < 3; i++) {
@@ -178,8 +183,7 @@ public final class Simulation implements AutoCloseable {
             }
         });
         draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler.windX, sampler.windZ,
-                sampler.visible, sampler.eye, ad.seed(), draw, sampler.frustum);
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 
@@ -369,10 +373,12 @@ public final class Simulation implements AutoCloseable {
         kinds.prepare(fixedStep, subIntervals, sampler.edge[current]);
         Frame f = exchange.back();
         exchange.beginWrite();
-        chunkAnimator.prepare(mode, current, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
+        int b = current; // the buffer the workers animate from: the views sampled one step ago
+        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
         long t0 = System.nanoTime();
         pool.start();
-        sampler.update(camera, 1 - current, fieldEnabled);
+        Camera[] others = views;
+        sampler.update(camera, others, others.length, 1 - b, fieldEnabled);
         long fieldNanos = System.nanoTime() - t0;
         pool.await();
         current = 1 - current;
@@ -384,6 +390,8 @@ public final class Simulation implements AutoCloseable {
         f.fieldNanos = fieldNanos;
         f.animationNanos = pool.animationNanos(); // the chunks' own span, beside or after the field
         f.setThinning(draw.thinStart(), draw.thinEnd(), draw.thinMinFraction());
+        f.recordDecision(sampler.viewProjection[b], sampler.eye[b][0], sampler.eye[b][1], sampler.eye[b][2], draw,
+                sampler.reference);
         exchange.publish();
     }
 
@@ -397,12 +405,73 @@ public final class Simulation implements AutoCloseable {
      */
     private void prime(Camera camera) {
         int b = 1 - current;
-        sampler.sample(camera, b, fieldEnabled);
+        Camera[] others = views;
+        sampler.sample(camera, others, others.length, b, fieldEnabled);
         if (mode == AnimationMode.CONSTRAINT && !(settledAtBuild && fieldEnabled)) {
             state.settle(0, world.plantCount(),
                     org.jecosys.anim.AnimationStep.of(mode, sampler.windX[b], sampler.windZ[b], sampler.visible[b]));
         }
-        sampler.update(camera, current, fieldEnabled);
+        sampler.update(camera, others, others.length, current, fieldEnabled);
+    }
+
+    /**
+     * Registers a further view the steps animate for, besides the camera given to each step: a second
+     * player's camera, a minimap, a shadow map's light. Plants any registered view sees are animated
+     * (the force field and the animation follow the union of the views, paper §3.1.1), each at the
+     * finest level of detail any view asks, levels picked by projected size
+     * ({@link org.jecosys.math.ViewLod}). The step reads the camera object each fixed step (one
+     * step late, as it reads the step's camera), so keep it current on the stepping thread. Drawing
+     * works for any camera whether registered or not (a renderer decides for a camera the step did not
+     * follow); registering only keeps what it sees animated. Any thread; allocates a small array.
+     *
+     * @param view the camera, kept by reference until {@link #removeView}
+     * @throws IllegalArgumentException when it is null or already registered
+     * @throws IllegalStateException    when {@link #MAX_VIEWS} - 1 views are registered, or the simulation
+     *                                  is closed
+     */
+    public synchronized void addView(Camera view) {
+        Require.nonNull("view", view);
+        checkOpen();
+        Camera[] v = views;
+        for (Camera c : v) {
+            if (c == view) {
+                throw new IllegalArgumentException("this view is already registered");
+            }
+        }
+        if (v.length >= MAX_VIEWS - 1) {
+            throw new IllegalStateException("a simulation follows at most " + MAX_VIEWS + " views (Simulation.MAX_VIEWS):"
+                    + " the step's camera and " + (MAX_VIEWS - 1) + " registered ones");
+        }
+        Camera[] n = java.util.Arrays.copyOf(v, v.length + 1);
+        n[v.length] = view;
+        views = n;
+    }
+
+    /**
+     * Stops animating for a view registered with {@link #addView}. Any thread; allocates a small array.
+     *
+     * @param view the camera
+     * @return whether it was registered
+     * @throws IllegalStateException when the simulation is closed
+     */
+    public synchronized boolean removeView(Camera view) {
+        checkOpen();
+        Camera[] v = views;
+        for (int i = 0; i < v.length; i++) {
+            if (v[i] == view) {
+                Camera[] n = new Camera[v.length - 1];
+                System.arraycopy(v, 0, n, 0, i);
+                System.arraycopy(v, i + 1, n, i, v.length - i - 1);
+                views = n;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** {@return the views registered with {@link #addView}, besides each step's camera} Any thread. */
+    public int viewCount() {
+        return views.length;
     }
 
     /** {@return the commands queued and not yet applied, at most {@link #MAX_PENDING_COMMANDS}} Any thread. */

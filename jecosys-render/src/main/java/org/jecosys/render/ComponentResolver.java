@@ -195,7 +195,7 @@ final class ComponentResolver implements AutoCloseable {
         detach();
         for (Pass p : passes) {
             p.uniforms.program.use();
-            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame);
+            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame, 1f);
         }
         detach();
     }

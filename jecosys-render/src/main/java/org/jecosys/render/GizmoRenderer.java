@@ -180,6 +180,7 @@ public final class GizmoRenderer implements AutoCloseable {
         Require.nonNull("camera", camera);
         Require.positive("windScale", windScale);
         state.save();
+        state.setGuestState();
         try {
             int height = state.viewportHeight();
             if (height <= 0 || state.viewportWidth() <= 0) {

@@ -116,6 +116,38 @@ public final class PlantBatches {
      * @throws IllegalArgumentException when the frame's plant count is not the world's
      */
     public void update(Frame frame) {
+        begin(frame);
+        for (int p = 0, n = world.plantCount(); p < n; p++) {
+            int l = frame.drawLevel(p);
+            if (l >= 0) {
+                list(p, l, frame.drawKeep(p));
+            }
+        }
+        finish();
+    }
+
+    /**
+     * Builds the lists from a decision made for another camera than the frame's own
+     * ({@link org.jecosys.sim.ViewDecision}): per plant its level (-1: not drawn) and packed dither
+     * windows. No allocation.
+     *
+     * @param frame  a frame of this world (its states are drawn)
+     * @param levels per plant, the level to draw it at, or -1
+     * @param keeps  per plant, the packed dither windows (as {@link Frame#drawKeep})
+     * @throws IllegalArgumentException when the frame's plant count is not the world's
+     */
+    public void update(Frame frame, byte[] levels, int[] keeps) {
+        begin(frame);
+        for (int p = 0, n = world.plantCount(); p < n; p++) {
+            int l = levels[p];
+            if (l >= 0) {
+                list(p, l, keeps[p]);
+            }
+        }
+        finish();
+    }
+
+    private void begin(Frame frame) {
         if (frame.plantCount() != world.plantCount()) {
             throw new IllegalArgumentException("frame has " + frame.plantCount() + " plants, the world "
                     + world.plantCount());
@@ -126,26 +158,27 @@ public final class PlantBatches {
             banded[li] = 0;
         }
         runs = 0;
-        for (int p = 0, n = world.plantCount(); p < n; p++) {
-            int l = frame.drawLevel(p);
-            if (l < 0) {
-                continue;
-            }
-            int c0 = world.firstComponent(p);
-            int c1 = c0 + world.componentsOf(p);
-            if (runs > 0 && c0 - runEnd[runs - 1] <= GAP) {
-                runEnd[runs - 1] = c1;
-            } else {
-                runStart[runs] = c0;
-                runEnd[runs++] = c1;
-            }
-            int s = world.plantSpecies(p);
-            int keep = frame.drawKeep(p);
-            add(listBase[s] + l, p, keep & 0xFFFF);
-            if (keep >>> 16 != 0 && l + 1 < levels[s]) {
-                add(listBase[s] + l + 1, p, keep >>> 16);
-            }
+    }
+
+    /** Lists plant p at level l (and at l + 1 in a band), and its components in the upload ranges. */
+    private void list(int p, int l, int keep) {
+        int c0 = world.firstComponent(p);
+        int c1 = c0 + world.componentsOf(p);
+        if (runs > 0 && c0 - runEnd[runs - 1] <= GAP) {
+            runEnd[runs - 1] = c1;
+        } else {
+            runStart[runs] = c0;
+            runEnd[runs++] = c1;
         }
+        int s = world.plantSpecies(p);
+        add(listBase[s] + l, p, keep & 0xFFFF);
+        if (keep >>> 16 != 0 && l + 1 < levels[s]) {
+            add(listBase[s] + l + 1, p, keep >>> 16);
+        }
+    }
+
+    private void finish() {
+        int lists = listBase[species];
         for (int li = 0; li < lists; li++) {
             gather(li);
         }

@@ -73,13 +73,17 @@ final class PlantPasses {
 
     /**
      * Sets this frame's uniforms on every program: the camera, light and haze, the size of a pixel
-     * ({@code x + distance * y} metres) and the frame's distance thinning. No allocation.
+     * ({@code x + distance * y} metres), the frame's distance thinning and whether the target is
+     * multisampled (then the triangle levels keep coverage in alpha for alpha-to-coverage; else they
+     * write alpha 1). No allocation.
      */
     void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
-               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame,
+               boolean multisampled) {
         for (PlantUniforms u : passes) {
             u.program.use();
-            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame);
+            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
+                    multisampled ? 0f : 1f);
         }
     }
 

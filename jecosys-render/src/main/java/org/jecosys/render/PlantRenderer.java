@@ -1,9 +1,10 @@
 package org.jecosys.render;
 
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
+import static org.lwjgl.opengl.GL11C.GL_ONE;
 import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
-import static org.lwjgl.opengl.GL11C.glBlendFunc;
+import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
@@ -21,6 +22,7 @@ import org.jecosys.math.Camera;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.sim.Frame;
+import org.jecosys.sim.ViewDecision;
 import org.jecosys.sim.World;
 import org.joml.Matrix4f;
 import org.lwjgl.opengl.GL11C;
@@ -78,10 +80,14 @@ public final class PlantRenderer implements AutoCloseable {
     private final int[] indexCount;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
+    /** The decision for a camera the frame's own decision was not made for (another view, a cut). */
+    private final ViewDecision view;
     private final PlantPasses passes;
     private final GlInts query = new GlInts();
     private final PlantLook look;
     private boolean pending;
+    /** Whether the target of the last {@link #drawNear} is multisampled (coverage to samples) or not (opaque). */
+    private boolean multisampled;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
     int levelMask = ~0;
     private boolean closed;
@@ -118,6 +124,7 @@ public final class PlantRenderer implements AutoCloseable {
         gl.checkThread();
         this.world = world;
         this.batches = new PlantBatches(world);
+        this.view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
         for (SpeciesModel m : models) {
             if (m.levels() > MAX_LEVELS) {
@@ -339,7 +346,10 @@ public final class PlantRenderer implements AutoCloseable {
 
     /**
      * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws the triangle
-     * (near) levels, opaque, writing depth. Follow it in the same frame with your opaque geometry and
+     * (near) levels, opaque, writing depth. For the camera the frame's decision was made for (the one
+     * its step followed) it draws that decision as it is; for any other camera it decides first
+     * ({@link ViewDecision}: the frustum and levels of that camera, by projected size), so split
+     * screens, minimaps, shadow passes and the first frame after a camera cut are drawn complete. Follow it in the same frame with your opaque geometry and
      * then {@link #drawFar}. Render thread; no allocation.
      *
      * @param frame    the frame to show (sizes match the world)
@@ -361,7 +371,12 @@ public final class PlantRenderer implements AutoCloseable {
                     + world.componentCount());
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
-        batches.update(frame);
+        if (frame.decidedFor(camera, viewProj)) {
+            batches.update(frame); // the step's own decision, made by the workers for this very camera
+        } else {
+            view.decide(frame, camera); // any other view: decided here, every plant's state is in the frame
+            batches.update(frame, view.levels(), view.keeps());
+        }
         passes.resetCounts();
         pending = batches.instances() > 0;
         if (!pending) {
@@ -377,11 +392,15 @@ public final class PlantRenderer implements AutoCloseable {
         float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
         resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
         resolver.resolve(look);
-        passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
+        multisampled = query.get(GL13C.GL_SAMPLES) > 1;
+        passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame, multisampled);
         poseTexture.bind(0);
         resolver.bindRecords(1);
+        // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
         passes.draw(false, batches, vaos, indexCount, look, levelMask);
+        glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
 
@@ -397,15 +416,18 @@ public final class PlantRenderer implements AutoCloseable {
         pending = false;
         poseTexture.bind(0);
         resolver.bindRecords(1);
-        if (query.get(GL13C.GL_SAMPLES) > 1) {
-            // multisampled: coverage to samples, as the triangle levels, depth written
+        if (multisampled) {
+            // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
             passes.draw(true, batches, vaos, indexCount, look, levelMask);
+            glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             return;
         }
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        // colour blended by coverage; alpha composited "over" (a + d (1 - a)): opaque over an opaque target
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
         passes.draw(true, batches, vaos, indexCount, look, levelMask);
         glDepthMask(true);

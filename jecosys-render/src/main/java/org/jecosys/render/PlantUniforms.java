@@ -33,6 +33,7 @@ final class PlantUniforms {
     final int headPixels;
     final int flowerTilt;
     final int thin;
+    final int alphaFloor;
 
     PlantUniforms(GlProgram p) {
         program = p;
@@ -53,16 +54,19 @@ final class PlantUniforms {
         headPixels = p.optionalUniform("uHeadPixels");
         flowerTilt = p.optionalUniform("uFlowerTilt");
         thin = p.optionalUniform("uThin");
+        alphaFloor = p.optionalUniform("uAlphaFloor");
         glUniform1i(p.optionalUniform("uPoses"), 0);
         glUniform1i(p.optionalUniform("uComponents"), 1);
     }
 
     /**
      * Sets the per-frame values on the program in use: view, eye, light, fog, the pixel's size
-     * ({@code pixelX + distance * pixelY} metres) and the frame's distance thinning. No allocation.
+     * ({@code pixelX + distance * pixelY} metres), the frame's distance thinning and the least alpha
+     * written (1 when not multisampled, so plants are opaque; 0 for alpha-to-coverage). No allocation.
      */
     void frame(PlantLook r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
-               float end, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+               float end, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame, float alphaFloorValue) {
+        glUniform1f(alphaFloor, alphaFloorValue);
         glUniform2f(pixelScale, pixelX, pixelY);
         glUniform3f(thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
         glUniformMatrix4fv(viewProj, false, viewProjMatrix);

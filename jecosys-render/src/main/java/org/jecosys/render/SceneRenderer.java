@@ -76,15 +76,19 @@ public final class SceneRenderer implements AutoCloseable {
         PlantRenderer p = null;
         SkyRenderer k = null;
         GlStateGuard g = new GlStateGuard();
+        g.save(); // construction binds and uploads: the host finds its state as it left it
         try {
+            g.setGuestState();
             t = new TerrainRenderer(gl, world, settings.tint());
             p = new PlantRenderer(gl, world, path);
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
+            g.restore();
             PlantRenderer.closeAll(k, p, t, g);
             throw e;
         }
+        g.restore();
         sky = k;
         terrain = t;
         plants = p;
@@ -159,10 +163,13 @@ public final class SceneRenderer implements AutoCloseable {
      * off, the plants are depth-tested against what is already in the depth buffer and no sky is drawn.
      * {@link RenderSettings#terrain()} says whether the library's own terrain is drawn.
      *
-     * <p>State contract: every GL state this method changes is put back before it returns (see
-     * {@link GlStateGuard}: program, vertex array, array and texture-buffer bindings, active texture
-     * unit, the buffer textures of units 0 to 4 and the 2D texture of unit 5, depth test, function and mask, culling,
-     * blending, scissor, clear colour, viewport). The framebuffer binding is never changed. Render
+     * <p>State contract (a good guest): every GL state this method changes is put back before it
+     * returns, and every state the drawing depends on is set first, whatever the host left (blend
+     * equation, colour mask, polygon offset and mode, depth function, front face, stencil, sampler
+     * objects; see {@link GlStateGuard}). Plants write opaque alpha. The colours written are display
+     * (sRGB) values, also into an sRGB framebuffer (its conversion is switched off while the library
+     * draws), so a host with gamma correction shows the same picture as one without. The framebuffer
+     * binding is never changed; the constructor and {@link #close()} keep the same contract. Render
      * thread; no allocation in the steady state.
      *
      * @param frame  the animation frame to show
@@ -185,6 +192,7 @@ public final class SceneRenderer implements AutoCloseable {
         if (width <= 0 || height <= 0) {
             return;
         }
+        state.setGuestState();
         terrain.setTint(settings.tint());
         Rgb horizon = settings.sky();
         if (settings.clear()) {
@@ -237,12 +245,21 @@ public final class SceneRenderer implements AutoCloseable {
         return plants.batches().lineCount();
     }
 
-    /** Deletes every GL object of the three renderers. Render thread; idempotent. */
+    /**
+     * Deletes every GL object of the renderers, leaving the host's state as it found it (a binding of
+     * a deleted object would fall back to 0). Render thread; idempotent.
+     */
     @Override
     public void close() {
         if (!closed) {
             closed = true;
-            PlantRenderer.closeAll(overlay, sky, plants, terrain, state);
+            state.save();
+            try {
+                PlantRenderer.closeAll(overlay, sky, plants, terrain);
+            } finally {
+                state.restore();
+                state.close();
+            }
         }
     }
 }

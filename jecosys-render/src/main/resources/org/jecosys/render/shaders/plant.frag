@@ -3,9 +3,11 @@
 // L + 1 the complementary ones, so the switch is gradual. Only plants in a band are drawn with the
 // test (compiled with DITHER); the others are drawn by the variant without it, which never
 // discards, so the rasteriser can test depth before shading. Colour arrives lit and fogged from
-// the vertex shader; alpha is the share of the drawn width the real part covers (used by
-// alpha-to-coverage when multisampling, ignored otherwise: the plants are drawn opaque).
+// the vertex shader; alpha is the share of the drawn width the real part covers, used by
+// alpha-to-coverage when multisampling (which then stores alpha 1: alpha-to-one); otherwise the plants
+// are drawn opaque and uAlphaFloor = 1 writes alpha 1, so a host's screenshot sees opaque plants.
 in vec4 vShade;
+uniform float uAlphaFloor;
 #ifdef DITHER
 flat in vec2 vKeep;
 #endif
@@ -28,5 +30,5 @@ void main() {
         discard;
     }
 #endif
-    fragColour = vShade;
+    fragColour = vec4(vShade.rgb, max(vShade.a, uAlphaFloor));
 }
