@@ -46,7 +46,8 @@ public final class SceneRenderer implements AutoCloseable {
     boolean drawPlants = true;
 
     /**
-     * Uploads everything static of the world. Render thread; allocates.
+     * Uploads everything static of the world, and puts back every GL state that uploading changes
+     * (as {@link #render(Frame, Camera)} does), also when it fails. Render thread; allocates.
      *
      * @param gl       the render context, current on this thread
      * @param world    the terrain and plants to draw
@@ -76,15 +77,25 @@ public final class SceneRenderer implements AutoCloseable {
         PlantRenderer p = null;
         SkyRenderer k = null;
         GlStateGuard g = new GlStateGuard();
+        // uploading binds programs, vertex arrays, buffers and textures: the host's are put back after
+        // (a host that caches its bindings, such as jMonkeyEngine's one vertex array of a core profile,
+        // draws nothing once they change under it)
+        g.save();
         try {
             t = new TerrainRenderer(gl, world, settings.tint());
             p = new PlantRenderer(gl, world, path);
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
-            PlantRenderer.closeAll(k, p, t, g);
+            try {
+                PlantRenderer.closeAll(k, p, t);
+            } finally {
+                g.restore();
+                g.close();
+            }
             throw e;
         }
+        g.restore();
         sky = k;
         terrain = t;
         plants = p;
@@ -237,12 +248,21 @@ public final class SceneRenderer implements AutoCloseable {
         return plants.batches().lineCount();
     }
 
-    /** Deletes every GL object of the three renderers. Render thread; idempotent. */
+    /**
+     * Deletes every GL object of the three renderers and puts back the bindings that deleting changes.
+     * Render thread; idempotent.
+     */
     @Override
     public void close() {
         if (!closed) {
             closed = true;
-            PlantRenderer.closeAll(overlay, sky, plants, terrain, state);
+            state.save();
+            try {
+                PlantRenderer.closeAll(overlay, sky, plants, terrain);
+            } finally {
+                state.restore();
+                state.close();
+            }
         }
     }
 }
