@@ -126,6 +126,12 @@ public final class PlantLayerLoader extends AsynchronousAssetLoader<PlantLayer, 
         return new PlantLayer(p.simulation, settings); // closes the simulation if it fails
     }
 
+    /** {@return the simulation loadAsync built for an asset and loadSync has not taken, or null} Tests. */
+    Simulation pending(String fileName) {
+        Pending p = pending.get(fileName);
+        return p == null ? null : p.simulation;
+    }
+
     /** Closes the simulation of a load cancelled before {@link #loadSync}. Any thread. */
     @Override
     public void unloadAsync(AssetManager manager, String fileName, FileHandle file, Parameters parameter) {

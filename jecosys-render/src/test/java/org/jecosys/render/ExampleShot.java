@@ -13,7 +13,8 @@ import javax.imageio.ImageIO;
  * (the HUD text's box), {@code probe ground x y} (bare ground: no plant within 1.3 m),
  * {@code probe plant x y} (a plant just above its base), {@code probe player x y},
  * {@code bend near N far F} (mean bend of the plants within 1 m of the player and 3 to 6 m from it),
- * {@code gl errors: none} or a count, and a {@code GL error ...} line per error found.
+ * optionally {@code draw allocations: K of N frames, ...} (frames whose plant drawing allocated on the
+ * render thread), {@code gl errors: none} or a count, and a {@code GL error ...} line per error found.
  */
 public final class ExampleShot {
     /** Plant green: green well above red and blue. */
@@ -68,6 +69,7 @@ public final class ExampleShot {
     private final List<int[]> plants = new ArrayList<>();
     private final double bendNear;
     private final double bendFar;
+    private final int[] drawAllocations;
 
     private ExampleShot(BufferedImage image, String output, String tag) {
         this.image = image;
@@ -77,6 +79,7 @@ public final class ExampleShot {
         int[] pl = null;
         double near = Double.NaN;
         double far = Double.NaN;
+        int[] alloc = null;
         for (String line : output.split("\n")) {
             if (!line.startsWith(tag)) {
                 continue;
@@ -97,6 +100,8 @@ public final class ExampleShot {
             } else if (w[0].equals("bend") && w.length == 5) {
                 near = Double.parseDouble(w[2]);
                 far = Double.parseDouble(w[4]);
+            } else if (w[0].equals("draw") && w[1].equals("allocations:") && w.length >= 5) {
+                alloc = new int[] {Integer.parseInt(w[2]), Integer.parseInt(w[4])};
             }
         }
         hud = h;
@@ -104,6 +109,7 @@ public final class ExampleShot {
         player = pl;
         bendNear = near;
         bendFar = far;
+        drawAllocations = alloc;
     }
 
     /**
@@ -168,7 +174,8 @@ public final class ExampleShot {
      * (at least 40 text pixels); bare ground in the engine's soil colour (60% of an 11 x 11 square);
      * at least 6 plants, three quarters of them plant green (20% of a 9 x 9 square); the player in
      * its blue; the plants near the player bent (mean over 0.3, and over twice the bend 3 to 6 m away:
-     * the trail it pushes through the grass).
+     * the trail it pushes through the grass); where reported, drawing the plants allocating in at most
+     * a quarter of the frames measured.
      *
      * @return the failed checks, empty when all pass
      */
@@ -205,6 +212,10 @@ public final class ExampleShot {
         }
         if (!(bendNear > 0.3 && bendNear > 2 * bendFar)) {
             bad.add("bend near the player " + bendNear + " vs 3 to 6 m away " + bendFar);
+        }
+        // an allocation per frame shows in every frame; the JIT may allocate now and then on its own
+        if (drawAllocations != null && (drawAllocations[1] < 10 || drawAllocations[0] > drawAllocations[1] / 4)) {
+            bad.add("frames whose plant drawing allocated: " + drawAllocations[0] + " of " + drawAllocations[1]);
         }
         return bad;
     }

@@ -30,8 +30,9 @@ import com.jme3.math.Vector3f;
  * The example's test mode: reports every GL error after each phase of a frame (the app's update, jME's
  * scene, the plants, the GUI), and after the last frame saves the finished frame (GUI included) as a
  * PNG, prints what a test checks in it, one {@code [jme-meadow] ...} line each (where the HUD text is,
- * bare ground, plants, the player, the mean bend near the player and away from it, the GL error
- * count) and stops the game. Image coordinates have their origin at the top left. Render thread.
+ * bare ground, plants, the player, the mean bend near the player and away from it, in how many of
+ * the last half of the frames drawing the plants allocated on the render thread, the GL error count)
+ * and stops the game. Image coordinates have their origin at the top left. Render thread.
  */
 final class TestCapture {
     private static final String TAG = "[jme-meadow] ";
@@ -41,9 +42,15 @@ final class TestCapture {
     private final Probe plantsDone = new Probe("plants");
     private final Probe guiDone = new Probe("GUI");
     private final long start = System.nanoTime();
+    private final com.sun.management.ThreadMXBean threads =
+            (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
     private int frame;
     private int errors;
     private boolean first = true;
+    private long drawStart;
+    private int drawsMeasured;
+    private int drawsAllocating;
+    private long drawMostBytes;
 
     TestCapture(JmeMeadowGame game, JmeMeadowGame.Options options) {
         this.game = game;
@@ -104,6 +111,8 @@ final class TestCapture {
             throw new UncheckedIOException(e);
         }
         probes(cam, w, h);
+        System.out.printf("%sdraw allocations: %d of %d frames, at most %d bytes%n", TAG, drawsAllocating,
+                drawsMeasured, drawMostBytes);
         System.out.printf("%sframes %d in %.1f s%n", TAG, frame, (System.nanoTime() - start) / 1e9);
         System.out.println(TAG + "gl errors: " + (errors == 0 ? "none" : errors));
     }
@@ -247,7 +256,16 @@ final class TestCapture {
         @Override
         public void postFrame(FrameBuffer out) {
             check(phase);
-            if (this == guiDone) {
+            long now = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
+            if (this == sceneDone) {
+                drawStart = now; // the plant state's processor draws next
+            } else if (this == plantsDone && frame >= options.frames() / 2) {
+                // what drawing the plants allocated on the render thread, once warm
+                long bytes = now - drawStart;
+                drawsMeasured++;
+                drawsAllocating += bytes > 0 ? 1 : 0;
+                drawMostBytes = Math.max(drawMostBytes, bytes);
+            } else if (this == guiDone) {
                 frameDone();
             }
         }
