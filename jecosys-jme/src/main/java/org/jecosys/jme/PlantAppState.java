@@ -2,6 +2,7 @@ package org.jecosys.jme;
 
 import com.jme3.app.Application;
 import com.jme3.app.state.BaseAppState;
+import com.jme3.asset.AssetLoadException;
 import com.jme3.post.SceneProcessor;
 import com.jme3.profile.AppProfiler;
 import com.jme3.renderer.RenderManager;
@@ -25,6 +26,8 @@ import org.jecosys.sim.Simulation;
  * assetManager.registerLoader(SceneAssetLoader.class, "xml");
  * PlantAppState plants = new PlantAppState(assetManager.loadAsset(new SceneKey("Scenes/meadow.xml")));
  * stateManager.attach(plants);
+ * WindSource player = plants.simulation().attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 0, 20));
+ * // each frame: plants.simulation().moveAgent(player, x, z)
  * }</pre>
  * The plants are drawn by a {@link SceneProcessor} placed first in the main viewport's processors, in
  * its {@code postFrame}: after jME's opaque, sky and transparent buckets, depth-tested against them,
@@ -41,22 +44,23 @@ import org.jecosys.sim.Simulation;
  * application stopping) deletes the GL objects and closes the simulation.
  */
 public class PlantAppState extends BaseAppState {
-    private final Scene scene;
-    private final int workers;
+    private final Simulation simulation;
     private final RenderSettings settings;
     private final JmeCamera stepCamera = new JmeCamera();
     private final JmeCamera drawCamera = new JmeCamera();
     private final Hook hook = new Hook();
-    private Simulation simulation;
     private GlContext gl;
     private SceneRenderer renderer;
     private ViewPort viewPort;
 
     /**
-     * The plants of a scene, built when the state is initialized (on the render thread) with the
-     * scene's worker count and its {@code <render>} look. Any thread; allocates.
+     * The plants of a scene: builds its simulation now, on the calling thread (the render thread in
+     * {@code simpleInitApp}, or a loading thread), with the scene's worker count and its
+     * {@code <render>} look. The state owns the simulation and closes it in {@link #cleanup}; close
+     * {@link #simulation()} yourself if the state is never attached. Allocates.
      *
      * @param scene a scene from {@link SceneAssetLoader} (or {@code SceneFiles.read})
+     * @throws AssetLoadException when an image of the scene cannot be decoded
      */
     public PlantAppState(Scene scene) {
         this(scene, 0);
@@ -67,44 +71,41 @@ public class PlantAppState extends BaseAppState {
      *
      * @param scene   the scene
      * @param workers animation worker threads, in [0, 256]; 0 keeps the scene's setting
+     * @throws AssetLoadException when an image of the scene cannot be decoded
      */
     public PlantAppState(Scene scene, int workers) {
-        this.scene = Require.nonNull("scene", scene);
-        this.workers = Require.range("workers", workers, 0, 256);
-        this.settings = RenderSettings.of(scene.def());
+        this(build(Require.nonNull("scene", scene), Require.range("workers", workers, 0, 256)),
+                RenderSettings.of(scene.def()));
     }
 
     /**
-     * The plants of a simulation the game built itself (on any thread, e.g. while loading, with
-     * {@code Scenes.simulation}); the state owns it from now on and closes it in {@link #cleanup}. Any
-     * thread; allocates.
+     * The plants of a simulation the game built itself ({@code Scenes.simulation}, on any thread); the
+     * state owns it from now on and closes it in {@link #cleanup}. Any thread; allocates.
      *
      * @param simulation the plants
      * @param settings   the look ({@code RenderSettings.of(scene.def())} for the scene's own light)
      */
     public PlantAppState(Simulation simulation, RenderSettings settings) {
-        this.scene = null;
-        this.workers = 0;
         this.simulation = Require.nonNull("simulation", simulation);
         this.settings = Require.nonNull("settings", settings);
     }
 
+    private static Simulation build(Scene scene, int workers) {
+        try {
+            return Scenes.simulation(scene, workers, Progress.NONE);
+        } catch (IOException e) {
+            throw new AssetLoadException(scene.name() + ": " + e.getMessage(), e);
+        }
+    }
+
     /**
-     * Builds the simulation (for a state made from a scene), makes the renderer's GL objects and puts
-     * the drawing processor first in the main viewport. Render thread; allocates.
+     * Makes the renderer's GL objects and puts the drawing processor first in the main viewport.
+     * Render thread; allocates.
      *
-     * @throws IllegalStateException when the scene's images cannot be decoded or no OpenGL 3.3
-     *                               context is current
+     * @throws IllegalStateException when no OpenGL 3.3 context is current (the simulation is closed)
      */
     @Override
     protected void initialize(Application app) {
-        if (simulation == null) {
-            try {
-                simulation = Scenes.simulation(scene, workers, Progress.NONE);
-            } catch (IOException e) {
-                throw new IllegalStateException(scene.name() + ": " + e.getMessage(), e);
-            }
-        }
         try {
             gl = GlContext.current(false);
             renderer = new SceneRenderer(gl, simulation.world(), settings);
@@ -137,9 +138,7 @@ public class PlantAppState extends BaseAppState {
                 gl.close();
             }
         } finally {
-            if (simulation != null) {
-                simulation.close();
-            }
+            simulation.close();
         }
     }
 
@@ -164,10 +163,7 @@ public class PlantAppState extends BaseAppState {
         simulation.step(tpf, stepCamera.update(viewPort.getCamera()));
     }
 
-    /**
-     * {@return the simulation: agents, flows, wind, level of detail; commands from any thread} Null
-     * before {@link #initialize} for a state made from a scene.
-     */
+    /** {@return the simulation: agents, flows, wind, level of detail; commands from any thread} */
     public Simulation simulation() {
         return simulation;
     }

@@ -46,7 +46,8 @@ final class TestCapture {
     boolean frameDone(GdxMeadowGame game) {
         if (frame == 0) {
             System.out.println(TAG + "GL " + Gdx.gl.glGetString(GL20.GL_VERSION) + " | "
-                    + Gdx.gl.glGetString(GL20.GL_RENDERER) + " | gl30=" + (Gdx.gl30 != null));
+                    + Gdx.gl.glGetString(GL20.GL_RENDERER) + " | gl30=" + (Gdx.gl30 != null) + " | LWJGL "
+                    + org.lwjgl.Version.getVersion());
             System.out.println(TAG + "scene " + options.scene() + ": " + game.plants().simulation().plantCount()
                     + " plants, " + game.plants().simulation().componentCount() + " components");
         }

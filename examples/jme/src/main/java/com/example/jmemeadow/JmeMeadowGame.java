@@ -23,10 +23,7 @@ import java.util.concurrent.CountDownLatch;
 import org.jecosys.jme.PlantAppState;
 import org.jecosys.jme.SceneAssetLoader;
 import org.jecosys.jme.SceneKey;
-import org.jecosys.math.Progress;
-import org.jecosys.render.RenderSettings;
 import org.jecosys.scene.Scene;
-import org.jecosys.scene.Scenes;
 import org.jecosys.sim.Simulation;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
@@ -110,14 +107,9 @@ public final class JmeMeadowGame extends SimpleApplication {
             key = file.getFileName().toString();
         }
         Scene scene = assetManager.loadAsset(new SceneKey(key));
-        Simulation sim;
-        try {
-            sim = Scenes.simulation(scene, 0, Progress.NONE);
-        } catch (java.io.IOException e) {
-            throw new IllegalStateException(e.getMessage(), e);
-        }
-        plants = new PlantAppState(sim, RenderSettings.of(scene.def()));
+        plants = new PlantAppState(scene); // builds the simulation; steps and draws it once attached
         stateManager.attach(plants);
+        Simulation sim = plants.simulation();
 
         terrain = sim.world().terrain().heightfield();
         centreX = (float) (terrain.minX() + terrain.sizeX() / 2);

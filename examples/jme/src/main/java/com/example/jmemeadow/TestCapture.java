@@ -66,7 +66,8 @@ final class TestCapture {
             // the plant state put its processor first when it initialized: check just before it
             game.getViewPort().getProcessors().add(0, sceneDone);
             System.out.println(TAG + "GL " + glGetString(GL_VERSION) + " | " + glGetString(GL_RENDERER)
-                    + " | renderer " + options.renderer() + " | gamma " + options.gamma());
+                    + " | renderer " + options.renderer() + " | gamma " + options.gamma() + " | LWJGL "
+                    + org.lwjgl.Version.getVersion());
             System.out.println(TAG + "scene " + options.scene() + ": " + game.plants().simulation().plantCount()
                     + " plants, " + game.plants().simulation().componentCount() + " components");
         }
