@@ -27,6 +27,8 @@ class ArchitectureTest {
     private static final Map<String, Set<String>> MODULES = Map.of(
             "jecosys-core", Set.of("math", "wind", "plant", "terrain", "field", "anim", "sim", "scene"),
             "jecosys-render", Set.of("render"),
+            "jecosys-gdx", Set.of("gdx"),
+            "jecosys-jme", Set.of("jme"),
             "jecosys-app", Set.of("bench", "app"));
 
     /** For each package, the org.jecosys packages it may use (docs/ARCHITECTURE.md, "Packages"). */
@@ -40,13 +42,17 @@ class ArchitectureTest {
             Map.entry("sim", Set.of("anim", "field", "wind", "plant", "terrain", "math")),
             Map.entry("scene", Set.of("anim", "field", "wind", "plant", "terrain", "math", "sim")),
             Map.entry("render", Set.of("scene", "sim", "plant", "field", "terrain", "math")),
+            // the engine adapters: thin, on top of the library a game uses (no LWJGL of their own)
+            Map.entry("gdx", Set.of("render", "scene", "sim", "math", "terrain", "wind", "plant", "field")),
+            Map.entry("jme", Set.of("render", "scene", "sim", "math", "terrain", "wind", "plant", "field")),
             Map.entry("bench", Set.of("sim", "scene", "render", "anim", "field", "wind", "plant", "terrain", "math")),
             Map.entry("app", Set.of("render", "bench", "scene", "sim", "anim", "field", "wind", "plant", "terrain",
                     "math")));
 
     /** A dotted name that starts at a word boundary and is not itself part of a longer dotted name. */
     private static final Pattern QUALIFIED = Pattern.compile(
-            "(?<![\\w.])((?:org\\.jecosys|org\\.lwjgl|com\\.fasterxml|imgui|picocli|org\\.knowm)(?:\\.\\w+)+)");
+            "(?<![\\w.])((?:org\\.jecosys|org\\.lwjgl|com\\.fasterxml|imgui|picocli|org\\.knowm|com\\.badlogic|com\\.jme3)"
+                    + "(?:\\.\\w+)+)");
 
     record Use(Path file, String pkg, String used) {
     }
@@ -136,6 +142,30 @@ class ArchitectureTest {
             }
         }
         assertEquals(List.of(), bad);
+    }
+
+    @Test
+    void eachEngineOnlyInItsAdapter() throws IOException {
+        List<String> bad = new ArrayList<>();
+        for (Use u : uses()) {
+            if (u.used().startsWith("com.badlogic") && !u.pkg().equals("gdx")
+                    || u.used().startsWith("com.jme3") && !u.pkg().equals("jme")) {
+                bad.add(u.file() + " uses " + u.used());
+            }
+        }
+        assertEquals(List.of(), bad);
+    }
+
+    @Test
+    void theAdaptersUseTheirEngines() throws IOException {
+        // the scan reaches the adapters' sources (and would see an engine elsewhere)
+        List<String> engines = new ArrayList<>();
+        for (Use u : uses()) {
+            if (u.used().startsWith("com.badlogic.gdx.") || u.used().startsWith("com.jme3.")) {
+                engines.add(u.pkg() + ":" + u.used().split("\\.")[1]);
+            }
+        }
+        assertTrue(engines.contains("gdx:badlogic") && engines.contains("jme:jme3"), engines.toString());
     }
 
     @Test

@@ -46,7 +46,8 @@ public final class SceneRenderer implements AutoCloseable {
     boolean drawPlants = true;
 
     /**
-     * Uploads everything static of the world. Render thread; allocates.
+     * Uploads everything static of the world, and puts back every GL state that uploading changes
+     * (as {@link #render(Frame, Camera)} does), also when it fails. Render thread; allocates.
      *
      * @param gl       the render context, current on this thread
      * @param world    the terrain and plants to draw
@@ -76,7 +77,10 @@ public final class SceneRenderer implements AutoCloseable {
         PlantRenderer p = null;
         SkyRenderer k = null;
         GlStateGuard g = new GlStateGuard();
-        g.save(); // construction binds and uploads: the host finds its state as it left it
+        // uploading binds programs, vertex arrays, buffers and textures: the host's are put back after
+        // (a host that caches its bindings, such as jMonkeyEngine's one vertex array of a core profile,
+        // draws nothing once they change under it)
+        g.save();
         try {
             g.setGuestState();
             t = new TerrainRenderer(gl, world, settings.tint());
@@ -84,8 +88,12 @@ public final class SceneRenderer implements AutoCloseable {
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
-            g.restore();
-            PlantRenderer.closeAll(k, p, t, g);
+            try {
+                PlantRenderer.closeAll(k, p, t);
+            } finally {
+                g.restore();
+                g.close();
+            }
             throw e;
         }
         g.restore();

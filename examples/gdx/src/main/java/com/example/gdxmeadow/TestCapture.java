@@ -1,0 +1,190 @@
+package com.example.gdxmeadow;
+
+import com.badlogic.gdx.Gdx;
+import com.badlogic.gdx.graphics.GL20;
+import com.badlogic.gdx.graphics.PerspectiveCamera;
+import com.badlogic.gdx.math.Vector3;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.Heightfield;
+
+/**
+ * The example's test mode: counts frames once the scene is loaded, reports every GL error after each
+ * phase of a frame, and after the last frame saves the back buffer (HUD included) as a PNG and prints
+ * what a test checks in it, one {@code [gdx-meadow] ...} line each: where the HUD text is, bare
+ * ground, plants, the player, the mean bend near the player and away from it, and the GL error count.
+ * Image coordinates have their origin at the top left.
+ */
+final class TestCapture {
+    private static final String TAG = "[gdx-meadow] ";
+    private final GdxMeadowLauncher.Options options;
+    private int frame;
+    private int errors;
+    private final long start = System.nanoTime();
+
+    TestCapture(GdxMeadowLauncher.Options options) {
+        this.options = options;
+    }
+
+    /** Reports the GL errors raised since the last check. */
+    void checkGl(String phase) {
+        for (int e = Gdx.gl.glGetError(); e != GL20.GL_NO_ERROR; e = Gdx.gl.glGetError()) {
+            errors++;
+            System.out.printf("%sGL error 0x%04X after %s in frame %d%n", TAG, e, phase, frame + 1);
+        }
+    }
+
+    /** Counts a finished frame (HUD drawn); after the last, captures it. {@return whether to exit} */
+    boolean frameDone(GdxMeadowGame game) {
+        if (frame == 0) {
+            System.out.println(TAG + "GL " + Gdx.gl.glGetString(GL20.GL_VERSION) + " | "
+                    + Gdx.gl.glGetString(GL20.GL_RENDERER) + " | gl30=" + (Gdx.gl30 != null) + " | LWJGL "
+                    + org.lwjgl.Version.getVersion());
+            System.out.println(TAG + "scene " + options.scene() + ": " + game.plants().simulation().plantCount()
+                    + " plants, " + game.plants().simulation().componentCount() + " components");
+        }
+        frame++;
+        if (frame < options.frames()) {
+            return false;
+        }
+        capture(game);
+        return true;
+    }
+
+    private void capture(GdxMeadowGame game) {
+        int w = Gdx.graphics.getBackBufferWidth();
+        int h = Gdx.graphics.getBackBufferHeight();
+        ByteBuffer px = ByteBuffer.allocateDirect(4 * w * h).order(ByteOrder.nativeOrder());
+        Gdx.gl.glPixelStorei(GL20.GL_PACK_ALIGNMENT, 4);
+        Gdx.gl.glReadPixels(0, 0, w, h, GL20.GL_RGBA, GL20.GL_UNSIGNED_BYTE, px);
+        checkGl("glReadPixels");
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB); // the window is opaque
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int i = 4 * ((h - 1 - y) * w + x);
+                img.setRGB(x, y, (px.get(i) & 255) << 16 | (px.get(i + 1) & 255) << 8 | (px.get(i + 2) & 255));
+            }
+        }
+        try {
+            Path out = options.screenshot().toAbsolutePath();
+            Files.createDirectories(out.getParent());
+            ImageIO.write(img, "png", out.toFile());
+            System.out.println(TAG + "screenshot " + out + " " + w + "x" + h);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        probes(game, w, h);
+        System.out.printf("%sframes %d in %.1f s%n", TAG, frame, (System.nanoTime() - start) / 1e9);
+        System.out.println(TAG + "gl errors: " + (errors == 0 ? "none" : errors));
+    }
+
+    /** Where the test should find the HUD, bare ground and plants, and how bent the plants are. */
+    private void probes(GdxMeadowGame game, int w, int h) {
+        PerspectiveCamera cam = game.camera();
+        float sx = w / (float) Gdx.graphics.getWidth();
+        float sy = h / (float) Gdx.graphics.getHeight();
+        int hx0 = Math.round(12 * sx);
+        int hy0 = Math.round(12 * sy);
+        int hx1 = Math.round((12 + game.hudLayout().width) * sx);
+        int hy1 = Math.round((12 + game.hudLayout().height) * sy);
+        System.out.printf("%sprobe hud %d %d %d %d%n", TAG, hx0, hy0, hx1, hy1);
+
+        World world = game.plants().simulation().world();
+        Heightfield t = world.terrain().heightfield();
+        Vector3 s = new Vector3();
+        float px = game.playerX();
+        float pz = game.playerZ();
+        project(cam, s.set(px, (float) t.height(px, pz) + 0.85f, pz), w, h);
+        int playerSx = Math.round(s.x);
+        int playerSy = Math.round(s.y);
+        System.out.printf("%sprobe player %d %d%n", TAG, playerSx, playerSy);
+
+        // bare ground: the visible ground point farthest from any plant (at least 1.3 m)
+        double best = 1.3;
+        int gx = -1;
+        int gy = -1;
+        for (double z = t.minZ() + 0.5; z < t.maxZ() - 0.5; z += 0.25) {
+            for (double x = t.minX() + 0.5; x < t.maxX() - 0.5; x += 0.25) {
+                double d = Math.hypot(x - cam.position.x, z - cam.position.z);
+                if (d < 3 || d > 12 || Math.hypot(x - px, z - pz) < 1.5) {
+                    continue;
+                }
+                if (!onScreen(project(cam, s.set((float) x, (float) t.height(x, z), (float) z), w, h), w, h, hy1)
+                        || Math.hypot(s.x - playerSx, s.y - playerSy) < 60) {
+                    continue;
+                }
+                double clear = nearestPlant(world, x, z);
+                if (clear > best) {
+                    best = clear;
+                    gx = Math.round(s.x);
+                    gy = Math.round(s.y);
+                }
+            }
+        }
+        if (gx >= 0) {
+            System.out.printf("%sprobe ground %d %d%n", TAG, gx, gy);
+        }
+        // plants: grass tufts 2.5 to 7 m from the eye, away from the player, a hand's breadth above their base
+        int found = 0;
+        for (int p = 0; p < world.plantCount() && found < 12; p += 7) {
+            float x = world.plantX(p);
+            float z = world.plantZ(p);
+            double d = Math.hypot(x - cam.position.x, z - cam.position.z);
+            if (d < 2.5 || d > 7 || Math.hypot(x - px, z - pz) < 1.5) {
+                continue;
+            }
+            if (onScreen(project(cam, s.set(x, world.plantY(p) + 0.12f, z), w, h), w, h, hy1)
+                    && Math.hypot(s.x - playerSx, s.y - playerSy) > 60) {
+                System.out.printf("%sprobe plant %d %d%n", TAG, Math.round(s.x), Math.round(s.y));
+                found++;
+            }
+        }
+        Frame f = game.plants().simulation().latestFrame();
+        System.out.printf("%sbend near %.4f far %.4f%n", TAG, meanBend(world, f, px, pz, 0, 1.0),
+                meanBend(world, f, px, pz, 3, 6));
+    }
+
+    /** Window coordinates of a world point, origin top left. */
+    private static Vector3 project(PerspectiveCamera cam, Vector3 p, int w, int h) {
+        cam.project(p, 0, 0, w, h);
+        p.y = h - 1 - p.y;
+        return p;
+    }
+
+    private static boolean onScreen(Vector3 s, int w, int h, int hudBottom) {
+        return s.z > 0 && s.z < 1 && s.x >= 10 && s.x < w - 10 && s.y >= hudBottom + 10 && s.y < h - 10;
+    }
+
+    private static double nearestPlant(World world, double x, double z) {
+        double best = Double.MAX_VALUE;
+        for (int p = 0; p < world.plantCount(); p++) {
+            best = Math.min(best, Math.hypot(world.plantX(p) - x, world.plantZ(p) - z));
+        }
+        return best;
+    }
+
+    /** Mean |pose coordinate| of the components of the plants in the ring [r0, r1) around (x, z). */
+    private static double meanBend(World world, Frame frame, double x, double z, double r0, double r1) {
+        double sum = 0;
+        int n = 0;
+        for (int p = 0; p < world.plantCount(); p++) {
+            double d = Math.hypot(world.plantX(p) - x, world.plantZ(p) - z);
+            if (d < r0 || d >= r1) {
+                continue;
+            }
+            for (int c = world.firstComponent(p), e = c + world.componentsOf(p); c < e; c++) {
+                sum += Math.abs(frame.poseCoord(c));
+                n++;
+            }
+        }
+        return n == 0 ? Double.NaN : sum / n;
+    }
+}

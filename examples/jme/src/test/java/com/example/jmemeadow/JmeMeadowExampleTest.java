@@ -1,0 +1,91 @@
+package com.example.jmemeadow;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.jecosys.render.ChildJvm;
+import org.jecosys.render.ExampleShot;
+import org.jecosys.render.VirtualDisplay;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The jMonkeyEngine example in its test mode, in a child JVM on a virtual display (Xvfb): 40 frames of
+ * the example's meadow at 640 x 360 on jME's core-profile renderer ({@code LWJGL_OPENGL32}, its
+ * default) and on its compatibility-profile one ({@code LWJGL_OPENGL2}), with jME's default gamma
+ * correction; the screenshot (read after the GUI viewport) shows the HUD text, the game's own ground,
+ * its player and the JEcoSys plants where the example says they are, the player has pushed the plants
+ * around it, and no phase of any frame raised a GL error.
+ */
+class JmeMeadowExampleTest {
+    private static final String TAG = "[jme-meadow]";
+    private static final Path OUT = Path.of("examples/jme/target/example-test");
+    private static VirtualDisplay display;
+
+    @BeforeAll
+    static void startDisplay() throws Exception {
+        display = VirtualDisplay.start(1024, 768);
+    }
+
+    @AfterAll
+    static void stopDisplay() {
+        if (display != null) {
+            display.close();
+        }
+    }
+
+    private static ExampleShot run(String name, String... extra) throws Exception {
+        Files.createDirectories(OUT);
+        Path png = OUT.resolve(name + ".png");
+        Files.deleteIfExists(png);
+        List<String> args = new ArrayList<>(List.of("--frames", "40", "--screenshot", png.toString(),
+                "--size", "640x360"));
+        args.addAll(List.of(extra));
+        ChildJvm.Result r = ChildJvm.run(JmeMeadowGame.class.getName(), args, Map.of("DISPLAY", display.name()), 90);
+        Files.writeString(OUT.resolve(name + ".log"), r.output());
+        assertEquals(0, r.exitCode(), "the example's exit status; it printed:\n" + r.output());
+        assertTrue(Files.isRegularFile(png), "the screenshot " + png);
+        ExampleShot shot = ExampleShot.read(png, r.output(), TAG);
+        assertEquals(640, shot.image().getWidth());
+        assertEquals(360, shot.image().getHeight());
+        return shot;
+    }
+
+    @Test
+    void theCoreProfileShowsHudGroundPlayerAndPushedPlantsWithoutGlErrors() throws Exception {
+        ExampleShot shot = run("core", "--renderer", "core");
+        assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core.png"));
+    }
+
+    @Test
+    void theCompatibilityProfileShowsTheSame() throws Exception {
+        ExampleShot shot = run("compat", "--renderer", "compat");
+        assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("compat.png"));
+    }
+
+    /**
+     * With jME's gamma correction (GL_FRAMEBUFFER_SRGB on an sRGB back buffer) the plants keep the
+     * colours they have without it: the renderer writes its display colours unconverted while it draws
+     * (without that the median plant pixel came out 50 to 70 levels lighter in each channel).
+     */
+    @Test
+    void gammaCorrectionKeepsThePlantsColours() throws Exception {
+        ExampleShot linear = run("core-no-gamma", "--renderer", "core", "--no-gamma");
+        ExampleShot gamma = run("core-gamma", "--renderer", "core");
+        int[] a = linear.median(ExampleShot::plant, linear.plants(), 4);
+        int[] b = gamma.median(ExampleShot::plant, gamma.plants(), 4);
+        assertNotNull(a);
+        assertNotNull(b);
+        for (int c = 0; c < 3; c++) {
+            assertTrue(Math.abs(a[c] - b[c]) <= 16, "channel " + c + ": median plant colour without gamma "
+                    + java.util.Arrays.toString(a) + ", with gamma " + java.util.Arrays.toString(b));
+        }
+    }
+}

@@ -1,0 +1,89 @@
+package org.jecosys.gdx;
+
+import org.jecosys.math.Camera;
+import org.jecosys.math.MatrixCamera;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+
+/**
+ * A libGDX {@link com.badlogic.gdx.graphics.Camera} seen as a JEcoSys {@link Camera}: the force field
+ * culls and picks levels of detail with it and the renderer draws with its matrices. {@link #update}
+ * copies the libGDX camera's {@code view} and {@code projection} matrices ({@code Matrix4.val},
+ * column-major, OpenGL conventions, as {@code camera.update()} left them); a
+ * {@code PerspectiveCamera} and an {@code OrthographicCamera} both work. World units are the library's:
+ * metres, Y up, the ground in the XZ plane.
+ *
+ * <p>Mutable and not thread-safe: the thread that owns it (libGDX's render thread) calls
+ * {@link #update} and hands it to the simulation and the renderer. No method allocates after
+ * construction.
+ */
+public final class GdxCamera implements Camera {
+    private final MatrixCamera camera = new MatrixCamera();
+    private final Matrix4f view = new Matrix4f();
+    private final Matrix4f projection = new Matrix4f();
+
+    /** An identity view and projection until the first {@link #update}. Allocates this object only. */
+    public GdxCamera() {
+    }
+
+    /**
+     * Copies the matrices of a libGDX camera, as they are after its {@code update()}. No allocation.
+     *
+     * @param camera the game's camera; its view must be a rotation and a translation (what libGDX's
+     *               cameras make) and its projection perspective or orthographic
+     * @return this camera
+     * @throws IllegalArgumentException when the matrices are not finite, the view is not rigid, or the
+     *                                  projection is neither perspective nor orthographic
+     */
+    public GdxCamera update(com.badlogic.gdx.graphics.Camera camera) {
+        view.set(camera.view.val);
+        projection.set(camera.projection.val);
+        this.camera.set(view, projection);
+        return this;
+    }
+
+    @Override
+    public double x() {
+        return camera.x();
+    }
+
+    @Override
+    public double y() {
+        return camera.y();
+    }
+
+    @Override
+    public double z() {
+        return camera.z();
+    }
+
+    @Override
+    public Vector3f forward(Vector3f dest) {
+        return camera.forward(dest);
+    }
+
+    @Override
+    public Matrix4f view(Matrix4f dest) {
+        return camera.view(dest);
+    }
+
+    @Override
+    public Matrix4f projection(Matrix4f dest) {
+        return camera.projection(dest);
+    }
+
+    @Override
+    public Matrix4f viewProjection(Matrix4f dest) {
+        return camera.viewProjection(dest);
+    }
+
+    @Override
+    public double viewHeightPerMetre() {
+        return camera.viewHeightPerMetre();
+    }
+
+    @Override
+    public double viewHeightAtEye() {
+        return camera.viewHeightAtEye();
+    }
+}

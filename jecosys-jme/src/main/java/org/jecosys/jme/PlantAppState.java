@@ -1,0 +1,227 @@
+package org.jecosys.jme;
+
+import com.jme3.app.Application;
+import com.jme3.app.state.BaseAppState;
+import com.jme3.asset.AssetLoadException;
+import com.jme3.post.SceneProcessor;
+import com.jme3.profile.AppProfiler;
+import com.jme3.renderer.RenderManager;
+import com.jme3.renderer.ViewPort;
+import com.jme3.renderer.queue.RenderQueue;
+import com.jme3.texture.FrameBuffer;
+import java.io.IOException;
+import org.jecosys.math.Progress;
+import org.jecosys.math.Require;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.Scene;
+import org.jecosys.scene.Scenes;
+import org.jecosys.sim.Simulation;
+
+/**
+ * JEcoSys plants in a jMonkeyEngine application: steps the {@link Simulation} in {@link #update} and
+ * draws the plants in the application's main viewport with its camera.
+ * <pre>{@code
+ * assetManager.registerLoader(SceneAssetLoader.class, "xml");
+ * PlantAppState plants = new PlantAppState(assetManager.loadAsset(new SceneKey("Scenes/meadow.xml")));
+ * stateManager.attach(plants);
+ * WindSource player = plants.simulation().attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 0, 20));
+ * // each frame: plants.simulation().moveAgent(player, x, z)
+ * }</pre>
+ * The plants are drawn by a {@link SceneProcessor} placed first in the main viewport's processors, in
+ * its {@code postFrame}: after jME's opaque, sky and transparent buckets, depth-tested against them,
+ * before the translucent bucket, the filters of a {@code FilterPostProcessor} (which then apply to the
+ * plants too) and the GUI. It works on the core profile ({@code AppSettings.LWJGL_OPENGL32}, the
+ * default, and later) and on the compatibility profile ({@code LWJGL_OPENGL2}) where the driver offers
+ * OpenGL 3.3 in it. The renderer shares jME's context and puts back every GL state it changes.
+ *
+ * <p>Threads: jME's render thread ("jME3 Main") initializes, updates, draws and cleans up the state,
+ * as jME does for every app state. The game may queue commands on the {@link #simulation()} from any
+ * thread (agents, flows). The simulation steps with the camera as it is when the state updates
+ * (after input, and after the app states attached before this one); nothing allocates per frame. With
+ * the state disabled the plants neither move nor show. {@link #cleanup} (detaching the state, or the
+ * application stopping) deletes the GL objects and closes the simulation.
+ */
+public class PlantAppState extends BaseAppState {
+    private final Simulation simulation;
+    private final RenderSettings settings;
+    private final JmeCamera stepCamera = new JmeCamera();
+    private final JmeCamera drawCamera = new JmeCamera();
+    private final Hook hook = new Hook();
+    private GlContext gl;
+    private SceneRenderer renderer;
+    private ViewPort viewPort;
+
+    /**
+     * The plants of a scene: builds its simulation now, on the calling thread (the render thread in
+     * {@code simpleInitApp}, or a loading thread), with the scene's worker count and its
+     * {@code <render>} look. The state owns the simulation and closes it in {@link #cleanup}; close
+     * {@link #simulation()} yourself if the state is never attached. Allocates.
+     *
+     * @param scene a scene from {@link SceneAssetLoader} (or {@code SceneFiles.read})
+     * @throws AssetLoadException when an image of the scene cannot be decoded
+     */
+    public PlantAppState(Scene scene) {
+        this(scene, 0);
+    }
+
+    /**
+     * As {@link #PlantAppState(Scene)} with a given number of animation workers.
+     *
+     * @param scene   the scene
+     * @param workers animation worker threads, in [0, 256]; 0 keeps the scene's setting
+     * @throws AssetLoadException when an image of the scene cannot be decoded
+     */
+    public PlantAppState(Scene scene, int workers) {
+        this(build(Require.nonNull("scene", scene), Require.range("workers", workers, 0, 256)),
+                RenderSettings.of(scene.def()));
+    }
+
+    /**
+     * The plants of a simulation the game built itself ({@code Scenes.simulation}, on any thread); the
+     * state owns it from now on and closes it in {@link #cleanup}. Any thread; allocates.
+     *
+     * @param simulation the plants
+     * @param settings   the look ({@code RenderSettings.of(scene.def())} for the scene's own light)
+     */
+    public PlantAppState(Simulation simulation, RenderSettings settings) {
+        this.simulation = Require.nonNull("simulation", simulation);
+        this.settings = Require.nonNull("settings", settings);
+    }
+
+    private static Simulation build(Scene scene, int workers) {
+        try {
+            return Scenes.simulation(scene, workers, Progress.NONE);
+        } catch (IOException e) {
+            throw new AssetLoadException(scene.name() + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Makes the renderer's GL objects and puts the drawing processor first in the main viewport.
+     * Render thread; allocates.
+     *
+     * @throws IllegalStateException when no OpenGL 3.3 context is current (the simulation is closed)
+     */
+    @Override
+    protected void initialize(Application app) {
+        try {
+            gl = GlContext.current(false);
+            renderer = new SceneRenderer(gl, simulation.world(), settings);
+        } catch (RuntimeException e) {
+            if (gl != null) {
+                gl.close();
+                gl = null;
+            }
+            simulation.close();
+            throw e;
+        }
+        viewPort = app.getViewPort();
+        viewPort.getProcessors().add(0, hook); // before any FilterPostProcessor: the plants get the scene's depth and filters
+    }
+
+    /**
+     * Removes the processor, deletes the renderer's GL objects and closes the simulation (stops its
+     * workers). Render thread; jME calls it once.
+     */
+    @Override
+    protected void cleanup(Application app) {
+        try {
+            if (viewPort != null) {
+                viewPort.removeProcessor(hook);
+            }
+            if (renderer != null) {
+                renderer.close();
+            }
+            if (gl != null) {
+                gl.close();
+            }
+        } finally {
+            simulation.close();
+        }
+    }
+
+    /** Nothing: an enabled state steps in {@link #update} and draws in its processor. */
+    @Override
+    protected void onEnable() {
+    }
+
+    /** Nothing: a disabled state neither steps nor draws. */
+    @Override
+    protected void onDisable() {
+    }
+
+    /**
+     * Steps the simulation by the frame's time, culled and levelled for the main viewport's camera.
+     * Render thread; no allocation in the steady state.
+     *
+     * @param tpf seconds since the last frame (jME's time per frame), finite and &ge; 0
+     */
+    @Override
+    public void update(float tpf) {
+        simulation.step(tpf, stepCamera.update(viewPort.getCamera()));
+    }
+
+    /** {@return the simulation: agents, flows, wind, level of detail; commands from any thread} */
+    public Simulation simulation() {
+        return simulation;
+    }
+
+    /** {@return the look the renderer reads every frame; change it on the render thread} */
+    public RenderSettings settings() {
+        return settings;
+    }
+
+    /** {@return the renderer (statistics, resolve path); null before {@link #initialize}; render thread} */
+    public SceneRenderer renderer() {
+        return renderer;
+    }
+
+    /** Draws the plants in the viewport's postFrame; holds no resources of its own. */
+    private final class Hook implements SceneProcessor {
+        private boolean initialized;
+
+        @Override
+        public void initialize(RenderManager rm, ViewPort vp) {
+            initialized = true;
+        }
+
+        @Override
+        public void reshape(ViewPort vp, int w, int h) {
+            // the renderer reads the bound viewport every frame
+        }
+
+        @Override
+        public boolean isInitialized() {
+            return initialized;
+        }
+
+        @Override
+        public void preFrame(float tpf) {
+            // nothing before the scene is drawn
+        }
+
+        @Override
+        public void postQueue(RenderQueue rq) {
+            // nothing between queueing and drawing
+        }
+
+        @Override
+        public void postFrame(FrameBuffer out) {
+            if (isEnabled() && renderer != null) {
+                renderer.render(simulation.latestFrame(), drawCamera.update(viewPort.getCamera()));
+            }
+        }
+
+        @Override
+        public void cleanup() {
+            initialized = false;
+        }
+
+        @Override
+        public void setProfiler(AppProfiler profiler) {
+            // not profiled
+        }
+    }
+}
