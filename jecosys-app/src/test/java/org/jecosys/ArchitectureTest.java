@@ -179,6 +179,52 @@ class ArchitectureTest {
         assertEquals(List.of(), bad);
     }
 
+    /**
+     * Inside the render module: its sub-packages are internal and depend on the API package only for
+     * its context and settings types, never on the renderer that composes them; {@code render.gl}
+     * depends on no other part of the module; no two sub-packages depend on each other both ways.
+     */
+    @Test
+    void renderSubPackagesPointIntoGlAndNeverBackToTheRenderer() throws IOException {
+        Set<String> rootTypes = Set.of("GlContext", "RenderSettings", "TerrainTint", "LwjglVersion");
+        Path base = Path.of("jecosys-render/src/main/java/org/jecosys/render");
+        List<String> bad = new ArrayList<>();
+        java.util.Map<String, Set<String>> edges = new java.util.TreeMap<>();
+        try (Stream<Path> files = Files.walk(base)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".java")).toList()) {
+                Path rel = base.relativize(f);
+                String sub = rel.getNameCount() > 1 ? rel.getName(0).toString() : "";
+                for (String name : qualifiedNames(Files.readString(f, StandardCharsets.UTF_8))) {
+                    if (!name.startsWith("org.jecosys.render.")) {
+                        continue;
+                    }
+                    String[] parts = name.substring("org.jecosys.render.".length()).split("\\.");
+                    boolean intoRoot = Character.isUpperCase(parts[0].charAt(0));
+                    String target = intoRoot ? "" : parts[0];
+                    if (sub.isEmpty() || target.equals(sub)) {
+                        continue;
+                    }
+                    edges.computeIfAbsent(sub, k -> new java.util.TreeSet<>()).add(target.isEmpty() ? "render" : target);
+                    if (intoRoot && !rootTypes.contains(parts[0])) {
+                        bad.add(rel + " uses " + name + " (sub-packages use only " + rootTypes + " of render)");
+                    }
+                    if (sub.equals("gl") && !(intoRoot && rootTypes.contains(parts[0]))) {
+                        bad.add(rel + " uses " + name + " (render.gl uses no other sub-package)");
+                    }
+                }
+            }
+        }
+        for (var e : edges.entrySet()) {
+            for (String t : e.getValue()) {
+                if (edges.getOrDefault(t, Set.of()).contains(e.getKey())) {
+                    bad.add("render." + e.getKey() + " and render." + t + " depend on each other");
+                }
+            }
+        }
+        assertTrue(edges.containsKey("plant") && edges.get("plant").contains("gl"), "the scan sees the module: " + edges);
+        assertEquals(List.of(), bad);
+    }
+
     @Test
     void dependenciesPointDownward() throws IOException {
         List<String> bad = new ArrayList<>();
@@ -203,12 +249,12 @@ class ArchitectureTest {
                 + "import static org.jecosys.math.Rng.next;\n"
                 + "/** {@link org.jecosys.render.SceneRenderer} */\n"
                 + "class A { // org.jecosys.app.Main\n"
-                + "  Object o = new org.jecosys.render.GlBuffer(\"org.jecosys.bench.X\", 'c');\n"
+                + "  Object o = new org.jecosys.render.gl.GlBuffer(\"org.jecosys.bench.X\", 'c');\n"
                 + "  String t = \"\\\"org.jecosys.app.Y\";\n"
                 + "  double d = org.jecosys.field.DragLaw.AIR_DENSITY;\n"
                 + "  String s = my.org.jecosys.app.Z;\n"
                 + "}\n";
-        assertEquals(List.of("org.lwjgl.opengl.GL11", "org.jecosys.math.Rng.next", "org.jecosys.render.GlBuffer",
+        assertEquals(List.of("org.lwjgl.opengl.GL11", "org.jecosys.math.Rng.next", "org.jecosys.render.gl.GlBuffer",
                 "org.jecosys.field.DragLaw.AIR_DENSITY"), qualifiedNames(src));
     }
 }

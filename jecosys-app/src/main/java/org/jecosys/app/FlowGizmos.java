@@ -1,8 +1,8 @@
 package org.jecosys.app;
 
 import java.util.function.Predicate;
-import org.jecosys.render.GizmoKind;
-import org.jecosys.render.Gizmos;
+import org.jecosys.render.overlay.GizmoKind;
+import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.FlowKind;
@@ -10,7 +10,7 @@ import org.jecosys.wind.WindField;
 import org.jecosys.wind.WindSource;
 
 /**
- * Turns the running flows and agents into {@link Gizmos} for {@link org.jecosys.render.GizmoRenderer}
+ * Turns the running flows and agents into {@link Gizmos} for {@link org.jecosys.render.overlay.GizmoRenderer}
  * (one per flow of the {@link WindField}, blasts and a program's own flows included), and remembers
  * which flow each gizmo stands for, for picking. A gizmo sits at its flow's current centre (so a
  * flow walking a path or advected by the others is seen where it is); its colour shows the flow's

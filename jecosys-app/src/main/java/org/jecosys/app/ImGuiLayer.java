@@ -12,7 +12,7 @@ import org.jecosys.render.GlContext;
  * ({@code installGlfw}), input and display size come from GLFW; headless (tests), the caller gives
  * the display size and no input. Panels are built between {@link #begin} and {@link #end} with the
  * plain {@code ImGui.*} calls. The GL3 backend's own GL objects (font texture, program, buffers) are
- * released by {@link #close()} (idempotent); {@link org.jecosys.render.GlTracker} does not see them (the tests count them
+ * released by {@link #close()} (idempotent); {@link org.jecosys.render.gl.GlTracker} does not see them (the tests count them
  * by asking the driver about every name, and check that closing releases them all).
  */
 public final class ImGuiLayer implements AutoCloseable {

@@ -4,9 +4,9 @@ import imgui.ImDrawList;
 import imgui.ImGui;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiWindowFlags;
-import org.jecosys.render.FieldOverlay;
-import org.jecosys.render.GizmoRenderer;
-import org.jecosys.render.Gizmos;
+import org.jecosys.render.overlay.FieldOverlay;
+import org.jecosys.render.overlay.GizmoRenderer;
+import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.terrain.Heightfield;
 
 /**

@@ -1,11 +1,12 @@
 package org.jecosys.app;
 
 import org.jecosys.math.Camera;
-import org.jecosys.render.GizmoRenderer;
-import org.jecosys.render.Gizmos;
+import org.jecosys.render.overlay.GizmoRenderer;
+import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.terrain.Heightfield;
 import org.joml.Matrix4f;
 import org.joml.Vector4f;
+import org.jecosys.render.gl.Pixels;
 
 /**
  * What is under the mouse pointer: the terrain point ({@link #ground}) and the gizmo whose handle

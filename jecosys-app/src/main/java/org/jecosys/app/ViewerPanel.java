@@ -8,7 +8,7 @@ import imgui.type.ImInt;
 import java.math.BigDecimal;
 import java.util.Locale;
 import org.jecosys.anim.AnimationMode;
-import org.jecosys.render.Gizmos;
+import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.TerrainTint;

@@ -8,7 +8,7 @@ import java.util.Map;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.math.Progress;
 import org.jecosys.render.GlContext;
-import org.jecosys.render.GlFramebuffer;
+import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneDef;

@@ -8,8 +8,8 @@ import java.nio.ByteBuffer;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.GlCensus;
-import org.jecosys.render.GlFramebuffer;
-import org.jecosys.render.Pixels;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderScenes;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
@@ -17,6 +17,7 @@ import org.jecosys.render.TestFrames;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlTracker;
 
 /** The viewer's ImGui layer over a headless render of C1: it draws, and closing it frees its GL objects. */
 class ImGuiLayerTest {

@@ -9,7 +9,7 @@ import com.badlogic.gdx.graphics.PerspectiveCamera;
 import com.badlogic.gdx.utils.GdxNativesLoader;
 import java.lang.management.ManagementFactory;
 import org.jecosys.render.GlContext;
-import org.jecosys.render.GlFramebuffer;
+import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.terrain.Heightfield;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;

@@ -25,6 +25,9 @@ import static org.lwjgl.opengl.GL11C.glGetString;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.opengl.GLCapabilities;
+import org.jecosys.render.gl.GlDebug;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.GlTracker;
 
 /**
  * The OpenGL 3.3+ core context the renderers draw with, current on the thread that made or wrapped

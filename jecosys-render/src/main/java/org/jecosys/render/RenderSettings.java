@@ -431,8 +431,13 @@ public final class RenderSettings {
      * {@link #patchLevel} at a point given in patch units (metres / patch size): two octaves of value
      * noise made into patches with a smooth step; {@code patches.glsl} computes the same function.
      * Any thread; no allocation.
+     *
+     * @param px   X in patch units
+     * @param pz   Z in patch units
+     * @param seed the patches' seed
+     * @return the level before strength, in [0, 1]
      */
-    static float patchNoise(float px, float pz, int seed) {
+    public static float patchNoise(float px, float pz, int seed) {
         float n = 0.65f * valueNoise(px, pz, seed) + 0.35f * valueNoise(2.7f * px, 2.7f * pz, seed + 1013);
         float t = Math.max(0, Math.min(1, (n - 0.35f) / 0.3f));
         return t * t * (3 - 2 * t);

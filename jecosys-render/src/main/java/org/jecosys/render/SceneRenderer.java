@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
 import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
@@ -22,6 +23,13 @@ import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.ground.SkyRenderer;
+import org.jecosys.render.ground.TerrainRenderer;
+import org.jecosys.render.overlay.FieldOverlay;
+import org.jecosys.render.plant.PlantRenderer;
+import org.jecosys.render.plant.ResolvePath;
 
 /**
  * Renders a whole frame of a {@link World}: sky (gradient and sun), plants, lit terrain and the
@@ -89,7 +97,7 @@ public final class SceneRenderer implements AutoCloseable {
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
             try {
-                PlantRenderer.closeAll(k, p, t);
+                Closing.closeAll(k, p, t);
             } finally {
                 g.restore();
                 g.close();
@@ -263,7 +271,7 @@ public final class SceneRenderer implements AutoCloseable {
             closed = true;
             state.save();
             try {
-                PlantRenderer.closeAll(overlay, sky, plants, terrain);
+                Closing.closeAll(overlay, sky, plants, terrain);
             } finally {
                 state.restore();
                 state.close();

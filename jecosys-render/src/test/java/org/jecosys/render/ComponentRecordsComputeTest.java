@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.FloatBuffer;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.plant.PlantRenderer;
+import org.jecosys.render.plant.ResolvePath;
 
 /**
  * {@link ComponentRecordsTest} on the OpenGL 4.3 path (skipped on an older context): the records

@@ -20,6 +20,11 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.plant.ComponentLooks;
+import org.jecosys.render.plant.PlantBatches;
+import org.jecosys.render.plant.PlantRenderer;
+import org.jecosys.render.plant.ResolvePath;
 
 /**
  * The per-frame component pass, which runs on the GPU ({@code plant_resolve.glsl}) on one of the two

@@ -29,6 +29,11 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
+import org.jecosys.render.overlay.GizmoKind;
+import org.jecosys.render.overlay.GizmoRenderer;
+import org.jecosys.render.overlay.Gizmos;
 
 /**
  * The gizmos over a headless render of C1: every kind's handle is drawn in its colour where its

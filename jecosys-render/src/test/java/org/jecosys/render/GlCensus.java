@@ -8,6 +8,7 @@ import org.lwjgl.opengl.GL15C;
 import org.lwjgl.opengl.GL20C;
 import org.lwjgl.opengl.GL30C;
 import org.lwjgl.opengl.GL33C;
+import org.jecosys.render.gl.GlTracker;
 
 /**
  * Every GL object of the current context, whoever made it, found by asking the driver about each

@@ -10,6 +10,8 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
 
 /**
  * Multisampled framebuffers (scene C1, headless): every object they make is tracked and released; a

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import org.jecosys.render.gl.GlProgram;
 
 /** How shader sources are put together before the driver sees them: includes and variants' defines (no GL). */
 class GlProgramSourceTest {

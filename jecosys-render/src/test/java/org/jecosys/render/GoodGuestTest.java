@@ -17,6 +17,8 @@ import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.opengl.GL11C;
 import org.lwjgl.opengl.GL30C;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
 
 /**
  * The renderer is a good guest in a host's GL (a game, libGDX, jMonkeyEngine): a census of

@@ -22,6 +22,9 @@ import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 import java.util.Map;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.GlTracker;
 
 /**
  * Making and closing a renderer in a host's context leaves the host's state as it was, like a frame

@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -61,6 +62,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.system.MemoryStack;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlTracker;
+import org.jecosys.render.gl.Pixels;
+import org.jecosys.render.plant.PlantRenderer;
 
 /**
  * The renderer inside a host's GL, as a game uses it: a wrapped context ({@link GlContext#current}),
@@ -410,13 +416,13 @@ class HostCompositionTest {
         };
         AutoCloseable ok2 = () -> closed.add("d");
         IllegalStateException e = assertThrows(IllegalStateException.class,
-                () -> PlantRenderer.closeAll(ok1, bad1, null, bad2, ok2));
+                () -> Closing.closeAll(ok1, bad1, null, bad2, ok2));
         assertEquals(List.of("a", "b", "c", "d"), closed);
         assertEquals("b failed", e.getMessage());
         assertEquals(1, e.getSuppressed().length);
         assertNotEquals(null, e.getSuppressed()[0].getCause());
         closed.clear();
-        assertThrows(IllegalStateException.class, () -> PlantRenderer.closeReverse(List.of(ok1, bad1, ok2)));
+        assertThrows(IllegalStateException.class, () -> Closing.closeReverse(List.of(ok1, bad1, ok2)));
         assertEquals(List.of("d", "b", "a"), closed);
     }
 }

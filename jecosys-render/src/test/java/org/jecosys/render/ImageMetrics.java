@@ -2,6 +2,7 @@ package org.jecosys.render;
 
 import java.nio.ByteBuffer;
 import java.util.Arrays;
+import org.jecosys.render.gl.Pixels;
 
 /**
  * Image measurements for the look tests of issue 13 (vegetation coverage, isolated pixels, per-plant

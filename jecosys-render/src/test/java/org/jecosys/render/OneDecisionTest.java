@@ -11,6 +11,7 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
+import org.jecosys.render.plant.PlantBatches;
 
 /**
  * One visibility and level decision per frame: the simulation's workers make it as they animate, and

@@ -12,6 +12,7 @@ import org.jecosys.sim.World;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
+import org.jecosys.render.plant.PlantBatches;
 
 /**
  * The lists the renderer builds from a frame's decision ({@link DrawDecision}: culling, level of

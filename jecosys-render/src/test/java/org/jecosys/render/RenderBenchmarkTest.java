@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
@@ -46,6 +47,14 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlBuffer;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlTracker;
+import org.jecosys.render.gl.GlVertexArray;
+import org.jecosys.render.ground.TerrainRenderer;
+import org.jecosys.render.plant.PlantBatches;
+import org.jecosys.render.plant.PlantRenderer;
 
 /**
  * Rendering benchmark on this machine's GL (llvmpipe here): C1-C3 and meadow at 1280x720 from each
@@ -538,7 +547,7 @@ class RenderBenchmarkTest {
 
         @Override
         public void close() {
-            PlantRenderer.closeReverse(owned);
+            Closing.closeReverse(owned);
             owned.clear();
             if (!freed) {
                 freed = true;

@@ -27,6 +27,10 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
+import org.jecosys.render.overlay.FieldOverlay;
+import org.jecosys.render.plant.PlantBatches;
 
 /**
  * Headless rendering of scene C1 (paper Table 4) through GLFW's null platform and EGL (Mesa llvmpipe

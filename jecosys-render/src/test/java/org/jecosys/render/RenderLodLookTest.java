@@ -10,6 +10,9 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
+import org.jecosys.render.plant.PlantBatches;
 
 /**
  * The far (line) level looks like the triangle level it replaces: the pre-issue-13 meadow (a frozen

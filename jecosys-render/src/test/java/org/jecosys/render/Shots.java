@@ -9,6 +9,8 @@ import org.jecosys.sim.World;
 import org.joml.Matrix4f;
 import org.joml.Vector4f;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.render.gl.Pixels;
 
 /**
  * Headless pictures of one world for the look tests: a GL context, a framebuffer and a scene

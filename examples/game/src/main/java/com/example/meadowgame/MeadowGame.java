@@ -44,7 +44,7 @@ import java.nio.file.Path;
 import org.jecosys.math.MatrixCamera;
 import org.jecosys.math.Progress;
 import org.jecosys.render.GlContext;
-import org.jecosys.render.Pixels;
+import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneLoadException;

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.jecosys.render.Pixels;
+import org.jecosys.render.gl.Pixels;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;

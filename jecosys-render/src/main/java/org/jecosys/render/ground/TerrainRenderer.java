@@ -1,0 +1,323 @@
+package org.jecosys.render.ground;
+
+import org.jecosys.render.gl.Closing;
+import static org.lwjgl.opengl.GL11C.GL_FLOAT;
+import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
+import static org.lwjgl.opengl.GL11C.GL_UNSIGNED_INT;
+import static org.lwjgl.opengl.GL11C.glDrawElements;
+import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
+import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
+import static org.lwjgl.opengl.GL20C.glUseProgram;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
+import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
+import static org.lwjgl.opengl.GL30C.glBindVertexArray;
+
+import java.nio.ByteBuffer;
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import org.jecosys.math.Rgb;
+import org.jecosys.math.Camera;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.Heightfield;
+import org.jecosys.terrain.ResourceMap;
+import org.jecosys.terrain.Terrain;
+import org.jecosys.terrain.TerrainMaps;
+import org.joml.Matrix4f;
+import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.TerrainTint;
+import org.jecosys.render.gl.GlBuffer;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.GlTexture2D;
+import org.jecosys.render.gl.GlTracker;
+import org.jecosys.render.gl.GlVertexArray;
+
+/**
+ * The lit terrain: the heightfield as one indexed triangle mesh (vertex position, normal, colour),
+ * optionally tinted by the water or nutrient map (paper §4.3), lit by the sun and the sky's ambient
+ * light, coloured by the healthy/dry patches, darkened under the plants by a contact-occlusion map
+ * (an R8 texture of about 10 cm texels built once from the plants' bases) and hazed toward the
+ * horizon with distance as the plants are. Render thread only; {@link #draw} allocates nothing;
+ * {@link #setTint} re-uploads the colours (not per frame).
+ */
+public final class TerrainRenderer implements AutoCloseable {
+    private static final int FLOATS = 9;
+    private static final float SOIL_R = 0.34f;
+    private static final float SOIL_G = 0.27f;
+    private static final float SOIL_B = 0.17f;
+    private static final float MOSS_R = 0.21f;
+    private static final float MOSS_G = 0.24f;
+    private static final float MOSS_B = 0.12f;
+
+    private final Terrain terrain;
+    private final int res;
+    private final float[] heights;
+    private final float[] normals;
+    private final GlProgram program;
+    private final GlVertexArray vao;
+    private final GlBuffer vertices;
+    private final GlBuffer indices;
+    private final int indexCount;
+    private final FloatBuffer matrix;
+    private final Matrix4f viewProj = new Matrix4f();
+    private final int uViewProj;
+    private final int uEye;
+    private final int uLightDir;
+    private final int uFogColour;
+    private final int uFogStart;
+    private final int uFogEnd;
+    private final int uSun;
+    private final int uAmbient;
+    private final int uPatch;
+    private final int uPatchSeed;
+    private final int uContactShadow;
+    private final GlTexture2D occlusion;
+    private final ContactOcclusion occlusionMap;
+    private TerrainTint tint;
+    private boolean closed;
+
+    /**
+     * Builds and uploads the mesh. Render thread; allocates.
+     *
+     * @param gl      the render context, current on this thread
+     * @param terrain the heightfield and the resource maps the tints read
+     * @param tint    the initial tint
+     */
+    public TerrainRenderer(GlContext gl, Terrain terrain, TerrainTint tint) {
+        this(gl, terrain, null, tint);
+    }
+
+    /**
+     * Builds and uploads the mesh and the contact-occlusion map of the world's plants. Render thread;
+     * allocates.
+     *
+     * @param gl    the render context, current on this thread
+     * @param world the terrain, and the plants whose bases darken it
+     * @param tint  the initial tint
+     */
+    public TerrainRenderer(GlContext gl, World world, TerrainTint tint) {
+        this(gl, world.terrain(), world, tint);
+    }
+
+    private TerrainRenderer(GlContext gl, Terrain terrain, World world, TerrainTint tint) {
+        gl.checkThread();
+        this.terrain = terrain;
+        Heightfield h = terrain.heightfield();
+        res = h.resolution();
+        heights = h.copyHeights(new float[res * res]);
+        normals = h.copyNormals(new float[3 * res * res]);
+        GlTracker t = gl.tracker();
+        GlProgram prog = null;
+        GlVertexArray va = null;
+        GlBuffer vb = null;
+        GlBuffer ib = null;
+        GlTexture2D occ = null;
+        occlusionMap = world == null ? null : ContactOcclusion.of(world);
+        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
+        IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
+        ByteBuffer texels = MemoryUtil.memAlloc(occlusionMap == null ? 4 : occlusionMap.width * occlusionMap.height);
+        try {
+            if (occlusionMap == null) {
+                occ = new GlTexture2D(t, 2, 2, texels.put(new byte[4]).flip());
+            } else {
+                occ = new GlTexture2D(t, occlusionMap.width, occlusionMap.height, occlusionMap.bytes(texels));
+            }
+            prog = new GlProgram(t, "terrain.vert", "terrain.frag");
+            va = new GlVertexArray(t);
+            va.bind();
+            fill(v, tint);
+            for (int j = 0; j < res - 1; j++) {
+                for (int i = 0; i < res - 1; i++) {
+                    int a = j * res + i;
+                    idx.put(a).put(a + res).put(a + 1).put(a + 1).put(a + res).put(a + res + 1);
+                }
+            }
+            idx.flip();
+            vb = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
+            ib = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
+        } catch (RuntimeException e) {
+            glBindVertexArray(0);
+            Closing.closeAll(vb, va, prog, occ);
+            throw e;
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) v);
+            MemoryUtil.memFree((java.nio.Buffer) idx);
+            MemoryUtil.memFree((java.nio.Buffer) texels);
+        }
+        occlusion = occ;
+        program = prog;
+        vao = va;
+        vertices = vb;
+        indices = ib;
+        indexCount = 6 * (res - 1) * (res - 1);
+        for (int a = 0; a < 3; a++) {
+            glEnableVertexAttribArray(a);
+            glVertexAttribPointer(a, 3, GL_FLOAT, false, FLOATS * 4, a * 12L);
+        }
+        glBindVertexArray(0);
+        this.tint = tint;
+        matrix = MemoryUtil.memAllocFloat(16);
+        uViewProj = program.uniform("uViewProj");
+        uEye = program.uniform("uEye");
+        uLightDir = program.uniform("uLightDir");
+        uFogColour = program.uniform("uFogColour");
+        uFogStart = program.uniform("uFogStart");
+        uFogEnd = program.uniform("uFogEnd");
+        uSun = program.uniform("uSun");
+        uAmbient = program.uniform("uAmbient");
+        uPatch = program.uniform("uPatch");
+        uPatchSeed = program.uniform("uPatchSeed");
+        uContactShadow = program.uniform("uContactShadow");
+        int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+        program.use();
+        glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        if (occlusionMap == null) {
+            glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
+            glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
+        } else {
+            ContactOcclusion m = occlusionMap;
+            glUniform4f(program.uniform("uOcclusionMap"), (float) m.minX, (float) m.minZ,
+                    (float) (1 / (m.texelX * m.width)), (float) (1 / (m.texelZ * m.height)));
+            glUniform2f(program.uniform("uOcclusionHalf"), 0.5f / m.width, 0.5f / m.height);
+        }
+        glUseProgram(previous);
+    }
+
+    /**
+     * The contact occlusion the terrain shader reads at a ground point (0 open ground, toward 1 under
+     * dense plants), for tests and tools. Any thread; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the occlusion in [0, 1]; 0 everywhere when built without plants
+     */
+    public double occlusion(double x, double z) {
+        return occlusionMap == null ? 0 : occlusionMap.sample(x, z);
+    }
+
+    private void fill(FloatBuffer v, TerrainTint tint) {
+        Heightfield h = terrain.heightfield();
+        ResourceMap water = terrain.water();
+        ResourceMap nutrients = terrain.nutrients();
+        float[] rgb = new float[3];
+        for (int j = 0; j < res; j++) {
+            for (int i = 0; i < res; i++) {
+                int k = j * res + i;
+                double x = h.minX() + i * h.cellX();
+                double z = h.minZ() + j * h.cellZ();
+                v.put((float) x).put(heights[k]).put((float) z);
+                v.put(normals[3 * k]).put(normals[3 * k + 1]).put(normals[3 * k + 2]);
+                colour(tint, water, nutrients, x, z, rgb);
+                v.put(rgb[0]).put(rgb[1]).put(rgb[2]);
+            }
+        }
+        v.flip();
+    }
+
+    /** The terrain colour at (x, z) for a tint, linear RGB in [0, 1], into {@code dest}. Pure. */
+    public static void colour(TerrainTint tint, ResourceMap water, ResourceMap nutrients, double x, double z, float[] dest) {
+        switch (tint) {
+            case WATER -> lerp(TerrainMaps.WATER_LOW, TerrainMaps.WATER_HIGH, water.sample(x, z), dest);
+            case NUTRIENTS -> lerp(TerrainMaps.NUTRIENTS_LOW, TerrainMaps.NUTRIENTS_HIGH, nutrients.sample(x, z), dest);
+            default -> {
+                // earthy: dry ground a warm brown, wetter ground a darker mossy green-brown
+                float w = (float) Math.max(0, Math.min(1, water.sample(x, z)));
+                dest[0] = SOIL_R + (MOSS_R - SOIL_R) * w;
+                dest[1] = SOIL_G + (MOSS_G - SOIL_G) * w;
+                dest[2] = SOIL_B + (MOSS_B - SOIL_B) * w;
+            }
+        }
+    }
+
+    private static void lerp(int lo, int hi, double level, float[] dest) {
+        float w = (float) Math.max(0, Math.min(1, level));
+        for (int c = 0; c < 3; c++) {
+            int shift = 16 - 8 * c;
+            float a = ((lo >> shift) & 255) / 255f;
+            float b = ((hi >> shift) & 255) / 255f;
+            dest[c] = a + (b - a) * w;
+        }
+    }
+
+    /** {@return the current tint} */
+    public TerrainTint tint() {
+        return tint;
+    }
+
+    /**
+     * Re-colours the mesh for another tint. Render thread; allocates a temporary native buffer; not
+     * per frame.
+     *
+     * @param tint the new tint; nothing happens when it is the current one
+     */
+    public void setTint(TerrainTint tint) {
+        if (tint == this.tint) {
+            return;
+        }
+        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
+        try {
+            fill(v, tint);
+            vertices.upload(0, v);
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) v);
+        }
+        this.tint = tint;
+    }
+
+    /** {@return the number of triangles of the terrain mesh} */
+    public int triangles() {
+        return indexCount / 3;
+    }
+
+    /**
+     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
+     * colour, ambient light, contact shadow, patches and haze from the settings. Binds the occlusion
+     * map to unit {@link GlStateGuard#UNIT_2D} (the scene renderer's state guard puts it back). Render
+     * thread; no allocation.
+     *
+     * @param camera   the viewer
+     * @param settings the light, haze and patch settings
+     */
+    public void draw(Camera camera, RenderSettings settings) {
+        program.use();
+        glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
+        glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
+        glUniform3f(uLightDir, settings.sunX(), settings.sunY(), settings.sunZ());
+        Rgb sun = settings.sunColour();
+        float k = settings.sunIntensity();
+        glUniform3f(uSun, sun.r() * k, sun.g() * k, sun.b() * k);
+        Rgb amb = settings.ambient();
+        glUniform3f(uAmbient, amb.r(), amb.g(), amb.b());
+        Rgb fog = settings.sky();
+        glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
+        glUniform1f(uFogStart, settings.fogStart());
+        glUniform1f(uFogEnd, settings.fogEnd());
+        glUniform3f(uPatch, 1 / settings.patchScale(), settings.patchStrength(),
+                settings.patchStrength() > 0 ? 1 : 0);
+        glUniform1i(uPatchSeed, settings.patchSeed());
+        glUniform1f(uContactShadow, settings.contactShadow());
+        occlusion.bind(GlStateGuard.UNIT_2D);
+        vao.bind();
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
+        glBindVertexArray(0);
+    }
+
+    /** Deletes the GL objects. Render thread; idempotent. */
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            Closing.closeAll(vao, vertices, indices, program, occlusion);
+            MemoryUtil.memFree((java.nio.Buffer) matrix);
+        }
+    }
+}

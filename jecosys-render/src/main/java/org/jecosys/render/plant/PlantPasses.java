@@ -1,0 +1,156 @@
+package org.jecosys.render.plant;
+
+import static org.lwjgl.opengl.GL11C.GL_LINES;
+import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
+import static org.lwjgl.opengl.GL11C.GL_UNSIGNED_INT;
+import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL30C.glBindVertexArray;
+import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
+
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.math.Rgb;
+import org.jecosys.sim.Frame;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlTracker;
+import org.jecosys.render.gl.GlVertexArray;
+
+/**
+ * The instanced draws of {@link PlantRenderer}: eight variants of the two draw programs, triangle
+ * levels ({@code plant.vert}) and line levels ({@code plant_line.vert}), each with or without the
+ * dither test of a transition band ({@code DITHER}) and the placement of flower parts
+ * ({@code FLOWERS}), and the draws that use them. A list's plants drawn whole go through a program
+ * without the dither test (on llvmpipe a shader that may discard turns the early depth test off),
+ * the plants in a band through one with it ({@link PlantBatches#whole}); species without flower parts
+ * take the programs without the flower placement.
+ *
+ * <p>Render thread. {@link #compile} and the constructor allocate; {@link #frame} and {@link #draw}
+ * do not. The programs belong to whoever compiled them.
+ */
+public final class PlantPasses {
+    private static final int DITHER = 1;
+    private static final int LINES = 2;
+    private static final int FLOWERS = 4;
+    /** Number of programs: every combination of {@code DITHER}, lines and {@code FLOWERS}. */
+    public static final int COUNT = 8;
+
+    private final PlantUniforms[] passes = new PlantUniforms[COUNT];
+    private final boolean[] flowers;
+    private int draws;
+    private long instances;
+
+    /**
+     * Compiles program {@code k} of {@link #COUNT} (bit 0: the dither test, bit 1: line levels, bit 2:
+     * flower parts). Render thread; allocates.
+     */
+    public static GlProgram compile(GlTracker t, int k) {
+        List<String> d = new ArrayList<>(2);
+        if ((k & DITHER) != 0) {
+            d.add("DITHER");
+        }
+        if ((k & FLOWERS) != 0) {
+            d.add("FLOWERS");
+        }
+        String[] defines = d.toArray(new String[0]);
+        return (k & LINES) != 0
+                ? GlProgram.variant(t, "plant_line.vert", "plant_line.frag", defines)
+                : GlProgram.variant(t, "plant.vert", "plant.frag", defines);
+    }
+
+    /**
+     * Looks up the programs' uniforms (and leaves the last one in use).
+     *
+     * @param programs the {@link #COUNT} programs, program {@code k} from {@link #compile}{@code (t, k)}
+     * @param flowers  per species: whether it has flower parts
+     */
+    public PlantPasses(GlProgram[] programs, boolean[] flowers) {
+        for (int k = 0; k < COUNT; k++) {
+            passes[k] = new PlantUniforms(programs[k]);
+        }
+        this.flowers = flowers.clone();
+    }
+
+    /**
+     * Sets this frame's uniforms on every program: the camera, light and haze, the size of a pixel
+     * ({@code x + distance * y} metres), the frame's distance thinning and whether the target is
+     * multisampled (then the triangle levels keep coverage in alpha for alpha-to-coverage; else they
+     * write alpha 1). No allocation.
+     */
+    public void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
+               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame,
+               boolean multisampled) {
+        for (PlantUniforms u : passes) {
+            u.program.use();
+            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
+                    multisampled ? 0f : 1f);
+        }
+    }
+
+    /**
+     * Draws the lists of one primitive: per list one instanced draw of its plants drawn whole, then one
+     * of its plants in a transition band; leaves no vertex array bound. No allocation.
+     *
+     * @param lines      the line levels, else the triangle levels
+     * @param batches    the frame's lists
+     * @param vaos       per list: its level's mesh
+     * @param indexCount per list: the mesh's index count
+     * @param look       the plants' look (dry tips per species)
+     * @param levelMask  bit l set: draw level l
+     * @see #draws()
+     */
+    public void draw(boolean lines, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+              int levelMask) {
+        for (int k = 0; k < 4; k++) {
+            boolean dither = (k & 1) != 0;
+            boolean flowerPass = (k & 2) != 0;
+            PlantUniforms u = passes[(lines ? LINES : 0) | (dither ? DITHER : 0) | (flowerPass ? FLOWERS : 0)];
+            boolean inUse = false;
+            for (int s = 0; s < batches.speciesCount(); s++) {
+                if (flowers[s] != flowerPass) {
+                    continue;
+                }
+                for (int l = 0, levels = batches.levels(s); l < levels; l++) {
+                    int li = batches.list(s, l);
+                    int whole = batches.whole(li);
+                    int first = dither ? whole : 0;
+                    int n = dither ? batches.count(li) - whole : whole;
+                    if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
+                        continue;
+                    }
+                    if (!inUse) {
+                        u.program.use();
+                        inUse = true;
+                    }
+                    glUniform1i(u.slotCount, batches.slots(s));
+                    glUniform1f(u.dryTips, look.dryTips(s));
+                    glUniform1i(u.componentBase, batches.componentOffset(li) + first * batches.slots(s));
+                    vaos[li].bind();
+                    glDrawElementsInstanced(lines ? GL_LINES : GL_TRIANGLES, indexCount[li], GL_UNSIGNED_INT, 0L, n);
+                    draws++;
+                    instances += n;
+                }
+            }
+        }
+        glBindVertexArray(0);
+    }
+
+    /** Starts counting the draws and instances of a frame anew. */
+    public void resetCounts() {
+        draws = 0;
+        instances = 0;
+    }
+
+    /** {@return the instanced draw calls issued since {@link #resetCounts}} */
+    public int draws() {
+        return draws;
+    }
+
+    /** {@return the instances (plants at a level) drawn since {@link #resetCounts}} */
+    public long instances() {
+        return instances;
+    }
+}

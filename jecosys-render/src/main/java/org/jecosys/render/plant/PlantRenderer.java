@@ -1,0 +1,476 @@
+package org.jecosys.render.plant;
+
+import org.jecosys.render.gl.Closing;
+import static org.lwjgl.opengl.GL11C.GL_BLEND;
+import static org.lwjgl.opengl.GL11C.GL_ONE;
+import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
+import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
+import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
+import static org.lwjgl.opengl.GL11C.glDepthMask;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
+import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
+import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
+import static org.lwjgl.opengl.GL43C.GL_MAX_SHADER_STORAGE_BLOCK_SIZE;
+
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import org.jecosys.math.Require;
+import org.jecosys.math.Rgb;
+import org.jecosys.math.Camera;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.plant.VariationDef;
+import org.jecosys.sim.Frame;
+import org.jecosys.sim.ViewDecision;
+import org.jecosys.sim.World;
+import org.joml.Matrix4f;
+import org.lwjgl.opengl.GL11C;
+import org.lwjgl.opengl.GL13C;
+import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.gl.GlBuffer;
+import org.jecosys.render.gl.GlBufferTexture;
+import org.jecosys.render.gl.GlInts;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlVertexArray;
+
+/**
+ * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2; see also
+ * docs/ARCHITECTURE.md, "Rendering").
+ * At construction every pose table goes to the GPU once (a buffer texture, 3 RGBA32F texels per
+ * skeleton point) with one mesh per species and level (the component colour and the fraction along
+ * the component baked into each vertex), and static per-component data (root bases, pose texels,
+ * parents). Per frame, {@link #draw} draws what the frame's decision lists ({@link PlantBatches}),
+ * uploads only the render states the animation workers wrote for the drawn plants (8 bytes per
+ * component) and 8 bytes per drawn plant and level, resolves on the GPU (a compute shader on
+ * OpenGL 4.3 hardware, transform feedback on 3.3 and on software rasterisers: {@link ResolvePath})
+ * each drawn component's record (3 texels: base, cos/sin of the bend azimuth, pose texel and
+ * weight, dither window, and its colour variation: hue turn, brightness, patch dryness, worked out on
+ * the CPU only when the look changes; for a line level what its vertices share instead of the
+ * variation), then issues per species and
+ * level (triangles near, lines far: Table 3) one instanced draw of the plants drawn whole and one
+ * of those in a transition band, the only ones whose shaders have the dither test (programs
+ * compiled with {@code DITHER}; species with flower parts use the {@code FLOWERS} variants). Triangle
+ * levels use {@code plant.vert} (lit ribbons); line levels use {@code plant_line.vert}, which places
+ * and lights the same vertices and writes one flat colour per segment, with the share of a pixel the
+ * leaf's true width covers as opacity: the line levels are drawn last, blended
+ * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
+ * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
+ * The per-component uploads and the resolve pass live in {@code ComponentResolver}, which this
+ * renderer owns and closes; the draw programs' variants and the draws in {@code PlantPasses}.
+ *
+ * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
+ * idempotent, and a constructor that fails part way releases what it had made.
+ */
+public final class PlantRenderer implements AutoCloseable {
+    private static final int MAX_LEVELS = 8;
+    /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
+    public static final int RECORD_FLOATS = 12;
+    /** Largest index a float holds exactly (texels and components passed as floats). */
+    public static final int MAX_EXACT = 1 << 24;
+    /** Default least width of a thin part, pixels. */
+    public static final float DEFAULT_MIN_PIXELS = 1.75f;
+    /** Default least size of a flower part, pixels. */
+    public static final float DEFAULT_HEAD_PIXELS = 8.0f;
+    /** Default turn of flower parts toward the viewer, degrees. */
+    public static final float DEFAULT_FLOWER_TILT = 45f;
+
+    private final World world;
+    private final PlantBatches batches;
+    private final List<AutoCloseable> owned = new ArrayList<>();
+    private final GlBuffer poseBuffer;
+    private final GlBufferTexture poseTexture;
+    private final ComponentResolver resolver;
+    private final GlVertexArray[] vaos;
+    private final int[] indexCount;
+    private final FloatBuffer matrix;
+    private final Matrix4f viewProj = new Matrix4f();
+    /** The decision for a camera the frame's own decision was not made for (another view, a cut). */
+    private final ViewDecision view;
+    private final PlantPasses passes;
+    private final GlInts query = new GlInts();
+    private final PlantLook look;
+    private boolean pending;
+    /** Whether the target of the last {@link #drawNear} is multisampled (coverage to samples) or not (opaque). */
+    private boolean multisampled;
+    /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
+    public int levelMask = ~0;
+    private boolean closed;
+
+    /**
+     * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
+     * allocates. If it throws, every GL object it had made is deleted again.
+     *
+     * <p>The per-component pass runs on the {@link ResolvePath} that is faster on this context
+     * ({@link ResolvePath#best(org.lwjgl.opengl.GLCapabilities, String)}: compute on OpenGL 4.3
+     * hardware, transform feedback on 3.3 and on software rasterisers), or on
+     * {@link ResolvePath#TRANSFORM_FEEDBACK} when the world's records would not fit one shader
+     * storage buffer of this context.
+     *
+     * @param gl        the render context, current on this thread
+     * @param world     the plants: species models (pose tables, meshes) and positions
+     */
+    public PlantRenderer(GlContext gl, World world) {
+        this(gl, world, null);
+    }
+
+    /**
+     * As {@link #PlantRenderer(GlContext, World)}, with the per-component pass on the path named.
+     * Render thread; allocates.
+     *
+     * @param gl    the render context, current on this thread
+     * @param world the plants
+     * @param path  the path of the per-component pass; null: the one {@link #PlantRenderer(GlContext,
+     *              World)} chooses
+     * @throws IllegalArgumentException when the context cannot run {@code path} (compute needs
+     *                                  OpenGL 4.3 and a shader storage buffer the size of the records)
+     */
+    public PlantRenderer(GlContext gl, World world, ResolvePath path) {
+        gl.checkThread();
+        this.world = world;
+        this.batches = new PlantBatches(world);
+        this.view = new ViewDecision(world);
+        List<SpeciesModel> models = world.plants().species();
+        for (SpeciesModel m : models) {
+            if (m.levels() > MAX_LEVELS) {
+                throw new IllegalArgumentException("species '" + m.def().id() + "' has " + m.levels()
+                        + " levels; the renderer supports at most " + MAX_LEVELS);
+            }
+            for (int slot = 0; slot < m.slotCount(); slot++) {
+                for (int v = 1; v < m.variants(); v++) {
+                    if (m.slotPoseTable(slot, v).points() != m.slotPoseTable(slot, 0).points()) {
+                        throw new IllegalArgumentException("species '" + m.def().id() + "' slot " + slot
+                                + ": pose tables of different variants differ in point count");
+                    }
+                }
+            }
+        }
+        boolean[] flowers = new boolean[models.size()];
+        for (int s = 0; s < flowers.length; s++) {
+            flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));
+        }
+        int[][][] poseTexel = new int[models.size()][][];
+        long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
+        long maxComponents = Math.max(1, batches.maxComponents());
+        int components = Math.max(1, world.componentCount());
+        ResolvePath resolvePath = choosePath(gl, path, 4L * RECORD_FLOATS * maxComponents);
+        FloatBuffer mat = null;
+        GlProgram[] programs = new GlProgram[PlantPasses.COUNT];
+        try {
+            int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
+            checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
+            checkTexels("component records", 3 * maxComponents, maxTexels);
+            checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
+            for (int k = 0; k < programs.length; k++) {
+                programs[k] = own(PlantPasses.compile(gl.tracker(), k));
+            }
+            poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
+            poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
+            mat = MemoryUtil.memAllocFloat(16);
+            resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
+                    maxComponents, PlantMeshes.slotLooks(models), resolvePath));
+            int lists = batches.listCount();
+            vaos = new GlVertexArray[lists];
+            indexCount = new int[lists];
+            for (int s = 0; s < models.size(); s++) {
+                SpeciesModel m = models.get(s);
+                for (int l = 0; l < m.levels(); l++) {
+                    int li = batches.list(s, l);
+                    indexCount[li] = m.mesh(l).indexCount();
+                    vaos[li] = PlantMeshes.uploadMesh(gl.tracker(), m, m.mesh(l), owned);
+                }
+            }
+        } catch (RuntimeException | Error e) {
+            MemoryUtil.memFree((java.nio.Buffer) mat);
+            query.close();
+            Closing.closeReverse(owned);
+            throw e;
+        }
+        matrix = mat;
+        // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
+        // use here alive past its deletion
+        passes = new PlantPasses(programs, flowers);
+        look = new PlantLook(models.size());
+        for (int s = 0; s < models.size(); s++) {
+            VariationDef v = models.get(s).def().variation();
+            look.setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
+        }
+    }
+
+    private <T extends AutoCloseable> T own(T resource) {
+        owned.add(resource);
+        return resource;
+    }
+
+    private static ResolvePath choosePath(GlContext gl, ResolvePath asked, long recordBytes) {
+        ResolvePath want = asked == null ? ResolvePath.best(gl) : asked;
+        if (want != ResolvePath.COMPUTE) {
+            return want;
+        }
+        boolean supported = ResolvePath.COMPUTE.supported(gl.capabilities());
+        long most = supported ? Integer.toUnsignedLong(GL11C.glGetInteger(GL_MAX_SHADER_STORAGE_BLOCK_SIZE)) : 0;
+        if (supported && recordBytes <= most) {
+            return want;
+        }
+        if (asked == null) {
+            return ResolvePath.TRANSFORM_FEEDBACK;
+        }
+        throw new IllegalArgumentException(supported
+                ? "the compute resolve path needs a shader storage buffer of " + recordBytes
+                        + " bytes for this world's component records; this GL allows " + most
+                : "the compute resolve path needs OpenGL 4.3; this context is " + gl.describe());
+    }
+
+    /** {@return the path the per-component pass runs on, for the HUD and reports} */
+    public ResolvePath path() {
+        return resolver.path();
+    }
+
+    private static void checkTexels(String what, long texels, int max) {
+        if (texels > max) {
+            throw new IllegalStateException("the scene's " + what + " need " + texels
+                    + " buffer-texture texels; this GL allows " + max);
+        }
+    }
+
+    /**
+     * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
+     * the sky's ambient light (the direction goes in with each draw). {@code SceneRenderer} sets it
+     * from its {@link RenderSettings} every frame. Render thread; no allocation.
+     *
+     * @param sun       sunlight colour, components in [0, 4]
+     * @param intensity factor on the sun's colour, in [0, 4]
+     * @param ambient   sky light colour and strength, components in [0, 4]
+     * @throws IllegalArgumentException when a value is out of range
+     */
+    public void setLight(Rgb sun, float intensity, Rgb ambient) {
+        checkLight("sun", sun);
+        checkLight("ambient", ambient);
+        Require.range("intensity", intensity, 0, 4);
+        look.setLight(sun.r() * intensity, sun.g() * intensity, sun.b() * intensity, ambient.r(), ambient.g(),
+                ambient.b());
+    }
+
+    private static void checkLight(String name, Rgb c) {
+        Require.nonNull(name, c);
+        if (!(c.r() >= 0 && c.r() <= 4 && c.g() >= 0 && c.g() <= 4 && c.b() >= 0 && c.b() <= 4)) {
+            throw new IllegalArgumentException(name + " components must be in [0, 4], got " + c);
+        }
+    }
+
+    /**
+     * Sets the colour variation of species {@code s}: per plant (and, a third as much, per
+     * component) a hue turn and a brightness factor drawn about-normally with these standard
+     * deviations, and straw-coloured tips. A change of the hue or brightness spread makes the next
+     * draw work out every component's look again on the render thread (about 35 ns a component:
+     * 15 ms for the meadow, 140 ms for 4 million components, measured on llvmpipe's 2-core machine);
+     * setting the same values again costs nothing. Render thread; no allocation.
+     *
+     * @param s        species index in the world, in [0, species count)
+     * @param hueDeg   standard deviation of the hue turn, degrees, in [0, 60]
+     * @param value    standard deviation of the brightness factor, in [0, 1]
+     * @param dryTips  how far the tips turn toward straw, in [0, 1]
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setVariation(int s, float hueDeg, float value, float dryTips) {
+        look.setVariation(s, hueDeg, value, dryTips);
+    }
+
+    /**
+     * Sets the healthy/dry patches: the ground's patch noise ({@link RenderSettings#patchLevel}), of
+     * feature size {@code scale}, turns blades toward straw where it is high, by up to
+     * {@code strength}. The seed also picks each plant's colour variation. {@code SceneRenderer} sets
+     * it from its {@link RenderSettings} every frame; a change makes the next draw work out every
+     * component's look again, as {@link #setVariation} says. Render thread; no allocation.
+     *
+     * @param scale    patch size, metres, in [0.5, 1000]
+     * @param strength how dry the driest patches get, in [0, 1] (0: no patches)
+     * @param seed     any integer
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setPatches(float scale, float strength, int seed) {
+        look.setPatches(scale, strength, seed);
+    }
+
+    /**
+     * Sets how thin parts are kept visible: blades and stems are widened across the view to at
+     * least {@code minPixels} (their real share of that width becomes coverage, which
+     * multisampling turns into partly covered pixels), flower parts are scaled up to at least
+     * {@code headPixels} across and turned toward the viewer by {@code flowerTiltDeg}. Render
+     * thread; no allocation.
+     *
+     * @param minPixels     least width of blades and stems, pixels, in [0, 8] (0: off)
+     * @param headPixels    least size of flower parts, pixels, in [0, 32] (0: off)
+     * @param flowerTiltDeg turn of flower parts toward the viewer, degrees, in [0, 90]
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public void setThinParts(float minPixels, float headPixels, float flowerTiltDeg) {
+        Require.range("minPixels", minPixels, 0, 8);
+        Require.range("headPixels", headPixels, 0, 32);
+        Require.range("flowerTilt", flowerTiltDeg, 0, 90);
+        look.setThinParts(minPixels, headPixels, (float) Math.toRadians(flowerTiltDeg));
+    }
+
+    /** {@return the GL-free lists, LOD choice and counters (read them after {@link #draw})} */
+    public PlantBatches batches() {
+        return batches;
+    }
+
+    /** {@return the number of instanced draw calls issued by the last {@link #draw}} */
+    public int drawCalls() {
+        return passes.draws();
+    }
+
+    /** {@return the instances (plants at a level) drawn by the last {@link #draw}: tests} */
+    public long instancesDrawn() {
+        return passes.instances();
+    }
+
+    /**
+     * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws every level:
+     * {@link #drawNear} then {@link #drawFar}. Draw your opaque geometry (terrain) before this, since
+     * the far level is blended without writing depth. Render thread; no allocation.
+     *
+     * @param frame          the frame to show (sizes match the world)
+     * @param camera         the viewer
+     * @param lx             unit vector toward the sun, X
+     * @param ly             unit vector toward the sun, Y
+     * @param lz             unit vector toward the sun, Z
+     * @param fog            fog colour (the sky)
+     * @param fogStart       distance where fog starts, metres
+     * @param fogEnd         distance of full fog, metres
+     * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0 (see {@link #drawNear})
+     * @throws IllegalArgumentException when the frame's size does not match the world or the
+     *                                  viewport height is out of range
+     */
+    public void draw(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+                     float fogEnd, int viewportHeight) {
+        drawNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
+        drawFar();
+    }
+
+    /**
+     * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws the triangle
+     * (near) levels, opaque, writing depth. For the camera the frame's decision was made for (the one
+     * its step followed) it draws that decision as it is; for any other camera it decides first
+     * ({@link ViewDecision}: the frustum and levels of that camera, by projected size), so split
+     * screens, minimaps, shadow passes and the first frame after a camera cut are drawn complete. Follow it in the same frame with your opaque geometry and
+     * then {@link #drawFar}. Render thread; no allocation.
+     *
+     * @param frame    the frame to show (sizes match the world)
+     * @param camera   the viewer
+     * @param lx       unit vector toward the sun, X
+     * @param ly       unit vector toward the sun, Y
+     * @param lz       unit vector toward the sun, Z
+     * @param fog      fog colour (the sky)
+     * @param fogStart distance where fog starts, metres
+     * @param fogEnd   distance of full fog, metres
+     * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0: far away a line is
+     *                 wider than the leaf it stands for, and the line level is drawn with the share of
+     *                 a pixel the leaf covers as its opacity
+     */
+    public void drawNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+                         float fogEnd, int viewportHeight) {
+        if (frame.componentCount() != world.componentCount()) {
+            throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
+                    + world.componentCount());
+        }
+        Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
+        if (frame.decidedFor(camera, viewProj)) {
+            batches.update(frame); // the step's own decision, made by the workers for this very camera
+        } else {
+            view.decide(frame, camera); // any other view: decided here, every plant's state is in the frame
+            batches.update(frame, view.levels(), view.keeps());
+        }
+        passes.resetCounts();
+        pending = batches.instances() > 0;
+        if (!pending) {
+            return;
+        }
+        resolver.upload(frame);
+        camera.viewProjection(viewProj);
+        viewProj.get(matrix);
+        float ex = (float) camera.x();
+        float ey = (float) camera.y();
+        float ez = (float) camera.z();
+        float px = (float) (camera.viewHeightAtEye() / viewportHeight);
+        float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
+        resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
+        resolver.resolve(look);
+        multisampled = query.get(GL13C.GL_SAMPLES) > 1;
+        passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame, multisampled);
+        poseTexture.bind(0);
+        resolver.bindRecords(1);
+        // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque
+        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+        passes.draw(false, batches, vaos, indexCount, look, levelMask);
+        glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+        glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    }
+
+    /**
+     * Draws the line (far) levels of the last {@link #drawNear}: blended by the share of a pixel each
+     * leaf covers, depth tested but not written, so call it after the opaque geometry. Does nothing
+     * if nothing is in view. Render thread; no allocation.
+     */
+    public void drawFar() {
+        if (!pending) {
+            return;
+        }
+        pending = false;
+        poseTexture.bind(0);
+        resolver.bindRecords(1);
+        if (multisampled) {
+            // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+            passes.draw(true, batches, vaos, indexCount, look, levelMask);
+            glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            return;
+        }
+        glEnable(GL_BLEND);
+        // colour blended by coverage; alpha composited "over" (a + d (1 - a)): opaque over an opaque target
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(false);
+        passes.draw(true, batches, vaos, indexCount, look, levelMask);
+        glDepthMask(true);
+        glDisable(GL_BLEND);
+    }
+
+
+    /**
+     * Reads back the component records of the last {@link #drawNear} (tests). Render thread; waits
+     * for the GPU.
+     */
+    public void readRecords(FloatBuffer dest) {
+        resolver.readRecords(dest);
+    }
+
+    /** {@return bytes uploaded by the last {@link #drawNear}: instance records and component render states} */
+    public long uploadedBytes() {
+        return resolver.uploadedBytes();
+    }
+
+    /** Deletes every GL object and frees the staging memory. Render thread; idempotent. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        Closing.closeReverse(owned);
+        MemoryUtil.memFree((java.nio.Buffer) matrix);
+        query.close();
+    }
+
+    /** {@return the pose buffer's layout, see {@link PlantMeshes#poseTexelLayout}} (tests and benchmarks) */
+    public static long poseTexelLayout(List<SpeciesModel> models, int[][][] first) {
+        return PlantMeshes.poseTexelLayout(models, first);
+    }
+
+}
