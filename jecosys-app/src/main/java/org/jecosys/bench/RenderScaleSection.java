@@ -8,6 +8,7 @@ import java.util.Map;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GpuWork;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.plant.ResolvePath;
@@ -17,6 +18,7 @@ import org.jecosys.scene.SceneFiles;
 import org.jecosys.sim.CameraWalk;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
+import org.jecosys.sim.ViewDecision;
 
 /**
  * Render scale: frames of the meadow (417,004 components), large (1,000,000) and prairie (about
@@ -56,7 +58,9 @@ final class RenderScaleSection implements Section {
         Table t = new Table("render-scale", "Render scale: " + width + "x" + height + ", camera walking, one step per "
                 + "frame", java.util.List.of("scene", "components", "drawn (median)", "fps", "frame ms (median)",
                 "frame ms (p90)", "step ms", "render-thread CPU ms", "of which lists and records, Java ms",
-                "KiB uploaded / frame", "plant draw calls", "path"));
+                "2nd view: decision, lists and records, Java ms", "KiB uploaded / frame", "plant draw calls",
+                "VS invocations / frame", "FS invocations / frame", "primitives / frame", "fragments / pixel",
+                "path"));
         Map<String, Object> raw = new LinkedHashMap<>();
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         try (GlContext gl = GlContext.headless(false);
@@ -87,8 +91,8 @@ final class RenderScaleSection implements Section {
                                     .append(": ").append(e.getMessage()).append('.');
                             continue;
                         }
-                        try (r) {
-                            measure(gl, def, sim, r, fb, t, raw, width, height, warm, frames, threads);
+                        try (r; GpuWork work = new GpuWork(gl)) {
+                            measure(gl, def, sim, r, work, fb, t, raw, width, height, warm, frames, threads);
                         }
                     }
                 }
@@ -96,7 +100,11 @@ final class RenderScaleSection implements Section {
             t.note("GL renderer: " + gl.describe() + ". Frame = one fixed step + render + glFinish; render-thread CPU"
                     + " = the calling thread's CPU time inside SceneRenderer.render (on a software rasteriser it"
                     + " includes the driver's vertex processing); of which the library's Java work: building the draw lists"
-                    + " from the frame's decision and writing the instance records. Uploads: 8 bytes per component of the drawn plants'"
+                    + " from the frame's decision and writing the instance records; a second view adds its own decision"
+                    + " (a camera turned a quarter to the side). GPU work of the frame (terrain, sky and plants),"
+                    + " counted by pipeline-statistics queries (ARB_pipeline_statistics_query): vertex and fragment"
+                    + " shader invocations and the primitives entering clipping; fragments per pixel = fragment"
+                    + " invocations / (width x height). Uploads: 8 bytes per component of the drawn plants'"
                     + " range (pose coordinate and azimuth, written by the animation workers) plus 8 bytes per drawn"
                     + " plant and level. Plant draw calls: the instanced draws of the plants (per species and level,"
                     + " one for the plants drawn whole and one for those in a transition band). Each scene runs on"
@@ -107,9 +115,9 @@ final class RenderScaleSection implements Section {
     }
 
     /** Frames of one scene with one renderer: a row of {@code t} and the raw series. */
-    private static void measure(GlContext gl, SceneDef def, Simulation sim, SceneRenderer r, GlFramebuffer fb,
-                                Table t, Map<String, Object> raw, int width, int height, int warm, int frames,
-                                ThreadMXBean threads) {
+    private static void measure(GlContext gl, SceneDef def, Simulation sim, SceneRenderer r, GpuWork work,
+                                GlFramebuffer fb, Table t, Map<String, Object> raw, int width, int height, int warm,
+                                int frames, ThreadMXBean threads) {
         CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                 width / (double) height);
         double[] frameMs = new double[frames];
@@ -119,6 +127,12 @@ final class RenderScaleSection implements Section {
         double[] drawn = new double[frames];
         double[] javaMs = new double[frames];
         double[] draws = new double[frames];
+        double[] secondMs = new double[frames];
+        double[] vertices = new double[frames];
+        double[] fragments = new double[frames];
+        double[] primitives = new double[frames];
+        ViewDecision second = new ViewDecision(sim.world());
+        ViewCamera side = new ViewCamera();
         java.nio.IntBuffer scratch = java.nio.IntBuffer.allocate(
                 2 * Math.max(1, r.plants().batches().maxInstances()));
         fb.bind();
@@ -132,6 +146,10 @@ final class RenderScaleSection implements Section {
             r.render(f, cam, width, height);
             long c1 = threads.getCurrentThreadCpuTime();
             gl.finish();
+            // the GPU work of the same frame, counted apart (the queries' read-back waits)
+            work.begin();
+            r.render(f, cam, width, height);
+            work.end();
             long t2 = System.nanoTime();
             int k = i - warm;
             if (k >= 0) {
@@ -147,15 +165,36 @@ final class RenderScaleSection implements Section {
                 r.plants().batches().update(f);
                 r.plants().batches().writeInstances(scratch);
                 javaMs[k] = (threads.getCurrentThreadCpuTime() - j0) / 1e6;
+                // a second view (turned a quarter to the side): its own decision, then lists and records
+                side.set(cam).setOrientation(cam.yaw() + Math.PI / 2, cam.pitch());
+                long v0 = threads.getCurrentThreadCpuTime();
+                second.decide(f, side);
+                r.plants().batches().update(f, second.levels(), second.keeps());
+                r.plants().batches().writeInstances(scratch);
+                secondMs[k] = (threads.getCurrentThreadCpuTime() - v0) / 1e6;
+                vertices[k] = work.vertexInvocations();
+                fragments[k] = work.fragmentInvocations();
+                primitives[k] = work.primitives();
             }
         }
         double median = Stats.median(frameMs);
         t.row(def.name(), sim.componentCount(), (long) Stats.median(drawn), 1000 / median, median,
                 Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
-                Stats.median(javaMs), Stats.median(uploaded), (long) Stats.median(draws),
-                r.plants().path().description());
-        raw.put(def.name() + " / " + r.plants().path().name(), Map.of("frameMs", frameMs, "stepMs", stepMs,
-                "renderCpuMs", cpuMs, "uploadedKiB", uploaded, "drawnComponents", drawn, "listsAndRecordsJavaMs",
-                javaMs, "plantDrawCalls", draws));
+                Stats.median(javaMs), Stats.median(secondMs), Stats.median(uploaded), (long) Stats.median(draws),
+                (long) Stats.median(vertices), (long) Stats.median(fragments), (long) Stats.median(primitives),
+                Stats.median(fragments) / ((double) width * height), r.plants().path().description());
+        Map<String, Object> series = new LinkedHashMap<>();
+        series.put("frameMs", frameMs);
+        series.put("stepMs", stepMs);
+        series.put("renderCpuMs", cpuMs);
+        series.put("uploadedKiB", uploaded);
+        series.put("drawnComponents", drawn);
+        series.put("listsAndRecordsJavaMs", javaMs);
+        series.put("plantDrawCalls", draws);
+        series.put("secondViewJavaMs", secondMs);
+        series.put("vertexInvocations", vertices);
+        series.put("fragmentInvocations", fragments);
+        series.put("primitives", primitives);
+        raw.put(def.name() + " / " + r.plants().path().name(), series);
     }
 }

@@ -53,6 +53,15 @@ class BenchSmokeTest {
             long calls = ((Number) row.get(callsColumn)).longValue();
             assertTrue(calls > 0 && calls <= 2L * lists, "plant draw calls " + calls + " for " + lists + " lists");
         }
+        // the GPU work counted per frame (pipeline statistics): present and positive for every scene
+        for (String column : new String[] {"VS invocations / frame", "FS invocations / frame", "primitives / frame",
+            "fragments / pixel", "2nd view: decision, lists and records, Java ms"}) {
+            int c = scale.headers().indexOf(column);
+            assertTrue(c >= 0, column + " column");
+            for (List<Object> row : scale.rows()) {
+                assertTrue(((Number) row.get(c)).doubleValue() > 0, column + " of " + row.get(0) + ": " + row.get(c));
+            }
+        }
         for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
                 "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
                 "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
