@@ -209,6 +209,11 @@ public final class SceneRenderer implements AutoCloseable {
             return;
         }
         state.setGuestState();
+        if (settings.clear()) {
+            // the library owns the whole picture: the detail mask of its own framebuffer (draw buffer 1,
+            // GlFramebuffer) is written too, for the resolve's filter
+            org.lwjgl.opengl.GL30C.glColorMaski(1, true, true, true, true);
+        }
         terrain.setTint(settings.tint());
         Rgb horizon = settings.sky();
         if (settings.clear()) {

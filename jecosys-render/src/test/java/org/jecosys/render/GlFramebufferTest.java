@@ -44,7 +44,7 @@ class GlFramebufferTest {
                 int live = gl.tracker().live();
                 try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H, 4)) {
                     assertEquals(4, fb.samples());
-                    assertEquals(9, gl.tracker().live() - live, "framebuffer, 2 renderbuffers, 2 resolve targets,"
+                    assertEquals(11, gl.tracker().live() - live, "framebuffer, 3 renderbuffers (colour, detail mask, depth), 2 resolve targets and their detail,"
                             + " the filter's program and vertex array");
                     fb.bind();
                     r.render(frame, cam, W, H);

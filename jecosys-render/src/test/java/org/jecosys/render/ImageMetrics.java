@@ -368,6 +368,69 @@ final class ImageMetrics {
         return n == 0 ? 0 : s / n;
     }
 
+    /**
+     * The width, pixels, over which a horizon-like edge (the sky above, the ground below) goes from 10%
+     * to 90% of the way from one to the other, median over the columns with a clear edge. In each
+     * column the edge is the first row from the top whose luminance differs from the sky's (the top
+     * row) by more than a quarter of the contrast to the ground {@code margin} rows further down; the
+     * 10% and 90% crossings are interpolated linearly between rows. NaN when no column qualifies.
+     *
+     * @param img    the picture
+     * @param margin rows past the edge where the ground's luminance is read
+     */
+    static double edgeWidth(Img img, int margin) {
+        int w = img.width;
+        int h = img.height;
+        double[] widths = new double[w];
+        int n = 0;
+        for (int x = 0; x < w; x++) {
+            double sky = luma(img.at(x, h - 1));
+            int edge = -1;
+            for (int y = h - 2; y > margin; y--) {
+                double l = luma(img.at(x, y));
+                double ground = luma(img.at(x, Math.max(0, y - margin)));
+                if (Math.abs(ground - sky) > 20 && Math.abs(l - sky) > 0.25 * Math.abs(ground - sky)) {
+                    edge = y;
+                    break;
+                }
+            }
+            if (edge < 0 || edge + margin >= h - 1 || edge - margin < 0) {
+                continue;
+            }
+            double top = luma(img.at(x, Math.min(h - 1, edge + margin)));
+            double bottom = luma(img.at(x, edge - margin));
+            double c = bottom - top;
+            if (Math.abs(c) < 20) {
+                continue;
+            }
+            double y10 = crossing(img, x, edge + margin, edge - margin, top + 0.1 * c);
+            double y90 = crossing(img, x, edge + margin, edge - margin, top + 0.9 * c);
+            if (Double.isNaN(y10) || Double.isNaN(y90)) {
+                continue;
+            }
+            widths[n++] = Math.abs(y10 - y90);
+        }
+        if (n == 0) {
+            return Double.NaN;
+        }
+        double[] v = Arrays.copyOf(widths, n);
+        Arrays.sort(v);
+        return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+
+    /** The row (fractional) going down column x from y0 to y1 where the luminance first crosses level. */
+    private static double crossing(Img img, int x, int y0, int y1, double level) {
+        double prev = luma(img.at(x, y0));
+        for (int y = y0 - 1; y >= y1; y--) {
+            double l = luma(img.at(x, y));
+            if ((prev - level) * (l - level) <= 0 && prev != l) {
+                return y + 1 - (level - prev) / (l - prev);
+            }
+            prev = l;
+        }
+        return Double.NaN;
+    }
+
     /** {@code {largest, median}} of the values (median of an even count: mean of the middle two). */
     static double[] largestAndMedian(double[] values) {
         double[] v = values.clone();

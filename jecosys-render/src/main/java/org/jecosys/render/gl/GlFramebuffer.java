@@ -47,6 +47,11 @@ public final class GlFramebuffer extends GlResource {
     private final Renderbuffer colour;
     private final Renderbuffer depth;
     private final Resolved resolved;
+    /**
+     * Multisampled only: the detail mask (draw buffer 1): 1 where thin geometry (plants) was drawn, 0
+     * elsewhere, which {@link #resolve()} widens its filter by.
+     */
+    private final Renderbuffer detail;
     private final int samples;
     private float tent = DEFAULT_TENT;
     private int width;
@@ -85,18 +90,21 @@ public final class GlFramebuffer extends GlResource {
         this.samples = samples == 1 ? 1 : Math.max(1, Math.min(samples, glGetInteger(GL_MAX_SAMPLES)));
         Renderbuffer c = null;
         Renderbuffer d = null;
+        Renderbuffer m = null;
         Resolved r = null;
         try {
             c = new Renderbuffer(tracker);
             d = new Renderbuffer(tracker);
+            m = this.samples > 1 ? new Renderbuffer(tracker) : null;
             r = this.samples > 1 ? new Resolved(tracker) : null;
         } catch (RuntimeException e) {
-            Closing.closeAll(c, d);
+            Closing.closeAll(c, d, m);
             close();
             throw e;
         }
         colour = c;
         depth = d;
+        detail = m;
         resolved = r;
         try {
             resize(width, height);
@@ -124,8 +132,12 @@ public final class GlFramebuffer extends GlResource {
         storage(GL_RGBA8, samples, width, height);
         glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
         storage(GL_DEPTH24_STENCIL8, samples, width, height);
+        if (detail != null) {
+            glBindRenderbuffer(GL_RENDERBUFFER, detail.id());
+            storage(org.lwjgl.opengl.GL30C.GL_R8, samples, width, height);
+        }
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
-        attach(id(), colour, depth);
+        attach(id(), colour, depth, detail);
         if (resolved != null) {
             resolved.resize(width, height);
         }
@@ -139,11 +151,19 @@ public final class GlFramebuffer extends GlResource {
         }
     }
 
-    private static void attach(int framebuffer, Renderbuffer colour, Renderbuffer depth) {
+    private static void attach(int framebuffer, Renderbuffer colour, Renderbuffer depth, Renderbuffer detail) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
         if (depth != null) {
             glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+        }
+        if (detail != null) {
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER,
+                    detail.id());
+            org.lwjgl.opengl.GL20C.glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0,
+                org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1});
+            // nothing drawn yet: no detail anywhere (a guest's drawing never writes it)
+            org.lwjgl.opengl.GL30C.glClearBufferfv(org.lwjgl.opengl.GL11C.GL_COLOR, 1, new float[] {0, 0, 0, 0});
         }
         int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -190,6 +210,12 @@ public final class GlFramebuffer extends GlResource {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, tent > 0 ? resolved.box.id() : resolved.id());
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         if (tent > 0) {
+            // the detail mask too, into the box's second texture
+            org.lwjgl.opengl.GL11C.glReadBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
+            org.lwjgl.opengl.GL11C.glDrawBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
+            glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            org.lwjgl.opengl.GL11C.glDrawBuffer(GL_COLOR_ATTACHMENT0);
+            org.lwjgl.opengl.GL11C.glReadBuffer(GL_COLOR_ATTACHMENT0);
             resolved.filter(width, height, tent);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, resolved.id());
@@ -233,7 +259,7 @@ public final class GlFramebuffer extends GlResource {
     @Override
     public void delete(int name) {
         glDeleteFramebuffers(name);
-        Closing.closeAll(colour, depth, resolved);
+        Closing.closeAll(colour, depth, detail, resolved);
     }
 
     private static final class Renderbuffer extends GlResource {
@@ -285,6 +311,7 @@ public final class GlFramebuffer extends GlResource {
             int current = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
             program.use();
             org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), 0);
+            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uDetail"), 1);
             uTexel = program.uniform("uTexel");
             uWeights = program.uniform("uWeights");
             org.lwjgl.opengl.GL20C.glUseProgram(current);
@@ -294,7 +321,7 @@ public final class GlFramebuffer extends GlResource {
             glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
             storage(GL_RGBA8, 1, width, height);
             glBindRenderbuffer(GL_RENDERBUFFER, 0);
-            attach(id(), colour, null);
+            attach(id(), colour, null, null);
             box.resize(width, height);
         }
 
@@ -303,6 +330,9 @@ public final class GlFramebuffer extends GlResource {
             int program0 = query.get(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
             int vao0 = query.get(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
             int unit0 = query.get(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE1);
+            int texture1 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.detailTexture);
             org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
             int texture0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             boolean depth = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
@@ -326,6 +356,8 @@ public final class GlFramebuffer extends GlResource {
             org.lwjgl.opengl.GL30C.glBindVertexArray(vao0);
             org.lwjgl.opengl.GL20C.glUseProgram(program0);
             org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture0);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE1);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture1);
             org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
             enable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST, depth);
             enable(org.lwjgl.opengl.GL11C.GL_BLEND, blend);
@@ -352,19 +384,26 @@ public final class GlFramebuffer extends GlResource {
     /** A framebuffer with an RGBA8 texture, linear filtering, clamped: the box-averaged image. */
     private static final class Box extends GlResource {
         private final Texture image;
+        private final Texture detailImage;
         final int texture;
+        final int detailTexture;
 
         Box(GlTracker tracker) {
             super(tracker, glGenFramebuffers());
-            Texture t;
+            Texture t = null;
+            Texture d;
             try {
                 t = new Texture(tracker);
+                d = new Texture(tracker);
             } catch (RuntimeException e) {
+                Closing.closeAll(t);
                 close();
                 throw e;
             }
             image = t;
+            detailImage = d;
             texture = t.id();
+            detailTexture = d.id();
         }
 
         void resize(int width, int height) {
@@ -372,9 +411,10 @@ public final class GlFramebuffer extends GlResource {
             org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
             int bound = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             int t2 = org.lwjgl.opengl.GL11C.GL_TEXTURE_2D;
-            org.lwjgl.opengl.GL11C.glBindTexture(t2, texture);
-            org.lwjgl.opengl.GL11C.glTexImage2D(t2, 0, GL_RGBA8, width, height, 0, org.lwjgl.opengl.GL11C.GL_RGBA,
-                    org.lwjgl.opengl.GL11C.GL_UNSIGNED_BYTE, (java.nio.ByteBuffer) null);
+            for (int k = 0; k < 2; k++) {
+            org.lwjgl.opengl.GL11C.glBindTexture(t2, k == 0 ? texture : detailTexture);
+            org.lwjgl.opengl.GL11C.glTexImage2D(t2, 0, k == 0 ? GL_RGBA8 : org.lwjgl.opengl.GL30C.GL_R8, width, height,
+                    0, org.lwjgl.opengl.GL11C.GL_RGBA, org.lwjgl.opengl.GL11C.GL_UNSIGNED_BYTE, (java.nio.ByteBuffer) null);
             org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MIN_FILTER,
                     org.lwjgl.opengl.GL11C.GL_LINEAR);
             org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MAG_FILTER,
@@ -383,10 +423,13 @@ public final class GlFramebuffer extends GlResource {
                     org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
             org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_WRAP_T,
                     org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
+            }
             org.lwjgl.opengl.GL11C.glBindTexture(t2, bound);
             org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
             glBindFramebuffer(GL_FRAMEBUFFER, id());
             org.lwjgl.opengl.GL30C.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t2, texture, 0);
+            org.lwjgl.opengl.GL30C.glFramebufferTexture2D(GL_FRAMEBUFFER, org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1, t2,
+                    detailTexture, 0);
             int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -397,7 +440,7 @@ public final class GlFramebuffer extends GlResource {
         @Override
         public void delete(int name) {
             glDeleteFramebuffers(name);
-            Closing.closeAll(image);
+            Closing.closeAll(image, detailImage);
         }
     }
 

@@ -101,12 +101,12 @@ import org.lwjgl.system.MemoryUtil;
  * line primitives too), sRGB framebuffer writes,
  * colour logic op, sample mask and sample coverage, primitive restart, depth clamp and the eight clip
  * distances;</li>
- * <li>values: depth function and mask, blend factors and equations, colour mask (draw buffer 0),
+ * <li>values: depth function and mask, blend factors and equations, colour masks (draw buffers 0 to 7),
  * front face, polygon mode, scissor box, clear colour and depth, viewport, and the pixel-unpack store (alignment,
  * row length, skips, image height, byte order) that texture uploads read.</li>
  * </ul>
  * {@link #setGuestState()} then sets what the renderers depend on, whatever the host left: additive
- * blend equations, all colour channels written, no stencil test, polygon offset, logic op, sample mask
+ * blend equations, all colour channels of draw buffer 0 written and none of a host's other draw buffers, no stencil test, polygon offset, logic op, sample mask
  * or coverage, clip distances or depth clamp, filled counter-clockwise front faces, depth cleared to 1,
  * the last vertex provoking, dithering on, texture unit 0 active, no sampler objects
  * on the renderer's units, and sRGB conversion off. The plants' colours are display (sRGB-encoded)
@@ -126,6 +126,9 @@ public final class GlStateGuard implements AutoCloseable {
      * {@link #UNIT_2D}).
      */
     public static final int UNITS = 8;
+
+    /** Draw buffers whose colour masks are saved: every one OpenGL 3.3 guarantees. */
+    public static final int DRAW_BUFFERS = 8;
 
     /** The texture unit whose 2D texture binding the terrain uses: the occlusion map. */
     public static final int UNIT_2D = 5;
@@ -147,7 +150,8 @@ public final class GlStateGuard implements AutoCloseable {
     private static final int[] UNPACK_DEFAULTS = {4, 0, 0, 0, 0, 0, 0, 0};
 
     private final IntBuffer ints = MemoryUtil.memAllocInt(32);
-    private final ByteBuffer mask = MemoryUtil.memAlloc(4);
+    /** The colour write masks of draw buffers 0 to {@link #DRAW_BUFFERS} - 1, four bytes each. */
+    private final ByteBuffer mask = MemoryUtil.memAlloc(4 * DRAW_BUFFERS);
     private final GlInts query = new GlInts();
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);
     private final boolean[] caps = new boolean[CAPS.length];
@@ -229,7 +233,9 @@ public final class GlStateGuard implements AutoCloseable {
         polygonMode = query.get(GL_POLYGON_MODE);
         provokingVertex = query.get(org.lwjgl.opengl.GL32C.GL_PROVOKING_VERTEX);
         dither = glIsEnabled(GL11C.GL_DITHER);
-        GL11C.nglGetBooleanv(GL_COLOR_WRITEMASK, MemoryUtil.memAddress(mask));
+        for (int i = 0; i < DRAW_BUFFERS; i++) {
+            org.lwjgl.opengl.GL30C.nglGetBooleani_v(GL_COLOR_WRITEMASK, i, MemoryUtil.memAddress(mask) + 4L * i);
+        }
         ints.clear();
         GL11C.nglGetIntegerv(GL_VIEWPORT, MemoryUtil.memAddress(ints));
         GL11C.nglGetIntegerv(GL_SCISSOR_BOX, MemoryUtil.memAddress(ints) + 16);
@@ -249,6 +255,9 @@ public final class GlStateGuard implements AutoCloseable {
         }
         glBlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
         glColorMaski(0, true, true, true, true);
+        for (int i = 1; i < DRAW_BUFFERS; i++) {
+            glColorMaski(i, false, false, false, false); // a host's other draw buffers (a G-buffer) stay as they are
+        }
         glFrontFace(GL_CCW);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         GL11C.glClearDepth(1.0);
@@ -328,7 +337,10 @@ public final class GlStateGuard implements AutoCloseable {
         glBlendEquationSeparate(blendEqRgb, blendEqAlpha);
         glFrontFace(frontFace);
         glPolygonMode(GL_FRONT_AND_BACK, polygonMode);
-        glColorMaski(0, mask.get(0) != 0, mask.get(1) != 0, mask.get(2) != 0, mask.get(3) != 0);
+        for (int i = 0; i < DRAW_BUFFERS; i++) {
+            int o = 4 * i;
+            glColorMaski(i, mask.get(o) != 0, mask.get(o + 1) != 0, mask.get(o + 2) != 0, mask.get(o + 3) != 0);
+        }
         glViewport(ints.get(0), ints.get(1), ints.get(2), ints.get(3));
         glScissor(ints.get(4), ints.get(5), ints.get(6), ints.get(7));
         glClearColor(clear.get(0), clear.get(1), clear.get(2), clear.get(3));

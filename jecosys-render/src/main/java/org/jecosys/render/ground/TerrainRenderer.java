@@ -122,8 +122,8 @@ public final class TerrainRenderer implements AutoCloseable {
         GlBuffer ib = null;
         GlTexture2D occ = null;
         occlusionMap = world == null ? null : ContactOcclusion.of(world);
-        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
-        IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1));
+        FloatBuffer v = MemoryUtil.memAllocFloat(vertexCount() * FLOATS);
+        IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1) + 6 * rim());
         ByteBuffer texels = MemoryUtil.memAlloc(occlusionMap == null ? 4 : occlusionMap.width * occlusionMap.height);
         try {
             if (occlusionMap == null) {
@@ -140,6 +140,15 @@ public final class TerrainRenderer implements AutoCloseable {
                     int a = j * res + i;
                     idx.put(a).put(a + res).put(a + 1).put(a + 1).put(a + res).put(a + res + 1);
                 }
+            }
+            // the horizon skirt: a quad from each edge of the rim outward to the far ground
+            int rim = rim();
+            for (int r = 0; r < rim; r++) {
+                int a = rimVertex(r);
+                int b = rimVertex((r + 1) % rim);
+                int oa = res * res + r;
+                int ob = res * res + (r + 1) % rim;
+                idx.put(a).put(oa).put(b).put(b).put(oa).put(ob);
             }
             idx.flip();
             vb = GlBuffer.of(t, GL_ARRAY_BUFFER, v, GL_STATIC_DRAW);
@@ -158,7 +167,7 @@ public final class TerrainRenderer implements AutoCloseable {
         vao = va;
         vertices = vb;
         indices = ib;
-        indexCount = 6 * (res - 1) * (res - 1);
+        indexCount = 6 * (res - 1) * (res - 1) + 6 * rim();
         for (int a = 0; a < 3; a++) {
             glEnableVertexAttribArray(a);
             glVertexAttribPointer(a, 3, GL_FLOAT, false, FLOATS * 4, a * 12L);
@@ -204,6 +213,31 @@ public final class TerrainRenderer implements AutoCloseable {
         return occlusionMap == null ? 0 : occlusionMap.sample(x, z);
     }
 
+    /** How far the horizon skirt reaches from the terrain's middle, metres: to the horizon, in effect. */
+    public static final float SKIRT = 100_000f;
+
+    /** {@return the vertices on the heightfield's rim, once round} */
+    private int rim() {
+        return 4 * (res - 1);
+    }
+
+    /** {@return the grid vertex of rim position r, anticlockwise from the corner (0, 0)} */
+    private int rimVertex(int r) {
+        int side = res - 1;
+        if (r < side) {
+            return r;                                   // along j = 0
+        } else if (r < 2 * side) {
+            return (r - side) * res + side;             // along i = side
+        } else if (r < 3 * side) {
+            return side * res + (3 * side - r);         // along j = side, backwards
+        }
+        return (4 * side - r) * res;                    // along i = 0, backwards
+    }
+
+    private int vertexCount() {
+        return res * res + rim();
+    }
+
     private void fill(FloatBuffer v, TerrainTint tint) {
         Heightfield h = terrain.heightfield();
         ResourceMap water = terrain.water();
@@ -219,6 +253,27 @@ public final class TerrainRenderer implements AutoCloseable {
                 colour(tint, water, nutrients, x, z, rgb);
                 v.put(rgb[0]).put(rgb[1]).put(rgb[2]);
             }
+        }
+        // the skirt's far edge: each rim vertex pushed out from the middle to SKIRT metres, at the rim's
+        // mean height, facing up, in the colour of the ground it continues (the haze hides it far away)
+        double mean = 0;
+        for (int r = 0; r < rim(); r++) {
+            mean += heights[rimVertex(r)];
+        }
+        mean /= rim();
+        double cx = h.minX() + 0.5 * (res - 1) * h.cellX();
+        double cz = h.minZ() + 0.5 * (res - 1) * h.cellZ();
+        for (int r = 0; r < rim(); r++) {
+            int k = rimVertex(r);
+            double x = h.minX() + (k % res) * h.cellX();
+            double z = h.minZ() + (k / res) * h.cellZ();
+            double dx = x - cx;
+            double dz = z - cz;
+            double len = Math.max(1e-6, Math.hypot(dx, dz));
+            v.put((float) (cx + dx / len * SKIRT)).put((float) mean).put((float) (cz + dz / len * SKIRT));
+            v.put(0f).put(1f).put(0f);
+            colour(tint, water, nutrients, x, z, rgb);
+            v.put(rgb[0]).put(rgb[1]).put(rgb[2]);
         }
         v.flip();
     }
@@ -263,7 +318,7 @@ public final class TerrainRenderer implements AutoCloseable {
         if (tint == this.tint) {
             return;
         }
-        FloatBuffer v = MemoryUtil.memAllocFloat(res * res * FLOATS);
+        FloatBuffer v = MemoryUtil.memAllocFloat(vertexCount() * FLOATS);
         try {
             fill(v, tint);
             vertices.upload(0, v);
@@ -273,9 +328,9 @@ public final class TerrainRenderer implements AutoCloseable {
         this.tint = tint;
     }
 
-    /** {@return the number of triangles of the terrain mesh} */
+    /** {@return the number of triangles of the terrain mesh (the heightfield; the horizon skirt left out)} */
     public int triangles() {
-        return indexCount / 3;
+        return 2 * (res - 1) * (res - 1);
     }
 
     /**

@@ -11,7 +11,10 @@ uniform float uAlphaFloor;
 #ifdef DITHER
 flat in vec2 vKeep;
 #endif
-out vec4 fragColour;
+layout(location = 0) out vec4 fragColour;
+// the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
+// written only into the library's own framebuffer (a host's other draw buffers are masked off)
+layout(location = 1) out vec4 fragDetail;
 
 #ifdef DITHER
 // 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
@@ -31,4 +34,5 @@ void main() {
     }
 #endif
     fragColour = vec4(vShade.rgb, max(vShade.a, uAlphaFloor));
+    fragDetail = vec4(1.0);
 }

@@ -10,7 +10,10 @@ flat in vec3 vColour;
 flat in vec2 vKeep;
 #endif
 in float vCover;
-out vec4 fragColour;
+layout(location = 0) out vec4 fragColour;
+// the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
+// written only into the library's own framebuffer (a host's other draw buffers are masked off)
+layout(location = 1) out vec4 fragDetail;
 
 #ifdef DITHER
 // 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
@@ -30,4 +33,5 @@ void main() {
     }
 #endif
     fragColour = vec4(vColour, vCover);
+    fragDetail = vec4(1.0);
 }

@@ -7,7 +7,10 @@ uniform vec3 uHorizon;
 uniform vec3 uZenith;
 uniform vec3 uSunDir;                            // unit vector toward the sun
 uniform vec3 uSunColour;                         // sun colour times intensity
-out vec4 fragColour;
+layout(location = 0) out vec4 fragColour;
+// the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
+// written only into the library's own framebuffer (a host's other draw buffers are masked off)
+layout(location = 1) out vec4 fragDetail;
 
 void main() {
     vec3 dir = normalize(vMid.xyz / vMid.w - vNear.xyz / vNear.w);
@@ -25,4 +28,5 @@ void main() {
     float disc = smoothstep(0.99985, 0.99993, c);  // about 0.7 degrees across
     vec3 colour = sky + uSunColour * (glow + 2.0 * disc);
     fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+    fragDetail = vec4(0.0);
 }

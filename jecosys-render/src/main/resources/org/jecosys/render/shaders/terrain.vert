@@ -1,8 +1,9 @@
 #version 330 core
 // Terrain: lit by the sun and the sky's ambient light, coloured by the healthy/dry patches, hazed
-// toward the horizon colour with distance exactly as the plants are (aerial perspective). Lighting,
-// patches and haze per vertex (mesh cells are small against their scales, and llvmpipe shades far
-// more fragments than vertices); the fragment shader applies the contact occlusion under the plants.
+// toward the horizon colour with distance exactly as the plants are (aerial perspective). Lighting
+// and patches per vertex (mesh cells are small against their scales, and llvmpipe shades far more
+// fragments than vertices); the fragment shader applies the contact occlusion under the plants and the
+// haze, per fragment so that the horizon skirt's huge triangles fade like the rest.
 layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColour;
@@ -11,19 +12,19 @@ uniform vec3 uEye;
 uniform vec3 uLightDir;                          // unit vector toward the sun
 uniform vec3 uSun;                               // sun colour times intensity
 uniform vec3 uAmbient;                           // sky light on an upward-facing surface
-uniform vec3 uFogColour;
-uniform float uFogStart;
-uniform float uFogEnd;
 uniform vec4 uOcclusionMap;                      // minX, minZ, 1 / (texelX * width), 1 / (texelZ * height)
 uniform vec2 uOcclusionHalf;                     // half a texel in texture coordinates
 out vec3 vLit;                                   // lit, before contact occlusion and haze
-out float vFog;                                  // haze weight toward uFogColour
+out vec3 vWorld;                                 // position, metres: the haze is worked out per fragment
 out vec2 vUv;                                    // occlusion-map coordinates
 
 #include "patches.glsl"
 
 void main() {
     gl_Position = uViewProj * vec4(aPos, 1.0);
+    // the horizon skirt reaches far beyond any far plane: drawn just inside it instead of clipped, so
+    // the ground meets the sky at the horizon (the sky is drawn where the depth is still 1)
+    gl_Position.z = min(gl_Position.z, 0.999999 * gl_Position.w);
     vec3 n = normalize(aNormal);
     vec3 albedo = aColour;
     if (uPatch.z > 0.5) {
@@ -34,8 +35,6 @@ void main() {
     float diffuse = max(dot(n, uLightDir), 0.0);
     vec3 light = uAmbient * (0.5 + 0.5 * n.y) + uSun * diffuse;
     vLit = albedo * light;
-    // haze (squared ramp), the plants' formula, so plants and ground fade alike
-    float fog = clamp((distance(uEye, aPos) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    vFog = fog * fog;
+    vWorld = aPos;
     vUv = (aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf;
 }
