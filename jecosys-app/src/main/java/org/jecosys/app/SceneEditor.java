@@ -362,7 +362,7 @@ final class SceneEditor {
                 l.contactShadow(), l.fogStart(), l.fogEnd());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
                 RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind(), nl,
-                r.patches(), r.antialiasing());
+                r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
                 a.seed());

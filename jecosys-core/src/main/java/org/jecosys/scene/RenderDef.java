@@ -18,9 +18,11 @@ import org.jecosys.math.Rgb;
  * @param antialiasing  samples per pixel of the viewer's window and of headless images: 1 (none), 2, 4
  *                      or 8; thin parts of plants are drawn with their coverage as alpha, which
  *                      multisampling turns into partly covered pixels
+ * @param groundCover   the dense short layer that hides the soil where the scene's plants grow
+ *                      ({@link GroundCover#NONE}: bare ground, as in the paper's scenes)
  */
 public record RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
-                        boolean showWind, Light light, Patches patches, int antialiasing) {
+                        boolean showWind, Light light, Patches patches, int antialiasing, GroundCover groundCover) {
     /** Default {@link #antialiasing()}: 4 samples per pixel. */
     public static final int DEFAULT_ANTIALIASING = 4;
 
@@ -121,6 +123,74 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         public static final Patches DEFAULT = new Patches(12, 0.3, 1);
     }
 
+    /**
+     * Ground cover: a dense short layer of vegetation where the scene's plants grow, so that no bare soil
+     * shows between them. Near the camera it is drawn as short instanced blades bending with the wind;
+     * beyond, and under them, the ground itself takes the cover's colour with a fine grain of blades and
+     * dry patches. It grows where plants stand: its amount at a point rises with the number of plants
+     * within {@code spread} metres. Presentation only (the simulation never reads it); counted as
+     * vegetation, so a renderer told to leave the plants out leaves it out too. Immutable; any thread.
+     *
+     * @param amount    how fully the cover hides the soil where plants grow, in [0, 1]; 0 turns it off
+     * @param height    height of the near blades, metres, in [0.005, 0.5]
+     * @param density   near blades per square metre, in [0, 20000]
+     * @param reach     distance from the eye out to which near blades are drawn, metres, in [0, 50]
+     *                  (0: the ground's colour alone)
+     * @param spread    distance from a plant over which it brings cover, metres, in [0.1, 20]
+     * @param colour    colour of healthy cover
+     * @param dryColour colour of dry cover (dry patches, tips)
+     */
+    public record GroundCover(double amount, double height, double density, double reach, double spread,
+                              Rgb colour, Rgb dryColour) {
+        /** Largest {@link #height()}, metres. */
+        public static final double MAX_HEIGHT = 0.5;
+        /** Smallest {@link #height()}, metres. */
+        public static final double MIN_HEIGHT = 0.005;
+        /** Largest {@link #density()}, blades per square metre. */
+        public static final double MAX_DENSITY = 20_000;
+        /** Largest {@link #reach()}, metres. */
+        public static final double MAX_REACH = 50;
+        /** Smallest {@link #spread()}, metres. */
+        public static final double MIN_SPREAD = 0.1;
+        /** Largest {@link #spread()}, metres. */
+        public static final double MAX_SPREAD = 20;
+
+        /**
+         * Checks the components.
+         *
+         * @param amount    in [0, 1]
+         * @param height    metres, in [0.005, 0.5]
+         * @param density   blades per square metre, in [0, 20000]
+         * @param reach     metres, in [0, 50]
+         * @param spread    metres, in [0.1, 20]
+         * @param colour    not null
+         * @param dryColour not null
+         * @throws IllegalArgumentException when a component is null or out of range
+         */
+        public GroundCover {
+            Require.range("amount", amount, 0, 1);
+            Require.range("height", height, MIN_HEIGHT, MAX_HEIGHT);
+            Require.range("density", density, 0, MAX_DENSITY);
+            Require.range("reach", reach, 0, MAX_REACH);
+            Require.range("spread", spread, MIN_SPREAD, MAX_SPREAD);
+            Require.nonNull("colour", colour);
+            Require.nonNull("dryColour", dryColour);
+        }
+
+        /** {@return whether there is any cover to draw ({@link #amount()} above 0)} */
+        public boolean enabled() {
+            return amount > 0;
+        }
+
+        /**
+         * No cover: bare ground between the plants (amount 0; the other values are the element's
+         * defaults: 6 cm blades, 2500 per square metre to 8 m, spreading 1.5 m from each plant, a
+         * meadow green drying to straw).
+         */
+        public static final GroundCover NONE = new GroundCover(0, 0.06, 2500, 8, 1.5, new Rgb(0.30f, 0.50f, 0.16f),
+                new Rgb(0.62f, 0.56f, 0.30f));
+    }
+
     /** Which map tints the terrain. */
     public enum Tint {
         /** Plain terrain colour. */
@@ -155,6 +225,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @param light         sun, sky and atmosphere, not null
      * @param patches       colour patches, not null
      * @param antialiasing  samples per pixel: 1, 2, 4 or 8
+     * @param groundCover   ground cover, not null ({@link GroundCover#NONE} for none)
      * @throws IllegalArgumentException when a component is null or out of range
      */
     public RenderDef {
@@ -165,6 +236,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         Require.nonNull("terrainTint", terrainTint);
         Require.nonNull("light", light);
         Require.nonNull("patches", patches);
+        Require.nonNull("groundCover", groundCover);
         if (antialiasing != 1 && antialiasing != 2 && antialiasing != 4 && antialiasing != 8) {
             throw new IllegalArgumentException("antialiasing must be 1, 2, 4 or 8 samples per pixel, got "
                     + antialiasing);
@@ -187,7 +259,28 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
     public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
                      boolean showWind) {
         this(width, height, sky, lodTransition, terrainTint, showField, showWind, Light.DEFAULT, Patches.DEFAULT,
-                DEFAULT_ANTIALIASING);
+                DEFAULT_ANTIALIASING, GroundCover.NONE);
+    }
+
+    /**
+     * The settings without ground cover ({@link GroundCover#NONE}). Any thread; allocates.
+     *
+     * @param width         default width, pixels, in [16, 8192]
+     * @param height        default height, pixels, in [16, 8192]
+     * @param sky           horizon and fog colour, not null
+     * @param lodTransition dithering band width, metres, in [0, 10]
+     * @param terrainTint   terrain tint, not null
+     * @param showField     whether the quadtree overlay starts visible
+     * @param showWind      whether the wind-vector overlay starts visible
+     * @param light         sun, sky and atmosphere, not null
+     * @param patches       colour patches, not null
+     * @param antialiasing  samples per pixel: 1, 2, 4 or 8
+     * @throws IllegalArgumentException when a component is null or out of range
+     */
+    public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
+                     boolean showWind, Light light, Patches patches, int antialiasing) {
+        this(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches, antialiasing,
+                GroundCover.NONE);
     }
 
     /**
@@ -198,7 +291,18 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      */
     public RenderDef withLight(Light light) {
         return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches,
-                antialiasing);
+                antialiasing, groundCover);
+    }
+
+    /**
+     * A copy with other ground cover. Any thread; allocates.
+     *
+     * @param groundCover the new ground cover, not null
+     * @return the copy
+     */
+    public RenderDef withGroundCover(GroundCover groundCover) {
+        return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches,
+                antialiasing, groundCover);
     }
 
     /**

@@ -443,12 +443,16 @@ final class SceneBinder {
         Values pv = r.child("patches");
         RenderDef.Patches patches = pv == null ? RenderDef.Patches.DEFAULT : make(pv, () -> new RenderDef.Patches(
                 pv.num("scale"), pv.num("strength"), pv.integer("seed")));
-        if (light == null || patches == null) {
+        Values gv = r.child("groundCover");
+        RenderDef.GroundCover cover = gv == null ? RenderDef.GroundCover.NONE : make(gv,
+                () -> new RenderDef.GroundCover(gv.num("amount"), gv.num("height"), gv.num("density"), gv.num("reach"),
+                        gv.num("spread"), (Rgb) gv.get("colour"), (Rgb) gv.get("dryColour")));
+        if (light == null || patches == null || cover == null) {
             return null;
         }
         return make(r, () -> new RenderDef(r.integer("width"), r.integer("height"), (Rgb) r.get("sky"),
                 r.num("lodTransition"), byXml(RenderDef.Tint.values(), r.str("terrainTint")), r.bool("showField"),
-                r.bool("showWind"), light, patches, Integer.parseInt(r.str("antialiasing"))));
+                r.bool("showWind"), light, patches, Integer.parseInt(r.str("antialiasing")), cover));
     }
 
     /** The constant whose xmlName() is {@code word}; the validator has already checked it exists. */

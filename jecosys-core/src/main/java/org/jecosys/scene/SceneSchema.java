@@ -61,19 +61,19 @@ final class SceneSchema {
     private SceneSchema() {
     }
 
-    private static AttrSpec num(String name, String units, String doc) {
+    static AttrSpec num(String name, String units, String doc) {
         return AttrSpec.of(name, DOUBLE, units, doc);
     }
 
-    private static AttrSpec angle(String name, String doc) {
+    static AttrSpec angle(String name, String doc) {
         return AttrSpec.of(name, ANGLE, "degrees", doc);
     }
 
-    private static AttrSpec integer(String name, String doc) {
+    static AttrSpec integer(String name, String doc) {
         return AttrSpec.of(name, INT, "", doc);
     }
 
-    private static AttrSpec bool(String name, String doc) {
+    static AttrSpec bool(String name, String doc) {
         return AttrSpec.of(name, BOOL, "", doc);
     }
 
@@ -81,7 +81,7 @@ final class SceneSchema {
         return AttrSpec.of("seed", LONG, "", doc).def(1L).get(g);
     }
 
-    private static <E extends Enum<E>> List<String> words(E[] constants, Function<E, String> xml) {
+    static <E extends Enum<E>> List<String> words(E[] constants, Function<E, String> xml) {
         List<String> out = new ArrayList<>();
         for (E e : constants) {
             out.add(xml.apply(e));
@@ -89,7 +89,7 @@ final class SceneSchema {
         return out;
     }
 
-    private static AttrSpec enumeration(String name, List<String> words, String doc) {
+    static AttrSpec enumeration(String name, List<String> words, String doc) {
         return AttrSpec.of(name, ENUM, "", doc).values(words);
     }
 
@@ -484,66 +484,7 @@ final class SceneSchema {
                         .def(0).get(d -> ((AnimationDef) d).threads()))
                 .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
 
-        RenderDef.Light ld = RenderDef.Light.DEFAULT;
-        Function<Object, RenderDef.Light> li = d -> (RenderDef.Light) d;
-        ElementSpec light = new ElementSpec("light", "Sun, sky gradient, ambient light, contact shadow and aerial "
-                + "perspective (presentation only).")
-                .attr(angle("sunAzimuth", "Compass angle of the sun: the direction toward it is (cos el cos az, "
-                        + "sin el, cos el sin az), so 0 is +X and 90 is +Z.")
-                        .range(-RenderDef.Light.MAX_AZIMUTH_DEGREES, RenderDef.Light.MAX_AZIMUTH_DEGREES)
-                        .def(ld.sunAzimuth()).get(d -> li.apply(d).sunAzimuth()))
-                .attr(angle("sunElevation", "Height of the sun above the horizon.")
-                        .range(0, RenderDef.Light.MAX_ELEVATION_DEGREES).def(ld.sunElevation())
-                        .get(d -> li.apply(d).sunElevation()))
-                .attr(AttrSpec.of("sunColour", COLOUR, "", "Colour of the sunlight.").def(ld.sunColour())
-                        .get(d -> li.apply(d).sunColour()))
-                .attr(num("sunIntensity", "", "Multiplier of the sun colour.").range(0, RenderDef.Light.MAX_INTENSITY)
-                        .def(ld.sunIntensity()).get(d -> li.apply(d).sunIntensity()))
-                .attr(AttrSpec.of("skyZenith", COLOUR, "", "Sky colour straight up; the render's sky is the "
-                        + "horizon.").def(ld.skyZenith()).get(d -> li.apply(d).skyZenith()))
-                .attr(AttrSpec.of("ambient", COLOUR, "", "Sky light on an upward-facing surface (colour times "
-                        + "strength).").def(ld.ambient()).get(d -> li.apply(d).ambient()))
-                .attr(num("contactShadow", "", "How much darker fully occluded ground under plants is (0 none).")
-                        .range(0, 1).def(ld.contactShadow()).get(d -> li.apply(d).contactShadow()))
-                .attr(num("fogStart", "metres", "Distance where the haze toward the horizon colour begins.")
-                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogStart()).get(d -> li.apply(d).fogStart()))
-                .attr(num("fogEnd", "metres", "Distance of full haze; above fogStart.")
-                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogEnd()).get(d -> li.apply(d).fogEnd()));
-        RenderDef.Patches pd = RenderDef.Patches.DEFAULT;
-        ElementSpec patches = new ElementSpec("patches", "Large healthy/dry colour patches over the ground and "
-                + "the plants, from seeded noise (presentation only).")
-                .attr(num("scale", "metres", "Feature size of the noise.")
-                        .range(RenderDef.Patches.MIN_SCALE, RenderDef.Patches.MAX_SCALE).def(pd.scale())
-                        .get(d -> ((RenderDef.Patches) d).scale()))
-                .attr(num("strength", "", "How far the driest patches go toward dry (0 turns patches off).")
-                        .range(0, 1).def(pd.strength()).get(d -> ((RenderDef.Patches) d).strength()))
-                .attr(integer("seed", "Seed of the noise.").range(Integer.MIN_VALUE, Integer.MAX_VALUE)
-                        .def(pd.seed()).get(d -> ((RenderDef.Patches) d).seed()));
-
-        RenderDef rd = RenderDef.defaults();
-        ElementSpec render = new ElementSpec("render", "Presentation settings.")
-                .attr(integer("width", "Window or image width, pixels.").range(16, 8192).def(rd.width())
-                        .get(d -> ((RenderDef) d).width()))
-                .attr(integer("height", "Window or image height, pixels.").range(16, 8192).def(rd.height())
-                        .get(d -> ((RenderDef) d).height()))
-                .attr(AttrSpec.of("sky", COLOUR, "", "Horizon and fog colour (the sky gradient runs from it to "
-                        + "the light's skyZenith).").def(rd.sky())
-                        .get(d -> ((RenderDef) d).sky()))
-                .attr(num("lodTransition", "metres", "Band over which two levels of detail are dithered.")
-                        .range(0, 10).def(rd.lodTransition()).get(d -> ((RenderDef) d).lodTransition()))
-                .attr(enumeration("terrainTint", words(RenderDef.Tint.values(), RenderDef.Tint::xmlName),
-                        "Which resource map tints the terrain.").def("none")
-                        .get(d -> ((RenderDef) d).terrainTint().xmlName()))
-                .attr(bool("showField", "Force-field overlay visible at start (paper Figure 2).").def(false)
-                        .get(d -> ((RenderDef) d).showField()))
-                .attr(bool("showWind", "Wind-vector overlay visible at start (paper Figure 3).").def(false)
-                        .get(d -> ((RenderDef) d).showWind()))
-                .attr(enumeration("antialiasing", List.of("1", "2", "4", "8"), "Samples per pixel of the viewer's "
-                        + "window and of headless images (multisample anti-aliasing); 1 turns it off.")
-                        .def(Integer.toString(RenderDef.DEFAULT_ANTIALIASING))
-                        .get(d -> Integer.toString(((RenderDef) d).antialiasing())))
-                .child(light, 0, 1, d -> List.of(((RenderDef) d).light()))
-                .child(patches, 0, 1, d -> List.of(((RenderDef) d).patches()));
+        ElementSpec render = RenderSchema.render();
 
         ROOT = new ElementSpec("scene", "A JEcoSys scene, format version 1. Children appear in this order.")
                 .attr(integer("version", "Format version.").range(SceneDef.FORMAT_VERSION, SceneDef.FORMAT_VERSION)

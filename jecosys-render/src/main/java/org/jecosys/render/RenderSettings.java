@@ -43,6 +43,7 @@ public final class RenderSettings {
     private float fogEnd = 150;
     private boolean clear;
     private boolean terrain;
+    private RenderDef.GroundCover groundCover = RenderDef.GroundCover.NONE;
 
     /**
      * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
@@ -69,8 +70,9 @@ public final class RenderSettings {
 
     /**
      * The look a scene file asks for in its {@code <render>} element: sky and haze colours, sun, ambient
-     * light, contact shadow, fog, colour patches, terrain tint and overlays ({@code RenderDef}, its
-     * {@code <light>} and {@code <patches>}). Clearing and the terrain stay off, as for any guest; the
+     * light, contact shadow, fog, colour patches, ground cover, terrain tint and overlays
+     * ({@code RenderDef}, its {@code <light>}, {@code <patches>} and {@code <groundCover>}). Clearing and
+     * the terrain stay off, as for any guest; the
      * viewer adds {@code .clear(true).terrain(true)}. Any thread; allocates.
      *
      * @param scene the scene
@@ -101,7 +103,28 @@ public final class RenderSettings {
                 .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
                 .ambient(l.ambient()).contactShadow((float) l.contactShadow())
                 .fog((float) l.fogStart(), (float) l.fogEnd())
-                .patches((float) p.scale(), (float) p.strength(), p.seed());
+                .patches((float) p.scale(), (float) p.strength(), p.seed())
+                .groundCover(def.groundCover());
+    }
+
+    /** {@return the ground cover: the short layer hiding the soil where plants grow ({@code <groundCover>})} */
+    public RenderDef.GroundCover groundCover() {
+        return groundCover;
+    }
+
+    /**
+     * Sets the ground cover ({@link RenderDef.GroundCover#NONE} for bare ground between the plants). The
+     * renderer draws it with the plants (near blades) and the terrain (the cover's colour on the
+     * ground); it works out where cover grows from the plants once per {@code spread}, so a new spread
+     * costs one rebuild of that map (allocates), the rest applies at the next frame. Render thread; no
+     * allocation.
+     *
+     * @param cover the cover, not null
+     * @return this settings object
+     */
+    public RenderSettings groundCover(RenderDef.GroundCover cover) {
+        groundCover = Require.nonNull("cover", cover);
+        return this;
     }
 
     /**

@@ -26,6 +26,7 @@ import org.jecosys.sim.World;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.GlStateGuard;
 import org.jecosys.render.ground.SkyRenderer;
+import org.jecosys.render.ground.CoverBlades;
 import org.jecosys.render.ground.TerrainRenderer;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.plant.PlantRenderer;
@@ -43,6 +44,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final RenderSettings settings;
     private final World world;
     private final TerrainRenderer terrain;
+    private final CoverBlades cover;
     private final PlantRenderer plants;
     private final SkyRenderer sky;
     private final FieldOverlay overlay;
@@ -82,6 +84,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.settings = settings;
         this.world = world;
         TerrainRenderer t = null;
+        CoverBlades c = null;
         PlantRenderer p = null;
         SkyRenderer k = null;
         GlStateGuard g = new GlStateGuard();
@@ -92,12 +95,13 @@ public final class SceneRenderer implements AutoCloseable {
         try {
             g.setGuestState();
             t = new TerrainRenderer(gl, world, settings.tint());
+            c = new CoverBlades(gl, world, t);
             p = new PlantRenderer(gl, world, path);
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
         } catch (RuntimeException e) {
             try {
-                Closing.closeAll(k, p, t);
+                Closing.closeAll(k, p, c, t);
             } finally {
                 g.restore();
                 g.close();
@@ -107,6 +111,7 @@ public final class SceneRenderer implements AutoCloseable {
         g.restore();
         sky = k;
         terrain = t;
+        cover = c;
         plants = p;
         state = g;
     }
@@ -138,6 +143,11 @@ public final class SceneRenderer implements AutoCloseable {
     /** {@return the terrain renderer} */
     public TerrainRenderer terrain() {
         return terrain;
+    }
+
+    /** {@return the near ground-cover renderer (its counters: tiles and blades of the last frame)} */
+    public CoverBlades cover() {
+        return cover;
     }
 
     /** {@return the overlay renderer} */
@@ -237,9 +247,12 @@ public final class SceneRenderer implements AutoCloseable {
             plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.drawNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
+            if (terrain.prepareCover(settings)) {
+                cover.draw(frame, camera, settings, terrain.maps());
+            }
         }
         if (drawTerrain && settings.terrain()) {
-            terrain.draw(camera, settings);
+            terrain.draw(camera, settings, drawPlants);
         }
         if (settings.clear()) {
             // the sky where nothing is (depth still 1), before the blended far level
@@ -276,7 +289,7 @@ public final class SceneRenderer implements AutoCloseable {
             closed = true;
             state.save();
             try {
-                Closing.closeAll(overlay, sky, plants, terrain);
+                Closing.closeAll(overlay, sky, plants, cover, terrain);
             } finally {
                 state.restore();
                 state.close();

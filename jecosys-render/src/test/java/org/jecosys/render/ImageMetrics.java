@@ -87,6 +87,24 @@ final class ImageMetrics {
         return new double[] {h, max == 0 ? 0 : d / max, max};
     }
 
+    /**
+     * Whether two packed colours are "the same" to the eye: no channel differs by more than 3 levels or
+     * 6% of the larger value, whichever is larger (a ratio, so dark soil and bright soil are judged alike).
+     */
+    static boolean sameColour(int p, int q) {
+        return close(r(p), r(q)) && close(g(p), g(q)) && close(b(p), b(q));
+    }
+
+    private static boolean close(int a, int b) {
+        return Math.abs(a - b) <= Math.max(3, 0.06 * Math.max(a, b));
+    }
+
+    /** Whether two packed colours differ by more than {@link Shots#TOLERANCE} in some channel. */
+    static boolean differ(int p, int q) {
+        return Math.max(Math.abs(r(p) - r(q)), Math.max(Math.abs(g(p) - g(q)), Math.abs(b(p) - b(q))))
+                > Shots.TOLERANCE;
+    }
+
     /** Pixels whose largest channel difference between a and b exceeds {@code tolerance} (0..255). */
     static boolean[] differ(Img a, Img b, int tolerance) {
         check(a, b);

@@ -49,7 +49,9 @@ class PlantColourTest {
         List<Double> hueDev = new ArrayList<>();
         List<Double> valueDev = new ArrayList<>();
         int tested = 0;
-        try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
+        // the plants' own colours: without the ground cover, whose blades would join the plants' blobs
+        RenderSettings bare = RenderScenes.settings(def).groundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
+        try (Shots s = new Shots(world, bare, W, H)) {
             collect(s, world, def, 0, 0, HEIGHT, colours, cores);
             for (int sp = 1; sp < speciesCount; sp++) {
                 int c = world.densestPlant(sp, 2);

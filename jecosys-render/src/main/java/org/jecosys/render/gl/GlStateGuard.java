@@ -122,8 +122,8 @@ public final class GlStateGuard implements AutoCloseable {
     /**
      * The texture units whose bindings the renderers change: 0 to 7 (poses, component records or
      * instances, render states, static data, links, the components' looks, the species slots' looks,
-     * the compute resolve pass's list table; the terrain's occlusion map is the 2D texture of
-     * {@link #UNIT_2D}).
+     * the compute resolve pass's list table; the terrain's occlusion and cover map is the 2D texture of
+     * {@link #UNIT_2D}, the ground cover's grain that of {@link #UNIT_GRAIN}).
      */
     public static final int UNITS = 8;
 
@@ -132,6 +132,9 @@ public final class GlStateGuard implements AutoCloseable {
 
     /** The texture unit whose 2D texture binding the terrain uses: the occlusion map. */
     public static final int UNIT_2D = 5;
+
+    /** The texture unit whose 2D texture binding the ground cover's grain uses (terrain and near blades). */
+    public static final int UNIT_GRAIN = 6;
 
     /** Capabilities saved and put back; those from {@link #OFF} on are switched off by {@link #setGuestState()}. */
     private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST, GL_RASTERIZER_DISCARD,

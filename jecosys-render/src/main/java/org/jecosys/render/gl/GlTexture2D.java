@@ -17,7 +17,13 @@ import static org.lwjgl.opengl.GL11C.glGetInteger;
 import static org.lwjgl.opengl.GL11C.glPixelStorei;
 import static org.lwjgl.opengl.GL11C.glTexImage2D;
 import static org.lwjgl.opengl.GL11C.glTexParameteri;
+import static org.lwjgl.opengl.GL11C.GL_LINEAR_MIPMAP_LINEAR;
+import static org.lwjgl.opengl.GL11C.GL_REPEAT;
+import static org.lwjgl.opengl.GL11C.glTexSubImage2D;
 import static org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE;
+import static org.lwjgl.opengl.GL30C.GL_RG;
+import static org.lwjgl.opengl.GL30C.GL_RG8;
+import static org.lwjgl.opengl.GL30C.glGenerateMipmap;
 import static org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE;
 import static org.lwjgl.opengl.GL13C.GL_TEXTURE0;
 import static org.lwjgl.opengl.GL13C.glActiveTexture;
@@ -26,12 +32,19 @@ import static org.lwjgl.opengl.GL30C.GL_R8;
 import java.nio.ByteBuffer;
 
 /**
- * A single-channel 8-bit 2D texture ({@code GL_R8}), linearly filtered and clamped at its edges, read
- * in shaders as a {@code sampler2D} in [0, 1]: the terrain's contact-occlusion map. Render thread only.
+ * An 8-bit 2D texture of one or two channels ({@code GL_R8}, {@code GL_RG8}), linearly filtered, read
+ * in shaders as a {@code sampler2D} in [0, 1]: either clamped at its edges (a map over the terrain: the
+ * contact occlusion and the ground cover) or repeating with mipmaps (a tile, such as the ground cover's
+ * grain, which the mipmaps band-limit at any distance). Render thread only.
  */
 public final class GlTexture2D extends GlResource {
+    private final int width;
+    private final int height;
+    private final int channels;
+
     /**
-     * Makes and fills the texture. Puts back the active unit, its 2D binding and the unpack alignment.
+     * Makes and fills a one-channel texture clamped at its edges. Puts back the active unit, its 2D
+     * binding and the unpack alignment.
      *
      * @param tracker counts the object
      * @param width   texels along S (X)
@@ -39,7 +52,28 @@ public final class GlTexture2D extends GlResource {
      * @param texels  {@code width * height} bytes, rows of S, from its position
      */
     public GlTexture2D(GlTracker tracker, int width, int height, ByteBuffer texels) {
+        this(tracker, width, height, 1, false, texels);
+    }
+
+    /**
+     * Makes and fills the texture. Puts back the active unit, its 2D binding and the unpack alignment.
+     *
+     * @param tracker  counts the object
+     * @param width    texels along S (X)
+     * @param height   texels along T (Z)
+     * @param channels 1 (red) or 2 (red, green)
+     * @param tile     true: repeating, with mipmaps; false: clamped at the edges, no mipmaps
+     * @param texels   {@code width * height * channels} bytes, rows of S, channels interleaved, from its
+     *                 position
+     */
+    public GlTexture2D(GlTracker tracker, int width, int height, int channels, boolean tile, ByteBuffer texels) {
         super(tracker, glGenTextures());
+        if (channels != 1 && channels != 2) {
+            throw new IllegalArgumentException("channels must be 1 or 2, got " + channels);
+        }
+        this.width = width;
+        this.height = height;
+        this.channels = channels;
         int unit = glGetInteger(GL_ACTIVE_TEXTURE);
         glActiveTexture(GL_TEXTURE0);
         int bound = glGetInteger(GL_TEXTURE_BINDING_2D);
@@ -47,11 +81,41 @@ public final class GlTexture2D extends GlResource {
         try {
             glBindTexture(GL_TEXTURE_2D, id());
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, texels);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexImage2D(GL_TEXTURE_2D, 0, channels == 1 ? GL_R8 : GL_RG8, width, height, 0,
+                    channels == 1 ? GL_RED : GL_RG, GL_UNSIGNED_BYTE, texels);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, tile ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, tile ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, tile ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+            if (tile) {
+                glGenerateMipmap(GL_TEXTURE_2D);
+            }
+        } finally {
+            glPixelStorei(GL_UNPACK_ALIGNMENT, align);
+            glBindTexture(GL_TEXTURE_2D, bound);
+            glActiveTexture(unit);
+        }
+    }
+
+    /**
+     * Replaces the texels of a texture made without mipmaps. Puts back the active unit, its 2D binding
+     * and the unpack alignment. Render thread; no allocation.
+     *
+     * @param texels {@code width * height * channels} bytes, rows of S, from its position
+     */
+    public void upload(ByteBuffer texels) {
+        if (texels.remaining() < width * height * channels) {
+            throw new IllegalArgumentException("need " + width * height * channels + " bytes, got " + texels.remaining());
+        }
+        int unit = glGetInteger(GL_ACTIVE_TEXTURE);
+        glActiveTexture(GL_TEXTURE0);
+        int bound = glGetInteger(GL_TEXTURE_BINDING_2D);
+        int align = glGetInteger(GL_UNPACK_ALIGNMENT);
+        try {
+            glBindTexture(GL_TEXTURE_2D, id());
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, channels == 1 ? GL_RED : GL_RG, GL_UNSIGNED_BYTE,
+                    texels);
         } finally {
             glPixelStorei(GL_UNPACK_ALIGNMENT, align);
             glBindTexture(GL_TEXTURE_2D, bound);

@@ -1,32 +1,34 @@
 package org.jecosys.render.ground;
 
 import java.nio.ByteBuffer;
-import org.jecosys.plant.ComponentDef;
-import org.jecosys.plant.SpeciesDef;
+import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.World;
 import org.jecosys.terrain.Heightfield;
 
 /**
  * The ground's contact-occlusion map: how much of the sky and sun a point of the ground loses to the
- * plants standing on it, in [0, 1], on a regular grid over the terrain. Built once from the plants'
- * base positions: each plant splats a disc of radius {@link #radius} (its species' spread plus a
- * margin, at least {@value #MIN_RADIUS} m) with weight {@code 1 - (d / radius)^2}, and overlapping
- * discs combine as independent occluders ({@code 1 - product(1 - w)}). The terrain shader darkens the
- * ground by {@code contactShadow * occlusion}. Texels are {@value #TEXEL} m unless the terrain needs
- * more than {@value #MAX_SIDE} of them per side. Immutable after construction; built on any thread,
- * allocates.
+ * plants standing on it, in [0, 1], on a regular grid over the terrain. Built once from the plants at
+ * rest: each plant darkens its own footprint, the outline of everything it has seen from straight above
+ * (the convex hull of its rest pose projected on the ground, {@link Footprint}), turned to the plant's
+ * rest azimuth: fully ({@value #PEAK}) well inside it, fading to nothing across a soft edge a quarter
+ * of the footprint's size wide on each side, so a thin flower darkens a small spot and a wide tuft a
+ * wide one. Overlapping plants combine as independent occluders ({@code 1 - product(1 - w)}); a plant
+ * smaller than a texel adds its footprint's share of the texel. The terrain shader darkens the ground by
+ * {@code contactShadow * occlusion}. Texels are {@value #TEXEL} m unless the terrain needs more than
+ * {@value #MAX_SIDE} of them per side. Immutable after construction; built on any thread, allocates.
  */
 public final class ContactOcclusion {
     /** Preferred texel size, metres. */
-    public static final double TEXEL = 0.1;
+    public static final double TEXEL = 0.025;
     /** Largest side of the map, texels. */
     public static final int MAX_SIDE = 2048;
-    /** Smallest splat radius, metres: ground within 0.2 m of a base is clearly darkened. */
-    public static final double MIN_RADIUS = 0.3;
-    /** Largest splat radius, metres. */
-    public static final double MAX_RADIUS = 0.8;
-    /** Occlusion at the centre of one plant's disc (several plants together approach 1). */
-    public static final double PEAK = 0.85;
+    /** Occlusion well inside one plant's footprint (several plants together approach 1). */
+    public static final double PEAK = 0.95;
+    /** The soft edge's half width as a share of the footprint's equivalent radius. */
+    public static final double EDGE = 0.5;
+    /** Least and largest half width of the soft edge, metres. */
+    public static final double MIN_EDGE = 0.01;
+    public static final double MAX_EDGE = 0.1;
 
     public final int width;
     public final int height;
@@ -48,20 +50,6 @@ public final class ContactOcclusion {
     }
 
     /**
-     * The splat radius of a species: how far its ground components reach sideways at rest, plus
-     * 0.15 m, clamped to [{@value #MIN_RADIUS}, {@value #MAX_RADIUS}] m.
-     */
-    public static double radius(SpeciesDef species) {
-        double spread = 0;
-        for (ComponentDef c : species.components()) {
-            if (c.attachTo() == null) {
-                spread = Math.max(spread, c.length() * Math.sin(Math.min(Math.PI / 2, c.tilt() + 0.5 * Math.abs(c.curvature()))));
-            }
-        }
-        return Math.max(MIN_RADIUS, Math.min(MAX_RADIUS, 0.6 * spread + 0.15));
-    }
-
-    /**
      * Builds the map of a world's plants over its terrain.
      *
      * @param world the terrain and plants
@@ -75,14 +63,20 @@ public final class ContactOcclusion {
         int ht = (int) Math.max(2, Math.min(MAX_SIDE, Math.ceil(sizeZ / TEXEL) + 1));
         ContactOcclusion m = new ContactOcclusion(w, ht, h.minX(), h.minZ(), sizeX / (w - 1), sizeZ / (ht - 1));
         int species = world.plants().species().size();
-        double[] radius = new double[species];
+        Footprint[][] prints = new Footprint[species][];
         for (int s = 0; s < species; s++) {
-            radius[s] = radius(world.plants().species().get(s).def());
+            SpeciesModel model = world.plants().species().get(s);
+            prints[s] = new Footprint[model.variants()];
         }
         // accumulate -log(1 - w) (transparency multiplies), then turn it back into occlusion
         float[] acc = m.occlusion;
         for (int p = 0; p < world.plantCount(); p++) {
-            m.splat(acc, world.plantX(p), world.plantZ(p), radius[world.plantSpecies(p)]);
+            int s = world.plantSpecies(p);
+            int v = world.plantVariant(p);
+            if (prints[s][v] == null) {
+                prints[s][v] = Footprint.of(world.plants().species().get(s), v);
+            }
+            m.splat(acc, world.plantX(p), world.plantZ(p), world.plantRestAzimuth(p), prints[s][v]);
         }
         for (int i = 0; i < acc.length; i++) {
             acc[i] = (float) (1 - Math.exp(-acc[i]));
@@ -90,30 +84,71 @@ public final class ContactOcclusion {
         return m;
     }
 
-    private void splat(float[] acc, double x, double z, double r) {
-        // texel centres sit on the grid points: texel i covers x = minX + i * texelX
+    private void splat(float[] acc, double x, double z, double restAzimuth, Footprint f) {
+        double edge = Math.max(MIN_EDGE, Math.min(MAX_EDGE, EDGE * f.radius()));
+        double reach = f.maxReach() + edge;
         double u = (x - minX) / texelX;
         double v = (z - minZ) / texelZ;
-        int i0 = (int) Math.max(0, Math.ceil(u - r / texelX));
-        int i1 = (int) Math.min(width - 1, Math.floor(u + r / texelX));
-        int j0 = (int) Math.max(0, Math.ceil(v - r / texelZ));
-        int j1 = (int) Math.min(height - 1, Math.floor(v + r / texelZ));
-        double r2 = r * r;
+        if (reach < 0.75 * Math.min(texelX, texelZ)) {
+            // smaller than a texel: its share of the four texels round it
+            double share = Math.min(1, Math.PI * (f.radius() + edge) * (f.radius() + edge) / (texelX * texelZ));
+            int i = (int) Math.floor(u);
+            int j = (int) Math.floor(v);
+            double fu = u - i;
+            double fv = v - j;
+            add(acc, i, j, share * (1 - fu) * (1 - fv));
+            add(acc, i + 1, j, share * fu * (1 - fv));
+            add(acc, i, j + 1, share * (1 - fu) * fv);
+            add(acc, i + 1, j + 1, share * fu * fv);
+            return;
+        }
+        int i0 = (int) Math.max(0, Math.ceil(u - reach / texelX));
+        int i1 = (int) Math.min(width - 1, Math.floor(u + reach / texelX));
+        int j0 = (int) Math.max(0, Math.ceil(v - reach / texelZ));
+        int j1 = (int) Math.min(height - 1, Math.floor(v + reach / texelZ));
+        // texel offsets turned back into the plant's frame (the footprint is at rest azimuth 0)
+        double c = Math.cos(restAzimuth);
+        double sn = Math.sin(restAzimuth);
         for (int j = j0; j <= j1; j++) {
             double dz = minZ + j * texelZ - z;
             for (int i = i0; i <= i1; i++) {
                 double dx = minX + i * texelX - x;
-                double d2 = dx * dx + dz * dz;
-                if (d2 < r2) {
-                    double wgt = PEAK * (1 - d2 / r2);
-                    acc[j * width + i] += (float) -Math.log(1 - wgt);
+                double r = Math.sqrt(dx * dx + dz * dz);
+                if (r >= reach) {
+                    continue;
+                }
+                double lx = dx * c + dz * sn;
+                double lz = -dx * sn + dz * c;
+                double t = (r - f.reach(lx, lz) + edge) / (2 * edge);
+                if (t < 1) {
+                    double k = t <= 0 ? 1 : 1 - t * t * (3 - 2 * t);
+                    acc[j * width + i] += (float) -Math.log(1 - PEAK * k);
                 }
             }
         }
     }
 
+    private void add(float[] acc, int i, int j, double share) {
+        if (i >= 0 && j >= 0 && i < width && j < height && share > 0) {
+            acc[j * width + i] += (float) -Math.log(1 - PEAK * Math.min(1, share));
+        }
+    }
+
     /** {@return the occlusion at a world point, bilinear between texels, 0 outside the terrain} */
     public double sample(double x, double z) {
+        return sample(occlusion, x, z);
+    }
+
+    /**
+     * A value of a map on this map's grid at a world point, bilinear between texels, 0 outside the
+     * terrain. Any thread; no allocation.
+     *
+     * @param values {@code width * height} values, rows along X
+     * @param x      world X, metres
+     * @param z      world Z, metres
+     * @return the value
+     */
+    public double sample(float[] values, double x, double z) {
         double u = (x - minX) / texelX;
         double v = (z - minZ) / texelZ;
         if (u < 0 || v < 0 || u > width - 1 || v > height - 1) {
@@ -123,10 +158,10 @@ public final class ContactOcclusion {
         int j = (int) Math.min(height - 2, Math.floor(v));
         double fu = u - i;
         double fv = v - j;
-        double a = occlusion[j * width + i];
-        double b = occlusion[j * width + i + 1];
-        double c = occlusion[(j + 1) * width + i];
-        double d = occlusion[(j + 1) * width + i + 1];
+        double a = values[j * width + i];
+        double b = values[j * width + i + 1];
+        double c = values[(j + 1) * width + i];
+        double d = values[(j + 1) * width + i + 1];
         return (a * (1 - fu) + b * fu) * (1 - fv) + (c * (1 - fu) + d * fu) * fv;
     }
 
@@ -139,8 +174,28 @@ public final class ContactOcclusion {
      */
     public ByteBuffer bytes(ByteBuffer dest) {
         for (float o : occlusion) {
-            dest.put((byte) Math.round(Math.max(0, Math.min(1, o)) * 255));
+            dest.put(unorm(o));
         }
         return dest.flip();
+    }
+
+    /**
+     * Writes the map and a second map on the same grid as byte pairs (occlusion, then the other value;
+     * 0 for 0, 255 for 1), rows along X, into {@code dest} from its position, and flips it: the
+     * terrain's two-channel texture.
+     *
+     * @param dest   at least {@code 2 * width * height} bytes remaining
+     * @param second {@code width * height} values in [0, 1], or null for zeros
+     * @return {@code dest}, flipped
+     */
+    public ByteBuffer bytes(ByteBuffer dest, float[] second) {
+        for (int i = 0; i < occlusion.length; i++) {
+            dest.put(unorm(occlusion[i])).put(second == null ? 0 : unorm(second[i]));
+        }
+        return dest.flip();
+    }
+
+    private static byte unorm(float v) {
+        return (byte) Math.round(Math.max(0, Math.min(1, v)) * 255);
     }
 }

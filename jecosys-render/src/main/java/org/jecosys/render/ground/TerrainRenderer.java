@@ -34,6 +34,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.TerrainTint;
+import org.jecosys.scene.RenderDef;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlStateGuard;
@@ -80,8 +81,19 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uPatch;
     private final int uPatchSeed;
     private final int uContactShadow;
+    private final int uCover;
+    private final int uCoverColour;
+    private final int uCoverDry;
+    /** Contact occlusion (red) and ground cover (green) over the terrain. */
     private final GlTexture2D occlusion;
+    /** The ground cover's grain: a repeating, mipmapped tile. */
+    private final GlTexture2D grain;
     private final ContactOcclusion occlusionMap;
+    private final World world;
+    /** The spread of the cover in the map, metres; NaN before the first map with cover. */
+    private double coverSpread = Double.NaN;
+    /** The cover level per occlusion-map texel, as last built; null before. */
+    private float[] coverLevel;
     private TerrainTint tint;
     private boolean closed;
 
@@ -121,16 +133,22 @@ public final class TerrainRenderer implements AutoCloseable {
         GlBuffer vb = null;
         GlBuffer ib = null;
         GlTexture2D occ = null;
+        GlTexture2D gr = null;
+        this.world = world;
         occlusionMap = world == null ? null : ContactOcclusion.of(world);
         FloatBuffer v = MemoryUtil.memAllocFloat(vertexCount() * FLOATS);
         IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1) + 6 * rim());
-        ByteBuffer texels = MemoryUtil.memAlloc(occlusionMap == null ? 4 : occlusionMap.width * occlusionMap.height);
+        ByteBuffer texels = MemoryUtil.memAlloc(Math.max(CoverGrain.SIDE * CoverGrain.SIDE,
+                occlusionMap == null ? 8 : 2 * occlusionMap.width * occlusionMap.height));
         try {
             if (occlusionMap == null) {
-                occ = new GlTexture2D(t, 2, 2, texels.put(new byte[4]).flip());
+                occ = new GlTexture2D(t, 2, 2, 2, false, texels.put(new byte[8]).flip());
             } else {
-                occ = new GlTexture2D(t, occlusionMap.width, occlusionMap.height, occlusionMap.bytes(texels));
+                occ = new GlTexture2D(t, occlusionMap.width, occlusionMap.height, 2, false,
+                        occlusionMap.bytes(texels, null));
             }
+            texels.clear();
+            gr = new GlTexture2D(t, CoverGrain.SIDE, CoverGrain.SIDE, 1, true, CoverGrain.bytes(texels));
             prog = new GlProgram(t, "terrain.vert", "terrain.frag");
             va = new GlVertexArray(t);
             va.bind();
@@ -155,7 +173,7 @@ public final class TerrainRenderer implements AutoCloseable {
             ib = GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, idx, GL_STATIC_DRAW);
         } catch (RuntimeException e) {
             glBindVertexArray(0);
-            Closing.closeAll(vb, va, prog, occ);
+            Closing.closeAll(vb, va, prog, occ, gr);
             throw e;
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) v);
@@ -163,6 +181,7 @@ public final class TerrainRenderer implements AutoCloseable {
             MemoryUtil.memFree((java.nio.Buffer) texels);
         }
         occlusion = occ;
+        grain = gr;
         program = prog;
         vao = va;
         vertices = vb;
@@ -186,9 +205,13 @@ public final class TerrainRenderer implements AutoCloseable {
         uPatch = program.uniform("uPatch");
         uPatchSeed = program.uniform("uPatchSeed");
         uContactShadow = program.uniform("uContactShadow");
+        uCover = program.uniform("uCover");
+        uCoverColour = program.uniform("uCoverColour");
+        uCoverDry = program.uniform("uCoverDry");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        glUniform1i(program.uniform("uGrain"), GlStateGuard.UNIT_GRAIN);
         if (occlusionMap == null) {
             glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
             glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
@@ -334,15 +357,29 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
-     * colour, ambient light, contact shadow, patches and haze from the settings. Binds the occlusion
-     * map to unit {@link GlStateGuard#UNIT_2D} (the scene renderer's state guard puts it back). Render
-     * thread; no allocation.
+     * Draws the terrain with its ground cover ({@link #draw(Camera, RenderSettings, boolean)}).
      *
      * @param camera   the viewer
-     * @param settings the light, haze and patch settings
+     * @param settings the light, haze, patch and cover settings
      */
     public void draw(Camera camera, RenderSettings settings) {
+        draw(camera, settings, true);
+    }
+
+    /**
+     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
+     * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
+     * occlusion and cover map to unit {@link GlStateGuard#UNIT_2D} and the cover's grain to
+     * {@link GlStateGuard#UNIT_GRAIN} (the scene renderer's state guard puts them back). Render thread;
+     * no allocation, except when the cover's spread differs from the map's, which rebuilds the map.
+     *
+     * @param camera   the viewer
+     * @param settings the light, haze, patch and cover settings
+     * @param cover    false: bare ground whatever the settings' cover (a picture without the vegetation)
+     */
+    public void draw(Camera camera, RenderSettings settings, boolean cover) {
+        RenderDef.GroundCover gc = settings.groundCover();
+        boolean withCover = cover && prepareCover(settings);
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
@@ -360,10 +397,71 @@ public final class TerrainRenderer implements AutoCloseable {
                 settings.patchStrength() > 0 ? 1 : 0);
         glUniform1i(uPatchSeed, settings.patchSeed());
         glUniform1f(uContactShadow, settings.contactShadow());
+        glUniform4f(uCover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
+        glUniform3f(uCoverColour, gc.colour().r(), gc.colour().g(), gc.colour().b());
+        glUniform3f(uCoverDry, gc.dryColour().r(), gc.dryColour().g(), gc.dryColour().b());
+        grain.bind(GlStateGuard.UNIT_GRAIN);
         occlusion.bind(GlStateGuard.UNIT_2D);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
+    }
+
+    /** Side of the grain tile on the ground, metres. */
+    static final float GRAIN_TILE = 0.7f;
+
+    /**
+     * Makes sure the cover map matches the settings' ground cover (rebuilds it when its spread changed:
+     * allocates then). Render thread; no allocation otherwise.
+     *
+     * @param settings the ground cover
+     * @return whether there is cover to draw: it is enabled and this terrain was built with plants
+     */
+    public boolean prepareCover(RenderSettings settings) {
+        RenderDef.GroundCover gc = settings.groundCover();
+        if (!gc.enabled() || occlusionMap == null) {
+            return false;
+        }
+        if (gc.spread() != coverSpread) {
+            rebuildCover(gc.spread());
+        }
+        return true;
+    }
+
+    /** {@return the contact-occlusion (red) and cover (green) texture over the terrain} */
+    public GlTexture2D maps() {
+        return occlusion;
+    }
+
+    /** {@return the contact-occlusion map, whose grid the cover map shares; null when built without plants} */
+    public ContactOcclusion occlusionMap() {
+        return occlusionMap;
+    }
+
+    /** Works out where cover grows for a spread and uploads it beside the occlusion. Allocates. */
+    private void rebuildCover(double spread) {
+        ContactOcclusion m = occlusionMap;
+        CoverMap cover = CoverMap.of(world, spread, m.width, m.height, m.minX, m.minZ, m.texelX, m.texelZ);
+        ByteBuffer texels = MemoryUtil.memAlloc(2 * m.width * m.height);
+        try {
+            occlusion.upload(m.bytes(texels, cover.level));
+            coverLevel = cover.level;
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) texels);
+        }
+        coverSpread = spread;
+    }
+
+    /**
+     * The ground cover's level the terrain shader reads at a ground point (0 bare, 1 fully covered), as
+     * last built; for tests and tools. Any thread; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the level in [0, 1]; 0 before a frame with cover or outside the terrain
+     */
+    public double cover(double x, double z) {
+        return coverLevel == null ? 0 : occlusionMap.sample(coverLevel, x, z);
     }
 
     /** Deletes the GL objects. Render thread; idempotent. */
@@ -371,7 +469,7 @@ public final class TerrainRenderer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            Closing.closeAll(vao, vertices, indices, program, occlusion);
+            Closing.closeAll(vao, vertices, indices, program, occlusion, grain);
             MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
     }

@@ -14,7 +14,8 @@
 // - colour varies per plant and per component: the resolve pass gives each component a hue turn, a
 //   brightness factor and the dryness of its patch (plant_resolve.vert); here tips and dry patches
 //   turn toward straw; light is sky ambient, sun diffuse, light through the blade when
-//   back-lit, a specular term toward the tip, and darkening toward the base.
+//   back-lit (most through the thin tips), a specular term toward the tip, darkening toward the base
+//   and low down inside the tuft, and a normal folded along the midrib, so it changes across a blade.
 
 #include "plant_light.glsl"
 #include "plant_far.glsl"
@@ -40,6 +41,7 @@ struct Placed {
     vec3 toEye;                                  // eye - vertex
     float distance;                              // |toEye|
     float cover;                                 // share of the drawn width the real part covers
+    float height;                                // height above the component's base, metres
 };
 
 vec3 rotY(vec3 v, float c, float s) {
@@ -110,7 +112,9 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
         } else {
             offset = sw;
             seen = max(length(sw - dot(sw, v) * v), 0.25 * hw);
-            r.normal = nw;
+            // a blade is folded along its midrib: each half's normal leans out to its own side, so the
+            // light changes across the blade
+            r.normal = hw > 0.0 ? nw + (0.55 * a * length(nw) / hw) * sw : nw;
         }
         vec3 world = centre + a * offset + b * nw;
         if (widen && uMinPixels > 0.0) {
@@ -122,6 +126,7 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     }
     r.toEye = uEye - r.world;
     r.distance = length(r.toEye);
+    r.height = r.world.y - base.y;
     return r;
 }
 
@@ -130,5 +135,5 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
 vec3 shade(Placed v, vec4 look, bool far) {
     int kind = int(aShape.x + 0.5);
     float along = aColour.w;
-    return lit(albedo(aColour.rgb, look, kind, along), kind, along, v.normal, v.toEye, v.distance, far);
+    return lit(albedo(aColour.rgb, look, kind, along), kind, along, v.height, v.normal, v.toEye, v.distance, far);
 }

@@ -35,15 +35,21 @@ vec3 albedo(vec3 base, vec4 look, int kind, float along) {
     return c;
 }
 
-// the shade toward the base: 1 at the tip
-float baseShade(int kind, float along) {
-    return kind >= 2 ? 1.0 : 0.5 + 0.5 * sqrt(along);
+// the shade toward the base and low down in a tuft, where the neighbouring leaves hide the sky: 1 at
+// the tip of a part standing clear; along = fraction along the part, height = metres above its base
+float baseShade(int kind, float along, float height) {
+    if (kind >= 2) {
+        return 1.0;
+    }
+    return (0.5 + 0.5 * sqrt(along)) * mix(0.45, 1.0, smoothstep(0.0, 0.3, height));
 }
 
-// c lit at a point with surface normal (not normalised; 0: none), seen from toEye at distance; far
-// drops the sheen
-vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance, bool far) {
-    float ao = baseShade(kind, along);
+// c lit at a point with surface normal (not normalised; 0: none), height metres above its part's
+// base, seen from toEye at distance; far drops the sheen
+vec3 lit(vec3 c, int kind, float along, float height, vec3 normal, vec3 toEye, float distance, bool far) {
+    // the shade low in a tuft fades out from 6 m to 15 m: from afar the tops of the tufts show, and the
+    // few far plants a thinned frame keeps are drawn wider to stand for the others
+    float ao = baseShade(kind, along, mix(height, 1.0, smoothstep(6.0, 15.0, distance)));
     vec3 e = toEye / max(distance, 1e-6);
     vec3 light;
     vec3 gloss = vec3(0.0);
@@ -56,8 +62,9 @@ vec3 lit(vec3 c, int kind, float along, vec3 normal, vec3 toEye, float distance,
         float back = max(-nl, 0.0);
         float toward = 0.5 + 0.5 * dot(-e, uLightDir);    // 1 looking straight into the sun
         // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
-        float through = kind == 3 ? 0.0 : back * (1.6 + 1.6 * toward * toward) * (0.6 + 0.4 * along);
-        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.45 + 0.55 * ao))
+        // thin tips pass on the most
+        float through = kind == 3 ? 0.0 : back * (1.6 + 1.6 * toward * toward) * (0.35 + 0.9 * along * along);
+        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.2 + 0.8 * ao))
                 + uSunColour * THROUGH * through;
         if (!far) {
             // sheen: a blade's waxy surface glints toward the tip when seen against the sun, at grazing

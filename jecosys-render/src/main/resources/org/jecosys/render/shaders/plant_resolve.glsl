@@ -116,6 +116,7 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
         n = vec3(n.x * own.c - n.z * own.s, n.y, n.x * own.s + n.z * own.c);
         vec3 toEye = uEye - world;
         vec3 c = albedo(slotLook.rgb, look, kind, along);
-        record2 = farRecord(lit(c, kind, along, n, toEye, length(toEye), true), max(length(uEye - base), 1e-4));
+        // seen from afar a tuft shows its outer leaves: no shade by height (plant_line.vert shades by along)
+        record2 = farRecord(lit(c, kind, along, 1.0, n, toEye, length(toEye), true), max(length(uEye - base), 1e-4));
     }
 }

@@ -1,26 +1,50 @@
 #version 330 core
-// Terrain: the lit colour from the vertex shader, darkened under the plants by the contact-occlusion
-// map, then hazed toward the horizon colour with distance.
-in vec3 vLit;
+// Terrain: the soil or, where the plants grow, the ground cover (RenderDef.GroundCover) in its colour
+// with a grain of blade tips at two scales (a mipmapped tile, so it fades to its mean with distance
+// instead of shimmering), drier in the dry patches; lit by the light from the vertex shader, darkened
+// under the plants by the contact-occlusion map, then hazed toward the horizon colour with distance.
+in vec3 vSoil;
+in vec3 vLight;
 in vec3 vWorld;
+in vec3 vUvDry;
 uniform vec3 uEye;
 uniform float uFogStart;
 uniform float uFogEnd;
-in vec2 vUv;
-uniform sampler2D uOcclusion;
+uniform sampler2D uOcclusion;                    // red: contact occlusion, green: ground cover level
+uniform sampler2D uGrain;                        // the cover's grain tile, repeating
 uniform float uContactShadow;
 uniform vec3 uFogColour;
+uniform vec4 uCover;                             // amount (0: bare soil), 1 / grain tile (1/m), -, -
+uniform vec3 uCoverColour;
+uniform vec3 uCoverDry;
 layout(location = 0) out vec4 fragColour;
 // the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
 // written only into the library's own framebuffer (a host's other draw buffers are masked off)
 layout(location = 1) out vec4 fragDetail;
 
 void main() {
-    // beyond the map (the horizon skirt) nothing darkens the ground
-    float occlusion = all(greaterThanEqual(vUv, vec2(0.0))) && all(lessThanEqual(vUv, vec2(1.0)))
-            ? texture(uOcclusion, vUv).r : 0.0;
+    vec2 uv = vUvDry.xy;
+    // the map is clamped at its edges: beyond the terrain (the horizon skirt) the cover goes on as at
+    // the rim, but nothing darkens the ground
+    vec2 maps = texture(uOcclusion, uv).rg;
+    float occlusion = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) ? maps.r : 0.0;
+    vec3 albedo = vSoil;
+    if (uCover.x > 0.0) {
+        vec2 p = vWorld.xz * uCover.y;
+        float fine = texture(uGrain, p).r;
+        float coarse = texture(uGrain, mat2(0.8, -0.6, 0.6, 0.8) * p * 0.29 + vec2(0.37, 0.71)).r;
+        float grain = 0.6 * fine + 0.4 * coarse;
+        // dry patches and a few dry flecks turn the cover toward straw
+        float dry = clamp(vUvDry.z * 1.3 + (coarse - 0.5) * 0.6, 0.0, 1.0);
+        // blade tips bright, the gaps between them dark (the canopy's own shade)
+        vec3 cover = mix(uCoverColour, uCoverDry, dry) * (0.62 + 0.7 * grain);
+        // thin cover lets the soil show through its gaps
+        float level = uCover.x * maps.g;
+        float hides = smoothstep(0.1, 0.75, level + 0.45 * (grain - 0.5));
+        albedo = mix(vSoil, cover, hides);
+    }
     // haze (squared ramp), the plants' formula, so plants and ground fade alike
     float fog = clamp((distance(uEye, vWorld) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    fragColour = vec4(mix(vLit * (1.0 - uContactShadow * occlusion), uFogColour, fog * fog), 1.0);
+    fragColour = vec4(mix(albedo * vLight * (1.0 - uContactShadow * occlusion), uFogColour, fog * fog), 1.0);
     fragDetail = vec4(0.0);
 }

@@ -2,8 +2,9 @@
 // Terrain: lit by the sun and the sky's ambient light, coloured by the healthy/dry patches, hazed
 // toward the horizon colour with distance exactly as the plants are (aerial perspective). Lighting
 // and patches per vertex (mesh cells are small against their scales, and llvmpipe shades far more
-// fragments than vertices); the fragment shader applies the contact occlusion under the plants and the
-// haze, per fragment so that the horizon skirt's huge triangles fade like the rest.
+// fragments than vertices); the fragment shader lays the ground cover over the soil, applies the
+// contact occlusion under the plants and the haze, per fragment so that the horizon skirt's huge
+// triangles fade like the rest.
 layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColour;
@@ -14,9 +15,10 @@ uniform vec3 uSun;                               // sun colour times intensity
 uniform vec3 uAmbient;                           // sky light on an upward-facing surface
 uniform vec4 uOcclusionMap;                      // minX, minZ, 1 / (texelX * width), 1 / (texelZ * height)
 uniform vec2 uOcclusionHalf;                     // half a texel in texture coordinates
-out vec3 vLit;                                   // lit, before contact occlusion and haze
+out vec3 vSoil;                                  // the soil's colour (tint, dry patches)
+out vec3 vLight;                                 // light falling on the ground, before contact occlusion
 out vec3 vWorld;                                 // position, metres: the haze is worked out per fragment
-out vec2 vUv;                                    // occlusion-map coordinates
+out vec3 vUvDry;                                 // occlusion-map coordinates, dryness of the patch
 
 #include "patches.glsl"
 
@@ -27,14 +29,15 @@ void main() {
     gl_Position.z = min(gl_Position.z, 0.999999 * gl_Position.w);
     vec3 n = normalize(aNormal);
     vec3 albedo = aColour;
+    float dry = 0.0;
     if (uPatch.z > 0.5) {
         // dry patches: paler, yellower soil
-        float dry = uPatch.y * patchLevel(aPos.xz);
+        dry = uPatch.y * patchLevel(aPos.xz);
         albedo = mix(albedo, vec3(0.46, 0.40, 0.27), 0.6 * dry);
     }
     float diffuse = max(dot(n, uLightDir), 0.0);
-    vec3 light = uAmbient * (0.5 + 0.5 * n.y) + uSun * diffuse;
-    vLit = albedo * light;
+    vLight = uAmbient * (0.5 + 0.5 * n.y) + uSun * diffuse;
+    vSoil = albedo;
     vWorld = aPos;
-    vUv = (aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf;
+    vUvDry = vec3((aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf, dry);
 }
