@@ -25,7 +25,7 @@ final class SpeciesBuild {
         List<ComponentDef> cdefs = def.components();
         int[] parent = parentTypes(cdefs);
         checkNoCycle(cdefs, parent);
-        ComponentVariant[][] variants = sampleVariants(def, seed);
+        ComponentVariant[][] variants = sampleVariants(def, seed, parent);
         double[][] lengths = variantLengths(cdefs, variants);
         double[][] masses = variantMasses(cdefs, variants);
         PoseTable[][] tables = restPoseTables(def, gravity, parent, variants, lengths, masses);
@@ -57,15 +57,26 @@ final class SpeciesBuild {
 
     /**
      * The shape variants, indexed {@code [variant][component type]}: {@link ComponentVariant#sample}
-     * {@code (variation, seed, v, c)}. Build time; allocates the result.
+     * {@code (variation, seed, v, c)}, the length and width factors of a type on the ground
+     * ({@code parent[c] < 0}) times the variant's size-class factor ({@link VariationDef#sizeScale}): a
+     * plant's size class sets how tall and stout its leaves and stalks grow (a stalk scaled in both bends
+     * under its weight as the unscaled one does), while what sits on them (petals, heads) keeps its
+     * size. Build time; allocates the result.
      */
-    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed) {
-        int nv = def.variation().variants();
+    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed, int[] parent) {
+        VariationDef vd = def.variation();
+        int nv = vd.variants();
         int nc = def.components().size();
         ComponentVariant[][] variants = new ComponentVariant[nv][nc];
         for (int v = 0; v < nv; v++) {
             for (int c = 0; c < nc; c++) {
-                variants[v][c] = ComponentVariant.sample(def.variation(), seed, v, c);
+                ComponentVariant cv = ComponentVariant.sample(vd, seed, v, c);
+                if (vd.sizeClasses() > 1 && parent[c] < 0) {
+                    double f = vd.sizeScale(v);
+                    cv = new ComponentVariant(cv.lengthScale() * f, cv.widthScale() * f, cv.curvatureScale(),
+                            cv.extraTilt());
+                }
+                variants[v][c] = cv;
             }
         }
         return variants;

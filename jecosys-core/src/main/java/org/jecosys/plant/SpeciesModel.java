@@ -207,16 +207,14 @@ public final class SpeciesModel {
                 throw new IllegalArgumentException(what + ": pose table " + v + " must have the species' "
                         + def.poses() + " poses and segments + 1 = " + (cd.segments() + 1) + " points");
             }
-            // a variant scales the def's length by the largest variation times the largest size-class factor
-            // at most, its mass by that times the width's
+            // a variant scales the def's length and width by the largest variation times the largest
+            // size-class factor at most, its mass by both
             double lo = ComponentVariant.MIN_LENGTH_SCALE * (1 - 1e-9);
             double hi = ComponentVariant.MAX_LENGTH_SCALE * (1 + 1e-9);
             Require.range(what + ": length(" + v + ")", pc.length(v), ComponentDef.MIN_LENGTH * lo,
                     ComponentDef.MAX_LENGTH * hi);
-            double wlo = 1 - VariationDef.MAX_FRACTION;
-            double whi = 1 + VariationDef.MAX_FRACTION;
-            Require.range(what + ": mass(" + v + ")", pc.mass(v), ComponentDef.MIN_MASS * lo * wlo,
-                    ComponentDef.MAX_MASS * hi * whi);
+            Require.range(what + ": mass(" + v + ")", pc.mass(v), ComponentDef.MIN_MASS * lo * lo,
+                    ComponentDef.MAX_MASS * hi * hi);
         }
         Require.range(what + ": stiffness()", pc.stiffness(), 1e-9, 1e6);
         Require.range(what + ": responseTime()", pc.responseTime(), 1e-3, 10);

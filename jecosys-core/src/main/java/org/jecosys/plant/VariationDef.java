@@ -15,9 +15,10 @@ import org.jecosys.math.Require;
  * there are variants has the same leaves, so the same height, as every other. With
  * {@code sizeClasses} K &gt; 1 the variants are split into K consecutive classes of nearly equal size
  * (variant v is in class {@code floor(v K / variants)}); a plant's instances cycle only through its
- * own class's variants, and every variant of class g has its lengths scaled by
- * {@code 1 + size (2 (g + 0.5) / K - 1)}, evenly spaced in [1 - size, 1 + size]: plants differ in
- * height while still picking among precomputed shapes (the pose tables stay per variant). With
+ * own class's variants, and every variant of class g has the lengths and widths of its component types
+ * on the ground (leaves, stalks) scaled by {@code 1 + size (2 (g + 0.5) / K - 1)}, evenly spaced in
+ * [1 - size, 1 + size], while what sits on them (petals, heads) keeps its size: plants differ in height
+ * while still picking among precomputed shapes (the pose tables stay per variant). With
  * {@code azimuth} &gt; 0 the ground instances of a multi-instance type leave their golden-angle spread
  * by a seeded offset each, uniform in [-azimuth, azimuth], so a tuft's leaves bunch and gap unevenly
  * (the layout is the species', turned by each plant's own rest azimuth).
@@ -36,7 +37,8 @@ import org.jecosys.math.Require;
  *                  species colour), in [0, 0.5]
  * @param dryTips   colour only: how far the tips of the leaves turn straw-coloured, in [0, 1]
  * @param size      relative spread of plant size between size classes, in [0, 0.9]: the classes' factors on
- *                  every component's length lie evenly in [1 - size, 1 + size]; no effect with one class
+ *                  the length of every component type on the ground lie evenly in [1 - size, 1 + size]; no
+ *                  effect with one class
  * @param sizeClasses number of plant size classes the variants are split into, in [1, variants]; 1 (the
  *                  paper's layout) lets a plant's instances use every variant
  * @param azimuth   largest seeded offset of a ground instance's azimuth from the even (golden-angle)
@@ -161,7 +163,7 @@ public record VariationDef(int variants, double length, double width, double cur
     }
 
     /**
-     * {@return the factor of a variant's size class on every component's length:
+     * {@return the factor of a variant's size class on the length of every component type on the ground:
      * {@code 1 + size (2 (class + 0.5) / sizeClasses - 1)}, exactly 1 with one class} Pure; no allocation.
      *
      * @param variant shape variant, in [0, variants())

@@ -82,7 +82,8 @@ final class PlantSchema {
                 .attr(num("dryTips", "", "Colour only: how far the leaf tips turn straw-coloured (0 none, 1 fully).")
                         .range(0, 1).def(0.0).get(d -> ((VariationDef) d).dryTips()))
                 .attr(num("size", "", "Relative spread of plant size between the size classes: the classes' factors "
-                        + "on every component's length lie evenly in [1 - size, 1 + size]; no effect with one class.")
+                        + "on the length of every component on the ground (leaves, stalks; not what sits on them) lie "
+                        + "evenly in [1 - size, 1 + size]; no effect with one class.")
                         .range(0, VariationDef.MAX_FRACTION).def(VariationDef.DEFAULT_SIZE)
                         .get(d -> ((VariationDef) d).size()))
                 .attr(integer("sizeClasses", "Plant size classes the variants are split into, at most variants: a "

@@ -69,10 +69,19 @@ class SizeClassesTest {
         assertEquals(0.9, v.sizeScale(10), 1e-12);
         assertEquals(1.1, v.sizeScale(20), 1e-12);
         assertEquals(1.3, v.sizeScale(39), 1e-12);
-        for (int u = 0; u < 40; u++) {
-            ComponentVariant cv = ComponentVariant.sample(v, 7, u, 0);
-            double drawn = cv.lengthScale() / v.sizeScale(u);
-            assertTrue(Math.abs(drawn - 1) <= 0.3 + 1e-12, "length variation within its fraction: " + drawn);
+        SpeciesDef flower = SpeciesLibrary.yellowFlowerB();
+        SpeciesModel plain = SpeciesModel.build(flower.toBuilder().variation(tufted(40, 1, 0, 0)).build(), 7);
+        SpeciesModel sized = SpeciesModel.build(flower.toBuilder().variation(v).build(), 7);
+        for (int c = 0; c < flower.components().size(); c++) {
+            boolean ground = flower.components().get(c).attachTo() == null;
+            for (int u = 0; u < 40; u++) {
+                double ratio = sized.component(c).length(u) / plain.component(c).length(u);
+                double f = ground ? v.sizeScale(u) : 1;
+                assertEquals(f, ratio, 1e-9, "component " + c + " variant " + u
+                        + ": stalks and ground leaves scale with the class, petals and heads keep their size");
+                assertEquals(f * f, sized.component(c).mass(u) / plain.component(c).mass(u), 1e-9,
+                        "mass follows length and width");
+            }
         }
     }
 
