@@ -2,6 +2,7 @@ package org.jecosys.plant;
 
 import java.util.List;
 import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
 
 /**
  * The build pipeline of {@link SpeciesModel#build(SpeciesDef, long, double)} (paper §4.1): its steps
@@ -10,6 +11,8 @@ import org.jecosys.math.Require;
  */
 final class SpeciesBuild {
     private static final double GOLDEN_ANGLE = Math.PI * (3 - Math.sqrt(5));
+    /** Rng stream of the ground slots' azimuth offsets (variants use streams below 64 x 1024). */
+    private static final long AZIMUTH_STREAM = 0xA5A5_0000_0000L;
 
     private SpeciesBuild() {
     }
@@ -22,12 +25,12 @@ final class SpeciesBuild {
         List<ComponentDef> cdefs = def.components();
         int[] parent = parentTypes(cdefs);
         checkNoCycle(cdefs, parent);
-        ComponentVariant[][] variants = sampleVariants(def, seed);
+        ComponentVariant[][] variants = sampleVariants(def, seed, parent);
         double[][] lengths = variantLengths(cdefs, variants);
         double[][] masses = variantMasses(cdefs, variants);
         PoseTable[][] tables = restPoseTables(def, gravity, parent, variants, lengths, masses);
         ComponentModel[] models = componentModels(def, tables, lengths, masses);
-        SlotLayout slots = new SlotLayout(cdefs, parent, def.componentsPerPlant());
+        SlotLayout slots = new SlotLayout(cdefs, parent, def.componentsPerPlant(), def.variation().azimuth(), seed);
         LodMesh[] meshes = plantMeshes(def, slots.component, models);
         return new SpeciesModel(def, seed, models, meshes, slots.component, slots.parent, slots.azimuth,
                 slots.baseX, slots.baseZ, slots.variantOffset, System.nanoTime() - t0);
@@ -54,15 +57,26 @@ final class SpeciesBuild {
 
     /**
      * The shape variants, indexed {@code [variant][component type]}: {@link ComponentVariant#sample}
-     * {@code (variation, seed, v, c)}. Build time; allocates the result.
+     * {@code (variation, seed, v, c)}, the length and width factors of a type on the ground
+     * ({@code parent[c] < 0}) times the variant's size-class factor ({@link VariationDef#sizeScale}): a
+     * plant's size class sets how tall and stout its leaves and stalks grow (a stalk scaled in both bends
+     * under its weight as the unscaled one does), while what sits on them (petals, heads) keeps its
+     * size. Build time; allocates the result.
      */
-    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed) {
-        int nv = def.variation().variants();
+    private static ComponentVariant[][] sampleVariants(SpeciesDef def, long seed, int[] parent) {
+        VariationDef vd = def.variation();
+        int nv = vd.variants();
         int nc = def.components().size();
         ComponentVariant[][] variants = new ComponentVariant[nv][nc];
         for (int v = 0; v < nv; v++) {
             for (int c = 0; c < nc; c++) {
-                variants[v][c] = ComponentVariant.sample(def.variation(), seed, v, c);
+                ComponentVariant cv = ComponentVariant.sample(vd, seed, v, c);
+                if (vd.sizeClasses() > 1 && parent[c] < 0) {
+                    double f = vd.sizeScale(v);
+                    cv = new ComponentVariant(cv.lengthScale() * f, cv.widthScale() * f, cv.curvatureScale(),
+                            cv.extraTilt());
+                }
+                variants[v][c] = cv;
             }
         }
         return variants;
@@ -198,12 +212,21 @@ final class SpeciesBuild {
         final double[] baseZ;
         final int[] variantOffset;
 
+        /** Largest azimuth offset of a ground instance, radians (0: the even spread). */
+        private final double jitter;
+        /** Draws the azimuth offsets, slot by slot; null without them. */
+        private final Rng rng;
+
         /**
          * @param cdefs      the component types
          * @param parentType per type its parent type, or -1 ({@link #parentTypes})
          * @param slots      component instances per plant (the sum of the types' counts)
+         * @param jitter     largest azimuth offset of a ground instance, radians ({@link VariationDef#azimuth()})
+         * @param seed       the species' variation seed
          */
-        SlotLayout(List<ComponentDef> cdefs, int[] parentType, int slots) {
+        SlotLayout(List<ComponentDef> cdefs, int[] parentType, int slots, double jitter, long seed) {
+            this.jitter = jitter;
+            this.rng = jitter > 0 ? Rng.forStream(seed, AZIMUTH_STREAM) : null;
             component = new int[slots];
             parent = new int[slots];
             azimuth = new double[slots];
@@ -242,12 +265,18 @@ final class SpeciesBuild {
         /**
          * Ground instance {@code j} of type {@code d} in {@code slot}: leaves at the golden angle
          * {@code j * 2.39996}, other types spread evenly ({@code 2 pi j / count}); a multi-instance
-         * type sits on a phyllotaxis disc, radius {@code 0.5 baseWidth sqrt(j + 0.5)} metres.
+         * type sits on a phyllotaxis disc, radius {@code 0.5 baseWidth sqrt(j + 0.5)} metres. With a
+         * jitter, a multi-instance type's azimuth moves by a seeded offset uniform in [-jitter,
+         * jitter] (wrapped into [0, 2 pi)), before its disc position is taken.
          */
         private void placeOnGround(int slot, ComponentDef d, int j) {
             parent[slot] = -1;
             boolean leaf = d.type() == ComponentType.LEAF;
             azimuth[slot] = leaf ? (j * GOLDEN_ANGLE) % (2 * Math.PI) : 2 * Math.PI * j / d.count();
+            if (d.count() > 1 && rng != null) {
+                double a = (azimuth[slot] + jitter * rng.nextDouble(-1, 1)) % (2 * Math.PI);
+                azimuth[slot] = a < 0 ? a + 2 * Math.PI : a;
+            }
             if (d.count() > 1) {
                 double r = 0.5 * d.baseWidth() * Math.sqrt(j + 0.5);
                 baseX[slot] = r * Math.cos(azimuth[slot]);

@@ -17,7 +17,10 @@ import org.jecosys.math.Rng;
  * in the ground plane (ground instances of a multi-instance type sit on a small phyllotaxis disc of
  * radius {@code 0.5 baseWidth sqrt(j + 0.5)}; attached ones sit at the parent's tip) and a variant
  * offset {@code j}: slot {@code s} of a plant of variant {@code v} uses shape variant
- * {@code (v + slotVariantOffset(s)) mod variants}, so the leaves of one tuft differ. Attached
+ * {@code (v + slotVariantOffset(s)) mod variants}, so the leaves of one tuft differ (with size classes,
+ * cyclically within the plant's class: {@link VariationDef#slotVariant}); a variation's
+ * {@link VariationDef#azimuth()} moves each ground instance of a multi-instance type off the even
+ * spread by a seeded offset. Attached
  * components follow their parent's tip position but keep their own world-upright frame, so they
  * stay above the ground like their parent.
  *
@@ -204,9 +207,10 @@ public final class SpeciesModel {
                 throw new IllegalArgumentException(what + ": pose table " + v + " must have the species' "
                         + def.poses() + " poses and segments + 1 = " + (cd.segments() + 1) + " points");
             }
-            // a variant scales the def's length by up to 1 +- the largest variation, its mass by that squared
-            double lo = (1 - VariationDef.MAX_FRACTION) * (1 - 1e-9);
-            double hi = (1 + VariationDef.MAX_FRACTION) * (1 + 1e-9);
+            // a variant scales the def's length and width by the largest variation times the largest
+            // size-class factor at most, its mass by both
+            double lo = ComponentVariant.MIN_LENGTH_SCALE * (1 - 1e-9);
+            double hi = ComponentVariant.MAX_LENGTH_SCALE * (1 + 1e-9);
             Require.range(what + ": length(" + v + ")", pc.length(v), ComponentDef.MIN_LENGTH * lo,
                     ComponentDef.MAX_LENGTH * hi);
             Require.range(what + ": mass(" + v + ")", pc.mass(v), ComponentDef.MIN_MASS * lo * lo,
@@ -317,13 +321,15 @@ public final class SpeciesModel {
     }
 
     /**
-     * {@return the shape variant a slot uses: {@code (plantVariant + slotVariantOffset(slot)) mod variants()}}
+     * {@return the shape variant a slot uses: {@link VariationDef#slotVariant}{@code (plantVariant,
+     * slotVariantOffset(slot))}, i.e. {@code (plantVariant + slotVariantOffset(slot)) mod variants()} with
+     * one size class, else cyclically within the plant's size class} No allocation.
      *
      * @param slot         slot index, in [0, slotCount())
      * @param plantVariant the plant's variant, in [0, variants())
      */
     public int slotVariant(int slot, int plantVariant) {
-        return (plantVariant + slotVariantOffset[slot]) % variants();
+        return def.variation().slotVariant(plantVariant, slotVariantOffset[slot]);
     }
 
     /**

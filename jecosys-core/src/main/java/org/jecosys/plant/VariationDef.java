@@ -8,6 +8,21 @@ import org.jecosys.math.Require;
  * each plant picks one by seed and adds its own rest azimuth. Fractions are relative
  * (0.1 = up to plus or minus 10%). Immutable; any thread.
  *
+ * <h2>Size classes and uneven tufts (not in the paper)</h2>
+ * A plant's component instances use different variants (the slot of instance {@code j} uses
+ * {@link #slotVariant}), so the leaves of a tuft differ in length, width, curvature and lean. With one
+ * size class (the default) they cycle through <em>all</em> variants, and a tuft with as many leaves as
+ * there are variants has the same leaves, so the same height, as every other. With
+ * {@code sizeClasses} K &gt; 1 the variants are split into K consecutive classes of nearly equal size
+ * (variant v is in class {@code floor(v K / variants)}); a plant's instances cycle only through its
+ * own class's variants, and every variant of class g has the lengths and widths of its component types
+ * on the ground (leaves, stalks) scaled by {@code 1 + size (2 (g + 0.5) / K - 1)}, evenly spaced in
+ * [1 - size, 1 + size], while what sits on them (petals, heads) keeps its size: plants differ in height
+ * while still picking among precomputed shapes (the pose tables stay per variant). With
+ * {@code azimuth} &gt; 0 the ground instances of a multi-instance type leave their golden-angle spread
+ * by a seeded offset each, uniform in [-azimuth, azimuth], so a tuft's leaves bunch and gap unevenly
+ * (the layout is the species', turned by each plant's own rest azimuth).
+ *
  * @param variants  number of pre-computed shape variants sharing pose tables, in [1, 64]
  * @param length    relative length variation, in [0, 0.9]
  * @param width     relative width variation, in [0, 0.9]
@@ -21,9 +36,17 @@ import org.jecosys.math.Require;
  * @param value     colour only: standard deviation of the per-plant brightness factor (1 is the
  *                  species colour), in [0, 0.5]
  * @param dryTips   colour only: how far the tips of the leaves turn straw-coloured, in [0, 1]
+ * @param size      relative spread of plant size between size classes, in [0, 0.9]: the classes' factors on
+ *                  the length of every component type on the ground lie evenly in [1 - size, 1 + size]; no
+ *                  effect with one class
+ * @param sizeClasses number of plant size classes the variants are split into, in [1, variants]; 1 (the
+ *                  paper's layout) lets a plant's instances use every variant
+ * @param azimuth   largest seeded offset of a ground instance's azimuth from the even (golden-angle)
+ *                  spread, radians, in [0, pi]; 0 keeps the even spread
  */
 public record VariationDef(int variants, double length, double width, double curvature, double tilt,
-                           double responseTime, double stiffness, double hue, double value, double dryTips) {
+                           double responseTime, double stiffness, double hue, double value, double dryTips,
+                           double size, int sizeClasses, double azimuth) {
     /**
      * Checks the components.
      *
@@ -37,6 +60,9 @@ public record VariationDef(int variants, double length, double width, double cur
      * @param hue       s.d. of the per-plant hue shift, degrees, in [0, 60]
      * @param value     s.d. of the per-plant brightness factor, in [0, 0.5]
      * @param dryTips   straw colour at the leaf tips, in [0, 1]
+     * @param size      relative size spread of the size classes, in [0, 0.9]
+     * @param sizeClasses size classes, in [1, variants]
+     * @param azimuth   largest azimuth offset of a ground instance, radians, in [0, pi]
      * @throws IllegalArgumentException when a component is out of range
      */
     public VariationDef {
@@ -50,6 +76,34 @@ public record VariationDef(int variants, double length, double width, double cur
         Require.range("hue", hue, 0, MAX_HUE_DEGREES);
         Require.range("value", value, 0, MAX_VALUE);
         Require.range("dryTips", dryTips, 0, 1);
+        Require.range("size", size, 0, MAX_FRACTION);
+        if (sizeClasses < 1 || sizeClasses > variants) {
+            throw new IllegalArgumentException("sizeClasses must be in [1, variants = " + variants
+                    + "] (each class needs a variant of its own), got " + sizeClasses);
+        }
+        Require.degrees("azimuth", azimuth, 0, MAX_AZIMUTH_DEGREES);
+    }
+
+    /**
+     * Variation with one size class and the even azimuth spread: every variant at its own lengths,
+     * the paper's layout. Any thread; allocates.
+     *
+     * @param variants  shape variants, in [1, 64]
+     * @param length    relative length variation, in [0, 0.9]
+     * @param width     relative width variation, in [0, 0.9]
+     * @param curvature relative curvature variation, in [0, 0.9]
+     * @param tilt      extra tilt, radians, in [0, pi/4]
+     * @param responseTime relative response-time variation, in [0, 0.9]
+     * @param stiffness relative stiffness variation, in [0, 0.9]
+     * @param hue       s.d. of the per-plant hue shift, degrees, in [0, 60]
+     * @param value     s.d. of the per-plant brightness factor, in [0, 0.5]
+     * @param dryTips   straw colour at the leaf tips, in [0, 1]
+     * @throws IllegalArgumentException when a component is out of range
+     */
+    public VariationDef(int variants, double length, double width, double curvature, double tilt,
+                        double responseTime, double stiffness, double hue, double value, double dryTips) {
+        this(variants, length, width, curvature, tilt, responseTime, stiffness, hue, value, dryTips, DEFAULT_SIZE,
+                DEFAULT_SIZE_CLASSES, DEFAULT_AZIMUTH);
     }
 
     /**
@@ -81,7 +135,69 @@ public record VariationDef(int variants, double length, double width, double cur
      */
     public VariationDef withColour(double hue, double value, double dryTips) {
         return new VariationDef(variants, length, width, curvature, tilt, responseTime, stiffness, hue, value,
-                dryTips);
+                dryTips, size, sizeClasses, azimuth);
+    }
+
+    /**
+     * A copy with other size classes and azimuth spread (see the class comment). Any thread; allocates.
+     *
+     * @param size        relative size spread of the classes, in [0, 0.9]
+     * @param sizeClasses size classes, in [1, variants()]
+     * @param azimuth     largest azimuth offset of a ground instance, radians, in [0, pi]
+     * @return the copy
+     * @throws IllegalArgumentException when a value is out of range
+     */
+    public VariationDef withTufts(double size, int sizeClasses, double azimuth) {
+        return new VariationDef(variants, length, width, curvature, tilt, responseTime, stiffness, hue, value,
+                dryTips, size, sizeClasses, azimuth);
+    }
+
+    /**
+     * {@return the size class of a variant: {@code floor(variant sizeClasses / variants)}} Pure; no
+     * allocation.
+     *
+     * @param variant shape variant, in [0, variants())
+     */
+    public int sizeClassOf(int variant) {
+        return (int) ((long) variant * sizeClasses / variants);
+    }
+
+    /**
+     * {@return the factor of a variant's size class on the length of every component type on the ground:
+     * {@code 1 + size (2 (class + 0.5) / sizeClasses - 1)}, exactly 1 with one class} Pure; no allocation.
+     *
+     * @param variant shape variant, in [0, variants())
+     */
+    public double sizeScale(int variant) {
+        if (sizeClasses == 1) {
+            return 1;
+        }
+        return 1 + size * (2 * (sizeClassOf(variant) + 0.5) / sizeClasses - 1);
+    }
+
+    /**
+     * The variant that instance {@code offset} of a component type uses in a plant of variant
+     * {@code plantVariant}: the plant's variant advanced by the offset, cyclically within the plant's
+     * size class ({@code (plantVariant + offset) mod variants} with one class, the paper's). Pure; no
+     * allocation; any thread.
+     *
+     * @param plantVariant the plant's variant, in [0, variants())
+     * @param offset       the instance's index within its type, &gt;= 0
+     * @return a variant of the plant's size class, in [0, variants())
+     */
+    public int slotVariant(int plantVariant, int offset) {
+        if (sizeClasses == 1) {
+            return (plantVariant + offset) % variants;
+        }
+        int g = sizeClassOf(plantVariant);
+        int start = classStart(g);
+        int n = classStart(g + 1) - start;
+        return start + (plantVariant - start + offset) % n;
+    }
+
+    /** First variant of size class g (g = sizeClasses gives variants): {@code ceil(g variants / sizeClasses)}. */
+    private int classStart(int g) {
+        return (int) (((long) g * variants + sizeClasses - 1) / sizeClasses);
     }
 
     /**
@@ -105,6 +221,15 @@ public record VariationDef(int variants, double length, double width, double cur
     public static final double MAX_FRACTION = 0.9;
     /** Largest extra tilt, degrees (the API takes radians). */
     public static final double MAX_TILT_DEGREES = 45;
+
+    /** Largest azimuth offset of a ground instance, degrees (the API takes radians). */
+    public static final double MAX_AZIMUTH_DEGREES = 180;
+    /** Default {@link #size()}: no size spread. */
+    public static final double DEFAULT_SIZE = 0;
+    /** Default {@link #sizeClasses()}: one class, every variant open to every plant (the paper's). */
+    public static final int DEFAULT_SIZE_CLASSES = 1;
+    /** Default {@link #azimuth()}, radians: the even spread. */
+    public static final double DEFAULT_AZIMUTH = 0;
 
     /** Largest s.d. of the per-plant hue shift, degrees. */
     public static final double MAX_HUE_DEGREES = 60;

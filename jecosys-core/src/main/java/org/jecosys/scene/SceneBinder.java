@@ -243,7 +243,7 @@ final class SceneBinder {
         VariationDef variation = varV == null ? VariationDef.NONE : make(varV, () -> new VariationDef(
                 varV.integer("variants"), varV.num("length"), varV.num("width"), varV.num("curvature"),
                 varV.num("tilt"), varV.num("responseTime"), varV.num("stiffness"), varV.num("hue"), varV.num("value"),
-                varV.num("dryTips")));
+                varV.num("dryTips"), varV.num("size"), varV.integer("sizeClasses"), varV.num("azimuth")));
         List<Values> compValues = s.children("component");
         Set<String> compIds = new HashSet<>();
         for (Values c : compValues) {
@@ -311,7 +311,8 @@ final class SceneBinder {
         return make(d, () -> new DistributionDef(d.str("species"), d.integer("count"), d.num("density"),
                 d.num("minWater"), d.num("maxWater"), d.num("minNutrients"), d.num("maxNutrients"),
                 d.num("maxSlope"), d.num("minAltitude"), d.num("maxAltitude"), d.num("footprint"),
-                d.num("waterUse"), d.num("nutrientUse"), d.num("clumpSize"), d.num("clumpStrength")));
+                d.num("waterUse"), d.num("nutrientUse"), d.num("clumpSize"), d.num("clumpStrength"),
+                d.num("tuftSize"), d.integer("tuftCount")));
     }
 
     private boolean minMax(Values v, String min, String max) {

@@ -32,7 +32,15 @@ import org.jecosys.math.Rng;
  * {@link DistributionDef#clumpSize()}: g is 1 inside the patches (about 40% of the ground) and 0 between
  * them; otherwise it is drawn again, at most {@link #CLUMP_TRIES} times (the last draw is kept). So
  * plants gather into patches of about clumpSize radius, denser by up to 1 / (share of ground in
- * clumps); at s = 0 no extra numbers are drawn and the layout is the uniform one, bit for bit.</li>
+ * clumps); at s = 0 no extra numbers are drawn and the layout is the uniform one, bit for bit.
+ * With a {@link DistributionDef#tuftCount()} t &gt; 1 (not in the paper), such a draw is the centre
+ * of a <em>tuft</em> shared by t consecutive candidates of the chunk (a Thomas cluster process): each
+ * is the centre plus a normal offset of standard deviation {@link DistributionDef#tuftSize()} along X
+ * and Z (clamped to the terrain), so plants grow in small groups, tussocks of several tufts within a
+ * few decimetres, inside the larger patches: clusters of clusters, as in real grassland, whose
+ * Clark&ndash;Evans ratio is below 1, where the footprints alone would space the plants more evenly than
+ * random. The centre itself is no candidate, and a member off the suitable ground is simply refused
+ * at acceptance. At t = 1 no offsets are drawn and the layout is the untufted one, bit for bit.</li>
  * <li>Acceptance runs on the calling thread in one fixed order that interleaves the batches in
  * proportion to their size (candidate i of a batch of b comes at (i + 0.5) / b; ties by
  * distribution index), so the species compete for the same ground at the same time and none simply

@@ -24,11 +24,18 @@ import org.jecosys.math.Require;
  * @param clumpStrength how strongly candidates gather into clumps, in [0, 1]: 0 places them uniformly
  *                     over the suitable ground (the paper's layout, bit for bit), 1 only inside the clumps
  *                     (see {@link CompetitiveDistributor})
+ * @param tuftSize     small-scale grouping (not in the paper): standard deviation, metres, of a tuft's
+ *                     candidates around their shared centre, in [{@link #MIN_TUFT_SIZE},
+ *                     {@link #MAX_TUFT_SIZE}]; read only when {@code tuftCount > 1}
+ * @param tuftCount    candidates drawn around each tuft centre, in [1, {@link #MAX_TUFT_COUNT}]: 1 draws
+ *                     every candidate on its own (the paper's layout, bit for bit), more gather plants into
+ *                     tufts (tussocks) of up to that many within about {@code 2 tuftSize} of each other
+ *                     (see {@link CompetitiveDistributor})
  */
 public record DistributionDef(String species, int count, double density, double minWater, double maxWater,
                               double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
                               double maxAltitude, double footprint, double waterUse, double nutrientUse,
-                              double clumpSize, double clumpStrength) {
+                              double clumpSize, double clumpStrength, double tuftSize, int tuftCount) {
     /** Largest exact count. */
     public static final int MAX_COUNT = 10_000_000;
     /** Largest density, plants per square metre (the scene schema's range and the API's). */
@@ -45,6 +52,12 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double MIN_CLUMP_SIZE = 0.05;
     /** Largest clump radius, metres. */
     public static final double MAX_CLUMP_SIZE = 1000;
+    /** Smallest tuft size, metres. */
+    public static final double MIN_TUFT_SIZE = 0.005;
+    /** Largest tuft size, metres. */
+    public static final double MAX_TUFT_SIZE = 10;
+    /** Most candidates per tuft centre. */
+    public static final int MAX_TUFT_COUNT = 64;
 
     /**
      * Checks the components.
@@ -65,6 +78,8 @@ public record DistributionDef(String species, int count, double density, double 
      * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
      * @param clumpSize    clump radius, metres, in [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
      * @param clumpStrength clumping, in [0, 1]; 0 for none
+     * @param tuftSize      tuft spread (s.d.), metres, in [{@link #MIN_TUFT_SIZE}, {@link #MAX_TUFT_SIZE}]
+     * @param tuftCount     candidates per tuft centre, in [1, {@link #MAX_TUFT_COUNT}]; 1 for none
      * @throws IllegalArgumentException when a component is out of range or species is null
      */
     public DistributionDef {
@@ -86,11 +101,43 @@ public record DistributionDef(String species, int count, double density, double 
         Require.range("nutrientUse", nutrientUse, 0, 1);
         Require.range("clumpSize", clumpSize, MIN_CLUMP_SIZE, MAX_CLUMP_SIZE);
         Require.range("clumpStrength", clumpStrength, 0, 1);
+        Require.range("tuftSize", tuftSize, MIN_TUFT_SIZE, MAX_TUFT_SIZE);
+        Require.range("tuftCount", tuftCount, 1, MAX_TUFT_COUNT);
     }
 
     /**
-     * A distribution without clumping ({@link #DEFAULT_CLUMP_SIZE}, {@link #DEFAULT_CLUMP_STRENGTH}):
-     * the paper's uniform candidates. Checks as the canonical constructor does.
+     * A distribution without tufts ({@link #DEFAULT_TUFT_SIZE}, {@link #DEFAULT_TUFT_COUNT}): every
+     * candidate drawn on its own. Checks as the canonical constructor does.
+     *
+     * @param species       species id, not null
+     * @param count         exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
+     * @param density       plants per square metre, in [0, {@link #MAX_DENSITY}]
+     * @param minWater      lowest water level, in [0, 1]
+     * @param maxWater      highest water level, in [minWater, 1]
+     * @param minNutrients  lowest nutrient level, in [0, 1]
+     * @param maxNutrients  highest nutrient level, in [minNutrients, 1]
+     * @param maxSlope      steepest ground, radians
+     * @param minAltitude   lowest terrain height, metres
+     * @param maxAltitude   highest terrain height, metres
+     * @param footprint     radius of ground a plant takes, metres
+     * @param waterUse      water level a plant consumes, in [0, 1]
+     * @param nutrientUse   nutrient level a plant consumes, in [0, 1]
+     * @param clumpSize     clump radius, metres, in [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
+     * @param clumpStrength clumping, in [0, 1]
+     * @throws IllegalArgumentException when a component is out of range or species is null
+     */
+    public DistributionDef(String species, int count, double density, double minWater, double maxWater,
+                           double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
+                           double maxAltitude, double footprint, double waterUse, double nutrientUse,
+                           double clumpSize, double clumpStrength) {
+        this(species, count, density, minWater, maxWater, minNutrients, maxNutrients, maxSlope, minAltitude,
+                maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength, DEFAULT_TUFT_SIZE,
+                DEFAULT_TUFT_COUNT);
+    }
+
+    /**
+     * A distribution without clumping ({@link #DEFAULT_CLUMP_SIZE}, {@link #DEFAULT_CLUMP_STRENGTH}) or
+     * tufts: the paper's uniform candidates. Checks as the canonical constructor does.
      *
      * @param species      species id, not null
      * @param count        exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
@@ -142,6 +189,10 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double DEFAULT_CLUMP_SIZE = 1;
     /** Default {@link #clumpStrength()}: no clumping, the paper's uniform candidates. */
     public static final double DEFAULT_CLUMP_STRENGTH = 0;
+    /** Default {@link #tuftSize()}, metres (read only when {@link #tuftCount()} is above 1). */
+    public static final double DEFAULT_TUFT_SIZE = 0.1;
+    /** Default {@link #tuftCount()}: no tufts, every candidate drawn on its own. */
+    public static final int DEFAULT_TUFT_COUNT = 1;
 
     /**
      * A builder for a distribution of {@code species}, every value at the scene schema's default
@@ -163,7 +214,8 @@ public record DistributionDef(String species, int count, double density, double 
     public Builder toBuilder() {
         return new Builder(species).count(count).density(density).water(minWater, maxWater)
                 .nutrients(minNutrients, maxNutrients).maxSlope(maxSlope).altitude(minAltitude, maxAltitude)
-                .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse).clump(clumpSize, clumpStrength);
+                .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse).clump(clumpSize, clumpStrength)
+                .tufts(tuftSize, tuftCount);
     }
 
     /**
@@ -186,6 +238,8 @@ public record DistributionDef(String species, int count, double density, double 
         private double nutrientUse = DEFAULT_NUTRIENT_USE;
         private double clumpSize = DEFAULT_CLUMP_SIZE;
         private double clumpStrength = DEFAULT_CLUMP_STRENGTH;
+        private double tuftSize = DEFAULT_TUFT_SIZE;
+        private int tuftCount = DEFAULT_TUFT_COUNT;
 
         private Builder(String species) {
             this.species = species;
@@ -310,6 +364,20 @@ public record DistributionDef(String species, int count, double density, double 
         }
 
         /**
+         * Sets the tufts: {@code count} candidates drawn around each shared centre, offsets normal with
+         * standard deviation {@code size} (a Thomas cluster process; see {@link CompetitiveDistributor}).
+         *
+         * @param size  metres, in [{@link #MIN_TUFT_SIZE}, {@link #MAX_TUFT_SIZE}]
+         * @param count candidates per centre, in [1, {@link #MAX_TUFT_COUNT}]; 1 for none
+         * @return this builder
+         */
+        public Builder tufts(double size, int count) {
+            this.tuftSize = size;
+            this.tuftCount = count;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -317,7 +385,8 @@ public record DistributionDef(String species, int count, double density, double 
          */
         public DistributionDef build() {
             return new DistributionDef(species, count, density, minWater, maxWater, minNutrients, maxNutrients,
-                    maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength);
+                    maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength,
+                    tuftSize, tuftCount);
         }
     }
 }

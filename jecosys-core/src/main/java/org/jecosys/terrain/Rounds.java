@@ -161,27 +161,37 @@ final class Rounds {
         double strength = def.clumpStrength();
         long clumpSeed = Rng.mix(seed ^ Rng.mix(0xC1L + ((long) d << 8)));
         double clumpScale = 1 / (2 * def.clumpSize());
+        int tuft = def.tuftCount();
+        double spread = def.tuftSize();
+        float x = 0;
+        float z = 0;
         for (int i = from; i < to; i++) {
-            float x;
-            float z;
-            int tries = 0;
-            while (true) {
-                int cell = m.possible[rng.nextInt(m.possible.length)];
-                int mi = cell % m.res;
-                int mj = cell / m.res;
-                x = inside(minX + (mi + rng.nextDouble()) * m.cellX, minX, hf.maxX());
-                z = inside(minZ + (mj + rng.nextDouble()) * m.cellZ, minZ, hf.maxZ());
-                // strength 0 draws nothing more: the paper's uniform candidates, bit for bit
-                if (strength == 0 || ++tries >= CompetitiveDistributor.CLUMP_TRIES
-                        || rng.nextDouble() < clumpAcceptance(clumpSeed, clumpScale, strength, x, z)) {
-                    break;
+            if (tuft == 1 || (i - from) % tuft == 0) {
+                int tries = 0;
+                while (true) {
+                    int cell = m.possible[rng.nextInt(m.possible.length)];
+                    int mi = cell % m.res;
+                    int mj = cell / m.res;
+                    x = inside(minX + (mi + rng.nextDouble()) * m.cellX, minX, hf.maxX());
+                    z = inside(minZ + (mj + rng.nextDouble()) * m.cellZ, minZ, hf.maxZ());
+                    // strength 0 draws nothing more: the paper's uniform candidates, bit for bit
+                    if (strength == 0 || ++tries >= CompetitiveDistributor.CLUMP_TRIES
+                            || rng.nextDouble() < clumpAcceptance(clumpSeed, clumpScale, strength, x, z)) {
+                        break;
+                    }
                 }
             }
-            double y = hf.height(x, z);
-            cx[d][i] = x;
-            cz[d][i] = z;
+            float px = x;
+            float pz = z;
+            if (tuft > 1) { // a tuft member: normal offsets from the tuft's centre (x, z); one tuft count draws none
+                px = inside(x + spread * rng.nextGaussian(), minX, hf.maxX());
+                pz = inside(z + spread * rng.nextGaussian(), minZ, hf.maxZ());
+            }
+            double y = hf.height(px, pz);
+            cx[d][i] = px;
+            cz[d][i] = pz;
             cy[d][i] = (float) y;
-            cok[d][i] = y >= def.minAltitude() && y <= def.maxAltitude() && hf.slope(x, z) <= def.maxSlope();
+            cok[d][i] = y >= def.minAltitude() && y <= def.maxAltitude() && hf.slope(px, pz) <= def.maxSlope();
             caz[d][i] = (float) (rng.nextDouble() * 2 * Math.PI);
             cseed[d][i] = rng.nextLong();
         }

@@ -24,7 +24,15 @@ import org.junit.jupiter.api.Test;
  * distance) plus 2 pixels, a vegetation pixel is head-coloured when its
  * hue is nearer to a head or petal colour of the flower's species than to any other component colour
  * of the scene (hue survives lighting and shading, which mostly change value) and its saturation is at
- * least 0.2.
+ * least 0.2. A flower whose head is hidden by something nearer the camera may show fewer: in a dense
+ * patch one flower or a tall grass leaf hides another (the clumped meadow of issue 25 grows its
+ * plants in tight groups of uneven height). Hidden means that another flower's head nearer the camera
+ * overlaps its circle on screen, or that fewer than 12 pixels of its circle show what is at the head's
+ * distance or beyond, the rest something at least 5 cm nearer (the depth of the whole scene, read
+ * back); at most 5% of the flowers of a view may be hidden so. In the views of the densest patches
+ * (hundreds of flowers in tight groups of uneven height and lean since issue 25) at most 2% of the
+ * others may show fewer (a head partly behind another at almost its distance, or turned grey away from
+ * the light and the eye); in the default view none may.
  */
 class FlowerHeadsTest {
     private static final int W = 960;
@@ -69,11 +77,14 @@ class FlowerHeadsTest {
     private static void check(Shots shots, World world, ViewCamera cam, String view, List<double[]> hues,
                               boolean mustHoldFlowers, List<String> failures) {
         Shots.View v = shots.view(TestFrames.rest(world, cam), cam);
+        double[] depth = shots.sceneDistance(TestFrames.rest(world, cam), cam);
         int flowers = 0;
         int failing = 0;
         int fewest = Integer.MAX_VALUE;
         List<String> examples = new ArrayList<>();
         Vector3f tip = new Vector3f();
+        // every flower head in view within range: screen x, y, distance, circle radius (pixels), plant
+        List<double[]> heads = new ArrayList<>();
         for (int p = 0; p < world.plantCount(); p++) {
             int s = world.plantSpecies(p);
             SpeciesModel m = world.plants().species().get(s);
@@ -81,39 +92,79 @@ class FlowerHeadsTest {
                 continue;
             }
             MeadowSpots.top(world, p, tip);
-            double hx = tip.x;
-            double hy = tip.y;
-            double hz = tip.z;
-            double dist = Math.sqrt((hx - cam.x()) * (hx - cam.x()) + (hy - cam.y()) * (hy - cam.y())
-                    + (hz - cam.z()) * (hz - cam.z()));
+            double dist = Math.sqrt((tip.x - cam.x()) * (tip.x - cam.x()) + (tip.y - cam.y()) * (tip.y - cam.y())
+                    + (tip.z - cam.z()) * (tip.z - cam.z()));
             if (dist > RANGE) {
                 continue;
             }
-            double[] sp = Shots.project(cam, hx, hy, hz, W, H);
+            double[] sp = Shots.project(cam, tip.x, tip.y, tip.z, W, H);
             if (sp == null || sp[0] < 0 || sp[1] < 0 || sp[0] >= W || sp[1] >= H) {
                 continue;
             }
             double pxPerMetre = H / (2 * Math.tan(cam.fovY() / 2) * sp[2]);
-            double radius = 0.04 * pxPerMetre + 2;
-            int n = headPixels(v, sp[0], sp[1], radius, s, hues);
+            heads.add(new double[] {sp[0], sp[1], dist, 0.04 * pxPerMetre + 2, p});
+        }
+        int hidden = 0;
+        for (double[] h : heads) {
+            int p = (int) h[4];
+            int s = world.plantSpecies(p);
+            int n = headPixels(v, h[0], h[1], h[3], s, hues);
             flowers++;
+            if (n >= MIN_PIXELS) {
+                fewest = Math.min(fewest, n);
+                continue;
+            }
+            if (hiddenAt(h, depth) || behindAnother(h, heads)) {
+                hidden++;
+                continue;
+            }
             fewest = Math.min(fewest, n);
-            if (n < MIN_PIXELS) {
-                failing++;
-                if (examples.size() < 3) {
-                    examples.add(String.format("plant %d at %.1f m: %d px", p, dist, n));
-                }
+            failing++;
+            if (examples.size() < 3) {
+                examples.add(String.format("plant %d at %.1f m: %d px", p, h[2], n));
             }
         }
+        if (hidden > 0.05 * flowers) {
+            failures.add(String.format("%s: %d of %d flowers hidden by nearer plants (more than 5%%)", view,
+                    hidden, flowers));
+        }
+        System.out.printf("[look] meadow %s: %d flowers within %.0f m hidden by nearer plants%n", view, hidden,
+                RANGE);
         System.out.printf("[look] meadow %s: %d of %d flowers within %.0f m show >= %d head-coloured pixels"
-                + " (fewest %s)%n", view, flowers - failing, flowers, RANGE, MIN_PIXELS,
+                + " or are hidden by nearer plants (fewest of the others %s)%n", view, flowers - failing,
+                flowers, RANGE, MIN_PIXELS,
                 flowers == 0 ? "-" : Integer.toString(fewest));
         if (mustHoldFlowers && flowers == 0) {
             failures.add(view + ": no flower within " + RANGE + " m in view");
         }
-        if (failing > 0) {
+        if (mustHoldFlowers ? failing > 0.02 * flowers : failing > 0) {
             failures.add(String.format("%s: %d of %d, e.g. %s", view, failing, flowers, examples));
         }
+    }
+
+    /** Whether fewer than 12 pixels of a head's circle show the head's distance or beyond (not something nearer). */
+    private static boolean hiddenAt(double[] h, double[] depth) {
+        int open = 0;
+        int r = (int) Math.ceil(h[3]);
+        for (int y = (int) h[1] - r; y <= (int) h[1] + r; y++) {
+            for (int x = (int) h[0] - r; x <= (int) h[0] + r; x++) {
+                if (x >= 0 && y >= 0 && x < W && y < H && Math.hypot(x + 0.5 - h[0], y + 0.5 - h[1]) <= h[3]
+                        && depth[y * W + x] >= h[2] - 0.05) {
+                    open++;
+                }
+            }
+        }
+        return open < 2 * MIN_PIXELS;
+    }
+
+    /** Whether another flower's head nearer the camera overlaps this head's circle on screen. */
+    private static boolean behindAnother(double[] h, List<double[]> heads) {
+        for (double[] o : heads) {
+            if (o != h && o[2] < h[2] && Math.hypot(o[0] - h[0], o[1] - h[1]) < o[3] + h[3]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static int headPixels(Shots.View v, double cx, double cy, double radius, int species,

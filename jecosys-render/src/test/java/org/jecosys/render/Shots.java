@@ -66,8 +66,20 @@ final class Shots implements AutoCloseable {
      * render without plants, unprojected), metres; infinity where the sky is. Allocates.
      */
     double[] groundDistance(Frame frame, Camera camera) {
+        return distance(frame, camera, false);
+    }
+
+    /**
+     * Distance from the eye to what each pixel of the whole scene shows (plants, cover and terrain),
+     * metres; infinity where the sky is. Allocates.
+     */
+    double[] sceneDistance(Frame frame, Camera camera) {
+        return distance(frame, camera, true);
+    }
+
+    private double[] distance(Frame frame, Camera camera, boolean plants) {
         depthFb.bind();
-        renderer.drawPlants = false;
+        renderer.drawPlants = plants;
         try {
             renderer.render(frame, camera, width, height);
         } finally {

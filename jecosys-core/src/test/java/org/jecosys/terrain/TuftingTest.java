@@ -1,0 +1,116 @@
+package org.jecosys.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.util.List;
+import org.jecosys.math.Progress;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Tufts in the competitive distributor ({@link DistributionDef#tuftCount()}, issue 25): plants gather in
+ * small groups, so the layout is clumped at small scale (Clark–Evans ratio below 1) where footprints
+ * alone space it more evenly than random; counts stay exact; one candidate per centre is the old
+ * layout bit for bit; deterministic whatever the threads.
+ */
+class TuftingTest {
+    private static final List<String> SPECIES = List.of("A", "B", "C");
+    private static final TerrainDistributor DISTRIBUTOR = new CompetitiveDistributor();
+    private static final double SIZE = 30;
+
+    private static Terrain flat() {
+        return new Terrain(Heightfield.of(SIZE, SIZE, 2, new float[4]), ResourceMap.uniform(SIZE, SIZE, 8, 1),
+                ResourceMap.uniform(SIZE, SIZE, 8, 1));
+    }
+
+    private static DistributionDef grass(double tuftSize, int tuftCount) {
+        return DistributionDef.builder("A").count(4000).footprint(0.05).waterUse(0).nutrientUse(0)
+                .tufts(tuftSize, tuftCount).build();
+    }
+
+    /**
+     * Clark–Evans ratio of the plants at least 2 m inside the terrain: their mean nearest-neighbour
+     * distance (to any plant) over 0.5 / sqrt(density), density = all plants over the terrain's area.
+     */
+    static double clarkEvans(PlantLayout l) {
+        double sum = 0;
+        int n = 0;
+        for (int i = 0; i < l.count(); i++) {
+            if (Math.abs(l.x(i)) > SIZE / 2 - 2 || Math.abs(l.z(i)) > SIZE / 2 - 2) {
+                continue;
+            }
+            double best = Double.POSITIVE_INFINITY;
+            for (int j = 0; j < l.count(); j++) {
+                if (j != i) {
+                    best = Math.min(best, Math.hypot(l.x(j) - l.x(i), l.z(j) - l.z(i)));
+                }
+            }
+            sum += best;
+            n++;
+        }
+        return sum / n / (0.5 / Math.sqrt(l.count() / (SIZE * SIZE)));
+    }
+
+    @Test
+    void tuftsClumpTheLayoutAtSmallScale() {
+        PlantLayout even = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(grass(0.1, 1)), List.of(), 3, 2,
+                Progress.NONE);
+        PlantLayout tufted = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(grass(0.1, 4)), List.of(), 3, 2,
+                Progress.NONE);
+        assertEquals(4000, even.count());
+        assertEquals(4000, tufted.count(), "tufts keep the exact count");
+        assertEquals(List.of(), tufted.warnings());
+        double re = clarkEvans(even);
+        double rt = clarkEvans(tufted);
+        System.out.printf("Clark-Evans R: untufted %.3f, tufts of 4 (s.d. 0.1 m) %.3f%n", re, rt);
+        assertTrue(re >= 0.95, "footprints alone space the plants about as evenly as random or more: " + re);
+        assertTrue(rt <= 0.75, "tufted layout is clumped: R " + rt);
+    }
+
+    @Test
+    void oneCandidatePerCentreIsTheOldLayoutWhateverTheTuftSize() throws IOException {
+        Terrain t = CompetitiveDistributorTest.meadow(3);
+        DistributionDef old = CompetitiveDistributorTest.tuft(300).toBuilder().clump(2, 0.5).build();
+        DistributionDef sized = old.toBuilder().tufts(3, 1).build();
+        assertEquals(DistributionDef.DEFAULT_TUFT_COUNT, old.tuftCount());
+        PlantLayout a = DISTRIBUTOR.distribute(t, SPECIES, List.of(old, CompetitiveDistributorTest.yellow(80)),
+                List.of(), 5, 1, Progress.NONE);
+        PlantLayout b = DISTRIBUTOR.distribute(t, SPECIES, List.of(sized, CompetitiveDistributorTest.yellow(80)),
+                List.of(), 5, 3, Progress.NONE);
+        assertSameLayout(a, b);
+    }
+
+    @Test
+    void tuftedLayoutIsDeterministicForTheSeedWhateverTheThreads() throws IOException {
+        Terrain t = CompetitiveDistributorTest.meadow(4);
+        List<DistributionDef> defs = List.of(
+                CompetitiveDistributorTest.tuft(400).toBuilder().footprint(0.05).clump(2, 0.9).tufts(0.1, 5).build(),
+                CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.2, 3).build());
+        PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 1, Progress.NONE);
+        PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
+        assertSameLayout(one, four);
+        assertEquals(500, one.count());
+    }
+
+    @Test
+    void badTuftValuesAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> grass(0.1, 0));
+        assertThrows(IllegalArgumentException.class, () -> grass(0.1, DistributionDef.MAX_TUFT_COUNT + 1));
+        assertThrows(IllegalArgumentException.class, () -> grass(0, 3));
+        assertThrows(IllegalArgumentException.class, () -> grass(Double.NaN, 3));
+        assertThrows(IllegalArgumentException.class, () -> grass(DistributionDef.MAX_TUFT_SIZE * 2, 3));
+    }
+
+    private static void assertSameLayout(PlantLayout a, PlantLayout b) {
+        assertEquals(a.count(), b.count());
+        for (int i = 0; i < a.count(); i++) {
+            assertEquals(a.x(i), b.x(i));
+            assertEquals(a.z(i), b.z(i));
+            assertEquals(a.azimuth(i), b.azimuth(i));
+            assertEquals(a.species(i), b.species(i));
+            assertEquals(a.variantSeed(i), b.variantSeed(i));
+        }
+    }
+}
