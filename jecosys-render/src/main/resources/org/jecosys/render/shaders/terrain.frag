@@ -35,9 +35,9 @@ void main() {
         float coarse = texture(uGrain, mat2(0.8, -0.6, 0.6, 0.8) * p * 0.29 + vec2(0.37, 0.71)).r;
         float grain = 0.6 * fine + 0.4 * coarse;
         // dry patches and a few dry flecks turn the cover toward straw
-        float dry = clamp(vUvDry.z * 1.3 + (coarse - 0.5) * 0.6, 0.0, 1.0);
+        float dry = clamp(vUvDry.z * 1.3 + (coarse - 0.5) * 0.35, 0.0, 1.0);
         // blade tips bright, the gaps between them dark (the canopy's own shade)
-        vec3 cover = mix(uCoverColour, uCoverDry, dry) * (0.62 + 0.7 * grain);
+        vec3 cover = mix(uCoverColour, uCoverDry, dry) * (0.72 + 0.55 * grain);
         // thin cover lets the soil show through its gaps
         float level = uCover.x * maps.g;
         float hides = smoothstep(0.1, 0.75, level + 0.45 * (grain - 0.5));
