@@ -171,10 +171,14 @@ public final class Simulation implements AutoCloseable {
             state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
             f.packRenderStates(0, comps);
         }
+        int[] speciesLevels = new int[world.plants().species().size()];
+        for (int sp = 0; sp < speciesLevels.length; sp++) {
+            speciesLevels[sp] = world.plants().species().get(sp).levels();
+        }
         draw = new DrawDecision(world, new DrawDecision.Edges() {
             @Override
             public int levels(int sp) {
-                return world.plants().species().get(sp).levels();
+                return speciesLevels[sp]; // per plant in the workers: an array, not the species list
             }
 
             @Override
