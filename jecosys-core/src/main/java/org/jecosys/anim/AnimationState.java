@@ -203,7 +203,7 @@ public final class AnimationState implements AnimationView {
                     : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
         }
         live = new boolean[plants];
-        runs = new SpringRuns(kinds, kind, this.firstComponent);
+        runs = new SpringRuns(kinds, kind, this.firstComponent, plantCompliance);
         devX = runs.compDevX;
         devZ = runs.compDevZ;
         scattered = new ScatteredState(plants, components);
@@ -327,11 +327,9 @@ public final class AnimationState implements AnimationView {
         float speed = (float) Math.sqrt(ux * ux + uz * uz);
         float px = speed * ux;
         float pz = speed * uz;
-        double compliance = plantCompliance[p];
         SpringRuns sr = runs;
         for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
-            sr.setForce(r, kinds.gain(sr.springClass[r]) * compliance, px, pz, px, pz);
-            sr.settle(r);
+            sr.settle(r, px, pz);
         }
         pressX[p] = px;
         pressZ[p] = pz;
@@ -463,8 +461,8 @@ public final class AnimationState implements AnimationView {
     /**
      * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
      * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
-     * runs drawn at that level gets its rest points ({@link SpringRuns#setForce}) from the plant's
-     * force at its last update to the force of that wind and is advanced with its coefficient row
+     * runs drawn at that level is advanced from the plant's
+     * force at its last update to the force of that wind with its coefficient row
      * (spring class and the plant's response variant); the plant then remembers the new force.
      *
      * @return components advanced
@@ -480,7 +478,6 @@ public final class AnimationState implements AnimationView {
         float p1z = speed * uz;
         float p0x = pressX[p];
         float p0z = pressZ[p];
-        double compliance = plantCompliance[p];
         int variant = plantResponse[p];
         int advanced = 0;
         SpringRuns sr = runs;
@@ -490,8 +487,7 @@ public final class AnimationState implements AnimationView {
                 continue;
             }
             int cls = sr.springClass[r];
-            sr.setForce(r, kinds.gain(cls) * compliance, p0x, p0z, p1x, p1z);
-            sr.advance(r, coef, SpringKinds.row(cls, variant) * SpringKinds.STRIDE);
+            sr.advance(r, coef, SpringKinds.row(cls, variant) * SpringKinds.STRIDE, p0x, p0z, p1x, p1z);
             advanced += sr.size(r);
         }
         pressX[p] = p1x;

@@ -19,16 +19,18 @@ import java.util.Arrays;
  * by component). RANDOM mode, which gives each component a deviation of its own, writes those
  * directly and keeps the velocities in {@link ScatteredState} until the plant settles again.
  *
+ * <p>A run's rest point at the end of a step is its rest point at the start of the next (the plant's
+ * force P at an update is where the next one starts), so it is kept with the P it came from
+ * ({@link #restPoint}) and reused when the next step starts from that very P: one rest point per run
+ * and step is worked out instead of two, with the same bits.
+ *
  * <p>The arrays are built once (allocates) and then read and written in place by the caller; the
- * steps ({@link #setForce}, {@link #advance}, {@link #settle}, {@link #rest}) allocate nothing. A
- * caller touches only the runs of its own plants, so disjoint plant ranges may run at once.
+ * steps ({@link #advance}, {@link #settle}, {@link #rest}) allocate nothing. A caller touches only the
+ * runs of its own plants, so disjoint plant ranges may run at once.
  */
 final class SpringRuns {
-    /**
-     * Values per run in {@link #force}: the linear rest points (metres) at the start and the end of
-     * the step, T0x, T0z, T1x, T1z, and their magnitudes |T0|, |T1|.
-     */
-    static final int FORCE_STRIDE = 6;
+    /** Values per run in {@link #restPoint}: the stiffened rest point (X, Z), metres, and the P (X, Z) it is of. */
+    static final int REST_STRIDE = 4;
     /**
      * Largest linear rest point kept, in knees of the run ({@link #knee}): far beyond every bend
      * limit, so the saturation is complete, and small enough for {@link #saturation}'s float products.
@@ -56,8 +58,15 @@ final class SpringRuns {
     /** Per run, the velocity v (X, Z) of each of its components, m/s. */
     final float[] velX;
     final float[] velZ;
-    /** Per run, its {@value #FORCE_STRIDE} force values of the last update ({@link #setForce}). */
-    final float[] force;
+    /** Per run, its equilibrium deviation per unit P = |u| u, metres per (m/s)^2, the plant's compliance included. */
+    private final double[] gain;
+    /** Per run, {@code KNEE / knee}: 1 / its shortest component's bend limit, 1/m. */
+    private final float[] invLimit;
+    /**
+     * Per run, {@value #REST_STRIDE} values: the stiffened rest point of the force P it was last
+     * advanced or settled to, and that P ({@link #restPoint}).
+     */
+    private final float[] restPoint;
     /** Per component, its deviation D (X, Z), metres: its run's, or its own while its plant is scattered. */
     final float[] compDevX;
     final float[] compDevZ;
@@ -68,8 +77,9 @@ final class SpringRuns {
      * @param kinds          the component kinds
      * @param kind           per component its kind
      * @param firstComponent per plant its first component, plus the total at the end
+     * @param compliance     per plant the factor on its equilibrium deviation
      */
-    SpringRuns(SpringKinds kinds, short[] kind, int[] firstComponent) {
+    SpringRuns(SpringKinds kinds, short[] kind, int[] firstComponent, float[] compliance) {
         int plants = firstComponent.length - 1;
         int components = kind.length;
         int[] rs = new int[components + 1];
@@ -111,7 +121,14 @@ final class SpringRuns {
         devZ = new float[runs];
         velX = new float[runs];
         velZ = new float[runs];
-        force = new float[runs * FORCE_STRIDE];
+        gain = new double[runs];
+        invLimit = new float[runs];
+        restPoint = new float[runs * REST_STRIDE];
+        for (int r = 0; r < runs; r++) {
+            gain[r] = kinds.gain(springClass[r]) * (double) compliance[runPlant[r]];
+            invLimit[r] = KNEE / knee[r];
+            restPoint[r * REST_STRIDE + 2] = Float.NaN; // of no P yet
+        }
         compDevX = new float[components];
         compDevZ = new float[components];
     }
@@ -136,43 +153,45 @@ final class SpringRuns {
     }
 
     /**
-     * Writes run r's {@value #FORCE_STRIDE} values into {@link #force}: the linear rest points
-     * {@code gain P} of the plant's {@code P = |u| u} at the start ({@code p0}) and the end ({@code p1})
-     * of the step, m^2/s^2, with {@code gain} the run's equilibrium deviation per unit P (metres per
-     * (m/s)^2, the plant's compliance included), and their magnitudes, capped at
-     * {@link #MAX_TARGET_KNEES} times the run's knee (metres) with their direction kept.
+     * Writes into {@link #restPoint} run r's stiffened rest point for the plant's force
+     * {@code P = |u| u} (m^2/s^2), with P: the linear rest point {@code gain P} (metres, in double,
+     * its magnitude capped at {@link #MAX_TARGET_KNEES} knees with its direction kept, then rounded to
+     * float), times {@link #saturation} of its size over the bend limit of the run's shortest
+     * component (see "Bounded bend" in {@link SpringKinds}), so no component passes its own limit.
      */
-    void setForce(int r, double gain, float p0x, float p0z, float p1x, float p1z) {
-        int f = r * FORCE_STRIDE;
-        double most = MAX_TARGET_KNEES * knee[r];
-        target(gain, most, p0x, p0z, force, f, f + 4);
-        target(gain, most, p1x, p1z, force, f + 2, f + 5);
-    }
-
-    private static void target(double gain, double most, float px, float pz, float[] out, int o, int om) {
-        double tx = gain * px;
-        double tz = gain * pz;
+    private void restPoint(int r, float px, float pz) {
+        double g = gain[r];
+        double tx = g * px;
+        double tz = g * pz;
         double m = Math.sqrt(tx * tx + tz * tz);
+        double most = MAX_TARGET_KNEES * knee[r];
         if (m > most) {
             double k = most / m;
             tx *= k;
             tz *= k;
             m = most;
         }
-        out[o] = (float) tx;
-        out[o + 1] = (float) tz;
-        out[om] = (float) m;
+        float s = saturation((float) m * invLimit[r]);
+        int f = r * REST_STRIDE;
+        float[] rp = restPoint;
+        rp[f] = s * (float) tx;
+        rp[f + 1] = s * (float) tz;
+        rp[f + 2] = px;
+        rp[f + 3] = pz;
     }
 
     /**
      * The factor that turns a linear rest point into the stiffened one (see "Bounded bend" in
      * {@link SpringKinds}): {@code sigma(x) / x} for {@code x = |T| / dMax}; exactly 1 up to the knee,
-     * then decreasing so that {@code x} times it stays below 1. Branch-free; no allocation.
+     * then decreasing so that {@code x} times it stays below 1. No allocation.
      *
      * @param x the linear rest point over the bend limit, finite, &gt;= 0
      * @return the factor, in (0, 1]
      */
     static float saturation(float x) {
+        if (x <= KNEE && x >= Float.MIN_NORMAL) {
+            return 1f; // what the formula below gives there (x / x), without its division
+        }
         // (min(x, KNEE) + SPAN u / (1 + u)) / x with one division
         float u = Math.max(0f, (x - KNEE) * INV_SPAN);
         float w = 1f + u;
@@ -180,15 +199,15 @@ final class SpringRuns {
     }
 
     /**
-     * Puts the components of run r at the stiffened rest point (as {@link #advance} stiffens it) of
-     * the linear rest point at the start of the step in {@link #force}, at zero velocity: the
+     * Puts the components of run r at its stiffened rest point for the plant's force
+     * {@code P = (px, pz) = |u| u} (as {@link #advance} stiffens it), at zero velocity: the
      * equilibrium of that force.
      */
-    void settle(int r) {
-        int f = r * FORCE_STRIDE;
-        float k = saturation(force[f + 4] * (KNEE / knee[r]));
-        devX[r] = k * force[f];
-        devZ[r] = k * force[f + 1];
+    void settle(int r, float px, float pz) {
+        restPoint(r, px, pz);
+        int f = r * REST_STRIDE;
+        devX[r] = restPoint[f];
+        devZ[r] = restPoint[f + 1];
         velX[r] = 0;
         velZ[r] = 0;
         spread(r);
@@ -219,23 +238,25 @@ final class SpringRuns {
     /**
      * Advances the components of run r, whose spring coefficients start at {@code co[o]}
      * ({@link SpringKinds#coef}: aDD, aDv, bD, cD, aVD, aVv, bV, cV), by the step's affine map (eq. 5
-     * integrated exactly, see {@link SpringKinds}): {@code D' = aDD D + aDv v + bD A + cD B},
-     * {@code v' = aVD D + aVv v + bV A + cV B}, where A and B are the run's stiffened rest points at
-     * the start and the end of the step: its linear rest points ({@link #setForce}) times
-     * {@link #saturation} of their size over the bend limit of its shortest component, so no
-     * component passes its own limit. Evaluated as {@code ((aDD D + aDv v) + bD A) + cD B}, in float,
-     * the order of the per-component update it replaces, hence its bits. No allocation.
+     * integrated exactly, see {@link SpringKinds}) from the plant's force {@code P0 = (p0x, p0z)} at
+     * the start of the step to {@code P1 = (p1x, p1z)} at its end (both {@code |u| u}, m^2/s^2):
+     * {@code D' = aDD D + aDv v + bD A + cD B}, {@code v' = aVD D + aVv v + bV A + cV B}, where A and B
+     * are the run's stiffened rest points of P0 and P1 ({@link #restPoint}; A is the one kept from the
+     * last step when that was of P0, bit for bit). Evaluated as {@code ((aDD D + aDv v) + bD A) + cD B},
+     * in float, the order of the per-component update it replaces, hence its bits. No allocation.
      */
-    void advance(int r, float[] co, int o) {
-        int f = r * FORCE_STRIDE;
-        float[] fr = force;
-        float q = KNEE / knee[r];
-        float k0 = saturation(fr[f + 4] * q);
-        float k1 = saturation(fr[f + 5] * q);
-        float ax = k0 * fr[f];
-        float az = k0 * fr[f + 1];
-        float bx = k1 * fr[f + 2];
-        float bz = k1 * fr[f + 3];
+    void advance(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z) {
+        int f = r * REST_STRIDE;
+        float[] rp = restPoint;
+        if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
+                || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
+            restPoint(r, p0x, p0z);
+        }
+        float ax = rp[f];
+        float az = rp[f + 1];
+        restPoint(r, p1x, p1z);
+        float bx = rp[f];
+        float bz = rp[f + 1];
         float x = devX[r];
         float z = devZ[r];
         float vx = velX[r];

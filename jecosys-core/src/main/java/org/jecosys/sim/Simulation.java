@@ -169,7 +169,7 @@ public final class Simulation implements AutoCloseable {
         for (int i = 0; i < 3; i++) {
             Frame f = exchange.frame(i);
             state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
-            f.packRenderStates(0, comps);
+            f.packRenderStates(0, comps, new float[Frame.PACK_SCRATCH]);
         }
         int[] speciesLevels = new int[world.plants().species().size()];
         for (int sp = 0; sp < speciesLevels.length; sp++) {
@@ -187,7 +187,7 @@ public final class Simulation implements AutoCloseable {
             }
         });
         draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw, threads);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 
@@ -379,6 +379,7 @@ public final class Simulation implements AutoCloseable {
         exchange.beginWrite();
         int b = current; // the buffer the workers animate from: the views sampled one step ago
         chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
+        draw.prepare();
         long t0 = System.nanoTime();
         pool.start();
         Camera[] others = views;
