@@ -83,15 +83,7 @@ public final class QuadtreeForceField implements ForceField {
     private int[] effective;
     private int effectiveCount;
     private final int[] probe = new int[4];
-    /** The gradient fit's neighbours (offsets of their centres of gravity, m; wind differences, m/s) and result. */
-    private final double[] nbDx = new double[4];
-    private final double[] nbDz = new double[4];
-    private final double[] nbDu = new double[4];
-    private final double[] nbDv = new double[4];
-    private double fitXX;
-    private double fitXZ;
-    private double fitZX;
-    private double fitZZ;
+    private final NodeGradient fit = new NodeGradient();
     private int current;
 
     private final FieldCounters counters = new FieldCounters();
@@ -388,7 +380,7 @@ public final class QuadtreeForceField implements ForceField {
 
     /**
      * Fits effective node n's wind gradient to its edge neighbours and weighs it by how well it
-     * predicts them (see the class comment). No flow evaluation; no allocation.
+     * predicts them ({@link NodeGradient}; see the class comment). No flow evaluation; no allocation.
      */
     private void gradient(int n) {
         Quadtree t = tree;
@@ -403,101 +395,22 @@ public final class QuadtreeForceField implements ForceField {
         probe[1] = neighbour(t.minX[n] - ex, cz);
         probe[2] = neighbour(cx, t.maxZ[n] + ez);
         probe[3] = neighbour(cx, t.minZ[n] - ez);
-        // the distinct neighbours holding plants: offsets of their centres of gravity and wind differences
-        int k = 0;
-        double maxDiff2 = 0;
+        NodeGradient g = fit;
+        g.clear();
         for (int i = 0; i < 4; i++) {
             int m = probe[i];
             if (m < 0 || m == n || t.count[m] == 0 || (i > 0 && m == probe[i - 1]) || (i > 1 && m == probe[i - 2])
                     || (i > 2 && m == probe[0])) {
                 continue;
             }
-            nbDx[k] = centX[m] - cx;
-            nbDz[k] = centZ[m] - cz;
-            nbDu[k] = windX[m] - windX[n];
-            nbDv[k] = windZ[m] - windZ[n];
-            maxDiff2 = Math.max(maxDiff2, nbDu[k] * nbDu[k] + nbDv[k] * nbDv[k]);
-            k++;
+            g.add(centX[m] - cx, centZ[m] - cz, windX[m] - windX[n], windZ[m] - windZ[n]);
         }
-        if (!fit(k, -1)) {
-            return;
+        if (g.solve(Math.max(t.maxX[n] - cx, cx - t.minX[n]), Math.max(t.maxZ[n] - cz, cz - t.minZ[n]))) {
+            gradXX[n] = (float) g.xx;
+            gradXZ[n] = (float) g.xz;
+            gradZX[n] = (float) g.zx;
+            gradZZ[n] = (float) g.zz;
         }
-        double gxx = fitXX;
-        double gxz = fitXZ;
-        double gzx = fitZX;
-        double gzz = fitZZ;
-        // leave-one-out: r = how far from each neighbour's wind the gradient fitted to the others lands,
-        // over how far the node's own wind is from it; the gradient keeps 1 - r^2 (all of it for a wind
-        // linear in space, none when it predicts the neighbours no better than the node's value, or with
-        // one neighbour)
-        double with = 0;
-        double without = 0;
-        for (int i = 0; i < k; i++) {
-            double pu = 0;
-            double pv = 0;
-            if (fit(k, i)) {
-                pu = fitXX * nbDx[i] + fitXZ * nbDz[i];
-                pv = fitZX * nbDx[i] + fitZZ * nbDz[i];
-            }
-            with += Math.hypot(nbDu[i] - pu, nbDv[i] - pv);
-            without += Math.hypot(nbDu[i], nbDv[i]);
-        }
-        double r = without > 0 ? with / without : 1;
-        double trust = Math.max(0, 1 - r * r);
-        // the largest change inside the node is at a corner; keep it within twice the largest difference
-        double hx = Math.max(t.maxX[n] - cx, cx - t.minX[n]);
-        double hz = Math.max(t.maxZ[n] - cz, cz - t.minZ[n]);
-        double cu = Math.abs(gxx) * hx + Math.abs(gxz) * hz;
-        double cv = Math.abs(gzx) * hx + Math.abs(gzz) * hz;
-        double most = Math.sqrt(cu * cu + cv * cv);
-        double cap = 2 * Math.sqrt(maxDiff2);
-        double scale = trust * (most > cap ? cap / most : 1);
-        gradXX[n] = (float) (gxx * scale);
-        gradXZ[n] = (float) (gxz * scale);
-        gradZX[n] = (float) (gzx * scale);
-        gradZZ[n] = (float) (gzz * scale);
-    }
-
-    /**
-     * Least squares through the node's own wind: the gradient G minimising the squared differences
-     * {@code |G d_i - (du_i, dv_i)|^2} over neighbours {@code 0 .. k-1} but {@code skip} (-1: none), with a
-     * small ridge (1e-3 of the offsets' spread) that keeps it defined when the offsets are collinear,
-     * into fitXX .. fitZZ (1/s). False when no neighbour is left.
-     */
-    private boolean fit(int k, int skip) {
-        double sxx = 0;
-        double sxz = 0;
-        double szz = 0;
-        double bxx = 0;
-        double bxz = 0;
-        double bzx = 0;
-        double bzz = 0;
-        for (int i = 0; i < k; i++) {
-            if (i == skip) {
-                continue;
-            }
-            double dx = nbDx[i];
-            double dz = nbDz[i];
-            sxx += dx * dx;
-            sxz += dx * dz;
-            szz += dz * dz;
-            bxx += dx * nbDu[i];
-            bxz += dz * nbDu[i];
-            bzx += dx * nbDv[i];
-            bzz += dz * nbDv[i];
-        }
-        double lambda = 1e-3 * (sxx + szz);
-        double a = sxx + lambda;
-        double d = szz + lambda;
-        double det = a * d - sxz * sxz;
-        if (!(det > 0)) {
-            return false;
-        }
-        fitXX = (d * bxx - sxz * bxz) / det;
-        fitXZ = (a * bxz - sxz * bxx) / det;
-        fitZX = (d * bzx - sxz * bzz) / det;
-        fitZZ = (a * bzz - sxz * bzx) / det;
-        return true;
     }
 
     /** The effective node of the last update holding ground point (x, z), metres, or -1 (outside, invisible). */
