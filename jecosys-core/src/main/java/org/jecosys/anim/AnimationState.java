@@ -42,22 +42,23 @@ import org.jecosys.math.Require;
  * lean in from upright at start-up, and a plant coming into view is already bent by the wind.
  * {@link #settle} does the same for the wind at a given time (the simulation's first sample, at
  * t = 0), and {@link #resetToRest} puts plants at rest as a state that does follow (STATIC mode).
- * The output loops and the scalar forms live in {@code BendOutputs}; the spring runs and their step
- * in {@code SpringRuns}.
+ * The output loops and the scalar forms live in {@code BendOutputs}; the spring runs, their state and
+ * their step in {@code SpringRuns}.
  *
  * <h2>Update order</h2>
- * At construction the components of each plant are cut into <em>spring runs</em>: maximal runs of
- * consecutive components with the same spring coefficients ({@link SpringKinds#springClass}: the
- * shape variants of one component type share them, so a 25-leaf tuft is one run) and the same
- * level-of-detail mask. {@link #animate} first advances D and v over segments of contiguous runs of
- * one coefficient row (spring class and response variant), across plants: the homogeneous part of
- * the step's map in one loop that C2 vectorises, then each run's rest-point terms (its stiffened rest
- * points, computed once per run from the plant's force), added in the same order as the fused
- * formula, so the bits do not depend on how runs are grouped. It then computes the outputs
- * in a second, branch-free loop over contiguous component ranges, also vectorised. A range may
- * also cover components that were not advanced (a short gap of invisible plants, components outside
- * the level of detail): their outputs are recomputed from their unchanged D and come out
+ * At construction the components of each plant are cut into <em>spring runs</em> ({@link SpringRuns}):
+ * maximal runs of consecutive components with the same spring coefficients
+ * ({@link SpringKinds#springClass}: the shape variants of one component type share them, so a 25-leaf
+ * tuft is one run) and the same level-of-detail mask. The components of a run are driven by the same
+ * force from the same start, so they share one D and one v, kept once per run: {@link #animate}
+ * advances each drawn run of a plant once (the per-component update's arithmetic, hence its bits),
+ * then computes the outputs, which differ per component through its rest lean and shape, in
+ * branch-free loops over blocks of contiguous components that C2 vectorises ({@link BendOutputs}). A
+ * range may also cover components that were not advanced (a short gap of invisible plants, components
+ * outside the level of detail): their outputs are recomputed from their unchanged D and come out
  * bit-identical; components outside every range copy their outputs from the caller's previous ones.
+ * RANDOM mode gives each component its own deviation, kept per component ({@link ScatteredState})
+ * until the plant settles again.
  *
  * <h2>Threads</h2>
  * {@link #animate} touches only the plants of its range and their components, so disjoint ranges
@@ -77,34 +78,27 @@ public final class AnimationState implements AnimationView {
     private final LodBands lod;
 
     private final short[] kind;
-    /*
-     * Spring runs (see SpringRuns; the arrays are its own, held here to be read in place). runForce
-     * holds, per run, the force terms of its last update.
-     */
-    private final int[] runStart;
-    private final int[] runClass;
-    private final int[] runMask;
-    private final int[] plantRun;
-    private final float[] runForce;
-    private final float[] runKnee;
+    /** The spring runs and their D, v and force (see "Update order"). */
+    private final SpringRuns runs;
+    /** Per-component D and v of plants in RANDOM mode. */
+    private final ScatteredState scattered;
+    // per-component copies of the kind constants the output loops need (no gather there)
     private final float[] leanX;
     private final float[] leanZ;
-    // per-component copies of the kind constants the output loop needs (no gather there)
     private final float[] compLean;
     private final float[] compLength;
     private final float[] compScale;
     private final float[] compPoseMax;
+    /** Per component its deviation: {@link SpringRuns#compDevX}, read in place. */
+    private final float[] devX;
+    private final float[] devZ;
     private final byte[] plantResponse;
     private final float[] plantCompliance;
     /** Per plant, whether its state follows the wind (see "Start" in the class comment). */
     private final boolean[] live;
-    final float[] devX;
-    final float[] devZ;
-    final float[] velX;
-    final float[] velZ;
-    final float[] pressX;
-    final float[] pressZ;
-    final byte[] level;
+    private final float[] pressX;
+    private final float[] pressZ;
+    private final byte[] level;
     /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
     private final long[] plantVersion;
 
@@ -185,7 +179,6 @@ public final class AnimationState implements AnimationView {
         compLength = new float[components];
         compScale = new float[components];
         compPoseMax = new float[components];
-        float[] compInvLimit = new float[components];
         for (int c = 0; c < components; c++) {
             int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
             kind[c] = (short) k;
@@ -196,7 +189,6 @@ public final class AnimationState implements AnimationView {
             compLength[c] = kinds.length[k];
             compScale[c] = kinds.poseScale[k];
             compPoseMax[c] = kinds.poseMax[k];
-            compInvLimit[c] = 1 / kinds.dMax[k];
         }
         plantResponse = new byte[plants];
         plantCompliance = new float[plants];
@@ -211,17 +203,10 @@ public final class AnimationState implements AnimationView {
                     : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
         }
         live = new boolean[plants];
-        SpringRuns springRuns = new SpringRuns(kinds, kind, this.firstComponent);
-        runStart = springRuns.start;
-        runClass = springRuns.springClass;
-        runMask = springRuns.mask;
-        plantRun = springRuns.plantRun;
-        runForce = new float[springRuns.count() * SpringRuns.FORCE_STRIDE];
-        runKnee = springRuns.knees(compInvLimit);
-        devX = new float[components];
-        devZ = new float[components];
-        velX = new float[components];
-        velZ = new float[components];
+        runs = new SpringRuns(kinds, kind, this.firstComponent, plantCompliance);
+        devX = runs.compDevX;
+        devZ = runs.compDevZ;
+        scattered = new ScatteredState(plants, components);
         pressX = new float[plants];
         pressZ = new float[plants];
         level = new byte[plants];
@@ -305,14 +290,10 @@ public final class AnimationState implements AnimationView {
             pressX[p] = 0;
             pressZ[p] = 0;
             live[p] = true;
+            scattered.scattered[p] = false;
             plantVersion[p]++;
         }
-        for (int c = firstComponent[first], e = firstComponent[end]; c < e; c++) {
-            devX[c] = 0;
-            devZ[c] = 0;
-            velX[c] = 0;
-            velZ[c] = 0;
-        }
+        runs.rest(runs.plantRun[first], runs.plantRun[end]);
     }
 
     /**
@@ -346,16 +327,14 @@ public final class AnimationState implements AnimationView {
         float speed = (float) Math.sqrt(ux * ux + uz * uz);
         float px = speed * ux;
         float pz = speed * uz;
-        double compliance = plantCompliance[p];
-        for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
-            SpringRuns.setForce(r, kinds.gain(runClass[r]) * compliance, runKnee[r], runForce, px, pz, px, pz);
-            int f = r * SpringRuns.FORCE_STRIDE;
-            SpringRuns.settle(r, runStart, runForce[f], runForce[f + 1], runForce[f + 4], runKnee, devX, devZ, velX,
-                    velZ);
+        SpringRuns sr = runs;
+        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
+            sr.settle(r, px, pz);
         }
         pressX[p] = px;
         pressZ[p] = pz;
         live[p] = true;
+        scattered.scattered[p] = false;
         plantVersion[p]++;
     }
 
@@ -412,11 +391,13 @@ public final class AnimationState implements AnimationView {
         final double eyeY = step.eyeY;
         final double eyeZ = step.eyeZ;
         final int views = step.views;
+        // one view (or only the eye): its level-of-detail metric once, not per plant
+        final double scale2 = views == 0 ? 1 : step.viewScale2[0];
+        final double fixed2 = views == 0 ? -1 : step.viewFixed2[0];
         cursor.begin(first);
         int updated = 0;
         for (int p = first; p < end; p++) {
-            int l = views <= 1 && (views == 0 || (step.viewScale2[0] == 1 && step.viewFixed2[0] < 0))
-                    ? updateLevel(p, eyeX, eyeY, eyeZ) : updateLevel(p, step);
+            int l = views <= 1 ? updateLevel(p, eyeX, eyeY, eyeZ, scale2, fixed2) : updateLevel(p, step);
             if (!visible[p]) {
                 live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
@@ -429,17 +410,15 @@ public final class AnimationState implements AnimationView {
             int c0 = firstComponent[p];
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
-                updated += SpringRuns.randomise(c0, c1, bit, kind, kinds.lodMask, kinds.length, step.rng, devX, devZ,
-                        velX, velZ);
+                updated += scattered.randomise(p, c0, c1, bit, runs, kind, kinds.lodMask, kinds.length, step.rng);
                 live[p] = false;
             } else {
-                updated += queueSpringRuns(p, bit, step.windX[p], step.windZ[p], cursor);
+                updated += springRuns(p, bit, step.windX[p], step.windZ[p]);
             }
             if (out) {
                 cursor.queueOutputs(this, step, p, c0, c1);
             }
         }
-        cursor.advanceSegment(this);
         if (out) {
             cursor.finishOutputs(this, step, end);
         }
@@ -448,14 +427,15 @@ public final class AnimationState implements AnimationView {
 
     /**
      * Recomputes plant p's level of detail from its squared distance (m^2) to the eye (world
-     * metres), stores it and returns it.
+     * metres), measured by the view's projected size ({@link org.jecosys.math.ViewLod}: scale2 and
+     * fixed2), stores it and returns it.
      */
-    private int updateLevel(int p, double eyeX, double eyeY, double eyeZ) {
+    private int updateLevel(int p, double eyeX, double eyeY, double eyeZ, double scale2, double fixed2) {
         double dx = plantX[p] - eyeX;
         double dy = plantY[p] - eyeY;
         double dz = plantZ[p] - eyeZ;
         double d2 = dx * dx + dy * dy + dz * dz;
-        int l = lod.level(plantSpecies[p], d2);
+        int l = lod.level(plantSpecies[p], org.jecosys.math.ViewLod.equivalent2(d2, scale2, fixed2));
         level[p] = (byte) l;
         return l;
     }
@@ -481,14 +461,13 @@ public final class AnimationState implements AnimationView {
     /**
      * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
      * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
-     * runs drawn at that level gets its rest points ({@link SpringRuns#setForce}) from the plant's
-     * force at its last update to the force of that wind, and is queued on the cursor with its
-     * coefficient row (spring class and the plant's response variant) to be advanced (in segments,
-     * see the class comment); the plant then remembers the new force.
+     * runs drawn at that level is advanced from the plant's
+     * force at its last update to the force of that wind with its coefficient row
+     * (spring class and the plant's response variant); the plant then remembers the new force.
      *
-     * @return components queued
+     * @return components advanced
      */
-    private int queueSpringRuns(int p, int bit, float ux, float uz, StepCursor cursor) {
+    private int springRuns(int p, int bit, float ux, float uz) {
         if (!live[p]) {
             settle(p, ux, uz);
         }
@@ -499,26 +478,21 @@ public final class AnimationState implements AnimationView {
         float p1z = speed * uz;
         float p0x = pressX[p];
         float p0z = pressZ[p];
-        double compliance = plantCompliance[p];
         int variant = plantResponse[p];
-        int queued = 0;
-        for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
-            if ((runMask[r] & bit) == 0) {
+        int advanced = 0;
+        SpringRuns sr = runs;
+        float[] coef = kinds.coef;
+        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
+            if ((sr.mask[r] & bit) == 0) {
                 continue;
             }
-            int cls = runClass[r];
-            SpringRuns.setForce(r, kinds.gain(cls) * compliance, runKnee[r], runForce, p0x, p0z, p1x, p1z);
-            queued += runStart[r + 1] - runStart[r];
-            cursor.queueRun(this, r, SpringKinds.row(cls, variant), runStart);
+            int cls = sr.springClass[r];
+            sr.advance(r, coef, SpringKinds.row(cls, variant) * SpringKinds.STRIDE, p0x, p0z, p1x, p1z);
+            advanced += sr.size(r);
         }
         pressX[p] = p1x;
         pressZ[p] = p1z;
-        return queued;
-    }
-
-    /** Advances runs {@code r0 .. r1-1} (contiguous, all of coefficient row {@code row}): {@link SpringRuns#spring}. */
-    void spring(int r0, int r1, int row) {
-        SpringRuns.spring(r0, r1, row, kinds.coef, runStart, runForce, runKnee, devX, devZ, velX, velZ);
+        return advanced;
     }
 
     /**
@@ -586,12 +560,14 @@ public final class AnimationState implements AnimationView {
 
     /** Velocity X of component c, m/s. */
     public float velocityX(int c) {
-        return velX[c];
+        int p = plantOf(c);
+        return scattered.scattered[p] ? scattered.velX[c] : runs.velX[runs.runOf(p, c)];
     }
 
     /** Velocity Z of component c, m/s. */
     public float velocityZ(int c) {
-        return velZ[c];
+        int p = plantOf(c);
+        return scattered.scattered[p] ? scattered.velZ[c] : runs.velZ[runs.runOf(p, c)];
     }
 
     /**
@@ -661,13 +637,18 @@ public final class AnimationState implements AnimationView {
      */
     public long stateHash() {
         long h = 0xcbf29ce484222325L;
-        for (int c = 0; c < components; c++) {
-            h = mix(h, Float.floatToRawIntBits(devX[c]));
-            h = mix(h, Float.floatToRawIntBits(devZ[c]));
-            h = mix(h, Float.floatToRawIntBits(velX[c]));
-            h = mix(h, Float.floatToRawIntBits(velZ[c]));
-            h = mix(h, Float.floatToRawIntBits(poseCoordinate(c)));
-            h = mix(h, Float.floatToRawIntBits(azimuth(c)));
+        SpringRuns sr = runs;
+        ScatteredState sc = scattered;
+        for (int r = 0, n = sr.count(); r < n; r++) {
+            boolean own = sc.scattered[sr.runPlant[r]];
+            for (int c = sr.start[r], e = sr.start[r + 1]; c < e; c++) {
+                h = mix(h, Float.floatToRawIntBits(devX[c]));
+                h = mix(h, Float.floatToRawIntBits(devZ[c]));
+                h = mix(h, Float.floatToRawIntBits(own ? sc.velX[c] : sr.velX[r]));
+                h = mix(h, Float.floatToRawIntBits(own ? sc.velZ[c] : sr.velZ[r]));
+                h = mix(h, Float.floatToRawIntBits(poseCoordinate(c)));
+                h = mix(h, Float.floatToRawIntBits(azimuth(c)));
+            }
         }
         return h;
     }

@@ -1,25 +1,38 @@
 package org.jecosys.anim;
 
 import java.util.Arrays;
-import org.jecosys.math.Rng;
 
 /**
- * The spring runs of {@link AnimationState} (see "Update order" there) and the step that advances
- * them: maximal runs of consecutive components of one plant that share their spring coefficients
- * ({@link SpringKinds#springClass}) and their level-of-detail mask. Run r covers components
- * {@code start[r] .. start[r + 1] - 1} (no run is empty); plant p owns runs {@code plantRun[p] ..
- * plantRun[p + 1] - 1}. The arrays are built once (allocates) and then read in place by the caller;
- * the steps ({@link #setForce}, {@link #spring}, {@link #settle}, and RANDOM mode's {@link #randomise})
- * are static over the caller's arrays and allocate nothing.
+ * The spring runs of {@link AnimationState} (see "Update order" there), their state and the step
+ * that advances them: maximal runs of consecutive components of one plant that share their spring
+ * coefficients ({@link SpringKinds#springClass}) and their level-of-detail mask. Run r covers
+ * components {@code start[r] .. start[r + 1] - 1} (no run is empty); plant p owns runs
+ * {@code plantRun[p] .. plantRun[p + 1] - 1}.
+ *
+ * <p>Every component of a run gets the same spring update from the same force, and is put at the
+ * same rest point when its plant settles or rests, so in CONSTRAINT and STATIC modes all components
+ * of a run share one deviation D and one velocity v. They are kept once per run ({@link #devX} ...),
+ * and {@link #advance} steps a run, not each of its components, with the arithmetic the
+ * per-component update had, so the bits are those of the per-component update. Each change of a
+ * run's D is also written to its components' entries of {@link #compDevX} and {@link #compDevZ}, the
+ * deviation of every component, which the output loops read (they vectorise only over arrays indexed
+ * by component). RANDOM mode, which gives each component a deviation of its own, writes those
+ * directly and keeps the velocities in {@link ScatteredState} until the plant settles again.
+ *
+ * <p>A run's rest point at the end of a step is its rest point at the start of the next (the plant's
+ * force P at an update is where the next one starts), so it is kept with the P it came from
+ * ({@link #restPoint}) and reused when the next step starts from that very P: one rest point per run
+ * and step is worked out instead of two, with the same bits.
+ *
+ * <p>The arrays are built once (allocates) and then read and written in place by the caller; the
+ * steps ({@link #advance}, {@link #settle}, {@link #rest}) allocate nothing. A caller touches only the
+ * runs of its own plants, so disjoint plant ranges may run at once.
  */
 final class SpringRuns {
+    /** Values per run in {@link #restPoint}: the stiffened rest point (X, Z), metres, and the P (X, Z) it is of. */
+    static final int REST_STRIDE = 4;
     /**
-     * Values per run in {@code runForce}: the linear rest points (metres) at the start and the end of
-     * the step, T0x, T0z, T1x, T1z, and their magnitudes |T0|, |T1|.
-     */
-    static final int FORCE_STRIDE = 6;
-    /**
-     * Largest linear rest point kept, in knees of the run ({@link #knees}): far beyond every bend
+     * Largest linear rest point kept, in knees of the run ({@link #knee}): far beyond every bend
      * limit, so the saturation is complete, and small enough for {@link #saturation}'s float products.
      */
     static final double MAX_TARGET_KNEES = 1e12;
@@ -35,15 +48,38 @@ final class SpringRuns {
     final int[] mask;
     /** Per plant its first run, plus the run count at the end (length plants + 1). */
     final int[] plantRun;
+    /** Per run its plant. */
+    final int[] runPlant;
+    /** Per run, the knee of the bend limit of its shortest component, metres (see {@link #advance}). */
+    final float[] knee;
+    /** Per run, the deviation D (X, Z) of each of its components, metres. */
+    final float[] devX;
+    final float[] devZ;
+    /** Per run, the velocity v (X, Z) of each of its components, m/s. */
+    final float[] velX;
+    final float[] velZ;
+    /** Per run, its equilibrium deviation per unit P = |u| u, metres per (m/s)^2, the plant's compliance included. */
+    private final double[] gain;
+    /** Per run, {@code KNEE / knee}: 1 / its shortest component's bend limit, 1/m. */
+    private final float[] invLimit;
+    /**
+     * Per run, {@value #REST_STRIDE} values: the stiffened rest point of the force P it was last
+     * advanced or settled to, and that P ({@link #restPoint}).
+     */
+    private final float[] restPoint;
+    /** Per component, its deviation D (X, Z), metres: its run's, or its own while its plant is scattered. */
+    final float[] compDevX;
+    final float[] compDevZ;
 
     /**
-     * Cuts the components of each plant into runs. Build time; allocates.
+     * Cuts the components of each plant into runs, all at rest. Build time; allocates.
      *
      * @param kinds          the component kinds
      * @param kind           per component its kind
      * @param firstComponent per plant its first component, plus the total at the end
+     * @param compliance     per plant the factor on its equilibrium deviation
      */
-    SpringRuns(SpringKinds kinds, short[] kind, int[] firstComponent) {
+    SpringRuns(SpringKinds kinds, short[] kind, int[] firstComponent, float[] compliance) {
         int plants = firstComponent.length - 1;
         int components = kind.length;
         int[] rs = new int[components + 1];
@@ -69,6 +105,32 @@ final class SpringRuns {
         start = Arrays.copyOf(rs, runs + 1);
         springClass = Arrays.copyOf(rc, runs);
         mask = Arrays.copyOf(rm, runs);
+        runPlant = new int[runs];
+        for (int p = 0; p < plants; p++) {
+            Arrays.fill(runPlant, plantRun[p], plantRun[p + 1], p);
+        }
+        knee = new float[runs];
+        for (int r = 0; r < runs; r++) {
+            float most = 0;
+            for (int c = start[r]; c < start[r + 1]; c++) {
+                most = Math.max(most, 1 / kinds.dMax[kind[c]]);
+            }
+            knee[r] = KNEE / most;
+        }
+        devX = new float[runs];
+        devZ = new float[runs];
+        velX = new float[runs];
+        velZ = new float[runs];
+        gain = new double[runs];
+        invLimit = new float[runs];
+        restPoint = new float[runs * REST_STRIDE];
+        for (int r = 0; r < runs; r++) {
+            gain[r] = kinds.gain(springClass[r]) * (double) compliance[runPlant[r]];
+            invLimit[r] = KNEE / knee[r];
+            restPoint[r * REST_STRIDE + 2] = Float.NaN; // of no P yet
+        }
+        compDevX = new float[components];
+        compDevZ = new float[components];
     }
 
     /** Number of runs. */
@@ -76,45 +138,60 @@ final class SpringRuns {
         return springClass.length;
     }
 
-    /**
-     * Writes run r's {@value #FORCE_STRIDE} values into {@code runForce}: the linear rest points
-     * {@code gain P} of the plant's {@code P = |u| u} at the start ({@code p0}) and the end ({@code p1})
-     * of the step, m^2/s^2, with {@code gain} the run's equilibrium deviation per unit P (metres per
-     * (m/s)^2, the plant's compliance included), and their magnitudes, capped at
-     * {@link #MAX_TARGET_KNEES} times the run's knee {@code knee} (metres) with their direction kept.
-     */
-    static void setForce(int r, double gain, float knee, float[] runForce, float p0x, float p0z, float p1x,
-                         float p1z) {
-        int f = r * FORCE_STRIDE;
-        double most = MAX_TARGET_KNEES * knee;
-        target(gain, most, p0x, p0z, runForce, f, f + 4);
-        target(gain, most, p1x, p1z, runForce, f + 2, f + 5);
+    /** Components in run r. */
+    int size(int r) {
+        return start[r + 1] - start[r];
     }
 
-    private static void target(double gain, double most, float px, float pz, float[] out, int o, int om) {
-        double tx = gain * px;
-        double tz = gain * pz;
+    /** The run holding component c of plant p (a short scan of the plant's runs). */
+    int runOf(int p, int c) {
+        int r = plantRun[p];
+        while (start[r + 1] <= c) {
+            r++;
+        }
+        return r;
+    }
+
+    /**
+     * Writes into {@link #restPoint} run r's stiffened rest point for the plant's force
+     * {@code P = |u| u} (m^2/s^2), with P: the linear rest point {@code gain P} (metres, in double,
+     * its magnitude capped at {@link #MAX_TARGET_KNEES} knees with its direction kept, then rounded to
+     * float), times {@link #saturation} of its size over the bend limit of the run's shortest
+     * component (see "Bounded bend" in {@link SpringKinds}), so no component passes its own limit.
+     */
+    private void restPoint(int r, float px, float pz) {
+        double g = gain[r];
+        double tx = g * px;
+        double tz = g * pz;
         double m = Math.sqrt(tx * tx + tz * tz);
+        double most = MAX_TARGET_KNEES * knee[r];
         if (m > most) {
             double k = most / m;
             tx *= k;
             tz *= k;
             m = most;
         }
-        out[o] = (float) tx;
-        out[o + 1] = (float) tz;
-        out[om] = (float) m;
+        float s = saturation((float) m * invLimit[r]);
+        int f = r * REST_STRIDE;
+        float[] rp = restPoint;
+        rp[f] = s * (float) tx;
+        rp[f + 1] = s * (float) tz;
+        rp[f + 2] = px;
+        rp[f + 3] = pz;
     }
 
     /**
      * The factor that turns a linear rest point into the stiffened one (see "Bounded bend" in
      * {@link SpringKinds}): {@code sigma(x) / x} for {@code x = |T| / dMax}; exactly 1 up to the knee,
-     * then decreasing so that {@code x} times it stays below 1. Branch-free; no allocation.
+     * then decreasing so that {@code x} times it stays below 1. No allocation.
      *
      * @param x the linear rest point over the bend limit, finite, &gt;= 0
      * @return the factor, in (0, 1]
      */
     static float saturation(float x) {
+        if (x <= KNEE && x >= Float.MIN_NORMAL) {
+            return 1f; // what the formula below gives there (x / x), without its division
+        }
         // (min(x, KNEE) + SPAN u / (1 + u)) / x with one division
         float u = Math.max(0f, (x - KNEE) * INV_SPAN);
         float w = 1f + u;
@@ -122,130 +199,72 @@ final class SpringRuns {
     }
 
     /**
-     * Per run, the knee of the bend limit of its shortest component: {@code KNEE} times the smallest
-     * bend limit, metres (the largest rest point that {@link #spring} leaves unchanged). Build time;
-     * allocates.
-     *
-     * @param invLimit per component, 1 / its bend limit, 1/m
-     * @return one value per run
+     * Puts the components of run r at its stiffened rest point for the plant's force
+     * {@code P = (px, pz) = |u| u} (as {@link #advance} stiffens it), at zero velocity: the
+     * equilibrium of that force.
      */
-    float[] knees(float[] invLimit) {
-        float[] k = new float[count()];
-        for (int r = 0; r < k.length; r++) {
-            float most = 0;
-            for (int c = start[r]; c < start[r + 1]; c++) {
-                most = Math.max(most, invLimit[c]);
-            }
-            k[r] = KNEE / most;
-        }
-        return k;
+    void settle(int r, float px, float pz) {
+        restPoint(r, px, pz);
+        int f = r * REST_STRIDE;
+        devX[r] = restPoint[f];
+        devZ[r] = restPoint[f + 1];
+        velX[r] = 0;
+        velZ[r] = 0;
+        spread(r);
     }
 
-    /**
-     * Puts the components of run r at the rest point of its linear rest point (tx, tz) of magnitude m
-     * (metres, as {@link #spring} stiffens it), at zero velocity: the equilibrium of that force.
-     *
-     * @param runKnee per run, the knee of its shortest component's bend limit, metres ({@link #knees})
-     */
-    static void settle(int r, int[] runStart, float tx, float tz, float m, float[] runKnee, float[] devX,
-                       float[] devZ, float[] velX, float[] velZ) {
-        float k = saturation(m * (KNEE / runKnee[r]));
-        float x = k * tx;
-        float z = k * tz;
-        for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
-            devX[c] = x;
-            devZ[c] = z;
-            velX[c] = 0;
-            velZ[c] = 0;
+    /** Writes run r's D to its components' entries of {@link #compDevX}, {@link #compDevZ}. */
+    private void spread(int r) {
+        float x = devX[r];
+        float z = devZ[r];
+        float[] cx = compDevX;
+        float[] cz = compDevZ;
+        for (int c = start[r], e = start[r + 1]; c < e; c++) {
+            cx[c] = x;
+            cz[c] = z;
         }
     }
 
-    /**
-     * RANDOM mode: each component of {@code c0 .. c1-1} whose kind's level-of-detail mask has
-     * {@code bit} takes a random deviation in a disc of radius 0.3 length (paper Table 7's S2) from
-     * rng, at zero velocity.
-     *
-     * @return components updated
-     */
-    static int randomise(int c0, int c1, int bit, short[] kind, int[] masks, float[] length, Rng rng, float[] devX,
-                         float[] devZ, float[] velX, float[] velZ) {
-        int updated = 0;
-        for (int c = c0; c < c1; c++) {
-            int k = kind[c];
-            if ((masks[k] & bit) != 0) {
-                float r = 0.3f * length[k] * (float) Math.sqrt(rng.nextDouble());
-                float a = (float) (rng.nextDouble() * 2 * Math.PI);
-                float ca = (float) StrictMath.cos(a);
-                devX[c] = r * ca;
-                devZ[c] = r * (float) StrictMath.sin(a);
-                velX[c] = 0;
-                velZ[c] = 0;
-                updated++;
-            }
-        }
-        return updated;
+    /** Puts the components of runs {@code r0 .. r1-1} at rest: D = v = 0. */
+    void rest(int r0, int r1) {
+        Arrays.fill(devX, r0, r1, 0f);
+        Arrays.fill(devZ, r0, r1, 0f);
+        Arrays.fill(velX, r0, r1, 0f);
+        Arrays.fill(velZ, r0, r1, 0f);
+        Arrays.fill(compDevX, start[r0], start[r1], 0f);
+        Arrays.fill(compDevZ, start[r0], start[r1], 0f);
     }
 
     /**
-     * Advances the components of runs {@code r0 .. r1-1} (contiguous, all of coefficient row
-     * {@code row}) by the step's affine map (eq. 5 integrated exactly, see {@link SpringKinds}):
+     * Advances the components of run r, whose spring coefficients start at {@code co[o]}
+     * ({@link SpringKinds#coef}: aDD, aDv, bD, cD, aVD, aVv, bV, cV), by the step's affine map (eq. 5
+     * integrated exactly, see {@link SpringKinds}) from the plant's force {@code P0 = (p0x, p0z)} at
+     * the start of the step to {@code P1 = (p1x, p1z)} at its end (both {@code |u| u}, m^2/s^2):
      * {@code D' = aDD D + aDv v + bD A + cD B}, {@code v' = aVD D + aVv v + bV A + cV B}, where A and B
-     * are the run's stiffened rest points at the start and the end of the step: its linear rest points
-     * times {@link #saturation} of their size over the bend limit of its shortest component (so no
-     * component passes its own limit). First the part common to the row ({@code aDD D + aDv v},
-     * {@code aVD D + aVv v}) in one loop over the whole segment that C2 vectorises, then each run's
-     * rest-point terms, computed once per run and added in the order {@code (aDD D + aDv v) + bD A + cD B},
-     * so the bits do not depend on how runs are grouped into segments.
-     *
-     * @param co       the spring coefficients ({@link SpringKinds#coef}, {@link SpringKinds#STRIDE} per row)
-     * @param runStart per run its first component, as {@link #start}
-     * @param runForce per run its {@value #FORCE_STRIDE} values ({@link #setForce})
-     * @param runKnee  per run, the knee of its shortest component's bend limit, metres ({@link #knees})
+     * are the run's stiffened rest points of P0 and P1 ({@link #restPoint}; A is the one kept from the
+     * last step when that was of P0, bit for bit). Evaluated as {@code ((aDD D + aDv v) + bD A) + cD B},
+     * in float, the order of the per-component update it replaces, hence its bits. No allocation.
      */
-    static void spring(int r0, int r1, int row, float[] co, int[] runStart, float[] runForce, float[] runKnee,
-                       float[] devX, float[] devZ, float[] velX, float[] velZ) {
-        final int o = row * SpringKinds.STRIDE;
-        final float aDD = co[o];
-        final float aDv = co[o + 1];
-        final float bD = co[o + 2];
-        final float cD = co[o + 3];
-        final float aVD = co[o + 4];
-        final float aVv = co[o + 5];
-        final float bV = co[o + 6];
-        final float cV = co[o + 7];
-        for (int c = runStart[r0], e = runStart[r1]; c < e; c++) {
-            float x = devX[c];
-            float z = devZ[c];
-            float vx = velX[c];
-            float vz = velZ[c];
-            devX[c] = aDD * x + aDv * vx;
-            devZ[c] = aDD * z + aDv * vz;
-            velX[c] = aVD * x + aVv * vx;
-            velZ[c] = aVD * z + aVv * vz;
+    void advance(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z) {
+        int f = r * REST_STRIDE;
+        float[] rp = restPoint;
+        if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
+                || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
+            restPoint(r, p0x, p0z);
         }
-        for (int r = r0; r < r1; r++) {
-            int f = r * FORCE_STRIDE;
-            float q = KNEE / runKnee[r];
-            float k0 = saturation(runForce[f + 4] * q);
-            float k1 = saturation(runForce[f + 5] * q);
-            float ax = k0 * runForce[f];
-            float az = k0 * runForce[f + 1];
-            float bx = k1 * runForce[f + 2];
-            float bz = k1 * runForce[f + 3];
-            float dx0 = bD * ax;
-            float dx1 = cD * bx;
-            float dz0 = bD * az;
-            float dz1 = cD * bz;
-            float vx0 = bV * ax;
-            float vx1 = cV * bx;
-            float vz0 = bV * az;
-            float vz1 = cV * bz;
-            for (int c = runStart[r], e = runStart[r + 1]; c < e; c++) {
-                devX[c] = devX[c] + dx0 + dx1;
-                devZ[c] = devZ[c] + dz0 + dz1;
-                velX[c] = velX[c] + vx0 + vx1;
-                velZ[c] = velZ[c] + vz0 + vz1;
-            }
-        }
+        float ax = rp[f];
+        float az = rp[f + 1];
+        restPoint(r, p1x, p1z);
+        float bx = rp[f];
+        float bz = rp[f + 1];
+        float x = devX[r];
+        float z = devZ[r];
+        float vx = velX[r];
+        float vz = velZ[r];
+        devX[r] = co[o] * x + co[o + 1] * vx + co[o + 2] * ax + co[o + 3] * bx;
+        devZ[r] = co[o] * z + co[o + 1] * vz + co[o + 2] * az + co[o + 3] * bz;
+        velX[r] = co[o + 4] * x + co[o + 5] * vx + co[o + 6] * ax + co[o + 7] * bx;
+        velZ[r] = co[o + 4] * z + co[o + 5] * vz + co[o + 6] * az + co[o + 7] * bz;
+        spread(r);
     }
 }

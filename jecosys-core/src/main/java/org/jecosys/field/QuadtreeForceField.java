@@ -32,8 +32,16 @@ import org.joml.Vector2d;
  * stores zero wind.</li>
  * <li>Gradient: each effective node holding plants fits the wind's gradient to the winds of its
  * (up to four) edge neighbours among the effective nodes, by least squares over their centres of
- * gravity, with no further flow evaluation; the gradient is scaled down where it would change the
- * wind inside the node by more than twice the largest difference to a neighbour.</li>
+ * gravity through its own wind, with no further flow evaluation. The fit is then weighed by how well
+ * it predicts: leaving each neighbour out in turn, the gradient fitted to the others predicts that
+ * neighbour's wind; with E the summed distance of those predictions to the neighbours' winds and
+ * E0 the summed distance of the node's own wind to them, the gradient keeps the share
+ * {@code max(0, 1 - (E / E0)^2)}. A wind linear in space keeps its whole gradient (exact); where the
+ * neighbours show that a straight line does not fit (across depths and distances, near a source or
+ * a vortex core) the gradient fades toward none, so a plant's wind stays no further from the flows
+ * than its node's own wind (over three flow mixes, {@code GradientAccuracyTest}). It is also scaled
+ * down where it would change the wind inside the node by more than twice the largest difference to
+ * a neighbour.</li>
  * </ol>
  * A plant's wind ({@link #wind}, {@link #gather}) is its effective node's wind plus the gradient
  * times the plant's offset from the node's centre of gravity: it varies smoothly inside a node (and
@@ -75,6 +83,7 @@ public final class QuadtreeForceField implements ForceField {
     private int[] effective;
     private int effectiveCount;
     private final int[] probe = new int[4];
+    private final NodeGradient fit = new NodeGradient();
     private int current;
 
     private final FieldCounters counters = new FieldCounters();
@@ -370,8 +379,8 @@ public final class QuadtreeForceField implements ForceField {
     }
 
     /**
-     * Fits effective node n's wind gradient to its edge neighbours (see the class comment). No flow
-     * evaluation; no allocation.
+     * Fits effective node n's wind gradient to its edge neighbours and weighs it by how well it
+     * predicts them ({@link NodeGradient}; see the class comment). No flow evaluation; no allocation.
      */
     private void gradient(int n) {
         Quadtree t = tree;
@@ -386,56 +395,22 @@ public final class QuadtreeForceField implements ForceField {
         probe[1] = neighbour(t.minX[n] - ex, cz);
         probe[2] = neighbour(cx, t.maxZ[n] + ez);
         probe[3] = neighbour(cx, t.minZ[n] - ez);
-        double sxx = 0;
-        double sxz = 0;
-        double szz = 0;
-        double bxx = 0;
-        double bxz = 0;
-        double bzx = 0;
-        double bzz = 0;
-        double maxDiff2 = 0;
+        NodeGradient g = fit;
+        g.clear();
         for (int i = 0; i < 4; i++) {
             int m = probe[i];
             if (m < 0 || m == n || t.count[m] == 0 || (i > 0 && m == probe[i - 1]) || (i > 1 && m == probe[i - 2])
                     || (i > 2 && m == probe[0])) {
                 continue;
             }
-            double dx = centX[m] - cx;
-            double dz = centZ[m] - cz;
-            double du = windX[m] - windX[n];
-            double dv = windZ[m] - windZ[n];
-            sxx += dx * dx;
-            sxz += dx * dz;
-            szz += dz * dz;
-            bxx += dx * du;
-            bxz += dz * du;
-            bzx += dx * dv;
-            bzz += dz * dv;
-            maxDiff2 = Math.max(maxDiff2, du * du + dv * dv);
+            g.add(centX[m] - cx, centZ[m] - cz, windX[m] - windX[n], windZ[m] - windZ[n]);
         }
-        double lambda = 1e-3 * (sxx + szz);
-        double a = sxx + lambda;
-        double d = szz + lambda;
-        double det = a * d - sxz * sxz;
-        if (!(det > 0)) {
-            return;
+        if (g.solve(Math.max(t.maxX[n] - cx, cx - t.minX[n]), Math.max(t.maxZ[n] - cz, cz - t.minZ[n]))) {
+            gradXX[n] = (float) g.xx;
+            gradXZ[n] = (float) g.xz;
+            gradZX[n] = (float) g.zx;
+            gradZZ[n] = (float) g.zz;
         }
-        double gxx = (d * bxx - sxz * bxz) / det;
-        double gxz = (a * bxz - sxz * bxx) / det;
-        double gzx = (d * bzx - sxz * bzz) / det;
-        double gzz = (a * bzz - sxz * bzx) / det;
-        // the largest change inside the node is at a corner; keep it within twice the largest difference
-        double hx = Math.max(t.maxX[n] - cx, cx - t.minX[n]);
-        double hz = Math.max(t.maxZ[n] - cz, cz - t.minZ[n]);
-        double cu = Math.abs(gxx) * hx + Math.abs(gxz) * hz;
-        double cv = Math.abs(gzx) * hx + Math.abs(gzz) * hz;
-        double most = Math.sqrt(cu * cu + cv * cv);
-        double cap = 2 * Math.sqrt(maxDiff2);
-        double k = most > cap ? cap / most : 1;
-        gradXX[n] = (float) (gxx * k);
-        gradXZ[n] = (float) (gxz * k);
-        gradZX[n] = (float) (gzx * k);
-        gradZZ[n] = (float) (gzz * k);
     }
 
     /** The effective node of the last update holding ground point (x, z), metres, or -1 (outside, invisible). */

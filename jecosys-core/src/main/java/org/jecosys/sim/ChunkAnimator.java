@@ -43,6 +43,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final Rng[] chunkRng;
     /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
     private final AnimationStep[] chunkStep;
+    /** Per worker, its scratch for packing render states ({@link Frame#packRenderStates}). */
+    private final float[][] packScratch;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -60,9 +62,10 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * @param sampler the field's buffers: wind, visibility, views, frustum (shared with the simulation,
      *                read here)
      * @param seed    the animation seed of the chunks' random streams
+     * @param workers the pool's workers (the owner included)
      */
     ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, FieldSampler sampler,
-                  long seed, DrawDecision draw) {
+                  long seed, DrawDecision draw, int workers) {
         this.state = state;
         this.sampler = sampler;
         this.draw = draw;
@@ -79,6 +82,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         framePackedVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
+        packScratch = new float[workers][Frame.PACK_SCRATCH];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
             chunkStep[c] = new AnimationStep();
@@ -135,7 +139,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
 
     /** The work of one chunk, run by a worker. */
     @Override
-    public void runChunk(int chunk) {
+    public void runChunk(int chunk, int worker) {
         int p0 = chunkFirstPlant[chunk];
         int p1 = chunkFirstPlant[chunk + 1];
         AnimationMode m = stepMode;
@@ -180,7 +184,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         }
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
-        packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset || stamp, stamp);
+        packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset || stamp, stamp, packScratch[worker]);
         draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], f);
     }
 
@@ -191,7 +195,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * So every plant's render state is current in every published frame, whichever view draws it.
      * No allocation.
      */
-    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, boolean stamped) {
+    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, boolean stamped, float[] scratch) {
         int p = p0;
         while (p < p1) {
             if (!all && packed[p] == state.version(p)) {
@@ -203,7 +207,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
                 packed[p] = stamped ? -1 : state.version(p);
                 p++;
             }
-            f.packRenderStates(state.firstComponent(start), state.firstComponent(p));
+            f.packRenderStates(state.firstComponent(start), state.firstComponent(p), scratch);
         }
     }
 }

@@ -56,9 +56,48 @@ public final class DrawDecision {
         double edge(int s, int l);
     }
 
+    /**
+     * Where each species' levels end, copied from an {@link Edges} once per decision (a step, a view)
+     * so that the per-plant loop reads arrays, not an interface: per species its level count, its
+     * edges (metres) and the transition band it uses (the decision's, at most the smallest gap
+     * between its edges). Sized for the world's species; {@link #fill} allocates only when a species
+     * has more levels than before.
+     */
+    static final class Bands {
+        final int[] levels;
+        double[][] edges;
+        final double[] band;
+
+        Bands(int species) {
+            levels = new int[species];
+            edges = new double[species][0];
+            band = new double[species];
+        }
+
+        /** Copies the edges of {@code e} and each species' band for a decision band {@code b}, metres. */
+        Bands fill(Edges e, double b) {
+            for (int s = 0; s < levels.length; s++) {
+                int n = e.levels(s);
+                levels[s] = n;
+                if (edges[s].length < n - 1) {
+                    edges[s] = new double[n - 1];
+                }
+                for (int l = 0; l < n - 1; l++) {
+                    edges[s][l] = e.edge(s, l);
+                }
+                band[s] = Math.min(b, minGap(e, s, n));
+            }
+            return this;
+        }
+    }
+
     private final World world;
     private final Edges edges;
     private final float[] radius;
+    /** The bands of the step's decision: filled by {@link #prepare} on the stepping thread, read by the workers. */
+    private final Bands stepBands;
+    /** The bands of {@link #decideAll}, its caller's own. */
+    private final Bands allBands;
     private volatile double transition = DEFAULT_TRANSITION;
     /** start, end, min fraction: one array, swapped whole, so a decision never sees a mix. */
     private volatile double[] thinning = {ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END,
@@ -75,6 +114,17 @@ public final class DrawDecision {
         for (int s = 0; s < radius.length; s++) {
             radius[s] = boundingRadius(species.get(s));
         }
+        stepBands = new Bands(radius.length);
+        stepBands.fill(edges, transition);
+        allBands = new Bands(radius.length);
+    }
+
+    /**
+     * Takes the LOD edges and the transition band for the decisions of the next step (the workers'
+     * {@link #decide}). Stepping thread, before the workers start; no allocation after the first.
+     */
+    void prepare() {
+        stepBands.fill(edges, transition);
     }
 
     /**
@@ -233,8 +283,8 @@ public final class DrawDecision {
     void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, double scale2, double fixed2,
                 FrustumIntersection frustum, Frame frame) {
         double[] thin = thinning;
-        decide(world, edges, radius, p0, p1, visible, true, ex, ey, ez, scale2, fixed2, frustum, transition,
-                thin[0], thin[1], thin[2], frame.drawLevel, frame.drawKeep);
+        decide(world, stepBands, radius, p0, p1, visible, true, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
+                thin[2], frame.drawLevel, frame.drawKeep);
     }
 
     /**
@@ -244,10 +294,9 @@ public final class DrawDecision {
      * is where its equivalent distance ({@link org.jecosys.math.ViewLod}) falls among the edges, with the
      * next level too in a transition band, and distance thinning by its real distance. No allocation.
      */
-    static void decide(World world, Edges edges, float[] radius, int p0, int p1, boolean[] visible, boolean test,
+    static void decide(World world, Bands bands, float[] radius, int p0, int p1, boolean[] visible, boolean test,
                        double ex, double ey, double ez, double scale2, double fixed2, FrustumIntersection frustum,
-                       double band, double thinStart, double thinEnd, double thinMin, byte[] levelOut,
-                       int[] keepOut) {
+                       double thinStart, double thinEnd, double thinMin, byte[] levelOut, int[] keepOut) {
         boolean thinned = thinMin < 1;
         for (int p = p0; p < p1; p++) {
             int s = world.plantSpecies(p);
@@ -264,20 +313,21 @@ public final class DrawDecision {
             double dz = z - ez;
             double d2 = dx * dx + dy * dy + dz * dz;
             double q2 = org.jecosys.math.ViewLod.equivalent2(d2, scale2, fixed2);
-            int levels = edges.levels(s);
+            int levels = bands.levels[s];
+            double[] edge = bands.edges[s];
             int l = 0;
             while (l < levels - 1) {
-                double e = edges.edge(s, l);
+                double e = edge[l];
                 if (q2 < e * e) {
                     break;
                 }
                 l++;
             }
             double q = Math.sqrt(q2);
-            double b = Math.min(band, minGap(edges, s, levels));
-            int keep = keep(edges, s, l, levels, q, b);
-            if (l < levels - 1 && b > 0 && q > edges.edge(s, l) - b) {
-                keep |= keep(edges, s, l + 1, levels, q, b) << 16;
+            double b = bands.band[s];
+            int keep = keep(edge, l, levels, q, b);
+            if (l < levels - 1 && b > 0 && q > edge[l] - b) {
+                keep |= keep(edge, l + 1, levels, q, b) << 16;
             }
             if (thinned) {
                 double d = q2 == d2 ? q : Math.sqrt(d2);
@@ -316,7 +366,10 @@ public final class DrawDecision {
         }
         frustum.set(camera.viewProjection(viewProjection), true); // normalised planes for testSphere
         java.util.Arrays.fill(frame.plantVisible, true);
-        decide(0, world.plantCount(), frame.plantVisible, camera.x(), camera.y(), camera.z(), 1, -1, frustum, frame);
+        double[] thin = thinning;
+        decide(world, allBands.fill(edges, transition), radius, 0, world.plantCount(), frame.plantVisible, true,
+                camera.x(), camera.y(), camera.z(), 1, -1, frustum, thin[0], thin[1], thin[2], frame.drawLevel,
+                frame.drawKeep);
         frame.setThinning(thinStart(), thinEnd(), thinMinFraction());
         // the distances are taken as meant for this camera's own lens: another camera drawing the
         // frame decides the same way relative to it
@@ -352,15 +405,15 @@ public final class DrawDecision {
      * @param band   transition band of the species, metres
      * @return the packed window, in [0, 65535]
      */
-    static int keep(Edges edges, int s, int l, int levels, double d, double band) {
-        double handOver = l < levels - 1 ? fade(d, edges.edge(s, l), band) : 0;
-        double received = l > 0 ? (d >= edges.edge(s, l - 1) ? 1 : fade(d, edges.edge(s, l - 1), band)) : 1;
+    static int keep(double[] edge, int l, int levels, double d, double band) {
+        double handOver = l < levels - 1 ? fade(d, edge[l], band) : 0;
+        double received = l > 0 ? (d >= edge[l - 1] ? 1 : fade(d, edge[l - 1], band)) : 1;
         return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
     }
 
     /**
      * {@return the packed dither window of level l of species s at distance d, with this decision's
-     * band (see {@link #keep(Edges, int, int, int, double, double)})}
+     * band (see {@link #keep(double[], int, int, double, double)})}
      *
      * @param s species index
      * @param l level
@@ -368,7 +421,10 @@ public final class DrawDecision {
      */
     public int keep(int s, int l, double d) {
         int levels = edges.levels(s);
-        return keep(edges, s, l, levels, d, Math.min(transition, minGap(edges, s, levels)));
+        double band = Math.min(transition, minGap(edges, s, levels));
+        double handOver = l < levels - 1 ? fade(d, edges.edge(s, l), band) : 0;
+        double received = l > 0 ? (d >= edges.edge(s, l - 1) ? 1 : fade(d, edges.edge(s, l - 1), band)) : 1;
+        return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);
     }
 
     /**

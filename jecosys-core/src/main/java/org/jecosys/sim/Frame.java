@@ -249,17 +249,28 @@ public final class Frame {
         return renderStatesView;
     }
 
+    /** Floats of a scratch array for {@link #packRenderStates}: two per component of a block. */
+    static final int PACK_SCRATCH = 2 * 2048;
+
     /**
-     * Writes the render states of components [c0, c1) from the pose and azimuth arrays. Worker
-     * threads, each on its own range; no allocation.
+     * Writes the render states of components [c0, c1) from the pose and azimuth arrays: interleaved
+     * block by block into {@code scratch} (at least {@link #PACK_SCRATCH} floats, the caller's own),
+     * each block copied into the direct buffer at once (element-wise puts into a direct buffer cost
+     * a scope check each and are not vectorised). Worker threads, each on its own range and scratch;
+     * no allocation.
      */
-    void packRenderStates(int c0, int c1) {
+    void packRenderStates(int c0, int c1, float[] scratch) {
         FloatBuffer d = renderStates;
         float[] pose = poseCoord;
         float[] az = bendAzimuth;
-        for (int c = c0; c < c1; c++) {
-            d.put(2 * c, pose[c]);
-            d.put(2 * c + 1, az[c]);
+        int block = scratch.length / 2;
+        for (int b = c0; b < c1; b += block) {
+            int n = Math.min(block, c1 - b);
+            for (int i = 0; i < n; i++) {
+                scratch[2 * i] = pose[b + i];
+                scratch[2 * i + 1] = az[b + i];
+            }
+            d.put(2 * b, scratch, 0, 2 * n);
         }
     }
 
@@ -353,7 +364,7 @@ public final class Frame {
     void copyFrom(Frame src) {
         System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);
         System.arraycopy(src.bendAzimuth, 0, bendAzimuth, 0, bendAzimuth.length);
-        packRenderStates(0, poseCoord.length);
+        renderStates.put(0, src.renderStates, 0, 2 * poseCoord.length);
         System.arraycopy(src.plantVisible, 0, plantVisible, 0, plantVisible.length);
         System.arraycopy(src.plantLevel, 0, plantLevel, 0, plantLevel.length);
         System.arraycopy(src.drawLevel, 0, drawLevel, 0, drawLevel.length);

@@ -169,12 +169,16 @@ public final class Simulation implements AutoCloseable {
         for (int i = 0; i < 3; i++) {
             Frame f = exchange.frame(i);
             state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
-            f.packRenderStates(0, comps);
+            f.packRenderStates(0, comps, new float[Frame.PACK_SCRATCH]);
+        }
+        int[] speciesLevels = new int[world.plants().species().size()];
+        for (int sp = 0; sp < speciesLevels.length; sp++) {
+            speciesLevels[sp] = world.plants().species().get(sp).levels();
         }
         draw = new DrawDecision(world, new DrawDecision.Edges() {
             @Override
             public int levels(int sp) {
-                return world.plants().species().get(sp).levels();
+                return speciesLevels[sp]; // per plant in the workers: an array, not the species list
             }
 
             @Override
@@ -183,7 +187,7 @@ public final class Simulation implements AutoCloseable {
             }
         });
         draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw, threads);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 
@@ -375,6 +379,7 @@ public final class Simulation implements AutoCloseable {
         exchange.beginWrite();
         int b = current; // the buffer the workers animate from: the views sampled one step ago
         chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
+        draw.prepare();
         long t0 = System.nanoTime();
         pool.start();
         Camera[] others = views;

@@ -35,6 +35,7 @@ public final class ViewDecision {
     private final FrustumIntersection frustum = new FrustumIntersection();
     private final double[] metric = new double[2];
     private final FrameEdges edges = new FrameEdges();
+    private final DrawDecision.Bands bands;
     private int drawn;
 
     /** The edges a frame recorded, read through {@link DrawDecision.Edges}. */
@@ -64,6 +65,7 @@ public final class ViewDecision {
         for (int s = 0; s < radius.length; s++) {
             radius[s] = DrawDecision.boundingRadius(species.get(s));
         }
+        bands = new DrawDecision.Bands(radius.length);
         int plants = world.plantCount();
         level = new byte[plants];
         keep = new int[plants];
@@ -106,7 +108,7 @@ public final class ViewDecision {
         double ex = camera.x();
         double ey = camera.y();
         double ez = camera.z();
-        double band = frame.lodTransition();
+        bands.fill(edges, frame.lodTransition());
         int plants = world.plantCount();
         int n = 0;
         for (int b = 0; b < blocks; b++) {
@@ -119,9 +121,9 @@ public final class ViewDecision {
                 Arrays.fill(keep, p0, p1, 0);
                 continue;
             }
-            DrawDecision.decide(world, edges, radius, p0, p1, null, res == FrustumIntersection.INTERSECT, ex, ey, ez,
-                    metric[0], metric[1], frustum, band, frame.thinStart(), frame.thinEnd(), frame.thinMinFraction(),
-                    level, keep);
+            DrawDecision.decide(world, bands, radius, p0, p1, null, res == FrustumIntersection.INTERSECT, ex, ey, ez,
+                    metric[0], metric[1], frustum, frame.thinStart(), frame.thinEnd(), frame.thinMinFraction(), level,
+                    keep);
             for (int p = p0; p < p1; p++) {
                 n += level[p] >= 0 ? 1 : 0;
             }

@@ -20,7 +20,12 @@ import org.jecosys.math.Require;
 final class WorkerPool implements AutoCloseable {
     /** The work of one chunk; implemented once, never allocated per step. */
     interface ChunkTask {
-        void runChunk(int chunk);
+        /**
+         * Runs chunk {@code chunk} on worker {@code worker}: in [0, workers() - 1), a pool thread, or
+         * {@code workers() - 1}, the owner. A worker runs one chunk at a time, so per-worker scratch
+         * needs no lock; the result must not depend on the worker.
+         */
+        void runChunk(int chunk, int worker);
     }
 
     private static final int SPINS = 200;
@@ -50,7 +55,8 @@ final class WorkerPool implements AutoCloseable {
         this.task = Require.nonNull("task", task);
         threads = new Thread[workers - 1]; // the owner is the last worker: it helps in await()
         for (int i = 0; i < threads.length; i++) {
-            Thread t = new Thread(this::loop, name + "-" + i);
+            int worker = i;
+            Thread t = new Thread(() -> loop(worker), name + "-" + i);
             t.setDaemon(true);
             threads[i] = t;
         }
@@ -124,7 +130,7 @@ final class WorkerPool implements AutoCloseable {
     void await() {
         // the caller helps: it runs every chunk no worker has claimed yet (each chunk is claimed once,
         // whoever runs it, so results do not depend on which thread did the work)
-        runChunks();
+        runChunks(threads.length);
         int spins = 0;
         while (pending.get() != 0) {
             if (stopped) {
@@ -148,14 +154,14 @@ final class WorkerPool implements AutoCloseable {
     }
 
     /** Runs unclaimed chunks until none is left, recording when this thread's first started and last ended. */
-    private void runChunks() {
+    private void runChunks(int worker) {
         int c = next.getAndIncrement();
         if (c >= chunks) {
             return;
         }
         firstChunk.accumulateAndGet(System.nanoTime(), Math::min);
         for (; c < chunks; c = next.getAndIncrement()) {
-            task.runChunk(c);
+            task.runChunk(c, worker);
         }
         lastChunk.accumulateAndGet(System.nanoTime(), Math::max);
     }
@@ -172,7 +178,7 @@ final class WorkerPool implements AutoCloseable {
         return last >= first ? last - first : 0;
     }
 
-    private void loop() {
+    private void loop(int worker) {
         int seen = 0;
         while (true) {
             int spins = 0;
@@ -190,7 +196,7 @@ final class WorkerPool implements AutoCloseable {
             seen = generation;
             if (!stopped) {
                 try {
-                    runChunks();
+                    runChunks(worker);
                 } catch (Throwable t) {
                     failure = t;
                     next.set(chunks);

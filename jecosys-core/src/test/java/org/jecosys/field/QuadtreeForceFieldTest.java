@@ -235,7 +235,9 @@ class QuadtreeForceFieldTest {
             assertEquals(t.depth(f.leafNode(p)), f.depth(p));
         }
         assertTrue(visible > 100 && visible < f.plantCount(), "visible " + visible);
-        assertTrue(plantError < 0.7 * nodeError, "inside a node the gradient brings a plant's wind closer to the "
+        // 0.58 before the gradient was weighed by how well it predicts the neighbours (leave-one-out); 0.72 since:
+        // nodes whose neighbours cannot check a straight-line fit give it up, to be no worse than their own wind
+        assertTrue(plantError < 0.75 * nodeError, "inside a node the gradient brings a plant's wind closer to the "
                 + "flow's at the plant: mean error " + plantError / visible + " vs " + nodeError / visible);
     }
 

@@ -137,7 +137,7 @@ class AnimBenchmarkTest {
         }
 
         @Override
-        public void runChunk(int chunk) {
+        public void runChunk(int chunk, int worker) {
             int p0 = chunkFirst[chunk];
             int p1 = chunkFirst[chunk + 1];
             int c0 = state.firstComponent(p0);

@@ -104,7 +104,7 @@ class SimulationReliabilityTest {
         for (int trial = 0; trial < TRIALS; trial++) {
             AtomicInteger ran = new AtomicInteger();
             int chunks = 64;
-            WorkerPool pool = new WorkerPool("pool-race", 3, chunks, c -> {
+            WorkerPool pool = new WorkerPool("pool-race", 3, chunks, (c, worker) -> {
                 long until = System.nanoTime() + 20_000;
                 while (System.nanoTime() < until) {
                     Thread.onSpinWait();
