@@ -335,6 +335,11 @@ final class SceneEditor {
      *
      * @return a complete scene, as {@link org.jecosys.scene.SceneFiles#save} writes it
      */
+    /** {@return the wind sheen the scene file asks for ({@code <light sheen>})} */
+    double sceneSheen() {
+        return def.render().light().sheen();
+    }
+
     SceneDef snapshot() {
         List<FlowDef> flows = new ArrayList<>();
         for (String id : order) {
@@ -359,7 +364,7 @@ final class SceneEditor {
         double el = (float) Math.toDegrees(l.sunElevation()) == settings.sunElevation() ? l.sunElevation()
                 : Math.toRadians(settings.sunElevation());
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
-                l.contactShadow(), l.fogStart(), l.fogEnd());
+                l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
                 RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());

@@ -174,6 +174,10 @@ final class ViewerPanel {
             if (ImGui.sliderFloat("sun elevation (deg)", edit, 0, 90, "%.0f")) {
                 editor.setSun(s.sunAzimuth(), edit[0]);
             }
+            // a view setting: the scene file keeps its own <light sheen>
+            if (ImGui.checkbox("wind sheen on bent grass", s.sheen() > 0)) {
+                s.sheen(s.sheen() > 0 ? 0f : (float) Math.max(0.25, editor.sceneSheen()));
+            }
         }
         if (ImGui.collapsingHeader("Overlays")) {
             if (ImGui.checkbox("wind arrows on the terrain (V)", controls.showWind())) {

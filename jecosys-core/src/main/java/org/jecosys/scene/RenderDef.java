@@ -41,9 +41,11 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @param fogStart      distance where the aerial perspective (haze toward the horizon colour) begins,
      *                      metres, &gt;= 0
      * @param fogEnd        distance of full haze, metres, &gt; fogStart
+     * @param sheen         strength of the wind's sheen: how much a blade bent by the wind brightens
+     *                      toward its pale, sky-lit side, in [0, 2]; 0 turns it off
      */
     public record Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
-                        Rgb ambient, double contactShadow, double fogStart, double fogEnd) {
+                        Rgb ambient, double contactShadow, double fogStart, double fogEnd, double sheen) {
         /** Largest sun azimuth magnitude, degrees (the Def holds radians). */
         public static final double MAX_AZIMUTH_DEGREES = 360;
         /** Largest sun elevation, degrees (the Def holds radians). */
@@ -52,6 +54,28 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         public static final double MAX_INTENSITY = 4;
         /** Largest fog distance, metres. */
         public static final double MAX_FOG = 100_000;
+        /** Largest {@link #sheen()}. */
+        public static final double MAX_SHEEN = 2;
+
+        /**
+         * The light with the default sheen (1).
+         *
+         * @param sunAzimuth    radians, in [-2 pi, 2 pi]
+         * @param sunElevation  radians, in [0, pi/2]
+         * @param sunColour     not null
+         * @param sunIntensity  in [0, 4]
+         * @param skyZenith     not null
+         * @param ambient       not null
+         * @param contactShadow in [0, 1]
+         * @param fogStart      metres, in [0, 100000]
+         * @param fogEnd        metres, in (fogStart, 100000]
+         * @throws IllegalArgumentException when a component is null or out of range
+         */
+        public Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
+                     Rgb ambient, double contactShadow, double fogStart, double fogEnd) {
+            this(sunAzimuth, sunElevation, sunColour, sunIntensity, skyZenith, ambient, contactShadow, fogStart, fogEnd,
+                    1);
+        }
 
         /**
          * Checks the components.
@@ -65,9 +89,11 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          * @param contactShadow in [0, 1]
          * @param fogStart      metres, in [0, 100000]
          * @param fogEnd        metres, in (fogStart, 100000]
+         * @param sheen         in [0, 2]
          * @throws IllegalArgumentException when a component is null or out of range
          */
         public Light {
+            Require.range("sheen", sheen, 0, MAX_SHEEN);
             Require.degrees("sunAzimuth", sunAzimuth, -MAX_AZIMUTH_DEGREES, MAX_AZIMUTH_DEGREES);
             Require.degrees("sunElevation", sunElevation, 0, MAX_ELEVATION_DEGREES);
             Require.nonNull("sunColour", sunColour);
@@ -85,7 +111,8 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         /**
          * The defaults: the sun at azimuth 135 degrees, elevation 50 degrees (high, behind and to the left
          * of a camera looking along -Z, as the scenes' start cameras do), warm white at intensity 0.8, a
-         * deeper blue zenith, a cool ambient of about 0.45, contact shadow 0.5 and haze from 20 m to 150 m.
+         * deeper blue zenith, a cool ambient of about 0.45, contact shadow 0.5, haze from 20 m to 150 m and
+         * the wind's sheen at 1.
          */
         public static final Light DEFAULT = new Light(Math.toRadians(135), Math.toRadians(50),
                 new Rgb(1f, 0.95f, 0.85f), 0.8, new Rgb(0.30f, 0.50f, 0.85f), new Rgb(0.42f, 0.46f, 0.52f), 0.5,

@@ -45,7 +45,10 @@ final class RenderSchema {
                 .attr(num("fogStart", "metres", "Distance where the haze toward the horizon colour begins.")
                         .range(0, RenderDef.Light.MAX_FOG).def(ld.fogStart()).get(d -> li.apply(d).fogStart()))
                 .attr(num("fogEnd", "metres", "Distance of full haze; above fogStart.")
-                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogEnd()).get(d -> li.apply(d).fogEnd()));
+                        .range(0, RenderDef.Light.MAX_FOG).def(ld.fogEnd()).get(d -> li.apply(d).fogEnd()))
+                .attr(num("sheen", "", "Strength of the wind's sheen: a blade bent by the wind brightens toward its "
+                        + "pale, sky-lit side, so gusts read from afar as travelling bands of light (0 turns it off).")
+                        .range(0, RenderDef.Light.MAX_SHEEN).def(ld.sheen()).get(d -> li.apply(d).sheen()));
         RenderDef.Patches pd = RenderDef.Patches.DEFAULT;
         ElementSpec patches = new ElementSpec("patches", "Large healthy/dry colour patches over the ground and "
                 + "the plants, from seeded noise (presentation only).")

@@ -44,6 +44,7 @@ public final class RenderSettings {
     private boolean clear;
     private boolean terrain;
     private RenderDef.GroundCover groundCover = RenderDef.GroundCover.NONE;
+    private float sheen = 1f;
 
     /**
      * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
@@ -102,9 +103,29 @@ public final class RenderSettings {
                 .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
                 .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
                 .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd())
+                .fog((float) l.fogStart(), (float) l.fogEnd()).sheen((float) l.sheen())
                 .patches((float) p.scale(), (float) p.strength(), p.seed())
                 .groundCover(def.groundCover());
+    }
+
+    /** {@return the strength of the wind's sheen on bent blades and ground cover, 0 for none} */
+    public float sheen() {
+        return sheen;
+    }
+
+    /**
+     * Sets the strength of the wind's sheen ({@code <light sheen>}): a blade bent by the wind brightens
+     * toward its pale, sky-lit side, the more the further it bends (plants, ground-cover blades and the
+     * cover's colour on the ground alike), so a gust reads from afar as a band of light travelling with
+     * it. Render thread; no allocation.
+     *
+     * @param strength in [0, 2]; 0 turns it off, 1 is the default
+     * @return this settings object
+     */
+    public RenderSettings sheen(float strength) {
+        Require.range("sheen", strength, 0, 2);
+        sheen = strength;
+        return this;
     }
 
     /** {@return the ground cover: the short layer hiding the soil where plants grow ({@code <groundCover>})} */

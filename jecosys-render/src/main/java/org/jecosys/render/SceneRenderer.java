@@ -96,6 +96,7 @@ public final class SceneRenderer implements AutoCloseable {
             g.setGuestState();
             t = new TerrainRenderer(gl, world, settings.tint());
             c = new CoverBlades(gl, world, t);
+            t.setBendMap(c.bendMap(), c.bendMapTransform());
             p = new PlantRenderer(gl, world, path);
             k = new SkyRenderer(gl);
             overlay = new FieldOverlay(gl, world.terrain().heightfield());
@@ -246,8 +247,10 @@ public final class SceneRenderer implements AutoCloseable {
         if (drawPlants) {
             plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
+            plants.setSheen(settings.sheen());
             plants.drawNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
             if (terrain.prepareCover(settings)) {
+                cover.prepare(frame);
                 cover.draw(frame, camera, settings, terrain.maps());
             }
         }

@@ -98,6 +98,7 @@ public final class CoverBlades implements AutoCloseable {
     private final int uPatch;
     private final int uPatchSeed;
     private final int uContactShadow;
+    private final int uSheen;
     private long bendFrame = Long.MIN_VALUE;
     private Frame bendOf;
     private int lastTiles;
@@ -189,6 +190,7 @@ public final class CoverBlades implements AutoCloseable {
         uPatch = program.uniform("uPatch");
         uPatchSeed = program.uniform("uPatchSeed");
         uContactShadow = program.uniform("uContactShadow");
+        uSheen = program.uniform("uSheen");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uHeights"), GlStateGuard.UNIT_GRAIN + 1);
@@ -296,6 +298,7 @@ public final class CoverBlades implements AutoCloseable {
         glUniform3f(uPatch, 1 / settings.patchScale(), settings.patchStrength(), settings.patchStrength() > 0 ? 1 : 0);
         glUniform1i(uPatchSeed, settings.patchSeed());
         glUniform1f(uContactShadow, settings.contactShadow());
+        glUniform1f(uSheen, settings.sheen());
         maps.bind(GlStateGuard.UNIT_2D);
         bendTexture.bind(GlStateGuard.UNIT_GRAIN);
         heightTexture.bind(GlStateGuard.UNIT_GRAIN + 1);
@@ -308,6 +311,27 @@ public final class CoverBlades implements AutoCloseable {
 
     private double heightSpan() {
         return field.maxHeight() - field.minHeight();
+    }
+
+    /**
+     * Brings the bend map up to date with a frame: the plants' bends averaged per 1 m tile (what the
+     * blades lean by and the ground cover's sheen reads). Once per frame number; later calls for the same
+     * frame do nothing. Render thread; no allocation.
+     *
+     * @param frame the frame
+     */
+    public void prepare(Frame frame) {
+        updateBends(frame);
+    }
+
+    /** {@return the bend map: per 1 m tile the plants' mean bend (radians, x and z, as bytes 128 + 127 b / 1.6)} */
+    public GlTexture2D bendMap() {
+        return bendTexture;
+    }
+
+    /** {@return {minX, minZ, 1 / width, 1 / height} of the bend map, metres: world X, Z to texture coordinates} */
+    public float[] bendMapTransform() {
+        return new float[] {(float) field.minX(), (float) field.minZ(), 1f / (TILE * bendWidth), 1f / (TILE * bendHeight)};
     }
 
     /** Averages the plants' bends per tile into the bend map, once per frame. */

@@ -82,6 +82,10 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uPatchSeed;
     private final int uContactShadow;
     private final int uCover;
+    private final int uSheen;
+    private final int uSheenLight;
+    private final int uSunXZ;
+    private GlTexture2D bendMap;
     private final int uCoverColour;
     private final int uCoverDry;
     /** Contact occlusion (red) and ground cover (green) over the terrain. */
@@ -206,12 +210,16 @@ public final class TerrainRenderer implements AutoCloseable {
         uPatchSeed = program.uniform("uPatchSeed");
         uContactShadow = program.uniform("uContactShadow");
         uCover = program.uniform("uCover");
+        uSheen = program.uniform("uSheen");
+        uSheenLight = program.uniform("uSheenLight");
+        uSunXZ = program.uniform("uSunXZ");
         uCoverColour = program.uniform("uCoverColour");
         uCoverDry = program.uniform("uCoverDry");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
         glUniform1i(program.uniform("uGrain"), GlStateGuard.UNIT_GRAIN);
+        glUniform1i(program.uniform("uBend"), GlStateGuard.UNIT_GRAIN + 1);
         if (occlusionMap == null) {
             glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
             glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
@@ -400,11 +408,35 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniform4f(uCover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
         glUniform3f(uCoverColour, gc.colour().r(), gc.colour().g(), gc.colour().b());
         glUniform3f(uCoverDry, gc.dryColour().r(), gc.dryColour().g(), gc.dryColour().b());
+        boolean sheen = withCover && bendMap != null && settings.sheen() > 0;
+        glUniform1f(uSheen, sheen ? settings.sheen() : 0f);
+        glUniform3f(uSheenLight, 0.35f * fog.r() * (amb.r() + 0.5f * sun.r() * k),
+                0.35f * fog.g() * (amb.g() + 0.5f * sun.g() * k), 0.35f * fog.b() * (amb.b() + 0.5f * sun.b() * k));
+        float sl = (float) Math.hypot(settings.sunX(), settings.sunZ());
+        glUniform2f(uSunXZ, sl > 1e-6f ? settings.sunX() / sl : 0f, sl > 1e-6f ? settings.sunZ() / sl : 0f);
+        if (sheen) {
+            bendMap.bind(GlStateGuard.UNIT_GRAIN + 1);
+        }
         grain.bind(GlStateGuard.UNIT_GRAIN);
         occlusion.bind(GlStateGuard.UNIT_2D);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
+    }
+
+    /**
+     * Sets the bend map the ground cover's sheen reads (the plants' bends per tile, {@link CoverBlades}).
+     * Render thread; no allocation after the first call.
+     *
+     * @param map       the bend map
+     * @param transform {minX, minZ, 1 / width, 1 / height}: world X, Z to the map's texture coordinates
+     */
+    public void setBendMap(GlTexture2D map, float[] transform) {
+        bendMap = map;
+        int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
+        program.use();
+        glUniform4f(program.uniform("uBendMap"), transform[0], transform[1], transform[2], transform[3]);
+        glUseProgram(previous);
     }
 
     /** Side of the grain tile on the ground, metres. */

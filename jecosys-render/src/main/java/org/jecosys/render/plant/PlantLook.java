@@ -25,6 +25,8 @@ public final class PlantLook {
     public float ambR = 0.42f;
     public float ambG = 0.46f;
     public float ambB = 0.52f;
+    /** Strength of the wind's sheen on bent blades (plant_light.glsl windSheen), 0: off. */
+    public float sheen = 1f;
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;
     private int seed;

@@ -246,6 +246,16 @@ public final class PlantRenderer implements AutoCloseable {
      * @param ambient   sky light colour and strength, components in [0, 4]
      * @throws IllegalArgumentException when a value is out of range
      */
+    /**
+     * Sets the strength of the wind's sheen: how much a blade bent by the wind brightens toward its pale,
+     * sky-lit side (0 off, 1 the default look). Render thread; no allocation.
+     *
+     * @param strength in [0, 2]
+     */
+    public void setSheen(float strength) {
+        look.sheen = (float) Require.range("sheen", strength, 0, 2);
+    }
+
     public void setLight(Rgb sun, float intensity, Rgb ambient) {
         checkLight("sun", sun);
         checkLight("ambient", ambient);

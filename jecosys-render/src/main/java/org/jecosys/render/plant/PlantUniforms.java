@@ -34,6 +34,7 @@ public final class PlantUniforms {
     public final int headPixels;
     public final int flowerTilt;
     public final int thin;
+    public final int sheen;
     public final int alphaFloor;
 
     public PlantUniforms(GlProgram p) {
@@ -55,6 +56,7 @@ public final class PlantUniforms {
         headPixels = p.optionalUniform("uHeadPixels");
         flowerTilt = p.optionalUniform("uFlowerTilt");
         thin = p.optionalUniform("uThin");
+        sheen = p.optionalUniform("uSheen");
         alphaFloor = p.optionalUniform("uAlphaFloor");
         glUniform1i(p.optionalUniform("uPoses"), 0);
         glUniform1i(p.optionalUniform("uComponents"), 1);
@@ -73,6 +75,7 @@ public final class PlantUniforms {
         glUniformMatrix4fv(viewProj, false, viewProjMatrix);
         glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
         glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
+        glUniform1f(sheen, r.sheen);
         glUniform1f(minPixels, r.minPixels);
         glUniform1f(headPixels, r.headPixels);
         glUniform1f(flowerTilt, r.flowerTilt);

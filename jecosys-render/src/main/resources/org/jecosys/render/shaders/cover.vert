@@ -85,5 +85,7 @@ void main() {
     albedo *= 1.0 - uContactShadow * maps.r * (corner == 2 ? 0.3 : 1.0);
     vec3 toEye = uEye - p;
     float along = corner == 2 ? 1.0 : 0.0;
-    vColour = lit(albedo, 0, along, 0.3 * along, cross(side, tip - base), toEye, length(toEye), false);
+    float bent = length(bend);
+    vColour = lit(albedo, 0, along, 0.3 * along, cross(side, tip - base), toEye, length(toEye), false,
+            bent * (1.0 / 1.2), bent > 1e-4 ? bend / bent : vec2(0.0));
 }

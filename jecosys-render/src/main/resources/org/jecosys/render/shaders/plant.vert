@@ -32,9 +32,10 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
     gl_Position = uViewProj * vec4(v.world, 1.0);
-    vShade = vec4(shade(v, c2, false), v.cover);
+    // record texel 1's w: the dither window (whole part) and how far the component is bent (fraction)
+    vShade = vec4(shade(v, c2, false, fract(c1.w) * (1.0 / 0.99), vec2(c0.w, c1.z)), v.cover);
 #ifdef DITHER
-    int keep = int(c1.w + 0.5);
+    int keep = int(c1.w);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
 #endif
 }

@@ -131,9 +131,11 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
 }
 
 // The lit, fogged colour of a placed vertex; look is the component's record texel 2 (cos and sin of
-// its hue turn, brightness factor, patch dryness); far drops the specular term.
-vec3 shade(Placed v, vec4 look, bool far) {
+// its hue turn, brightness factor, patch dryness); far drops the specular term; bend (0 to 1) and dir
+// (unit, horizontal) are how far and which way the wind bends the component (its sheen).
+vec3 shade(Placed v, vec4 look, bool far, float bend, vec2 dir) {
     int kind = int(aShape.x + 0.5);
     float along = aColour.w;
-    return lit(albedo(aColour.rgb, look, kind, along), kind, along, v.height, v.normal, v.toEye, v.distance, far);
+    return lit(albedo(aColour.rgb, look, kind, along), kind, along, v.height, v.normal, v.toEye, v.distance, far,
+            bend, dir);
 }

@@ -11,6 +11,7 @@ uniform vec3 uAmbient;                           // sky light
 uniform vec3 uFogColour;
 uniform float uFogStart;
 uniform float uFogEnd;
+uniform float uSheen;                            // strength of the wind's sheen on bent blades, 0: off
 #ifdef LIST_TABLE
 float uDryTips = 0.0;                            // set per list by plant_resolve.comp
 #else
@@ -44,9 +45,30 @@ float baseShade(int kind, float along, float height) {
     return (0.5 + 0.5 * sqrt(along)) * mix(0.45, 1.0, smoothstep(0.0, 0.3, height));
 }
 
+// The wind's sheen (issue 26): a blade bent by the wind shows its paler side and catches the sky's light,
+// the more the further it bends, most when it bends toward the eye or the sun; so a gust reads from
+// afar as a band of light travelling over the field. bend: how far the part is bent, 0 (rest) to 1
+// (its species' largest bend); dir: the horizontal direction it bends toward (unit or 0); lit: its lit
+// colour before haze.
+vec3 windSheen(vec3 lit, float bend, vec2 dir, vec3 toEye) {
+    if (uSheen <= 0.0 || bend <= 0.0) {
+        return lit;
+    }
+    float el = length(toEye.xz);
+    vec2 e = el > 1e-6 ? toEye.xz / el : vec2(0.0);
+    float sl = length(uLightDir.xz);
+    vec2 s = sl > 1e-6 ? uLightDir.xz / sl : vec2(0.0);
+    float toward = 0.6 + 0.25 * dot(dir, e) + 0.15 * dot(dir, s);
+    float b = clamp(2.5 * bend, 0.0, 1.0);
+    vec3 pale = lit * 1.25 + 0.35 * uFogColour * (uAmbient + 0.5 * uSunColour);
+    return mix(lit, pale, clamp(uSheen * b * toward, 0.0, 1.0));
+}
+
 // c lit at a point with surface normal (not normalised; 0: none), height metres above its part's
-// base, seen from toEye at distance; far drops the sheen
-vec3 lit(vec3 c, int kind, float along, float height, vec3 normal, vec3 toEye, float distance, bool far) {
+// base, seen from toEye at distance, bent by bend (0 to 1) toward dir (the wind's sheen); far drops
+// the specular glint
+vec3 lit(vec3 c, int kind, float along, float height, vec3 normal, vec3 toEye, float distance, bool far,
+         float bend, vec2 dir) {
     // the shade low in a tuft fades out from 6 m to 15 m: from afar the tops of the tufts show, and the
     // few far plants a thinned frame keeps are drawn wider to stand for the others
     float ao = baseShade(kind, along, mix(height, 1.0, smoothstep(6.0, 15.0, distance)));
@@ -79,6 +101,9 @@ vec3 lit(vec3 c, int kind, float along, float height, vec3 normal, vec3 toEye, f
     vec3 colour = c * light + gloss;
     // brighter than white: scale down instead of clipping each channel, which would turn a sunlit
     // yellow petal greenish (red and green both clipped to 1)
+    if (kind < 2) {
+        colour = windSheen(colour, bend * (0.3 + 0.7 * along), dir, toEye);
+    }
     colour /= max(1.0, max(colour.r, max(colour.g, colour.b)));
     float fog = clamp((distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
     return mix(colour, uFogColour, fog * fog);

@@ -109,7 +109,7 @@ void main() {
     // the resolve pass lit the component at its middle (record texel 2); the base is darker
     vColour = farColour(c2) * (baseShade(kind, aColour.w, 1.0) / baseShade(kind, 0.5, 1.0));
 #ifdef DITHER
-    int keep = int(c1.w + 0.5);
+    int keep = int(c1.w);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;
 #endif
 }

@@ -12,7 +12,7 @@
 // stand on the ground (most grasses), leaves that walk out.
 //
 // Record: r0 = (base xyz, cos azimuth), r1 = (texel of pose k point 0, blend weight w toward
-// pose k + 1, sin azimuth, dither window), r2 = (cos and sin of the component's hue turn, its
+// pose k + 1, sin azimuth, dither window + 0.99 x the bend: pose coordinate / last pose), r2 = (cos and sin of the component's hue turn, its
 // brightness factor, the dryness of the plant's patch): the colour variation, worked out per component
 // on the CPU when the look changes (ComponentLooks, texture uLooks), not per frame; for a
 // line (far) level r2 is instead what all the component's vertices share (plant_far.glsl): its
@@ -48,6 +48,7 @@ struct Pose {
     float w;                                     // weight toward pose k + 1
     float c;                                     // cos azimuth
     float s;                                     // sin azimuth
+    float bend;                                  // pose coordinate over the last pose: 0 rest, 1 most bent
 };
 
 Pose pose(int component, ivec4 link, float texel0) {
@@ -59,6 +60,7 @@ Pose pose(int component, ivec4 link, float texel0) {
     p.w = coord - float(k);
     p.c = cos(d.y);
     p.s = sin(d.y);
+    p.bend = coord / float(max(link.w - 1, 1));
     return p;
 }
 
@@ -91,7 +93,8 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
     vec3 base = st.xyz;
 #endif
     record0 = vec4(base, own.c);
-    record1 = vec4(float(own.texel), own.w, own.s, float(instance.y));
+    // the dither window is a whole number below 2^16: the fraction carries the bend (1/256 steps)
+    record1 = vec4(float(own.texel), own.w, own.s, float(instance.y) + 0.99 * clamp(own.bend, 0.0, 1.0));
     // colour variation, baked per component on the CPU when the look changes (ComponentLooks): the
     // hue turn (radians, float bits), brightness factor x 32768 and patch dryness x 65535
     uvec2 baked = texelFetch(uLooks, component).xy;
@@ -117,6 +120,7 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
         vec3 toEye = uEye - world;
         vec3 c = albedo(slotLook.rgb, look, kind, along);
         // seen from afar a tuft shows its outer leaves: no shade by height (plant_line.vert shades by along)
-        record2 = farRecord(lit(c, kind, along, 1.0, n, toEye, length(toEye), true), max(length(uEye - base), 1e-4));
+        record2 = farRecord(lit(c, kind, along, 1.0, n, toEye, length(toEye), true, own.bend, vec2(own.c, own.s)),
+                max(length(uEye - base), 1e-4));
     }
 }

@@ -17,6 +17,11 @@ uniform vec3 uFogColour;
 uniform vec4 uCover;                             // amount (0: bare soil), 1 / grain tile (1/m), -, -
 uniform vec3 uCoverColour;
 uniform vec3 uCoverDry;
+uniform sampler2D uBend;                         // the plants' mean bend per tile (CoverBlades), signed bytes
+uniform vec4 uBendMap;                           // bend map minX, minZ, 1 / (tile width), 1 / (tile height)
+uniform float uSheen;                            // the wind's sheen on the cover (plant_light.glsl), 0: off
+uniform vec3 uSheenLight;                        // the sky's light a bent blade's pale side catches
+uniform vec2 uSunXZ;                             // horizontal direction toward the sun, unit
 layout(location = 0) out vec4 fragColour;
 // the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
 // written only into the library's own framebuffer (a host's other draw buffers are masked off)
@@ -43,8 +48,20 @@ void main() {
         float hides = smoothstep(0.1, 0.75, level + 0.45 * (grain - 0.5));
         albedo = mix(vSoil, cover, hides);
     }
+    vec3 lit = albedo * vLight * (1.0 - uContactShadow * occlusion);
+    if (uSheen > 0.0) {
+        // the wind's sheen on the cover, as on the plants' blades (plant_light.glsl windSheen), from the
+        // plants' bend where the fragment is: gusts roll over the sward as bands of light
+        vec2 bend = (texture(uBend, (vWorld.xz - uBendMap.xy) * uBendMap.zw).rg * 255.0 - 128.0) * (1.6 / 127.0);
+        float bent = length(bend);
+        vec2 dir = bent > 1e-4 ? bend / bent : vec2(0.0);
+        vec2 e = normalize(uEye.xz - vWorld.xz + vec2(1e-6));
+        float toward = 0.6 + 0.25 * dot(dir, e) + 0.15 * dot(dir, uSunXZ);
+        float k = uSheen * clamp(2.5 * bent * (1.0 / 1.2), 0.0, 1.0) * toward * clamp(uCover.x * maps.g * 1.5, 0.0, 1.0);
+        lit = mix(lit, lit * 1.25 + uSheenLight, clamp(k, 0.0, 1.0));
+    }
     // haze (squared ramp), the plants' formula, so plants and ground fade alike
     float fog = clamp((distance(uEye, vWorld) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
-    fragColour = vec4(mix(albedo * vLight * (1.0 - uContactShadow * occlusion), uFogColour, fog * fog), 1.0);
+    fragColour = vec4(mix(lit, uFogColour, fog * fog), 1.0);
     fragDetail = vec4(0.0);
 }
