@@ -37,6 +37,13 @@ import org.lwjgl.system.MemoryUtil;
  * <li>{@code meadow-above.png}: straight down from 10 m above the middle of the meadow;</li>
  * <li>{@code meadow-backlit.png}: the start camera turned to look toward the scene's sun (its
  *     {@code <light sunAzimuth>});</li>
+ * <li>{@code meadow-gusts.png}: from 4 m up at the start camera, looking downwind along the first flow's
+ *     heading after {@link #GUST_STEPS} steps: the gusts as bands of bent, paler grass (the wind's
+ *     sheen);</li>
+ * <li>{@code meadow-trail.png}: a walker (a source of {@link #WALKER_STRENGTH} m^2/s, twice the example
+ *     game's player) crosses 8 m of the first species' densest patch (along X) in {@link #TRAIL_STEPS}
+ *     steps; the picture is taken from 4 m up, 1.5 m back from the middle of its path: the lane of
+ *     flattened tufts it leaves (the grasses' {@code recovery}; without it they would stand again)</li>
  * <li>{@code rose-level0.png}, {@code rose-level1.png}, {@code rose-level2.png}: the rose at 1.2 m,
  *     12 m and 20 m (each distance falls in one level of detail: triangles, fewer triangles, lines),
  *     from 45 degrees, the lens narrowed so that the rose fills the picture's height at every distance;</li>
@@ -48,11 +55,17 @@ final class Gallery {
     static final int HEIGHT = 540;
     /** Fixed animation steps run before each picture (the wind has started to move the plants). */
     static final int STEPS = 60;
+    /** Steps before the gust view: the gusts have crossed the field for five seconds. */
+    static final int GUST_STEPS = 300;
+    /** Steps the trail view's walker takes to cross its 8 m. */
+    static final int TRAIL_STEPS = 360;
+    /** The trail view's walker, m^2/s. */
+    static final double WALKER_STRENGTH = 40;
     /** The scene files the gallery needs. */
     static final List<String> SCENES = List.of("meadow.xml", "rose.xml", "c1.xml", "c2.xml", "c3.xml");
     /** Every file the gallery writes, in order. */
     static final List<String> FILES = List.of("meadow-default.png", "meadow-closeup.png", "meadow-above.png",
-            "meadow-backlit.png", "rose-level0.png", "rose-level1.png", "rose-level2.png", "c1.png", "c2.png",
+            "meadow-backlit.png", "meadow-gusts.png", "meadow-trail.png", "rose-level0.png", "rose-level1.png", "rose-level2.png", "c1.png", "c2.png",
             "c3.png");
 
     /** A scene file with problems (already printed). */
@@ -67,7 +80,14 @@ final class Gallery {
     private Gallery() {
     }
 
-    private record View(String file, ViewCamera camera) {
+    /**
+     * A view: its file, camera, the steps run before it and, for the trail view, a walker's path from
+     * (x0, z0) to (x1, z1), metres (null for none).
+     */
+    private record View(String file, ViewCamera camera, int steps, double[] walk) {
+        View(String file, ViewCamera camera) {
+            this(file, camera, STEPS, null);
+        }
     }
 
     static void render(Path scenes, Path out, int width, int height, PrintWriter log, PrintWriter err)
@@ -90,7 +110,15 @@ final class Gallery {
                     for (View v : views) {
                         try (Simulation sim = Simulation.of(world, def.simulationDef(), 0)) {
                             sim.setLodTransition(def.render().lodTransition());
-                            for (int i = 0; i < STEPS; i++) {
+                            org.jecosys.wind.WindSource walker = v.walk() == null ? null : sim.attachAgent(
+                                    org.jecosys.wind.FlowDef.point("walker", org.jecosys.wind.FlowKind.SOURCE,
+                                            v.walk()[0], v.walk()[1], WALKER_STRENGTH));
+                            for (int i = 0; i < v.steps(); i++) {
+                                if (walker != null) {
+                                    double f = Math.min(1, i / (0.9 * v.steps()));
+                                    sim.moveAgent(walker, v.walk()[0] + f * (v.walk()[2] - v.walk()[0]),
+                                            v.walk()[1] + f * (v.walk()[3] - v.walk()[1]));
+                                }
                                 sim.stepFixed(v.camera());
                             }
                             Frame frame = sim.latestFrame();
@@ -124,6 +152,8 @@ final class Gallery {
                 double az = def.render().light().sunAzimuth(); // toward the sun: (cos az, sin az) on the ground
                 back.setOrientation(Math.atan2(Math.cos(az), -Math.sin(az)), def.camera().pitch());
                 views.add(new View("meadow-backlit.png", back));
+                views.add(gusts(def, ground, aspect));
+                views.add(trail(def, world, aspect));
             }
             case "rose.xml" -> {
                 double[] distances = {1.2, 12, 20};
@@ -141,6 +171,30 @@ final class Gallery {
             default -> views.add(new View(scene.replace(".xml", ".png"), ViewCamera.of(def.camera(), ground, aspect)));
         }
         return views;
+    }
+
+    /** From 4 m over the start camera's ground, looking downwind (the first flow's heading), 15 degrees down. */
+    private static View gusts(SceneDef def, double ground, double aspect) {
+        double heading = def.simulationDef().flows().isEmpty() ? 0 : def.simulationDef().flows().get(0).direction();
+        ViewCamera c = new ViewCamera().setPosition(def.camera().x(), ground + 4, def.camera().z())
+                .setOrientation(Math.atan2(Math.cos(heading), -Math.sin(heading)), Math.toRadians(-15))
+                .setLens(def.camera().fovY(), aspect, 0.1, 300);
+        return new View("meadow-gusts.png", c, GUST_STEPS, null);
+    }
+
+    /**
+     * A walker across 8 m (along X) of the first species' densest patch, seen from 4 m above the
+     * ground 1.5 m south of the middle of its path, looking at that middle.
+     */
+    private static View trail(SceneDef def, World world, double aspect) {
+        int best = Math.max(0, world.densestPlant(0, 2));
+        double x = world.plantX(best);
+        double z = world.plantZ(best);
+        double eye = world.terrain().heightfield().height(x, z + 1.5) + 4;
+        double pitch = Math.atan2(world.plantY(best) - eye, 1.5);
+        ViewCamera c = new ViewCamera().setPosition(x, eye, z + 1.5).setOrientation(0, pitch)
+                .setLens(def.camera().fovY(), aspect, 0.05, 300);
+        return new View("meadow-trail.png", c, TRAIL_STEPS, new double[] {x - 4, z, x + 4, z});
     }
 
     /** 1 m south of the yellow flowers' densest patch, eye 0.6 m up, looking at the flower heads. */

@@ -340,6 +340,7 @@ final class SceneEditor {
         return def.render().light().sheen();
     }
 
+
     SceneDef snapshot() {
         List<FlowDef> flows = new ArrayList<>();
         for (String id : order) {
@@ -354,7 +355,7 @@ final class SceneEditor {
                 lods.add(l < lod[s].length ? new LodDef(lod[s][l], ld.primitive()) : ld);
             }
             species.add(new SpeciesDef(sd.id(), sd.name(), sd.poses(), sd.maxBend(), sd.components(), lods,
-                    sd.variation()));
+                    sd.variation(), sd.trail()));
         }
         RenderDef r = def.render();
         RenderDef.Light l = r.light();

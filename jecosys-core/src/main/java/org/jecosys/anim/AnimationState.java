@@ -72,9 +72,8 @@ public final class AnimationState implements AnimationView {
     private final int components;
     private final int[] plantSpecies;
     private final int[] firstComponent;
-    private final float[] plantX;
-    private final float[] plantY;
-    private final float[] plantZ;
+    /** Where the plants stand and their levels of detail. */
+    private final PlantLevels levels;
     private final LodBands lod;
 
     private final short[] kind;
@@ -98,9 +97,10 @@ public final class AnimationState implements AnimationView {
     private final boolean[] live;
     private final float[] pressX;
     private final float[] pressZ;
-    private final byte[] level;
     /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
     private final long[] plantVersion;
+    /** The flattening of plants whose species leave trails, or null when none does ({@link #useTrails}). */
+    private Trails trails;
 
     /**
      * State for a set of plants, all in their nominal response variant with their species' stiffness:
@@ -162,12 +162,9 @@ public final class AnimationState implements AnimationView {
         }
         this.plantSpecies = plantSpecies.clone();
         this.firstComponent = firstComponent.clone();
-        this.plantX = plantX.clone();
-        this.plantY = plantY.clone();
-        this.plantZ = plantZ.clone();
-        this.lod = new LodBands(lodEdges);
+        levels = new PlantLevels(lodEdges, plantSpecies, plantX, plantY, plantZ);
+        lod = levels.bands;
         for (int p = 0; p < plants; p++) {
-            Require.range("plantSpecies[" + p + "]", plantSpecies[p], 0, lod.species() - 1);
             if (firstComponent[p + 1] < firstComponent[p]) {
                 throw new IllegalArgumentException("firstComponent must not decrease, at plant " + p);
             }
@@ -209,10 +206,52 @@ public final class AnimationState implements AnimationView {
         scattered = new ScatteredState(plants, components);
         pressX = new float[plants];
         pressZ = new float[plants];
-        level = new byte[plants];
         plantVersion = new long[plants];
         resetToRest(0, plants);
         java.util.Arrays.fill(live, false);
+    }
+
+    /**
+     * Lets the species with a recovery time leave trails: a push past their threshold flattens a plant,
+     * which then recovers over that time ({@link Trails}; {@code org.jecosys.plant.TrailDef}). Species
+     * with recovery 0 move exactly as before, bit for bit; with 0 everywhere nothing changes. Build
+     * time, before the first update; allocates.
+     *
+     * @param recovery  per species, the recovery time, seconds, in [0, 3600]
+     * @param flattenAt per species, the equilibrium bend (a fraction of the bend limit) that flattens,
+     *                  in [0.1, 0.95]
+     * @throws IllegalArgumentException when an array does not hold one value per species or a value is
+     *                                  out of range
+     */
+    public void useTrails(double[] recovery, double[] flattenAt) {
+        if (recovery.length != lod.species()) {
+            throw new IllegalArgumentException("recovery must hold one value per species (" + lod.species()
+                    + "), got " + recovery.length);
+        }
+        trails = Trails.of(recovery, flattenAt, plantSpecies);
+    }
+
+    /**
+     * {@inheritDoc} ({@link #useTrails}). Any thread between updates; no allocation.
+     */
+    @Override
+    public float flattening(int p) {
+        return trails == null ? 0f : trails.flattening(p);
+    }
+
+    /**
+     * The smallest wind speed that can flatten plant p ({@link #useTrails}): the speed of a push whose
+     * equilibrium bend reaches its species' threshold, less 0.1% for rounding; a push slower than this
+     * never flattens it. Infinite when its species leaves no trails. Any thread; no allocation.
+     *
+     * @param p plant index
+     * @return m/s, &gt; 0
+     */
+    public double flatteningSpeed(int p) {
+        if (trails == null || !trails.on(p)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return 0.999 * runs.speedFor(runs.plantRun[p], trails.flattenAt(p));
     }
 
     /** The kinds. */
@@ -294,6 +333,9 @@ public final class AnimationState implements AnimationView {
             plantVersion[p]++;
         }
         runs.rest(runs.plantRun[first], runs.plantRun[end]);
+        if (trails != null) {
+            trails.clear(first, end);
+        }
     }
 
     /**
@@ -397,7 +439,7 @@ public final class AnimationState implements AnimationView {
         cursor.begin(first);
         int updated = 0;
         for (int p = first; p < end; p++) {
-            int l = views <= 1 ? updateLevel(p, eyeX, eyeY, eyeZ, scale2, fixed2) : updateLevel(p, step);
+            int l = views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
             if (!visible[p]) {
                 live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
@@ -413,7 +455,8 @@ public final class AnimationState implements AnimationView {
                 updated += scattered.randomise(p, c0, c1, bit, runs, kind, kinds.lodMask, kinds.length, step.rng);
                 live[p] = false;
             } else {
-                updated += springRuns(p, bit, step.windX[p], step.windZ[p]);
+                updated += trails != null && trails.on(p) ? flattenedRuns(p, bit, step)
+                        : springRuns(p, bit, step.windX[p], step.windZ[p], 0, 0, 0, 0);
             }
             if (out) {
                 cursor.queueOutputs(this, step, p, c0, c1);
@@ -426,48 +469,17 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
-     * Recomputes plant p's level of detail from its squared distance (m^2) to the eye (world
-     * metres), measured by the view's projected size ({@link org.jecosys.math.ViewLod}: scale2 and
-     * fixed2), stores it and returns it.
-     */
-    private int updateLevel(int p, double eyeX, double eyeY, double eyeZ, double scale2, double fixed2) {
-        double dx = plantX[p] - eyeX;
-        double dy = plantY[p] - eyeY;
-        double dz = plantZ[p] - eyeZ;
-        double d2 = dx * dx + dy * dy + dz * dz;
-        int l = lod.level(plantSpecies[p], org.jecosys.math.ViewLod.equivalent2(d2, scale2, fixed2));
-        level[p] = (byte) l;
-        return l;
-    }
-
-    /**
-     * Recomputes plant p's level of detail for several views: the finest any view asks, each view's
-     * distance measured by projected size ({@link org.jecosys.math.ViewLod}).
-     */
-    private int updateLevel(int p, AnimationStep step) {
-        double nearest = Double.POSITIVE_INFINITY;
-        for (int v = 0; v < step.views; v++) {
-            double dx = plantX[p] - step.viewX[v];
-            double dy = plantY[p] - step.viewY[v];
-            double dz = plantZ[p] - step.viewZ[v];
-            nearest = Math.min(nearest, org.jecosys.math.ViewLod.equivalent2(dx * dx + dy * dy + dz * dz,
-                    step.viewScale2[v], step.viewFixed2[v]));
-        }
-        int l = lod.level(plantSpecies[p], nearest);
-        level[p] = (byte) l;
-        return l;
-    }
-
-    /**
      * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
      * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
      * runs drawn at that level is advanced from the plant's
      * force at its last update to the force of that wind with its coefficient row
-     * (spring class and the plant's response variant); the plant then remembers the new force.
+     * (spring class and the plant's response variant), toward rest points flattened by L0 at the start
+     * of the step and L1 at its end ({@link Trails}; all four 0: the elastic update, bit for bit); the
+     * plant then remembers the new force.
      *
      * @return components advanced
      */
-    private int springRuns(int p, int bit, float ux, float uz) {
+    private int springRuns(int p, int bit, float ux, float uz, float l0x, float l0z, float l1x, float l1z) {
         if (!live[p]) {
             settle(p, ux, uz);
         }
@@ -478,6 +490,7 @@ public final class AnimationState implements AnimationView {
         float p1z = speed * uz;
         float p0x = pressX[p];
         float p0z = pressZ[p];
+        boolean flat = l0x != 0 || l0z != 0 || l1x != 0 || l1z != 0;
         int variant = plantResponse[p];
         int advanced = 0;
         SpringRuns sr = runs;
@@ -486,13 +499,48 @@ public final class AnimationState implements AnimationView {
             if ((sr.mask[r] & bit) == 0) {
                 continue;
             }
-            int cls = sr.springClass[r];
-            sr.advance(r, coef, SpringKinds.row(cls, variant) * SpringKinds.STRIDE, p0x, p0z, p1x, p1z);
+            int o = SpringKinds.row(sr.springClass[r], variant) * SpringKinds.STRIDE;
+            if (flat) {
+                sr.advanceFlattened(r, coef, o, p0x, p0z, p1x, p1z, l0x, l0z, l1x, l1z);
+            } else {
+                sr.advance(r, coef, o, p0x, p0z, p1x, p1z);
+            }
             advanced += sr.size(r);
         }
         pressX[p] = p1x;
         pressZ[p] = p1z;
         return advanced;
+    }
+
+    /**
+     * {@link #springRuns} for a plant whose species leaves trails ({@link Trails}): the push of the flows
+     * that flatten ({@link AnimationStep#pushes}) may flatten it at the step's end time; the flattening
+     * at the plant's last update and at that time enter the runs' rest points; while both are 0 the
+     * runs advance exactly as without trails.
+     *
+     * @return components advanced
+     */
+    private int flattenedRuns(int p, int bit, AnimationStep step) {
+        float ux = step.windX[p];
+        float uz = step.windZ[p];
+        Trails tr = trails;
+        boolean pushed = step.pushX != null && (step.pushX[p] != 0 || step.pushZ[p] != 0);
+        if (!pushed && tr.upright(p)) {
+            return springRuns(p, bit, ux, uz, 0, 0, 0, 0); // nothing to flatten or recover from
+        }
+        float l0x = tr.nowX[p];
+        float l0z = tr.nowZ[p];
+        tr.at(p, step.time);
+        if (!live[p]) {
+            settle(p, ux, uz);
+            tr.settle(p, runs, pressX[p], pressZ[p]);
+            l0x = tr.nowX[p];
+            l0z = tr.nowZ[p];
+        }
+        if (pushed) {
+            tr.push(p, step.time, finiteWind(step.pushX[p]), finiteWind(step.pushZ[p]), runs);
+        }
+        return springRuns(p, bit, ux, uz, l0x, l0z, tr.nowX[p], tr.nowZ[p]);
     }
 
     /**
@@ -545,7 +593,7 @@ public final class AnimationState implements AnimationView {
 
     /** Copies the levels of plants {@code first .. end-1} into dest (same indices). */
     public void copyLevels(int first, int end, byte[] dest) {
-        System.arraycopy(level, first, dest, first, end - first);
+        levels.copy(first, end, dest);
     }
 
     /** Deviation X of component c, metres. */
@@ -628,36 +676,15 @@ public final class AnimationState implements AnimationView {
 
     /** Level of detail plant p was last animated at. */
     public int level(int p) {
-        return level[p];
+        return levels.level(p);
     }
 
     /**
      * A 64-bit FNV-1a hash of the raw float bits of D, v, pose and azimuth of every component, in
-     * component order: equal states give equal hashes. One thread, no range running. No allocation.
+     * component order, then of every plant's flattening when a species leaves trails: equal states
+     * give equal hashes. One thread, no range running. No allocation.
      */
     public long stateHash() {
-        long h = 0xcbf29ce484222325L;
-        SpringRuns sr = runs;
-        ScatteredState sc = scattered;
-        for (int r = 0, n = sr.count(); r < n; r++) {
-            boolean own = sc.scattered[sr.runPlant[r]];
-            for (int c = sr.start[r], e = sr.start[r + 1]; c < e; c++) {
-                h = mix(h, Float.floatToRawIntBits(devX[c]));
-                h = mix(h, Float.floatToRawIntBits(devZ[c]));
-                h = mix(h, Float.floatToRawIntBits(own ? sc.velX[c] : sr.velX[r]));
-                h = mix(h, Float.floatToRawIntBits(own ? sc.velZ[c] : sr.velZ[r]));
-                h = mix(h, Float.floatToRawIntBits(poseCoordinate(c)));
-                h = mix(h, Float.floatToRawIntBits(azimuth(c)));
-            }
-        }
-        return h;
-    }
-
-    private static long mix(long h, int bits) {
-        for (int i = 0; i < 4; i++) {
-            h ^= (bits >>> (8 * i)) & 0xff;
-            h *= 0x100000001b3L;
-        }
-        return h;
+        return StateHash.of(this, runs, scattered, trails);
     }
 }

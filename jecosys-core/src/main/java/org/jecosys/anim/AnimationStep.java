@@ -33,6 +33,9 @@ public final class AnimationStep {
     double[] viewScale2;
     double[] viewFixed2;
     Rng rng;
+    double time;
+    float[] pushX;
+    float[] pushZ;
     float[] poseOut;
     float[] azimuthOut;
     float[] poseBefore;
@@ -123,11 +126,40 @@ public final class AnimationStep {
     }
 
     /**
+     * Sets the simulation time at the end of the step, seconds: when pushes flatten plants and how far
+     * their flattening has recovered ({@code AnimationState.useTrails}; unused without trails). No
+     * allocation.
+     *
+     * @param time seconds since the simulation started, finite, not decreasing from step to step
+     * @return this holder
+     */
+    public AnimationStep time(double time) {
+        this.time = time;
+        return this;
+    }
+
+    /**
+     * Sets the wind of the flows that flatten at each plant (m/s, indexed by plant; see
+     * {@code AnimationState.useTrails}): what may flatten a plant of a species with trails. Null for
+     * none (nothing is flattened this step; flattened plants keep recovering). No allocation.
+     *
+     * @param x per plant X, or null
+     * @param z per plant Z, or null
+     * @return this holder
+     */
+    public AnimationStep pushes(float[] x, float[] z) {
+        pushX = x;
+        pushZ = z;
+        return this;
+    }
+
+    /**
      * Sets the random source of the range (RANDOM mode only; may be null otherwise). No allocation.
      *
      * @param rng the range's own generator (not shared with another range running at the same time)
      * @return this holder
      */
+
     public AnimationStep rng(Rng rng) {
         this.rng = rng;
         return this;

@@ -175,6 +175,16 @@ public interface AnimationView {
     int level(int p);
 
     /**
+     * How far plant p is flattened by a strong push at its last update, as a fraction of its bend
+     * limit: 0 when its species leaves no trails ({@code org.jecosys.plant.TrailDef}) or nothing pushed
+     * it past its threshold lately.
+     *
+     * @param p plant
+     * @return the fraction, in [0, 1)
+     */
+    float flattening(int p);
+
+    /**
      * A 64-bit hash of the raw float bits of every component's state and outputs: equal states give
      * equal hashes (the determinism tests' fingerprint).
      *

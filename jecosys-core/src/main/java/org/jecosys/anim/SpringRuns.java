@@ -62,6 +62,8 @@ final class SpringRuns {
     private final double[] gain;
     /** Per run, {@code KNEE / knee}: 1 / its shortest component's bend limit, 1/m. */
     private final float[] invLimit;
+    /** Per run, its shortest component's bend limit dMax, metres ({@code knee / KNEE}). */
+    private final float[] limit;
     /**
      * Per run, {@value #REST_STRIDE} values: the stiffened rest point of the force P it was last
      * advanced or settled to, and that P ({@link #restPoint}).
@@ -123,10 +125,12 @@ final class SpringRuns {
         velZ = new float[runs];
         gain = new double[runs];
         invLimit = new float[runs];
+        limit = new float[runs];
         restPoint = new float[runs * REST_STRIDE];
         for (int r = 0; r < runs; r++) {
             gain[r] = kinds.gain(springClass[r]) * (double) compliance[runPlant[r]];
             invLimit[r] = KNEE / knee[r];
+            limit[r] = knee[r] / KNEE;
             restPoint[r * REST_STRIDE + 2] = Float.NaN; // of no P yet
         }
         compDevX = new float[components];
@@ -255,8 +259,84 @@ final class SpringRuns {
         float ax = rp[f];
         float az = rp[f + 1];
         restPoint(r, p1x, p1z);
-        float bx = rp[f];
-        float bz = rp[f + 1];
+        step(r, co, o, ax, az, rp[f], rp[f + 1]);
+    }
+
+    /**
+     * As {@link #advance}, for a flattened plant ({@link Trails}): the rest points are
+     * {@code L dMax + (1 - |L|) R(P)}, with flattening L0 at the start of the step and L1 at its end
+     * (fractions of the bend limit, |L| &lt; 1) and R the elastic rest points {@link #advance} uses. No
+     * allocation.
+     */
+    void advanceFlattened(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z,
+                          float l0x, float l0z, float l1x, float l1z) {
+        int f = r * REST_STRIDE;
+        float[] rp = restPoint;
+        if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
+                || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
+            restPoint(r, p0x, p0z);
+        }
+        float lim = limit[r];
+        float k0 = 1 - (float) Math.sqrt((double) l0x * l0x + (double) l0z * l0z);
+        float ax = k0 * rp[f] + l0x * lim;
+        float az = k0 * rp[f + 1] + l0z * lim;
+        restPoint(r, p1x, p1z);
+        float k1 = 1 - (float) Math.sqrt((double) l1x * l1x + (double) l1z * l1z);
+        step(r, co, o, ax, az, k1 * rp[f] + l1x * lim, k1 * rp[f + 1] + l1z * lim);
+    }
+
+    /**
+     * As {@link #settle}, for a flattened plant: puts run r at the rest point
+     * {@code L dMax + (1 - |L|) R(P)} of force P and flattening L ({@link #advanceFlattened}), at zero
+     * velocity. No allocation.
+     */
+    void settleFlattened(int r, float px, float pz, float lx, float lz) {
+        restPoint(r, px, pz);
+        int f = r * REST_STRIDE;
+        float k = 1 - (float) Math.sqrt((double) lx * lx + (double) lz * lz);
+        devX[r] = k * restPoint[f] + lx * limit[r];
+        devZ[r] = k * restPoint[f + 1] + lz * limit[r];
+        velX[r] = 0;
+        velZ[r] = 0;
+        spread(r);
+    }
+
+    /**
+     * The equilibrium bend of run r under the plant's force {@code P = (px, pz)} (m^2/s^2), as a
+     * fraction of its bend limit: the stiffened rest point's size over dMax, in [0, 1). No allocation.
+     */
+    float equilibriumFraction(int r, float px, float pz) {
+        double g = gain[r];
+        double tx = g * px;
+        double tz = g * pz;
+        double m = Math.min(Math.sqrt(tx * tx + tz * tz), MAX_TARGET_KNEES * knee[r]);
+        float x = (float) m * invLimit[r];
+        return x * saturation(x);
+    }
+
+    /**
+     * The wind speed (m/s) whose force {@code P = |u| u} gives run r the equilibrium bend
+     * {@code fraction} of its bend limit ({@link #equilibriumFraction} inverted): below it the run's
+     * equilibrium bend stays below the fraction. Build time; no allocation.
+     *
+     * @param fraction in (0, 1)
+     * @return m/s, &gt; 0
+     */
+    double speedFor(int r, double fraction) {
+        double x = fraction;
+        if (fraction > KNEE) {
+            double q = (fraction - KNEE) / SPAN;
+            x = KNEE + SPAN * q / (1 - q);
+        }
+        return Math.sqrt(x * limit[r] / gain[r]);
+    }
+
+    /**
+     * The exact step of run r (see {@link #advance}) toward rest point A at the start of the step and B
+     * at its end: {@code D' = aDD D + aDv v + bD A + cD B}, {@code v' = aVD D + aVv v + bV A + cV B}, in
+     * the order {@code ((aDD D + aDv v) + bD A) + cD B}; then written to the run's components.
+     */
+    private void step(int r, float[] co, int o, float ax, float az, float bx, float bz) {
         float x = devX[r];
         float z = devZ[r];
         float vx = velX[r];

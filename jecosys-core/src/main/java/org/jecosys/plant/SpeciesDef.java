@@ -16,9 +16,10 @@ import org.jecosys.math.Require;
  * @param components the component types, at least one
  * @param lods      levels of detail ordered by ascending maxDistance; the last is unbounded
  * @param variation per-instance variation
+ * @param trail     how strong pushes leave trails ({@link TrailDef#NONE}: none)
  */
 public record SpeciesDef(String id, String name, int poses, double maxBend, List<ComponentDef> components,
-                         List<LodDef> lods, VariationDef variation) {
+                         List<LodDef> lods, VariationDef variation, TrailDef trail) {
     /** Largest pose-table size K (the scene schema's range and the API's). */
     public static final int MAX_POSES = 64;
     /** Smallest {@link #maxBend()}, degrees (the API takes radians). */
@@ -40,6 +41,7 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
      *                   another component
      * @param lods       at least one, maxDistance ascending, only the last one unbounded
      * @param variation  per-instance variation, not null
+     * @param trail      trails after strong pushes, not null ({@link TrailDef#NONE} for none)
      * @throws IllegalArgumentException when a rule above is broken
      */
     public SpeciesDef {
@@ -53,6 +55,7 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
         components = List.copyOf(Require.nonNull("components", components));
         lods = List.copyOf(Require.nonNull("lods", lods));
         Require.nonNull("variation", variation);
+        Require.nonNull("trail", trail);
         if (components.isEmpty()) {
             throw new IllegalArgumentException("a species needs at least one component");
         }
@@ -91,6 +94,24 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
         }
     }
 
+    /**
+     * A species without trails ({@link TrailDef#NONE}); otherwise as the canonical constructor. Any
+     * thread; allocates.
+     *
+     * @param id         unique within the scene, not empty
+     * @param name       human-readable name, not null
+     * @param poses      pose-table size, in [2, {@link #MAX_POSES}]
+     * @param maxBend    bend of the last pose, radians
+     * @param components at least one
+     * @param lods       at least one, maxDistance ascending, only the last one unbounded
+     * @param variation  per-instance variation, not null
+     * @throws IllegalArgumentException when a rule of the canonical constructor is broken
+     */
+    public SpeciesDef(String id, String name, int poses, double maxBend, List<ComponentDef> components,
+                      List<LodDef> lods, VariationDef variation) {
+        this(id, name, poses, maxBend, components, lods, variation, TrailDef.NONE);
+    }
+
     /** {@return the components of one plant: the sum of every component's count} */
     public int componentsPerPlant() {
         int n = 0;
@@ -122,7 +143,7 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
      * @return a new builder
      */
     public Builder toBuilder() {
-        Builder b = new Builder(id).name(name).poses(poses).maxBend(maxBend).variation(variation);
+        Builder b = new Builder(id).name(name).poses(poses).maxBend(maxBend).variation(variation).trail(trail);
         b.components.addAll(components);
         b.lods.addAll(lods);
         return b;
@@ -138,6 +159,7 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
         private int poses = DEFAULT_POSES;
         private double maxBend = DEFAULT_MAX_BEND;
         private VariationDef variation = VariationDef.NONE;
+        private TrailDef trail = TrailDef.NONE;
         private final List<ComponentDef> components = new java.util.ArrayList<>();
         private final List<LodDef> lods = new java.util.ArrayList<>();
 
@@ -187,6 +209,17 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
          */
         public Builder variation(VariationDef variation) {
             this.variation = variation;
+            return this;
+        }
+
+        /**
+         * Sets how strong pushes leave trails.
+         *
+         * @param trail not null; {@link TrailDef#NONE} for none
+         * @return this builder
+         */
+        public Builder trail(TrailDef trail) {
+            this.trail = trail;
             return this;
         }
 
@@ -242,7 +275,7 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
          *                                  detail or component, a value out of range...)
          */
         public SpeciesDef build() {
-            return new SpeciesDef(id, name, poses, maxBend, components, lods, variation);
+            return new SpeciesDef(id, name, poses, maxBend, components, lods, variation, trail);
         }
     }
 }

@@ -21,6 +21,7 @@ import org.jecosys.plant.ComponentType;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesDef;
+import org.jecosys.plant.TrailDef;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.terrain.PlacementDef;
@@ -152,6 +153,13 @@ final class PlantSchema {
                 .attr(angle("maxBend", "Bend of the last pose beyond the rest shape.")
                         .range(SpeciesDef.MIN_MAX_BEND_DEGREES, SpeciesDef.MAX_MAX_BEND_DEGREES)
                         .def(SpeciesDef.DEFAULT_MAX_BEND).get(d -> ((SpeciesDef) d).maxBend()))
+                .attr(num("recovery", "seconds", "Trails: a push of the point flows (source, sink, vortex, blast; not the ambient wind) past flattenAt leaves the plant flattened, "
+                        + "recovering over this time (74% left after it, 4% after five); 0 = no trails.")
+                        .range(0, TrailDef.MAX_RECOVERY).def(0.0).get(d -> ((SpeciesDef) d).trail().recovery()))
+                .attr(num("flattenAt", "", "Trails: the equilibrium bend, as a fraction of the bend limit, beyond "
+                        + "which a push flattens the plant (with recovery > 0).")
+                        .range(TrailDef.MIN_FLATTEN_AT, TrailDef.MAX_FLATTEN_AT).def(TrailDef.DEFAULT_FLATTEN_AT)
+                        .get(d -> ((SpeciesDef) d).trail().flattenAt()))
                 .child(lod, 1, MAX_LODS, d -> ((SpeciesDef) d).lods())
                 .child(variation, 0, 1, d -> List.of(((SpeciesDef) d).variation()))
                 .child(component, 1, MAX_COMPONENTS, d -> ((SpeciesDef) d).components());

@@ -19,6 +19,7 @@ import org.jecosys.plant.ComponentType;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesDef;
+import org.jecosys.plant.TrailDef;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.terrain.ImageFiles;
@@ -264,7 +265,7 @@ final class SceneBinder {
         }
         String name = s.str("name").isEmpty() ? s.str("id") : s.str("name");
         return make(s, () -> new SpeciesDef(s.str("id"), name, s.integer("poses"), s.num("maxBend"), components,
-                lods, variation));
+                lods, variation, new TrailDef(s.num("recovery"), s.num("flattenAt"))));
     }
 
     @SuppressWarnings("unchecked")

@@ -14,7 +14,28 @@ final class AnimationStates {
     }
 
     /**
-     * Builds the state of every component of {@code world} at rest, each plant with its seeded response
+     * Per plant, whether its species leaves trails ({@code TrailDef#leavesTrails}); null when no species
+     * does. Build time; allocates.
+     */
+    static boolean[] trailPlants(World world) {
+        List<SpeciesModel> species = world.plants().species();
+        boolean any = false;
+        for (SpeciesModel s : species) {
+            any |= s.def().trail().leavesTrails();
+        }
+        if (!any) {
+            return null;
+        }
+        boolean[] trail = new boolean[world.plantCount()];
+        for (int p = 0; p < trail.length; p++) {
+            trail[p] = species.get(world.plantSpecies(p)).def().trail().leavesTrails();
+        }
+        return trail;
+    }
+
+    /**
+     * Builds the state of every component of {@code world} at rest, with the trails of its species
+     * ({@code TrailDef}), each plant with its seeded response
      * variant and compliance (its species' {@code VariationDef.responseTime} and {@code stiffness}:
      * a response variant uniform over {@link SpringKinds#RESPONSE_VARIANTS}, a stiffness factor
      * {@code 1 + f u} with u uniform in [-1, 1]). Build time; allocates; any thread.
@@ -56,6 +77,15 @@ final class AnimationStates {
                 heading[c] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
             }
         }
-        return new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading, response, compliance);
+        AnimationState state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading, response,
+                compliance);
+        double[] recovery = new double[species.size()];
+        double[] flattenAt = new double[species.size()];
+        for (int s = 0; s < species.size(); s++) {
+            recovery[s] = species.get(s).def().trail().recovery();
+            flattenAt[s] = species.get(s).def().trail().flattenAt();
+        }
+        state.useTrails(recovery, flattenAt);
+        return state;
     }
 }

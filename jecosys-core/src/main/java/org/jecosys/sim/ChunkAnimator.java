@@ -53,6 +53,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private int stepFrameIndex;
     private int stepBuffer;
     private long stepNumber;
+    private double stepEnd;
     private boolean stamp;
 
     /**
@@ -124,10 +125,12 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * Sets the inputs of the next step; stepping thread, before the pool starts. No allocation.
      *
      * @param steps fixed steps run before this one
+     * @param end   the simulation time at the end of this step, seconds
      * @param stamp whether to stamp every component of the frame with its number (tests)
      */
     void prepare(AnimationMode mode, int buffer, Frame frame, int frameIndex, Frame before, long steps,
-                 boolean stamp) {
+                 double end, boolean stamp) {
+        stepEnd = end;
         stepMode = mode;
         stepBuffer = buffer;
         stepFrame = frame;
@@ -162,7 +165,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         FieldSampler fs = sampler;
         AnimationStep in = chunkStep[chunk].set(m, windX[b], windZ[b], visible[b])
                 .views(fs.viewCount[b], fs.viewX[b], fs.viewY[b], fs.viewZ[b], fs.scale2[b], fs.fixed2[b])
-                .rng(chunkRng[chunk]);
+                .rng(chunkRng[chunk]).time(stepEnd)
+                .pushes(fs.pushX == null ? null : fs.pushX[b], fs.pushZ == null ? null : fs.pushZ[b]);
         if (stamp) {
             chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
             float s = (float) ((stepNumber + 1) % 1_000_000);

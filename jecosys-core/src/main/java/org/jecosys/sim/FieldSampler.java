@@ -23,6 +23,12 @@ final class FieldSampler {
     final float[][] windX = new float[2][];
     /** Per buffer, the wind Z (m/s) at each plant's node. */
     final float[][] windZ = new float[2][];
+    /**
+     * Per buffer, the wind of the flows that flatten ({@link WindField#flattens}, m/s) at each visible
+     * plant whose species leaves trails, evaluated exactly at the plant; null when no species does.
+     */
+    final float[][] pushX;
+    final float[][] pushZ;
     /** Per buffer, whether each plant is visible. */
     final boolean[][] visible = new boolean[2][];
     /** Per buffer, the eye position (x, y, z), metres. */
@@ -49,6 +55,8 @@ final class FieldSampler {
     private final ForceField field;
     private final Commands commands;
     private final int plants;
+    /** Samples {@link #pushX}, {@link #pushZ}; null when no species leaves trails. */
+    private final FlatteningPushes pushes;
     private final double fixedStep;
     private final int subIntervals;
 
@@ -62,9 +70,13 @@ final class FieldSampler {
      * @param fixedStep    fixed step, seconds
      * @param subIntervals spring sub-intervals per step
      * @param lodFovY      the lens the level-of-detail distances are meant for, radians
+     * @param pushes       the push that may flatten trail plants, or null when no species leaves trails
      */
     FieldSampler(WindField wind, ForceField field, Commands commands, int plants, double fixedStep,
-            int subIntervals, double lodFovY) {
+            int subIntervals, double lodFovY, FlatteningPushes pushes) {
+        this.pushes = pushes;
+        pushX = pushes == null ? null : new float[2][plants];
+        pushZ = pushes == null ? null : new float[2][plants];
         this.reference = ViewLod.referenceScale(lodFovY);
         this.wind = wind;
         this.field = field;
@@ -116,6 +128,9 @@ final class FieldSampler {
             java.util.Arrays.fill(windX[b], 0f);
             java.util.Arrays.fill(windZ[b], 0f);
             java.util.Arrays.fill(visible[b], true);
+        }
+        if (pushes != null) {
+            pushes.sample(b, visible[b], pushX[b], pushZ[b], fieldEnabled);
         }
     }
 }

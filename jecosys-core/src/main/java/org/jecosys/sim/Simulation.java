@@ -163,7 +163,9 @@ public final class Simulation implements AutoCloseable {
         int comps = world.componentCount();
         int[] first = SimulationBuild.firstComponents(world);
         state = AnimationStates.of(world, kinds, first, xs, ys, zs, def.seed());
-        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals, def.field().lodFovY());
+        boolean[] trailPlants = AnimationStates.trailPlants(world);
+        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals, def.field().lodFovY(),
+                trailPlants == null ? null : new FlatteningPushes(wind, state, xs, zs, trailPlants));
         settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
         exchange = new FrameExchange(plants, comps);
         for (int i = 0; i < 3; i++) {
@@ -378,7 +380,8 @@ public final class Simulation implements AutoCloseable {
         Frame f = exchange.back();
         exchange.beginWrite();
         int b = current; // the buffer the workers animate from: the views sampled one step ago
-        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, stampFrames);
+        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, time + fixedStep,
+                stampFrames);
         draw.prepare();
         long t0 = System.nanoTime();
         pool.start();

@@ -396,6 +396,63 @@ public final class WindField {
         return s;
     }
 
+    /**
+     * Whether flows of this kind flatten the plants they push hard enough (trails,
+     * {@code org.jecosys.plant.TrailDef}): the point flows, what an agent, a blast or a whirl does
+     * (SOURCE, SINK, VORTEX, BLAST), not the ambient wind or rain (UNIFORM, GUST, RAIN), however
+     * strong its gusts. Any thread; no allocation.
+     *
+     * @param kind a flow kind
+     * @return whether it flattens
+     */
+    public static boolean flattens(FlowKind kind) {
+        return kind == FlowKind.SOURCE || kind == FlowKind.SINK || kind == FlowKind.VORTEX || kind == FlowKind.BLAST;
+    }
+
+    /**
+     * {@return the number of flows that flatten ({@link #flattens}) and act now (enabled, weight &gt; 0)}
+     * Owner thread; no allocation.
+     */
+    public int flatteningCount() {
+        int n = 0;
+        for (int i = 0; i < count; i++) {
+            if (flattens(flows[i].kind()) && flows[i].weight(time) > 0) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /**
+     * Writes the sum of the velocities (m/s; x = X, y = Z) of the flows that flatten ({@link #flattens})
+     * at ground point (x, z) at the current time into dest: the push that may leave a trail, evaluated
+     * exactly rather than through a force field's nodes. Owner thread; no allocation.
+     *
+     * @param x    ground point X, metres
+     * @param z    ground point Z, metres
+     * @param dest where to write
+     * @return {@code dest}
+     */
+    public Vector2d flatteningVelocity(double x, double z, Vector2d dest) {
+        double sx = 0;
+        double sz = 0;
+        Vector2d t = tmp;
+        for (int i = 0; i < count; i++) {
+            WindSource f = flows[i];
+            if (!flattens(f.kind())) {
+                continue;
+            }
+            if (f instanceof FlowBase b) {
+                b.velocity(x, z, time, t);
+            } else {
+                f.velocity(x, z, time, t);
+            }
+            sx += t.x;
+            sz += t.y;
+        }
+        return dest.set(sx, sz);
+    }
+
     /** {@return the number of flows enabled and inside their activation window now (weight &gt; 0)} No allocation. */
     public int activeCount() {
         int n = 0;

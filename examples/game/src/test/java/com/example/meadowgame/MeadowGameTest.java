@@ -16,8 +16,8 @@ import org.lwjgl.system.MemoryUtil;
 /**
  * The example game, headless (GLFW's null platform with an EGL context, Mesa's llvmpipe here): its
  * own sky, ground and HUD are where it drew them with the library's plants in between, the player
- * pushes the grass, the game's own flow bends plants, and the game's classpath holds only the
- * published modules.
+ * pushes the grass and leaves a trail through the meadow's grasses, the game's own flow bends plants,
+ * and the game's classpath holds only the published modules.
  */
 class MeadowGameTest {
     private static final int W = 320;
@@ -109,6 +109,51 @@ class MeadowGameTest {
         assertTrue(noPlayer.bendNearBreeze() > neither.bendNearBreeze() + 0.05,
                 "the game's breeze bends the plants around its centre: " + noPlayer.bendNearBreeze() + " vs "
                         + neither.bendNearBreeze());
+    }
+
+    @Test
+    void onTheMeadowThePlayerLeavesATrailOfFlattenedGrass() throws Exception {
+        // the default scene's grasses recover over 10 s (<species recovery>): the circle the player
+        // walks stays flattened behind it, the grass away from it stands
+        java.util.List<double[]> walked = new java.util.ArrayList<>();
+        try (MeadowGame game = new MeadowGame(new MeadowGame.Options(Path.of("scenes/meadow.xml"), 160, 100, true,
+                MeadowGame.PLAYER_STRENGTH, true))) {
+            for (int i = 0; i < 60; i++) {
+                game.frame(1 / 30.0);
+                if (i >= 10 && i < 40) {
+                    walked.add(new double[] {game.playerX(), game.playerZ()});
+                }
+            }
+            World world = game.simulation().world();
+            int near = 0;
+            int nearFlat = 0;
+            int far = 0;
+            int farFlat = 0;
+            for (int p = 0; p < world.plantCount(); p++) {
+                String species = world.plants().species().get(world.plantSpecies(p)).def().id();
+                if (!species.startsWith("grass")) {
+                    continue;
+                }
+                double d = Double.POSITIVE_INFINITY;
+                for (double[] w : walked) {
+                    d = Math.min(d, Math.hypot(world.plantX(p) - w[0], world.plantZ(p) - w[1]));
+                }
+                boolean flat = game.simulation().state().flattening(p) > 0.3f;
+                if (d <= 0.3) {
+                    near++;
+                    nearFlat += flat ? 1 : 0;
+                } else if (d > 3 && d < 10) {
+                    far++;
+                    farFlat += flat ? 1 : 0;
+                }
+            }
+            System.out.println("[game] grass within 0.3 m of where the player walked 0.7-1.7 s ago: " + nearFlat
+                    + " of " + near + " flattened; 3-10 m away: " + farFlat + " of " + far);
+            assertTrue(near >= 5, "grass along the player's walk: " + near);
+            assertTrue(nearFlat >= 0.8 * near, "flattened along the walk: " + nearFlat + " of " + near);
+            assertTrue(far > 100, "grass away from the walk: " + far);
+            assertEquals(0, farFlat, "flattened away from the walk");
+        }
     }
 
     @Test
