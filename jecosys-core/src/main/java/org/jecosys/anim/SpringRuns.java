@@ -250,16 +250,27 @@ final class SpringRuns {
      * in float, the order of the per-component update it replaces, hence its bits. No allocation.
      */
     void advance(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z) {
+        int f = startRestPoint(r, p0x, p0z);
+        float[] rp = restPoint;
+        float ax = rp[f];
+        float az = rp[f + 1];
+        restPoint(r, p1x, p1z);
+        step(r, co, o, ax, az, rp[f], rp[f + 1]);
+    }
+
+    /**
+     * Makes run r's kept rest point that of the step's starting force P0 (reused, bit for bit, when the
+     * last step ended at that very P0; worked out otherwise) and returns its offset in
+     * {@link #restPoint}. No allocation.
+     */
+    private int startRestPoint(int r, float p0x, float p0z) {
         int f = r * REST_STRIDE;
         float[] rp = restPoint;
         if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
                 || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
             restPoint(r, p0x, p0z);
         }
-        float ax = rp[f];
-        float az = rp[f + 1];
-        restPoint(r, p1x, p1z);
-        step(r, co, o, ax, az, rp[f], rp[f + 1]);
+        return f;
     }
 
     /**
@@ -270,12 +281,8 @@ final class SpringRuns {
      */
     void advanceFlattened(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z,
                           float l0x, float l0z, float l1x, float l1z) {
-        int f = r * REST_STRIDE;
+        int f = startRestPoint(r, p0x, p0z);
         float[] rp = restPoint;
-        if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
-                || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
-            restPoint(r, p0x, p0z);
-        }
         float lim = limit[r];
         float k0 = 1 - (float) Math.sqrt((double) l0x * l0x + (double) l0z * l0z);
         float ax = k0 * rp[f] + l0x * lim;

@@ -286,8 +286,15 @@ final class ImageMetrics {
         return new double[] {h, max == 0 ? 0 : d / max, max / 255};
     }
 
-    /** Population standard deviation. */
+    /** Population standard deviation; exactly 0 when every value is the same (no rounding left over). */
     static double sd(double[] v) {
+        boolean same = true;
+        for (double x : v) {
+            same &= x == v[0];
+        }
+        if (same) {
+            return 0;
+        }
         double mean = 0;
         for (double x : v) {
             mean += x;

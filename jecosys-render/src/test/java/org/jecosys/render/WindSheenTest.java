@@ -138,7 +138,7 @@ class WindSheenTest {
                     continue;
                 }
                 for (int i = 0; i < bx; i++) {
-                    sds[n++] = sd(series[j * bx + i]);
+                    sds[n++] = ImageMetrics.sd(series[j * bx + i]);
                 }
             }
             assertTrue(n > 0, "blocks in band " + band + " (ground rows 0.." + top + ")");
@@ -147,26 +147,5 @@ class WindSheenTest {
             medians[band] = n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
         }
         return new Run(medians, changing == 0 ? 0 : reversing / (double) changing);
-    }
-
-    /** Standard deviation; exactly 0 when every value is the same. */
-    private static double sd(double[] v) {
-        boolean same = true;
-        for (double x : v) {
-            same &= x == v[0];
-        }
-        if (same) {
-            return 0;
-        }
-        double m = 0;
-        for (double x : v) {
-            m += x;
-        }
-        m /= v.length;
-        double s = 0;
-        for (double x : v) {
-            s += (x - m) * (x - m);
-        }
-        return Math.sqrt(s / v.length);
     }
 }
