@@ -340,6 +340,10 @@ final class SceneEditor {
         return def.render().light().sheen();
     }
 
+    /** {@return the sun shadows' strength the scene file asks for ({@code <light shadows>})} */
+    double sceneShadows() {
+        return def.render().light().shadows();
+    }
 
     SceneDef snapshot() {
         List<FlowDef> flows = new ArrayList<>();
@@ -365,7 +369,7 @@ final class SceneEditor {
         double el = (float) Math.toDegrees(l.sunElevation()) == settings.sunElevation() ? l.sunElevation()
                 : Math.toRadians(settings.sunElevation());
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
-                l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen());
+                l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen(), l.shadows());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
                 RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());

@@ -178,6 +178,10 @@ final class ViewerPanel {
             if (ImGui.checkbox("wind sheen on bent grass", s.sheen() > 0)) {
                 s.sheen(s.sheen() > 0 ? 0f : (float) Math.max(0.25, editor.sceneSheen()));
             }
+            // likewise: the scene file keeps its own <light shadows>
+            if (ImGui.checkbox("sun shadows on the ground", s.shadows() > 0)) {
+                s.shadows(s.shadows() > 0 ? 0f : (float) Math.max(0.6, editor.sceneShadows()));
+            }
         }
         if (ImGui.collapsingHeader("Overlays")) {
             if (ImGui.checkbox("wind arrows on the terrain (V)", controls.showWind())) {

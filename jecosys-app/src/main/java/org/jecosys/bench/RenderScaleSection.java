@@ -28,7 +28,8 @@ import org.jecosys.sim.ViewDecision;
  * rasteriser it includes the driver's vertex work), bytes uploaded per frame, components drawn, the
  * plants' instanced draw calls (what a hardware driver's submit cost grows with), and the GL renderer
  * and path: each scene on every {@link ResolvePath} the context supports, the one
- * a renderer takes by itself first. A smoke run renders the meadow only, small.
+ * a renderer takes by itself first. A smoke run renders the meadow only, small. A second table switches
+ * the meadow's wind sheen and sun shadows on and off ({@link #looks}).
  */
 final class RenderScaleSection implements Section {
     private static final String[] FILES = {"meadow.xml", "large.xml", "prairie.xml"};
@@ -111,7 +112,72 @@ final class RenderScaleSection implements Section {
                     + " every resolve path the context supports, the one a renderer takes by itself first." + skipped);
         }
         report.add(t);
+        report.add(looks(width, height, smoke ? 1 : 2, smoke ? 1 : mode == Mode.QUICK ? 4 : 12, raw));
         report.raw("renderScale", raw);
+    }
+
+    /**
+     * What the wind's sheen and the sun shadows cost: the meadow with its own look ({@code <render>}:
+     * ground cover, sheen, shadows) from its start camera after the wind has blown for a second, each
+     * switched on and off, on the path a renderer takes by itself: frame time (render + glFinish) and
+     * the frame's GPU work by pipeline statistics.
+     */
+    private Table looks(int width, int height, int warm, int frames, Map<String, Object> raw) throws Exception {
+        Table t = new Table("render-looks", "The meadow's look switched: " + width + "x" + height + ", start camera",
+                java.util.List.of("sheen", "shadows", "frame ms (median)", "VS invocations / frame",
+                        "FS invocations / frame", "primitives / frame", "fragments / pixel"));
+        SceneDef def = SceneFiles.load(scenes.resolve(FILES[0]));
+        try (GlContext gl = GlContext.headless(false);
+             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height);
+             Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
+            ViewCamera cam = ViewCamera.of(def.camera(), sim.world().terrain().heightfield().height(def.camera().x(),
+                    def.camera().z()), width / (double) height);
+            for (int i = 0; i < 30; i++) {
+                sim.stepFixed(cam);
+            }
+            Frame f = sim.latestFrame();
+            RenderSettings settings = RenderSettings.of(def.render()).clear(true).terrain(true);
+            float sheen = settings.sheen();
+            float shadows = settings.shadows() > 0 ? settings.shadows() : 0.6f;
+            try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings); GpuWork work = new GpuWork(gl)) {
+                fb.bind();
+                for (int v = 0; v < 4; v++) {
+                    boolean on = v < 2;
+                    boolean shade = v % 2 == 0;
+                    settings.sheen(on ? sheen : 0f).shadows(shade ? shadows : 0f);
+                    double[] ms = new double[frames];
+                    double[] vs = new double[frames];
+                    double[] fs = new double[frames];
+                    double[] prims = new double[frames];
+                    for (int i = 0; i < warm + frames; i++) {
+                        long t0 = System.nanoTime();
+                        r.render(f, cam, width, height);
+                        gl.finish();
+                        long t1 = System.nanoTime();
+                        work.begin();
+                        r.render(f, cam, width, height);
+                        work.end();
+                        int k = i - warm;
+                        if (k >= 0) {
+                            ms[k] = (t1 - t0) / 1e6;
+                            vs[k] = work.vertexInvocations();
+                            fs[k] = work.fragmentInvocations();
+                            prims[k] = work.primitives();
+                        }
+                    }
+                    t.row(on ? "on" : "off", shade ? "on" : "off", Stats.median(ms), (long) Stats.median(vs),
+                            (long) Stats.median(fs), (long) Stats.median(prims),
+                            Stats.median(fs) / ((double) width * height));
+                    raw.put("looks / sheen " + (on ? "on" : "off") + " / shadows " + (shade ? "on" : "off"), ms);
+                }
+            }
+            t.note("GL renderer: " + gl.describe() + ". The meadow's frame after 30 steps from its start camera, drawn"
+                    + " with its own <render> settings; sheen " + sheen + ", shadows " + shadows + " when on. The"
+                    + " shadows' map is rebuilt when switched on (during the warm-up frames), then read as one more"
+                    + " texture channel: no extra pass. Frame = render + glFinish; GPU work counted apart by"
+                    + " pipeline-statistics queries.");
+        }
+        return t;
     }
 
     /** Frames of one scene with one renderer: a row of {@code t} and the raw series. */

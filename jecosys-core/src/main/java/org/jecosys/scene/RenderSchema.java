@@ -48,7 +48,10 @@ final class RenderSchema {
                         .range(0, RenderDef.Light.MAX_FOG).def(ld.fogEnd()).get(d -> li.apply(d).fogEnd()))
                 .attr(num("sheen", "", "Strength of the wind's sheen: a blade bent by the wind brightens toward its "
                         + "pale, sky-lit side, so gusts read from afar as travelling bands of light (0 turns it off).")
-                        .range(0, RenderDef.Light.MAX_SHEEN).def(ld.sheen()).get(d -> li.apply(d).sheen()));
+                        .range(0, RenderDef.Light.MAX_SHEEN).def(ld.sheen()).get(d -> li.apply(d).sheen()))
+                .attr(num("shadows", "", "Strength of the plants' sun shadows on the ground: the share of the sun's "
+                        + "direct light a fully shadowed point loses (the plants at rest, from the sun's direction; "
+                        + "0 turns them off).").range(0, 1).def(ld.shadows()).get(d -> li.apply(d).shadows()));
         RenderDef.Patches pd = RenderDef.Patches.DEFAULT;
         ElementSpec patches = new ElementSpec("patches", "Large healthy/dry colour patches over the ground and "
                 + "the plants, from seeded noise (presentation only).")

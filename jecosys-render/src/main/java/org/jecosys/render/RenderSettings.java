@@ -45,6 +45,7 @@ public final class RenderSettings {
     private boolean terrain;
     private RenderDef.GroundCover groundCover = RenderDef.GroundCover.NONE;
     private float sheen = 1f;
+    private float shadows;
 
     /**
      * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
@@ -103,7 +104,7 @@ public final class RenderSettings {
                 .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
                 .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
                 .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd()).sheen((float) l.sheen())
+                .fog((float) l.fogStart(), (float) l.fogEnd()).sheen((float) l.sheen()).shadows((float) l.shadows())
                 .patches((float) p.scale(), (float) p.strength(), p.seed())
                 .groundCover(def.groundCover());
     }
@@ -125,6 +126,26 @@ public final class RenderSettings {
     public RenderSettings sheen(float strength) {
         Require.range("sheen", strength, 0, 2);
         sheen = strength;
+        return this;
+    }
+
+    /** {@return the strength of the plants' sun shadows on the ground, 0 for none} */
+    public float shadows() {
+        return shadows;
+    }
+
+    /**
+     * Sets the strength of the plants' sun shadows on the ground ({@code <light shadows>}): the share of
+     * the sun's direct light a point in a plant's full shadow loses. The shadows are those of the plants
+     * at rest from the sun's direction, a world-space map over the terrain rebuilt when the sun moves
+     * (the software path; plants do not shade each other). Render thread; no allocation.
+     *
+     * @param strength in [0, 1]; 0 (the default) turns them off
+     * @return this settings object
+     */
+    public RenderSettings shadows(float strength) {
+        Require.range("shadows", strength, 0, 1);
+        shadows = strength;
         return this;
     }
 

@@ -244,6 +244,8 @@ public final class SceneRenderer implements AutoCloseable {
         float lx = settings.sunX();
         float ly = settings.sunY();
         float lz = settings.sunZ();
+        // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
+        terrain.prepareShadows(settings);
         if (drawPlants) {
             plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());

@@ -28,13 +28,14 @@ import static org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE;
 import static org.lwjgl.opengl.GL13C.GL_TEXTURE0;
 import static org.lwjgl.opengl.GL13C.glActiveTexture;
 import static org.lwjgl.opengl.GL30C.GL_R8;
+import static org.lwjgl.opengl.GL11C.GL_RGBA8;
 
 import java.nio.ByteBuffer;
 
 /**
- * An 8-bit 2D texture of one or two channels ({@code GL_R8}, {@code GL_RG8}), linearly filtered, read
- * in shaders as a {@code sampler2D} in [0, 1]: either clamped at its edges (a map over the terrain: the
- * contact occlusion and the ground cover) or repeating with mipmaps (a tile, such as the ground cover's
+ * An 8-bit 2D texture of one, two or four channels ({@code GL_R8}, {@code GL_RG8}, {@code GL_RGBA8}),
+ * linearly filtered, read in shaders as a {@code sampler2D} in [0, 1]: either clamped at its edges (a
+ * map over the terrain: the contact occlusion, the ground cover and the sun's shadows) or repeating with mipmaps (a tile, such as the ground cover's
  * grain, which the mipmaps band-limit at any distance). Render thread only.
  */
 public final class GlTexture2D extends GlResource {
@@ -61,15 +62,15 @@ public final class GlTexture2D extends GlResource {
      * @param tracker  counts the object
      * @param width    texels along S (X)
      * @param height   texels along T (Z)
-     * @param channels 1 (red) or 2 (red, green)
+     * @param channels 1 (red), 2 (red, green) or 4 (red, green, blue, alpha)
      * @param tile     true: repeating, with mipmaps; false: clamped at the edges, no mipmaps
      * @param texels   {@code width * height * channels} bytes, rows of S, channels interleaved, from its
      *                 position
      */
     public GlTexture2D(GlTracker tracker, int width, int height, int channels, boolean tile, ByteBuffer texels) {
         super(tracker, glGenTextures());
-        if (channels != 1 && channels != 2) {
-            throw new IllegalArgumentException("channels must be 1 or 2, got " + channels);
+        if (channels != 1 && channels != 2 && channels != 4) {
+            throw new IllegalArgumentException("channels must be 1, 2 or 4, got " + channels);
         }
         this.width = width;
         this.height = height;
@@ -81,8 +82,8 @@ public final class GlTexture2D extends GlResource {
         try {
             glBindTexture(GL_TEXTURE_2D, id());
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexImage2D(GL_TEXTURE_2D, 0, channels == 1 ? GL_R8 : GL_RG8, width, height, 0,
-                    channels == 1 ? GL_RED : GL_RG, GL_UNSIGNED_BYTE, texels);
+            glTexImage2D(GL_TEXTURE_2D, 0, channels == 1 ? GL_R8 : channels == 2 ? GL_RG8 : GL_RGBA8, width,
+                    height, 0, format(), GL_UNSIGNED_BYTE, texels);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, tile ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, tile ? GL_REPEAT : GL_CLAMP_TO_EDGE);
@@ -95,6 +96,11 @@ public final class GlTexture2D extends GlResource {
             glBindTexture(GL_TEXTURE_2D, bound);
             glActiveTexture(unit);
         }
+    }
+
+    /** The pixel format of the texels handed over: one byte per channel. */
+    private int format() {
+        return channels == 1 ? GL_RED : channels == 2 ? GL_RG : org.lwjgl.opengl.GL11C.GL_RGBA;
     }
 
     /**
@@ -114,8 +120,7 @@ public final class GlTexture2D extends GlResource {
         try {
             glBindTexture(GL_TEXTURE_2D, id());
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, channels == 1 ? GL_RED : GL_RG, GL_UNSIGNED_BYTE,
-                    texels);
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, format(), GL_UNSIGNED_BYTE, texels);
         } finally {
             glPixelStorei(GL_UNPACK_ALIGNMENT, align);
             glBindTexture(GL_TEXTURE_2D, bound);

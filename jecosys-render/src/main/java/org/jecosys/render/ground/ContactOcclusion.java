@@ -76,7 +76,7 @@ public final class ContactOcclusion {
             if (prints[s][v] == null) {
                 prints[s][v] = Footprint.of(world.plants().species().get(s), v);
             }
-            m.splat(acc, world.plantX(p), world.plantZ(p), world.plantRestAzimuth(p), prints[s][v]);
+            m.splat(acc, world.plantX(p), world.plantZ(p), world.plantRestAzimuth(p), prints[s][v], PEAK, 1);
         }
         for (int i = 0; i < acc.length; i++) {
             acc[i] = (float) (1 - Math.exp(-acc[i]));
@@ -84,8 +84,12 @@ public final class ContactOcclusion {
         return m;
     }
 
-    private void splat(float[] acc, double x, double z, double restAzimuth, Footprint f) {
-        double edge = Math.max(MIN_EDGE, Math.min(MAX_EDGE, EDGE * f.radius()));
+    /**
+     * Adds one plant's footprint to {@code acc} (on this map's grid, as {@code -log(1 - w)}): weight
+     * {@code peak} well inside it, fading over a soft edge {@code edgeScale} times the contact map's.
+     */
+    void splat(float[] acc, double x, double z, double restAzimuth, Footprint f, double peak, double edgeScale) {
+        double edge = edgeScale * Math.max(MIN_EDGE, Math.min(MAX_EDGE, EDGE * f.radius()));
         double reach = f.maxReach() + edge;
         double u = (x - minX) / texelX;
         double v = (z - minZ) / texelZ;
@@ -96,10 +100,10 @@ public final class ContactOcclusion {
             int j = (int) Math.floor(v);
             double fu = u - i;
             double fv = v - j;
-            add(acc, i, j, share * (1 - fu) * (1 - fv));
-            add(acc, i + 1, j, share * fu * (1 - fv));
-            add(acc, i, j + 1, share * (1 - fu) * fv);
-            add(acc, i + 1, j + 1, share * fu * fv);
+            add(acc, i, j, share * (1 - fu) * (1 - fv), peak);
+            add(acc, i + 1, j, share * fu * (1 - fv), peak);
+            add(acc, i, j + 1, share * (1 - fu) * fv, peak);
+            add(acc, i + 1, j + 1, share * fu * fv, peak);
             return;
         }
         int i0 = (int) Math.max(0, Math.ceil(u - reach / texelX));
@@ -122,15 +126,15 @@ public final class ContactOcclusion {
                 double t = (r - f.reach(lx, lz) + edge) / (2 * edge);
                 if (t < 1) {
                     double k = t <= 0 ? 1 : 1 - t * t * (3 - 2 * t);
-                    acc[j * width + i] += (float) -Math.log(1 - PEAK * k);
+                    acc[j * width + i] += (float) -Math.log(1 - peak * k);
                 }
             }
         }
     }
 
-    private void add(float[] acc, int i, int j, double share) {
+    private void add(float[] acc, int i, int j, double share, double peak) {
         if (i >= 0 && j >= 0 && i < width && j < height && share > 0) {
-            acc[j * width + i] += (float) -Math.log(1 - PEAK * Math.min(1, share));
+            acc[j * width + i] += (float) -Math.log(1 - peak * Math.min(1, share));
         }
     }
 
@@ -166,31 +170,19 @@ public final class ContactOcclusion {
     }
 
     /**
-     * Writes the map as bytes (0 open, 255 fully occluded), rows along X, into {@code dest} from its
-     * position, and flips it.
+     * Writes the map and two more on the same grid as four bytes per texel (occlusion, second, third,
+     * 0; 0 for 0, 255 for 1), rows along X, into {@code dest} from its position, and flips it: the
+     * terrain's four-channel texture (contact occlusion, ground cover, sun shadow).
      *
-     * @param dest at least {@code width * height} bytes remaining
-     * @return {@code dest}, flipped
-     */
-    public ByteBuffer bytes(ByteBuffer dest) {
-        for (float o : occlusion) {
-            dest.put(unorm(o));
-        }
-        return dest.flip();
-    }
-
-    /**
-     * Writes the map and a second map on the same grid as byte pairs (occlusion, then the other value;
-     * 0 for 0, 255 for 1), rows along X, into {@code dest} from its position, and flips it: the
-     * terrain's two-channel texture.
-     *
-     * @param dest   at least {@code 2 * width * height} bytes remaining
+     * @param dest   at least {@code 4 * width * height} bytes remaining
      * @param second {@code width * height} values in [0, 1], or null for zeros
+     * @param third  {@code width * height} values in [0, 1], or null for zeros
      * @return {@code dest}, flipped
      */
-    public ByteBuffer bytes(ByteBuffer dest, float[] second) {
+    public ByteBuffer bytes(ByteBuffer dest, float[] second, float[] third) {
         for (int i = 0; i < occlusion.length; i++) {
-            dest.put(unorm(occlusion[i])).put(second == null ? 0 : unorm(second[i]));
+            dest.put(unorm(occlusion[i])).put(second == null ? 0 : unorm(second[i]))
+                    .put(third == null ? 0 : unorm(third[i])).put((byte) 0);
         }
         return dest.flip();
     }

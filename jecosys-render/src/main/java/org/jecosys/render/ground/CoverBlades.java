@@ -6,6 +6,7 @@ import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
@@ -99,6 +100,7 @@ public final class CoverBlades implements AutoCloseable {
     private final int uPatchSeed;
     private final int uContactShadow;
     private final int uSheen;
+    private final int uShadows;
     private long bendFrame = Long.MIN_VALUE;
     private Frame bendOf;
     private int lastTiles;
@@ -191,6 +193,7 @@ public final class CoverBlades implements AutoCloseable {
         uPatchSeed = program.uniform("uPatchSeed");
         uContactShadow = program.uniform("uContactShadow");
         uSheen = program.uniform("uSheen");
+        uShadows = program.uniform("uShadows");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uHeights"), GlStateGuard.UNIT_GRAIN + 1);
@@ -299,6 +302,11 @@ public final class CoverBlades implements AutoCloseable {
         glUniform1i(uPatchSeed, settings.patchSeed());
         glUniform1f(uContactShadow, settings.contactShadow());
         glUniform1f(uSheen, settings.sheen());
+        // the sun's share of the light on flat ground: what a blade in a plant's shadow loses (times the
+        // shadow's strength and its share in the map's blue channel, 0 while shadows are off)
+        float sunLight = k * Math.max(0f, settings.sunY()) * (0.2126f * sun.r() + 0.7152f * sun.g() + 0.0722f * sun.b());
+        float skyLight = 0.2126f * amb.r() + 0.7152f * amb.g() + 0.0722f * amb.b();
+        glUniform2f(uShadows, settings.shadows(), sunLight / Math.max(1e-6f, sunLight + skyLight));
         maps.bind(GlStateGuard.UNIT_2D);
         bendTexture.bind(GlStateGuard.UNIT_GRAIN);
         heightTexture.bind(GlStateGuard.UNIT_GRAIN + 1);

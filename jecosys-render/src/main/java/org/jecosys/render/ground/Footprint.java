@@ -32,6 +32,22 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
      * @return the footprint
      */
     static Footprint of(SpeciesModel model, int variant) {
+        return of(model, variant, 0, 0);
+    }
+
+    /**
+     * The outline of a plant's shadow on flat ground: its rest-pose points each moved by its height
+     * times {@code (shearX, shearZ)} (in the plant's frame) before the hull is taken, the base kept. With
+     * the shear {@code -(sun's horizontal direction) / tan(sun elevation)} that is where the points'
+     * shadows fall. Allocates.
+     *
+     * @param model   the species
+     * @param variant the plant's variant
+     * @param shearX  ground offset per metre of height, X in the plant's frame
+     * @param shearZ  ground offset per metre of height, Z in the plant's frame
+     * @return the footprint of the shadow
+     */
+    static Footprint of(SpeciesModel model, int variant, double shearX, double shearZ) {
         int slots = model.slotCount();
         double[][] base = new double[slots][];
         int count = 1;
@@ -55,8 +71,8 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
                 double x = b[0] + q.x * c - q.z * sn;
                 double y = b[1] + q.y;
                 double z = b[2] + q.x * sn + q.z * c;
-                xs[n] = x;
-                zs[n] = z;
+                xs[n] = x + y * shearX;
+                zs[n] = z + y * shearZ;
                 n++;
                 tip = new double[] {x, y, z};
             }

@@ -46,7 +46,8 @@ import org.jecosys.render.gl.GlVertexArray;
  * The lit terrain: the heightfield as one indexed triangle mesh (vertex position, normal, colour),
  * optionally tinted by the water or nutrient map (paper §4.3), lit by the sun and the sky's ambient
  * light, coloured by the healthy/dry patches, darkened under the plants by a contact-occlusion map
- * (an R8 texture of about 10 cm texels built once from the plants' bases) and hazed toward the
+ * (built once from the plants' footprints), its sun's share taken away in the plants' sun shadows when
+ * {@code <light shadows>} is on (both maps in {@link GroundMaps}' texture) and hazed toward the
  * horizon with distance as the plants are. Render thread only; {@link #draw} allocates nothing;
  * {@link #setTint} re-uploads the colours (not per frame).
  */
@@ -88,16 +89,13 @@ public final class TerrainRenderer implements AutoCloseable {
     private GlTexture2D bendMap;
     private final int uCoverColour;
     private final int uCoverDry;
-    /** Contact occlusion (red) and ground cover (green) over the terrain. */
-    private final GlTexture2D occlusion;
+    /** Contact occlusion (red), ground cover (green) and sun shadow (blue) over the terrain. */
+    private final GroundMaps maps;
+    /** The grid of those maps; null when built without plants. */
+    private final ContactOcclusion occlusionMap;
     /** The ground cover's grain: a repeating, mipmapped tile. */
     private final GlTexture2D grain;
-    private final ContactOcclusion occlusionMap;
-    private final World world;
-    /** The spread of the cover in the map, metres; NaN before the first map with cover. */
-    private double coverSpread = Double.NaN;
-    /** The cover level per occlusion-map texel, as last built; null before. */
-    private float[] coverLevel;
+    private final int uShadows;
     private TerrainTint tint;
     private boolean closed;
 
@@ -136,22 +134,13 @@ public final class TerrainRenderer implements AutoCloseable {
         GlVertexArray va = null;
         GlBuffer vb = null;
         GlBuffer ib = null;
-        GlTexture2D occ = null;
+        GroundMaps occ = null;
         GlTexture2D gr = null;
-        this.world = world;
-        occlusionMap = world == null ? null : ContactOcclusion.of(world);
         FloatBuffer v = MemoryUtil.memAllocFloat(vertexCount() * FLOATS);
         IntBuffer idx = MemoryUtil.memAllocInt(6 * (res - 1) * (res - 1) + 6 * rim());
-        ByteBuffer texels = MemoryUtil.memAlloc(Math.max(CoverGrain.SIDE * CoverGrain.SIDE,
-                occlusionMap == null ? 8 : 2 * occlusionMap.width * occlusionMap.height));
+        ByteBuffer texels = MemoryUtil.memAlloc(CoverGrain.SIDE * CoverGrain.SIDE);
         try {
-            if (occlusionMap == null) {
-                occ = new GlTexture2D(t, 2, 2, 2, false, texels.put(new byte[8]).flip());
-            } else {
-                occ = new GlTexture2D(t, occlusionMap.width, occlusionMap.height, 2, false,
-                        occlusionMap.bytes(texels, null));
-            }
-            texels.clear();
+            occ = new GroundMaps(t, world);
             gr = new GlTexture2D(t, CoverGrain.SIDE, CoverGrain.SIDE, 1, true, CoverGrain.bytes(texels));
             prog = new GlProgram(t, "terrain.vert", "terrain.frag");
             va = new GlVertexArray(t);
@@ -184,7 +173,8 @@ public final class TerrainRenderer implements AutoCloseable {
             MemoryUtil.memFree((java.nio.Buffer) idx);
             MemoryUtil.memFree((java.nio.Buffer) texels);
         }
-        occlusion = occ;
+        maps = occ;
+        occlusionMap = occ.grid;
         grain = gr;
         program = prog;
         vao = va;
@@ -215,6 +205,7 @@ public final class TerrainRenderer implements AutoCloseable {
         uSunXZ = program.uniform("uSunXZ");
         uCoverColour = program.uniform("uCoverColour");
         uCoverDry = program.uniform("uCoverDry");
+        uShadows = program.uniform("uShadows");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
@@ -379,7 +370,8 @@ public final class TerrainRenderer implements AutoCloseable {
      * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
      * occlusion and cover map to unit {@link GlStateGuard#UNIT_2D} and the cover's grain to
      * {@link GlStateGuard#UNIT_GRAIN} (the scene renderer's state guard puts them back). Render thread;
-     * no allocation, except when the cover's spread differs from the map's, which rebuilds the map.
+     * no allocation, except when the cover's spread differs from the map's or, with shadows on, the sun has moved
+     * since the shadow map was built: those rebuild a map.
      *
      * @param camera   the viewer
      * @param settings the light, haze, patch and cover settings
@@ -388,6 +380,7 @@ public final class TerrainRenderer implements AutoCloseable {
     public void draw(Camera camera, RenderSettings settings, boolean cover) {
         RenderDef.GroundCover gc = settings.groundCover();
         boolean withCover = cover && prepareCover(settings);
+        boolean shadows = maps.prepareShadows(settings);
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
@@ -405,6 +398,7 @@ public final class TerrainRenderer implements AutoCloseable {
                 settings.patchStrength() > 0 ? 1 : 0);
         glUniform1i(uPatchSeed, settings.patchSeed());
         glUniform1f(uContactShadow, settings.contactShadow());
+        glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
         glUniform4f(uCover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
         glUniform3f(uCoverColour, gc.colour().r(), gc.colour().g(), gc.colour().b());
         glUniform3f(uCoverDry, gc.dryColour().r(), gc.dryColour().g(), gc.dryColour().b());
@@ -418,7 +412,7 @@ public final class TerrainRenderer implements AutoCloseable {
             bendMap.bind(GlStateGuard.UNIT_GRAIN + 1);
         }
         grain.bind(GlStateGuard.UNIT_GRAIN);
-        occlusion.bind(GlStateGuard.UNIT_2D);
+        maps.texture().bind(GlStateGuard.UNIT_2D);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
@@ -450,38 +444,29 @@ public final class TerrainRenderer implements AutoCloseable {
      * @return whether there is cover to draw: it is enabled and this terrain was built with plants
      */
     public boolean prepareCover(RenderSettings settings) {
-        RenderDef.GroundCover gc = settings.groundCover();
-        if (!gc.enabled() || occlusionMap == null) {
-            return false;
-        }
-        if (gc.spread() != coverSpread) {
-            rebuildCover(gc.spread());
-        }
-        return true;
+        return maps.prepareCover(settings);
     }
 
-    /** {@return the contact-occlusion (red) and cover (green) texture over the terrain} */
+    /**
+     * Makes sure the sun-shadow map is of the settings' sun while shadows are on, and blank while they are
+     * off (rebuilds it when the sun moved, allocating then); call before anything reads {@link #maps()}
+     * in a frame. Render thread; no allocation otherwise.
+     *
+     * @param settings the sun and {@code shadows}
+     * @return whether shadows are drawn: on, with plants and the sun at least 5 degrees up
+     */
+    public boolean prepareShadows(RenderSettings settings) {
+        return maps.prepareShadows(settings);
+    }
+
+    /** {@return the contact-occlusion (red), cover (green) and sun-shadow (blue) texture over the terrain} */
     public GlTexture2D maps() {
-        return occlusion;
+        return maps.texture();
     }
 
     /** {@return the contact-occlusion map, whose grid the cover map shares; null when built without plants} */
     public ContactOcclusion occlusionMap() {
         return occlusionMap;
-    }
-
-    /** Works out where cover grows for a spread and uploads it beside the occlusion. Allocates. */
-    private void rebuildCover(double spread) {
-        ContactOcclusion m = occlusionMap;
-        CoverMap cover = CoverMap.of(world, spread, m.width, m.height, m.minX, m.minZ, m.texelX, m.texelZ);
-        ByteBuffer texels = MemoryUtil.memAlloc(2 * m.width * m.height);
-        try {
-            occlusion.upload(m.bytes(texels, cover.level));
-            coverLevel = cover.level;
-        } finally {
-            MemoryUtil.memFree((java.nio.Buffer) texels);
-        }
-        coverSpread = spread;
     }
 
     /**
@@ -493,7 +478,20 @@ public final class TerrainRenderer implements AutoCloseable {
      * @return the level in [0, 1]; 0 before a frame with cover or outside the terrain
      */
     public double cover(double x, double z) {
-        return coverLevel == null ? 0 : occlusionMap.sample(coverLevel, x, z);
+        return maps.cover(x, z);
+    }
+
+    /**
+     * The share of the sun's direct light the plants' shadows take at a ground point, as last built
+     * ({@link SunShadow}; before the strength of {@code <light shadows>}), for tests and tools. Any
+     * thread; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the share in [0, 1); 0 before a frame with shadows or outside the terrain
+     */
+    public double sunShadow(double x, double z) {
+        return maps.shadow(x, z);
     }
 
     /** Deletes the GL objects. Render thread; idempotent. */
@@ -501,7 +499,7 @@ public final class TerrainRenderer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            Closing.closeAll(vao, vertices, indices, program, occlusion, grain);
+            Closing.closeAll(vao, vertices, indices, program, maps, grain);
             MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
     }

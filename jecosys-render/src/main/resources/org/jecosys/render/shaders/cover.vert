@@ -13,7 +13,8 @@ uniform mat4 uViewProj;
 uniform samplerBuffer uHeights;                  // R32F heightfield, rows along X
 uniform vec4 uField;                             // heightfield minX, minZ, 1 / cellX, 1 / cellZ
 uniform int uFieldRes;
-uniform sampler2D uMaps;                         // red: contact occlusion, green: cover level
+uniform sampler2D uMaps;                         // red: contact occlusion, green: cover level, blue: sun shadow
+uniform vec2 uShadows;                           // strength of the sun shadows, the sun's share of the light
 uniform vec4 uMap;                               // map minX, minZ, 1 / (texelX width), 1 / (texelZ height)
 uniform sampler2D uBend;                         // mean bend of the plants per tile, radians, signed bytes
 uniform vec4 uBendMap;                           // bend map minX, minZ, 1 / (tile width), 1 / (tile height)
@@ -55,7 +56,7 @@ void main() {
     vec2 offset = vec2(hash(tile.x, tile.y, 7), hash(tile.x, tile.y, 11));
     vec2 u = fract(offset + float(blade) * vec2(0.7548776662, 0.5698402910));
     vec2 xz = aTile.xy + u * uTile;
-    vec2 maps = textureLod(uMaps, (xz - uMap.xy) * uMap.zw, 0.0).rg;
+    vec3 maps = textureLod(uMaps, (xz - uMap.xy) * uMap.zw, 0.0).rgb;
     float cover = uBlade.y * maps.g;
     vec3 base = vec3(xz.x, groundHeight(xz), xz.y);
     float d = distance(base, uEye);
@@ -88,4 +89,5 @@ void main() {
     float bent = length(bend);
     vColour = lit(albedo, 0, along, 0.3 * along, cross(side, tip - base), toEye, length(toEye), false,
             bent * (1.0 / 1.2), bent > 1e-4 ? bend / bent : vec2(0.0));
+    vColour *= 1.0 - uShadows.x * maps.b * uShadows.y;
 }

@@ -2,15 +2,18 @@
 // Terrain: the soil or, where the plants grow, the ground cover (RenderDef.GroundCover) in its colour
 // with a grain of blade tips at two scales (a mipmapped tile, so it fades to its mean with distance
 // instead of shimmering), drier in the dry patches; lit by the light from the vertex shader, darkened
-// under the plants by the contact-occlusion map, then hazed toward the horizon colour with distance.
+// under the plants by the contact-occlusion map, the sun's share by the plants' shadows (SunShadow),
+// then hazed toward the horizon colour with distance.
 in vec3 vSoil;
 in vec3 vLight;
+in vec3 vSunLight;
 in vec3 vWorld;
 in vec3 vUvDry;
 uniform vec3 uEye;
 uniform float uFogStart;
 uniform float uFogEnd;
-uniform sampler2D uOcclusion;                    // red: contact occlusion, green: ground cover level
+uniform sampler2D uOcclusion;                    // red: contact occlusion, green: ground cover level, blue: sun shadow
+uniform float uShadows;                          // strength of the sun shadows, 0: off
 uniform sampler2D uGrain;                        // the cover's grain tile, repeating
 uniform float uContactShadow;
 uniform vec3 uFogColour;
@@ -31,8 +34,10 @@ void main() {
     vec2 uv = vUvDry.xy;
     // the map is clamped at its edges: beyond the terrain (the horizon skirt) the cover goes on as at
     // the rim, but nothing darkens the ground
-    vec2 maps = texture(uOcclusion, uv).rg;
-    float occlusion = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) ? maps.r : 0.0;
+    vec3 maps = texture(uOcclusion, uv).rgb;
+    bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    float occlusion = inside ? maps.r : 0.0;
+    float shadow = inside ? uShadows * maps.b : 0.0;
     vec3 albedo = vSoil;
     if (uCover.x > 0.0) {
         vec2 p = vWorld.xz * uCover.y;
@@ -48,7 +53,7 @@ void main() {
         float hides = smoothstep(0.1, 0.75, level + 0.45 * (grain - 0.5));
         albedo = mix(vSoil, cover, hides);
     }
-    vec3 lit = albedo * vLight * (1.0 - uContactShadow * occlusion);
+    vec3 lit = albedo * (vLight + vSunLight * (1.0 - shadow)) * (1.0 - uContactShadow * occlusion);
     if (uSheen > 0.0) {
         // the wind's sheen on the cover, as on the plants' blades (plant_light.glsl windSheen), from the
         // plants' bend where the fragment is: gusts roll over the sward as bands of light

@@ -16,7 +16,8 @@ uniform vec3 uAmbient;                           // sky light on an upward-facin
 uniform vec4 uOcclusionMap;                      // minX, minZ, 1 / (texelX * width), 1 / (texelZ * height)
 uniform vec2 uOcclusionHalf;                     // half a texel in texture coordinates
 out vec3 vSoil;                                  // the soil's colour (tint, dry patches)
-out vec3 vLight;                                 // light falling on the ground, before contact occlusion
+out vec3 vLight;                                 // the sky's light falling on the ground, before contact occlusion
+out vec3 vSunLight;                              // the sun's, before contact occlusion and the plants' shadows
 out vec3 vWorld;                                 // position, metres: the haze is worked out per fragment
 out vec3 vUvDry;                                 // occlusion-map coordinates, dryness of the patch
 
@@ -36,7 +37,8 @@ void main() {
         albedo = mix(albedo, vec3(0.46, 0.40, 0.27), 0.6 * dry);
     }
     float diffuse = max(dot(n, uLightDir), 0.0);
-    vLight = uAmbient * (0.5 + 0.5 * n.y) + uSun * diffuse;
+    vLight = uAmbient * (0.5 + 0.5 * n.y);
+    vSunLight = uSun * diffuse;
     vSoil = albedo;
     vWorld = aPos;
     vUvDry = vec3((aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf, dry);

@@ -1,0 +1,125 @@
+package org.jecosys.render.ground;
+
+import java.nio.ByteBuffer;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.gl.GlTexture2D;
+import org.jecosys.render.gl.GlTracker;
+import org.jecosys.scene.RenderDef;
+import org.jecosys.sim.World;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The terrain's maps of what the plants do to the ground, on the contact-occlusion map's grid and in
+ * one RGBA8 texture: red the contact occlusion ({@link ContactOcclusion}, built once), green where
+ * the ground cover grows ({@link CoverMap}, rebuilt when its spread changes), blue the share of the
+ * sun the plants' shadows take ({@link SunShadow}, rebuilt when the sun moves while shadows are on, 0
+ * while they are off, so every reader may weigh it by {@code <light shadows>}).
+ * Without plants the texture is a 2 x 2 of zeros. Render thread; the rebuilds allocate, nothing else
+ * does.
+ */
+final class GroundMaps implements AutoCloseable {
+    /** The grid and contact occlusion; null when built without plants. */
+    final ContactOcclusion grid;
+    private final World world;
+    private final GlTexture2D texture;
+    private float[] coverLevel;
+    private double coverSpread = Double.NaN;
+    private float[] shadow;
+    /** The sun direction the shadow was built for (NaN: none yet). */
+    private float shadowX = Float.NaN;
+    private float shadowY = Float.NaN;
+    private float shadowZ = Float.NaN;
+
+    /**
+     * Builds the contact occlusion of a world's plants and uploads it. Render thread; allocates.
+     *
+     * @param tracker counts the texture
+     * @param world   the terrain and plants, or null for a bare terrain
+     */
+    GroundMaps(GlTracker tracker, World world) {
+        this.world = world;
+        grid = world == null ? null : ContactOcclusion.of(world);
+        int w = grid == null ? 2 : grid.width;
+        int h = grid == null ? 2 : grid.height;
+        ByteBuffer texels = MemoryUtil.memCalloc(4 * w * h);
+        try {
+            texture = new GlTexture2D(tracker, w, h, 4, false, grid == null ? texels : grid.bytes(texels, null, null));
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) texels);
+        }
+    }
+
+    /** {@return the texture: contact occlusion (red), cover (green), sun shadow (blue)} */
+    GlTexture2D texture() {
+        return texture;
+    }
+
+    /**
+     * Makes sure the cover map matches the settings' ground cover (rebuilds it when its spread changed).
+     *
+     * @return whether there is cover to draw: it is enabled and there are plants
+     */
+    boolean prepareCover(RenderSettings settings) {
+        RenderDef.GroundCover gc = settings.groundCover();
+        if (!gc.enabled() || grid == null) {
+            return false;
+        }
+        if (gc.spread() != coverSpread) {
+            coverLevel = CoverMap.of(world, gc.spread(), grid.width, grid.height, grid.minX, grid.minZ, grid.texelX,
+                    grid.texelZ).level;
+            coverSpread = gc.spread();
+            upload();
+        }
+        return true;
+    }
+
+    /**
+     * Makes sure the shadow map is of the settings' sun when shadows are on (rebuilds it when the sun
+     * moved).
+     *
+     * @return whether shadows are drawn: they are on, there are plants and the sun is high enough
+     */
+    boolean prepareShadows(RenderSettings settings) {
+        if (settings.shadows() <= 0 || grid == null
+                || Math.asin(Math.min(1, settings.sunY())) < SunShadow.MIN_ELEVATION) {
+            if (shadow != null) { // shadows off: the blue channel goes back to 0 for every reader
+                shadow = null;
+                shadowX = Float.NaN;
+                upload();
+            }
+            return false;
+        }
+        if (settings.sunX() != shadowX || settings.sunY() != shadowY || settings.sunZ() != shadowZ) {
+            shadow = SunShadow.of(world, grid, settings.sunX(), settings.sunY(), settings.sunZ());
+            shadowX = settings.sunX();
+            shadowY = settings.sunY();
+            shadowZ = settings.sunZ();
+            upload();
+        }
+        return true;
+    }
+
+    /** {@return the cover level at a ground point as last built, in [0, 1]; 0 before any or outside} */
+    double cover(double x, double z) {
+        return coverLevel == null ? 0 : grid.sample(coverLevel, x, z);
+    }
+
+    /** {@return the share of the sun shadowed at a ground point as last built, in [0, 1); 0 before any} */
+    double shadow(double x, double z) {
+        return shadow == null ? 0 : grid.sample(shadow, x, z);
+    }
+
+    private void upload() {
+        ByteBuffer texels = MemoryUtil.memAlloc(4 * grid.width * grid.height);
+        try {
+            texture.upload(grid.bytes(texels, coverLevel, shadow));
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) texels);
+        }
+    }
+
+    @Override
+    public void close() {
+        texture.close();
+    }
+}
