@@ -47,6 +47,47 @@ public interface ImageSource {
     byte[] read(String path) throws IOException;
 
     /**
+     * A path as a scene writes it, made plain for a source over a game's assets (a libGDX
+     * {@code FileHandle}'s siblings, a jME asset folder): relative, '/' separators, no '.' or '..'
+     * segments, and never leading out of the scene's folder. Any thread; allocates.
+     *
+     * @param path as the scene writes it
+     * @return the path made plain, e.g. {@code "img/ramp.png"} for {@code "./img/../img//ramp.png"}
+     * @throws IOException naming the path, when it is absolute, empty, names the folder itself or leads
+     *                     out of it
+     */
+    static String inFolder(String path) throws IOException {
+        String p = Require.nonNull("path", path).replace('\\', '/');
+        if (p.isEmpty() || p.startsWith("/") || (p.length() > 1 && p.charAt(1) == ':')) {
+            throw new IOException("image '" + path + "': not a path relative to the scene's folder");
+        }
+        StringBuilder out = new StringBuilder(p.length());
+        int depth = 0;
+        for (String part : p.split("/")) {
+            if (part.isEmpty() || part.equals(".")) {
+                continue;
+            }
+            if (part.equals("..")) {
+                if (depth == 0) {
+                    throw new IOException("image '" + path + "': leads out of the scene's folder");
+                }
+                out.setLength(Math.max(out.lastIndexOf("/"), 0));
+                depth--;
+                continue;
+            }
+            if (out.length() > 0) {
+                out.append('/');
+            }
+            out.append(part);
+            depth++;
+        }
+        if (depth == 0) {
+            throw new IOException("image '" + path + "': names the scene's folder, not a file");
+        }
+        return out.toString();
+    }
+
+    /**
      * Images inside {@code dir}'s folder tree only: relative paths resolve against {@code dir}, and
      * the result, after every symbolic link is followed, must lie inside {@code dir} (itself with links
      * followed). Absolute paths, {@code ..} out of the folder and links out of it are refused with the

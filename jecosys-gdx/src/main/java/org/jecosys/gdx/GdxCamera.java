@@ -1,9 +1,8 @@
 package org.jecosys.gdx;
 
 import org.jecosys.math.Camera;
-import org.jecosys.math.MatrixCamera;
+import org.jecosys.math.HostCamera;
 import org.joml.Matrix4f;
-import org.joml.Vector3f;
 
 /**
  * A libGDX {@link com.badlogic.gdx.graphics.Camera} seen as a JEcoSys {@link Camera}: the force field
@@ -17,8 +16,7 @@ import org.joml.Vector3f;
  * {@link #update} and hands it to the simulation and the renderer. No method allocates after
  * construction.
  */
-public final class GdxCamera implements Camera {
-    private final MatrixCamera camera = new MatrixCamera();
+public final class GdxCamera extends HostCamera {
     private final Matrix4f view = new Matrix4f();
     private final Matrix4f projection = new Matrix4f();
 
@@ -38,52 +36,7 @@ public final class GdxCamera implements Camera {
     public GdxCamera update(com.badlogic.gdx.graphics.Camera camera) {
         view.set(camera.view.val);
         projection.set(camera.projection.val);
-        this.camera.set(view, projection);
+        set(view, projection);
         return this;
-    }
-
-    @Override
-    public double x() {
-        return camera.x();
-    }
-
-    @Override
-    public double y() {
-        return camera.y();
-    }
-
-    @Override
-    public double z() {
-        return camera.z();
-    }
-
-    @Override
-    public Vector3f forward(Vector3f dest) {
-        return camera.forward(dest);
-    }
-
-    @Override
-    public Matrix4f view(Matrix4f dest) {
-        return camera.view(dest);
-    }
-
-    @Override
-    public Matrix4f projection(Matrix4f dest) {
-        return camera.projection(dest);
-    }
-
-    @Override
-    public Matrix4f viewProjection(Matrix4f dest) {
-        return camera.viewProjection(dest);
-    }
-
-    @Override
-    public double viewHeightPerMetre() {
-        return camera.viewHeightPerMetre();
-    }
-
-    @Override
-    public double viewHeightAtEye() {
-        return camera.viewHeightAtEye();
     }
 }

@@ -58,12 +58,12 @@ class GdxScenesTest {
 
     @Test
     void imagePathsAreConfinedToTheScenesFolder() throws Exception {
-        assertEquals("img/ramp.png", GdxScenes.inFolder("img/ramp.png"));
-        assertEquals("img/ramp.png", GdxScenes.inFolder("./img/../img//ramp.png"));
-        assertEquals("img/ramp.png", GdxScenes.inFolder("img\\ramp.png"));
+        assertEquals("img/ramp.png", org.jecosys.terrain.ImageSource.inFolder("img/ramp.png"));
+        assertEquals("img/ramp.png", org.jecosys.terrain.ImageSource.inFolder("./img/../img//ramp.png"));
+        assertEquals("img/ramp.png", org.jecosys.terrain.ImageSource.inFolder("img\\ramp.png"));
         for (String bad : new String[] {"../ramp.png", "img/../../ramp.png", "/etc/passwd", "C:/x.png", "", ".",
             "img/.."}) {
-            assertThrows(IOException.class, () -> GdxScenes.inFolder(bad), bad);
+            assertThrows(IOException.class, () -> org.jecosys.terrain.ImageSource.inFolder(bad), bad);
         }
         // a scene that names an image out of its folder: refused with the scene's location
         Path sub = dir.resolve("scenes");

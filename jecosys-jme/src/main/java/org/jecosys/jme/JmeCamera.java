@@ -1,9 +1,8 @@
 package org.jecosys.jme;
 
 import org.jecosys.math.Camera;
-import org.jecosys.math.MatrixCamera;
+import org.jecosys.math.HostCamera;
 import org.joml.Matrix4f;
-import org.joml.Vector3f;
 
 /**
  * A jMonkeyEngine {@link com.jme3.renderer.Camera} seen as a JEcoSys {@link Camera}: the force field
@@ -16,8 +15,7 @@ import org.joml.Vector3f;
  * {@link #update} and hands it to the simulation and the renderer. No method allocates after
  * construction.
  */
-public final class JmeCamera implements Camera {
-    private final MatrixCamera camera = new MatrixCamera();
+public final class JmeCamera extends HostCamera {
     private final Matrix4f view = new Matrix4f();
     private final Matrix4f projection = new Matrix4f();
     private final float[] columns = new float[16];
@@ -42,52 +40,7 @@ public final class JmeCamera implements Camera {
         view.set(columns);
         camera.getProjectionMatrix().fillFloatArray(columns, true);
         projection.set(columns);
-        this.camera.set(view, projection);
+        set(view, projection);
         return this;
-    }
-
-    @Override
-    public double x() {
-        return camera.x();
-    }
-
-    @Override
-    public double y() {
-        return camera.y();
-    }
-
-    @Override
-    public double z() {
-        return camera.z();
-    }
-
-    @Override
-    public Vector3f forward(Vector3f dest) {
-        return camera.forward(dest);
-    }
-
-    @Override
-    public Matrix4f view(Matrix4f dest) {
-        return camera.view(dest);
-    }
-
-    @Override
-    public Matrix4f projection(Matrix4f dest) {
-        return camera.projection(dest);
-    }
-
-    @Override
-    public Matrix4f viewProjection(Matrix4f dest) {
-        return camera.viewProjection(dest);
-    }
-
-    @Override
-    public double viewHeightPerMetre() {
-        return camera.viewHeightPerMetre();
-    }
-
-    @Override
-    public double viewHeightAtEye() {
-        return camera.viewHeightAtEye();
     }
 }

@@ -53,7 +53,7 @@ public final class SceneAssetLoader implements AssetLoader {
         AssetManager manager = info.getManager();
         String folder = key.getFolder();
         ImageSource images = path -> {
-            String name = folder + JmePaths.inFolder(path);
+            String name = folder + ImageSource.inFolder(path);
             AssetInfo image = manager.locateAsset(new AssetKey<>(name));
             if (image == null) {
                 throw new IOException("image '" + path + "': no asset " + name + " next to the scene " + key.getName());

@@ -62,9 +62,9 @@ class SceneAssetLoaderTest {
 
     @Test
     void imagePathsOutOfTheScenesFolderAndBadScenesAreRefusedWithTheirLocation() throws Exception {
-        assertEquals("img/ramp.png", JmePaths.inFolder("./img/../img//ramp.png"));
+        assertEquals("img/ramp.png", org.jecosys.terrain.ImageSource.inFolder("./img/../img//ramp.png"));
         for (String bad : new String[] {"../ramp.png", "img/../../ramp.png", "/etc/passwd", "C:\\x.png", ""}) {
-            assertThrows(IOException.class, () -> JmePaths.inFolder(bad), bad);
+            assertThrows(IOException.class, () -> org.jecosys.terrain.ImageSource.inFolder(bad), bad);
         }
         Path tiny = copyTiny(dir.resolve("Scenes"));
         Files.copy(tiny.resolveSibling("img/ramp.png"), dir.resolve("ramp.png"));

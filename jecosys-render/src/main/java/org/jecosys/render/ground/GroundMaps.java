@@ -99,16 +99,6 @@ final class GroundMaps implements AutoCloseable {
         return true;
     }
 
-    /** {@return the cover level at a ground point as last built, in [0, 1]; 0 before any or outside} */
-    double cover(double x, double z) {
-        return coverLevel == null ? 0 : grid.sample(coverLevel, x, z);
-    }
-
-    /** {@return the share of the sun shadowed at a ground point as last built, in [0, 1); 0 before any} */
-    double shadow(double x, double z) {
-        return shadow == null ? 0 : grid.sample(shadow, x, z);
-    }
-
     private void upload() {
         ByteBuffer texels = MemoryUtil.memAlloc(4 * grid.width * grid.height);
         try {

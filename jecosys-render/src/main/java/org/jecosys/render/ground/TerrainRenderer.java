@@ -469,31 +469,6 @@ public final class TerrainRenderer implements AutoCloseable {
         return occlusionMap;
     }
 
-    /**
-     * The ground cover's level the terrain shader reads at a ground point (0 bare, 1 fully covered), as
-     * last built; for tests and tools. Any thread; no allocation.
-     *
-     * @param x world X, metres
-     * @param z world Z, metres
-     * @return the level in [0, 1]; 0 before a frame with cover or outside the terrain
-     */
-    public double cover(double x, double z) {
-        return maps.cover(x, z);
-    }
-
-    /**
-     * The share of the sun's direct light the plants' shadows take at a ground point, as last built
-     * ({@link SunShadow}; before the strength of {@code <light shadows>}), for tests and tools. Any
-     * thread; no allocation.
-     *
-     * @param x world X, metres
-     * @param z world Z, metres
-     * @return the share in [0, 1); 0 before a frame with shadows or outside the terrain
-     */
-    public double sunShadow(double x, double z) {
-        return maps.shadow(x, z);
-    }
-
     /** Deletes the GL objects. Render thread; idempotent. */
     @Override
     public void close() {
