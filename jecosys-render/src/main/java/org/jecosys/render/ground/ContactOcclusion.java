@@ -50,6 +50,18 @@ public final class ContactOcclusion {
     }
 
     /**
+     * An empty map on a coarser grid over the same ground: {@code factor} texels of this one per texel
+     * of it along each side, one more texel each way so it covers this one's last texel. Allocates.
+     *
+     * @param factor at least 1
+     * @return the coarser map, all 0
+     */
+    ContactOcclusion coarser(int factor) {
+        return new ContactOcclusion((width - 1) / factor + 2, (height - 1) / factor + 2, minX, minZ, texelX * factor,
+                texelZ * factor);
+    }
+
+    /**
      * Builds the map of a world's plants over its terrain.
      *
      * @param world the terrain and plants

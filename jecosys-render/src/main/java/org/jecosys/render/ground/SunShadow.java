@@ -14,8 +14,9 @@ import org.jecosys.sim.World;
  *
  * <p>The map is a world-space texture, so it does not swim as the camera moves; it follows the plants
  * at rest, not their sway, and it is rebuilt when the sun moves. Plants do not shade each other on this
- * path. Footprints are cached per species, variant and rest azimuth rounded to {@value #AZIMUTHS} steps
- * a turn. Built on any thread; allocates.
+ * path. The shadows are soft, so they are worked out on a coarser grid (texels of about
+ * {@value #TEXEL} m) and read bilinearly onto the contact map's; footprints are cached per species,
+ * variant and rest azimuth rounded to {@value #AZIMUTHS} steps a turn. Built on any thread; allocates.
  */
 public final class SunShadow {
     /** Share of the sun a point well inside one plant's shadow loses. */
@@ -24,6 +25,8 @@ public final class SunShadow {
     public static final double EDGE_SCALE = 2;
     /** The lowest sun that casts shadows, radians above the horizon: lower, the shadows would run to infinity. */
     public static final double MIN_ELEVATION = Math.toRadians(5);
+    /** Size of the texels the shadows are worked out on, metres (at least the contact map's). */
+    public static final double TEXEL = 0.12;
     /** Rest-azimuth steps a turn in the footprint cache. */
     static final int AZIMUTHS = 64;
 
@@ -40,11 +43,14 @@ public final class SunShadow {
      *         {@link #MIN_ELEVATION}
      */
     public static float[] of(World world, ContactOcclusion grid, double sunX, double sunY, double sunZ) {
-        float[] acc = new float[grid.width * grid.height];
+        float[] fine = new float[grid.width * grid.height];
         double elevation = Math.asin(Math.max(-1, Math.min(1, sunY)));
         if (elevation < MIN_ELEVATION) {
-            return acc;
+            return fine;
         }
+        int factor = Math.max(1, (int) Math.round(TEXEL / Math.min(grid.texelX, grid.texelZ)));
+        ContactOcclusion coarse = grid.coarser(factor);
+        float[] acc = coarse.occlusion;
         double horizontal = Math.hypot(sunX, sunZ);
         double run = horizontal < 1e-9 ? 0 : 1 / Math.tan(elevation);
         // world offset on the ground per metre of height: away from the sun
@@ -72,11 +78,17 @@ public final class SunShadow {
                 f = Footprint.of(world.plants().species().get(s), v, wx * c + wz * sn, -wx * sn + wz * c);
                 cache[s][v][step] = f;
             }
-            grid.splat(acc, world.plantX(p), world.plantZ(p), rounded, f, PEAK, EDGE_SCALE);
+            coarse.splat(acc, world.plantX(p), world.plantZ(p), rounded, f, PEAK, EDGE_SCALE);
         }
         for (int i = 0; i < acc.length; i++) {
             acc[i] = (float) (1 - Math.exp(-acc[i]));
         }
-        return acc;
+        for (int j = 0; j < grid.height; j++) {
+            double z = grid.minZ + j * grid.texelZ;
+            for (int i = 0; i < grid.width; i++) {
+                fine[j * grid.width + i] = (float) coarse.sample(acc, grid.minX + i * grid.texelX, z);
+            }
+        }
+        return fine;
     }
 }
