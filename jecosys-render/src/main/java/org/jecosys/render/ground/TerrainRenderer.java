@@ -73,22 +73,11 @@ public final class TerrainRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final int uViewProj;
     private final int uEye;
-    private final int uLightDir;
-    private final int uFogColour;
-    private final int uFogStart;
-    private final int uFogEnd;
-    private final int uSun;
-    private final int uAmbient;
-    private final int uPatch;
-    private final int uPatchSeed;
-    private final int uContactShadow;
     private final int uCover;
     private final int uSheen;
     private final int uSheenLight;
     private final int uSunXZ;
     private GlTexture2D bendMap;
-    private final int uCoverColour;
-    private final int uCoverDry;
     /** Contact occlusion (red), ground cover (green) and sun shadow (blue) over the terrain. */
     private final GroundMaps maps;
     /** The grid of those maps; null when built without plants. */
@@ -96,6 +85,8 @@ public final class TerrainRenderer implements AutoCloseable {
     /** The ground cover's grain: a repeating, mipmapped tile. */
     private final GlTexture2D grain;
     private final int uShadows;
+    /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
+    private final GroundUniforms ground;
     private TerrainTint tint;
     private boolean closed;
 
@@ -190,22 +181,12 @@ public final class TerrainRenderer implements AutoCloseable {
         matrix = MemoryUtil.memAllocFloat(16);
         uViewProj = program.uniform("uViewProj");
         uEye = program.uniform("uEye");
-        uLightDir = program.uniform("uLightDir");
-        uFogColour = program.uniform("uFogColour");
-        uFogStart = program.uniform("uFogStart");
-        uFogEnd = program.uniform("uFogEnd");
-        uSun = program.uniform("uSun");
-        uAmbient = program.uniform("uAmbient");
-        uPatch = program.uniform("uPatch");
-        uPatchSeed = program.uniform("uPatchSeed");
-        uContactShadow = program.uniform("uContactShadow");
         uCover = program.uniform("uCover");
         uSheen = program.uniform("uSheen");
         uSheenLight = program.uniform("uSheenLight");
         uSunXZ = program.uniform("uSunXZ");
-        uCoverColour = program.uniform("uCoverColour");
-        uCoverDry = program.uniform("uCoverDry");
         uShadows = program.uniform("uShadows");
+        ground = new GroundUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
@@ -384,24 +365,13 @@ public final class TerrainRenderer implements AutoCloseable {
         program.use();
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
-        glUniform3f(uLightDir, settings.sunX(), settings.sunY(), settings.sunZ());
+        ground.set(settings);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
-        glUniform3f(uSun, sun.r() * k, sun.g() * k, sun.b() * k);
         Rgb amb = settings.ambient();
-        glUniform3f(uAmbient, amb.r(), amb.g(), amb.b());
         Rgb fog = settings.sky();
-        glUniform3f(uFogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(uFogStart, settings.fogStart());
-        glUniform1f(uFogEnd, settings.fogEnd());
-        glUniform3f(uPatch, 1 / settings.patchScale(), settings.patchStrength(),
-                settings.patchStrength() > 0 ? 1 : 0);
-        glUniform1i(uPatchSeed, settings.patchSeed());
-        glUniform1f(uContactShadow, settings.contactShadow());
         glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
         glUniform4f(uCover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
-        glUniform3f(uCoverColour, gc.colour().r(), gc.colour().g(), gc.colour().b());
-        glUniform3f(uCoverDry, gc.dryColour().r(), gc.dryColour().g(), gc.dryColour().b());
         boolean sheen = withCover && bendMap != null && settings.sheen() > 0;
         glUniform1f(uSheen, sheen ? settings.sheen() : 0f);
         glUniform3f(uSheenLight, 0.35f * fog.r() * (amb.r() + 0.5f * sun.r() * k),

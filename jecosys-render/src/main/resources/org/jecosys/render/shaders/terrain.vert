@@ -11,7 +11,7 @@ layout(location = 2) in vec3 aColour;
 uniform mat4 uViewProj;
 uniform vec3 uEye;
 uniform vec3 uLightDir;                          // unit vector toward the sun
-uniform vec3 uSun;                               // sun colour times intensity
+uniform vec3 uSunColour;                         // sun colour times intensity
 uniform vec3 uAmbient;                           // sky light on an upward-facing surface
 uniform vec4 uOcclusionMap;                      // minX, minZ, 1 / (texelX * width), 1 / (texelZ * height)
 uniform vec2 uOcclusionHalf;                     // half a texel in texture coordinates
@@ -38,7 +38,7 @@ void main() {
     }
     float diffuse = max(dot(n, uLightDir), 0.0);
     vLight = uAmbient * (0.5 + 0.5 * n.y);
-    vSunLight = uSun * diffuse;
+    vSunLight = uSunColour * diffuse;
     vSoil = albedo;
     vWorld = aPos;
     vUvDry = vec3((aPos.xz - uOcclusionMap.xy) * uOcclusionMap.zw + uOcclusionHalf, dry);

@@ -1,0 +1,67 @@
+package org.jecosys.render.ground;
+
+import static org.lwjgl.opengl.GL20C.glUniform1f;
+import static org.lwjgl.opengl.GL20C.glUniform1i;
+import static org.lwjgl.opengl.GL20C.glUniform3f;
+
+import org.jecosys.math.Rgb;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.scene.RenderDef;
+
+/**
+ * The uniforms the ground's two programs (the terrain's and the cover blades') take alike from the
+ * settings: the sun's direction and colour, the sky's ambient light, the haze, the healthy/dry patches,
+ * the contact shadow and the ground cover's colours ({@code uLightDir}, {@code uSunColour},
+ * {@code uAmbient}, {@code uFogColour}, {@code uFogStart}, {@code uFogEnd}, {@code uPatch},
+ * {@code uPatchSeed}, {@code uContactShadow}, {@code uCoverColour}, {@code uCoverDry}). Render thread;
+ * {@link #set} allocates nothing.
+ */
+final class GroundUniforms {
+    private final int lightDir;
+    private final int sunColour;
+    private final int ambient;
+    private final int fogColour;
+    private final int fogStart;
+    private final int fogEnd;
+    private final int patch;
+    private final int patchSeed;
+    private final int contactShadow;
+    private final int coverColour;
+    private final int coverDry;
+
+    /** Looks the uniforms up in a program that has them all. Setup time. */
+    GroundUniforms(GlProgram program) {
+        lightDir = program.uniform("uLightDir");
+        sunColour = program.uniform("uSunColour");
+        ambient = program.uniform("uAmbient");
+        fogColour = program.uniform("uFogColour");
+        fogStart = program.uniform("uFogStart");
+        fogEnd = program.uniform("uFogEnd");
+        patch = program.uniform("uPatch");
+        patchSeed = program.uniform("uPatchSeed");
+        contactShadow = program.uniform("uContactShadow");
+        coverColour = program.uniform("uCoverColour");
+        coverDry = program.uniform("uCoverDry");
+    }
+
+    /** Sets them from the settings on the program in use. No allocation. */
+    void set(RenderSettings settings) {
+        glUniform3f(lightDir, settings.sunX(), settings.sunY(), settings.sunZ());
+        Rgb sun = settings.sunColour();
+        float k = settings.sunIntensity();
+        glUniform3f(sunColour, sun.r() * k, sun.g() * k, sun.b() * k);
+        Rgb amb = settings.ambient();
+        glUniform3f(ambient, amb.r(), amb.g(), amb.b());
+        Rgb fog = settings.sky();
+        glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
+        glUniform1f(fogStart, settings.fogStart());
+        glUniform1f(fogEnd, settings.fogEnd());
+        glUniform3f(patch, 1 / settings.patchScale(), settings.patchStrength(), settings.patchStrength() > 0 ? 1 : 0);
+        glUniform1i(patchSeed, settings.patchSeed());
+        glUniform1f(contactShadow, settings.contactShadow());
+        RenderDef.GroundCover gc = settings.groundCover();
+        glUniform3f(coverColour, gc.colour().r(), gc.colour().g(), gc.colour().b());
+        glUniform3f(coverDry, gc.dryColour().r(), gc.dryColour().g(), gc.dryColour().b());
+    }
+}
