@@ -65,6 +65,17 @@ public final class GustFlow extends FlowBase {
         return turbulence * def.strength() * weight(time);
     }
 
+    /**
+     * The velocity at which this flow's gust pattern travels over the ground, its mean wind U (m/s; x =
+     * X, y = Z), whatever its weight. Owner thread; no allocation.
+     *
+     * @param dest where to write
+     * @return {@code dest}
+     */
+    public Vector2d travel(Vector2d dest) {
+        return dest.set(ux, uz);
+    }
+
     @Override
     void unweighted(double x, double z, double time, Vector2d dest) {
         double qx = (x - ux * time) * invScale;

@@ -397,6 +397,33 @@ public final class WindField {
     }
 
     /**
+     * The velocity at which the gusts travel over the ground now (m/s; x = X, y = Z): the mean wind of
+     * the GUST flows ({@link GustFlow#travel}), their weights' mean when several are active (frozen
+     * turbulence: a gust front crosses the ground at the wind's speed). Zero without an active GUST flow.
+     * What an on-screen measure of travelling gusts compares with. Owner thread; no allocation.
+     *
+     * @param dest where to write
+     * @return {@code dest}
+     */
+    public Vector2d gustTravel(Vector2d dest) {
+        double sx = 0;
+        double sz = 0;
+        double sw = 0;
+        for (int i = 0; i < count; i++) {
+            if (flows[i] instanceof GustFlow g) {
+                double w = g.weight(time);
+                if (w > 0) {
+                    g.travel(dest);
+                    sx += w * dest.x;
+                    sz += w * dest.y;
+                    sw += w;
+                }
+            }
+        }
+        return sw > 0 ? dest.set(sx / sw, sz / sw) : dest.set(0, 0);
+    }
+
+    /**
      * Whether flows of this kind flatten the plants they push hard enough (trails,
      * {@code org.jecosys.plant.TrailDef}): the point flows, what an agent, a blast or a whirl does
      * (SOURCE, SINK, VORTEX, BLAST), not the ambient wind or rain (UNIFORM, GUST, RAIN), however

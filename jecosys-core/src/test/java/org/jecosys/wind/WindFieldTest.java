@@ -126,4 +126,23 @@ class WindFieldTest {
         f.advance(1);
         assertEquals(0, f.activeCount());
     }
+
+    @Test
+    void gustTravelIsTheGustsMeanWind() {
+        FlowDef east = FlowDef.builder("east", FlowKind.GUST).strength(4).direction(0).build();
+        FlowDef north = FlowDef.builder("north", FlowKind.GUST).strength(2).direction(Math.PI / 2).build();
+        WindField f = WindField.of(List.of(FlowDef.uniform("steady", 3, 1.0), east));
+        Vector2d v = f.gustTravel(new Vector2d(9, 9));
+        assertEquals(4, v.x, 1e-12, "one gust flow: its mean wind; the uniform flow does not travel");
+        assertEquals(0, v.y, 1e-12);
+        f.add(north);
+        f.gustTravel(v);
+        assertEquals(2, v.x, 1e-12, "two: the mean of their winds");
+        assertEquals(1, v.y, 1e-12);
+        f.get(1).setEnabled(false);
+        f.get(2).setEnabled(false);
+        f.gustTravel(v);
+        assertEquals(0, v.x, 0.0, "none active: zero");
+        assertEquals(0, v.y, 0.0);
+    }
 }

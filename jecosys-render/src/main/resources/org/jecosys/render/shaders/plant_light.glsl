@@ -59,7 +59,11 @@ vec3 windSheen(vec3 lit, float bend, vec2 dir, vec3 toEye) {
     float sl = length(uLightDir.xz);
     vec2 s = sl > 1e-6 ? uLightDir.xz / sl : vec2(0.0);
     float toward = 0.6 + 0.25 * dot(dir, e) + 0.15 * dot(dir, s);
-    float b = clamp(2.5 * bend, 0.0, 1.0);
+    // seen at a grazing angle (from afar) a blade's surface reflects more of the sky (Fresnel), so the
+    // same bend shows more
+    float g = 1.0 - abs(toEye.y) / max(length(toEye), 1e-6);
+    toward *= 0.8 + 0.8 * g * g * g;
+    float b = clamp(6.0 * bend, 0.0, 1.0);
     vec3 pale = lit * 1.25 + 0.35 * uFogColour * (uAmbient + 0.5 * uSunColour);
     return mix(lit, pale, clamp(uSheen * b * toward, 0.0, 1.0));
 }

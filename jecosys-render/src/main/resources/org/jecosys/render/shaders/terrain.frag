@@ -62,7 +62,10 @@ void main() {
         vec2 dir = bent > 1e-4 ? bend / bent : vec2(0.0);
         vec2 e = normalize(uEye.xz - vWorld.xz + vec2(1e-6));
         float toward = 0.6 + 0.25 * dot(dir, e) + 0.15 * dot(dir, uSunXZ);
-        float k = uSheen * clamp(2.5 * bent * (1.0 / 1.2), 0.0, 1.0) * toward * clamp(uCover.x * maps.g * 1.5, 0.0, 1.0);
+        vec3 view = uEye - vWorld;
+        float g = 1.0 - abs(view.y) / max(length(view), 1e-6);
+        toward *= 0.8 + 0.8 * g * g * g;
+        float k = uSheen * clamp(6.0 * bent * (1.0 / 1.2), 0.0, 1.0) * toward * clamp(uCover.x * maps.g * 1.5, 0.0, 1.0);
         lit = mix(lit, lit * 1.25 + uSheenLight, clamp(k, 0.0, 1.0));
     }
     // haze (squared ramp), the plants' formula, so plants and ground fade alike
