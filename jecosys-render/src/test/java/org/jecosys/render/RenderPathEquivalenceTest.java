@@ -31,8 +31,9 @@ import org.jecosys.render.plant.ResolvePath;
  * plants' light, colour variation and thin-part widening, the ground reaching the horizon, then the
  * blades' shading (by height in the tuft, across the midrib) and contact darkening sized to each plant's
  * footprint, then the wind's sheen on bent blades, then its stronger response to the bend and at
- * grazing views. Every {@link ResolvePath} the context supports is checked against the same references. Run with the environment variable
- * {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write this renderer's images into DIR instead.
+ * grazing views. Every {@link ResolvePath} the context supports is checked against the same
+ * references. Run with the environment variable {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write
+ * this renderer's images into DIR instead.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class RenderPathEquivalenceTest {
