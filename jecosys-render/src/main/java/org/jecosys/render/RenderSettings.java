@@ -46,6 +46,8 @@ public final class RenderSettings {
     private RenderDef.GroundCover groundCover = RenderDef.GroundCover.NONE;
     private float sheen = 1f;
     private float shadows;
+    private ShadowPath shadowPath = ShadowPath.AUTO;
+    private float shadowReach = (float) org.jecosys.render.ground.SunShadowMap.DEFAULT_REACH;
 
     /**
      * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
@@ -146,6 +148,45 @@ public final class RenderSettings {
     public RenderSettings shadows(float strength) {
         Require.range("shadows", strength, 0, 1);
         shadows = strength;
+        return this;
+    }
+
+    /** {@return how the sun shadows are drawn, {@link ShadowPath#AUTO} by default} */
+    public ShadowPath shadowPath() {
+        return shadowPath;
+    }
+
+    /**
+     * Sets how the sun shadows are drawn when {@link #shadows()} is above 0: a shadow map drawn every
+     * frame (the plants shade each other and the ground as they sway), the splatted rest-pose shadows on
+     * the ground only, or the one that suits the GL ({@link ShadowPath}). Any thread that owns the
+     * settings; read by the render thread every frame. No allocation.
+     *
+     * @param path not null
+     * @return this
+     */
+    public RenderSettings shadowPath(ShadowPath path) {
+        shadowPath = Require.nonNull("shadowPath", path);
+        return this;
+    }
+
+    /** {@return how far from the eye the shadow map reaches, metres} */
+    public float shadowReach() {
+        return shadowReach;
+    }
+
+    /**
+     * Sets how far from the eye the shadow map ({@link ShadowPath#MAP}) reaches: it covers the view's
+     * frustum out to this distance; farther, the ground keeps the splatted shadows. A longer reach makes
+     * the map's texels larger (about {@code 2.4 x reach / 2048} metres with a 60-degree lens). No
+     * allocation.
+     *
+     * @param metres in [2, 200]
+     * @return this
+     */
+    public RenderSettings shadowReach(float metres) {
+        Require.range("shadowReach", metres, 2, 200);
+        shadowReach = metres;
         return this;
     }
 

@@ -16,6 +16,9 @@ import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glScissor;
+import static org.lwjgl.opengl.GL11C.GL_POLYGON_OFFSET_FILL;
+import static org.lwjgl.opengl.GL11C.glPolygonOffset;
+import static org.lwjgl.opengl.GL11C.glIsEnabled;
 
 import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Require;
@@ -26,6 +29,8 @@ import org.jecosys.sim.World;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.GlStateGuard;
 import org.jecosys.render.ground.SkyRenderer;
+import org.jecosys.render.ground.SunShadow;
+import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.ground.CoverBlades;
 import org.jecosys.render.ground.TerrainRenderer;
 import org.jecosys.render.overlay.FieldOverlay;
@@ -36,8 +41,11 @@ import org.jecosys.render.plant.ResolvePath;
  * Renders a whole frame of a {@link World}: sky (gradient and sun), plants, lit terrain and the
  * optional force-field overlays, into the currently bound framebuffer and viewport (a window's, a
  * game's own or a {@link GlFramebuffer}), and puts back every GL state it changed (see
- * {@link #render(Frame, Camera)}). Owns the sky, terrain, plant and overlay renderers. Render thread only; {@link #render} allocates nothing in the
- * steady state (changing the tint or LOD band re-uploads or rebuilds once).
+ * {@link #render(Frame, Camera)}). With sun shadows on the {@link ShadowPath#MAP} path it first draws
+ * the plants resolved for the view into the sun's shadow map (SunShadowMap), which the plants, the
+ * ground cover and the terrain then read. Owns the sky, terrain, plant, shadow-map and overlay
+ * renderers. Render thread only; {@link #render} allocates nothing in the steady state (changing the
+ * tint or LOD band re-uploads or rebuilds once).
  */
 public final class SceneRenderer implements AutoCloseable {
     private final GlContext gl;
@@ -50,8 +58,17 @@ public final class SceneRenderer implements AutoCloseable {
     private final FieldOverlay overlay;
     private FieldDebugView field;
     private final GlStateGuard state;
+    /** The path {@link ShadowPath#AUTO} takes on this context. */
+    private final ShadowPath autoShadows;
+    /** The sun's shadow map, made at the first frame that draws one. */
+    private SunShadowMap shadowMap;
+    /** The shadow map's per-frame parameters and matrix as the shaders read them (x = 0: no map). */
+    private final float[] shadowParams = new float[4];
     private boolean closed;
-    /** Benchmark breakdown only (package-private): skip the terrain or the plants. */
+    /**
+     * Benchmark breakdown and tests only (package-private): skip the terrain or the plants (plants
+     * skipped still cast into the shadow map: the ground as it is under them).
+     */
     boolean drawTerrain = true;
     boolean drawPlants = true;
 
@@ -115,6 +132,9 @@ public final class SceneRenderer implements AutoCloseable {
         cover = c;
         plants = p;
         state = g;
+        autoShadows = ShadowPath.AUTO.on(org.lwjgl.opengl.GL11C.glGetString(org.lwjgl.opengl.GL11C.GL_RENDERER));
+        terrain.useShadowMap(shadowParams, null);
+        cover.useShadowMap(shadowParams, null);
     }
 
     /** {@return the world this renderer draws} */
@@ -196,8 +216,11 @@ public final class SceneRenderer implements AutoCloseable {
      * objects; see {@link GlStateGuard}). Plants write opaque alpha. The colours written are display
      * (sRGB) values, also into an sRGB framebuffer (its conversion is switched off while the library
      * draws), so a host with gamma correction shows the same picture as one without. The framebuffer
-     * binding is never changed; the constructor and {@link #close()} keep the same contract. Render
-     * thread; no allocation in the steady state.
+     * binding is the host's throughout, except while the sun's shadow map is drawn into its own
+     * ({@link ShadowPath#MAP}), after which the host's draw and read framebuffers are bound again; the
+     * host's scissor box clips the picture, not the map. The constructor and {@link #close()} keep the
+     * same contract. Render thread; no allocation in the steady state (the shadow map and its programs
+     * are made at the first frame that draws it).
      *
      * @param frame  the animation frame to show
      * @param camera the viewer (its projection's aspect should match the viewport's)
@@ -246,11 +269,22 @@ public final class SceneRenderer implements AutoCloseable {
         float lz = settings.sunZ();
         // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
         terrain.prepareShadows(settings);
-        if (drawPlants) {
+        shadowParams[0] = 0f;
+        boolean map = shadowPath() == ShadowPath.MAP && settings.shadows() > 0
+                && ly >= Math.sin(SunShadow.MIN_ELEVATION);
+        if (drawPlants || map) {
+            // (without the plants on screen their shadows are still drawn: the ground as it is under them)
             plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.setSheen(settings.sheen());
-            plants.drawNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
+            plants.prepareNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
+            if (map) {
+                drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);
+            }
+            plants.setShadowMap(shadowParams, shadowMap == null ? null : shadowMap.shadowMatrix());
+        }
+        if (drawPlants) {
+            plants.drawPreparedNear();
             if (terrain.prepareCover(settings)) {
                 cover.prepare(frame);
                 cover.draw(frame, camera, settings, terrain.maps());
@@ -274,6 +308,48 @@ public final class SceneRenderer implements AutoCloseable {
         }
     }
 
+    /**
+     * {@return the shadow path this renderer takes with its settings: {@link RenderSettings#shadowPath()},
+     * or for {@link ShadowPath#AUTO} the map on a GPU and the ground splat on a software rasteriser}
+     */
+    public ShadowPath shadowPath() {
+        return settings.shadowPath() == ShadowPath.AUTO ? autoShadows : settings.shadowPath();
+    }
+
+    /**
+     * Draws the plants resolved for this frame into the sun's shadow map (made at the first call), fitted
+     * to the camera, binds it for the plants, the cover and the terrain, and sets the shaders' shadow
+     * parameters. Puts back the host's framebuffer and this frame's viewport.
+     */
+    private void drawShadowMap(Camera camera, float lx, float ly, float lz, int vx, int vy, int width, int height) {
+        if (shadowMap == null) {
+            shadowMap = new SunShadowMap(gl.tracker(), SunShadowMap.DEFAULT_SIZE);
+            terrain.useShadowMap(shadowParams, shadowMap.shadowMatrix());
+            cover.useShadowMap(shadowParams, shadowMap.shadowMatrix());
+        }
+        shadowMap.fit(camera, lx, ly, lz, settings.shadowReach());
+        // a host's scissor box clips what the library draws into the host's picture, not the map
+        boolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+        glDisable(GL_SCISSOR_TEST);
+        shadowMap.map().begin();
+        // slope-scaled offset: a blade seen edge-on from the sun does not shade itself by rounding
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(2f, 4f);
+        plants.drawCasters(shadowMap);
+        glPolygonOffset(0f, 0f);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        shadowMap.map().end();
+        if (scissor) {
+            glEnable(GL_SCISSOR_TEST);
+        }
+        glViewport(vx, vy, width, height);
+        shadowMap.map().bind(GlStateGuard.UNIT_SHADOW);
+        shadowParams[0] = 1f;
+        shadowParams[1] = 1f / shadowMap.map().size();
+        shadowParams[2] = (float) shadowMap.bias();
+        shadowParams[3] = settings.shadows();
+    }
+
     /** {@return the number of triangles submitted by the last {@link #render}: plants plus terrain} */
     public long triangles() {
         return plants.batches().triangles() + terrain.triangles();
@@ -294,7 +370,7 @@ public final class SceneRenderer implements AutoCloseable {
             closed = true;
             state.save();
             try {
-                Closing.closeAll(overlay, sky, plants, cover, terrain);
+                Closing.closeAll(shadowMap, overlay, sky, plants, cover, terrain);
             } finally {
                 state.restore();
                 state.close();

@@ -79,7 +79,9 @@ class GoodGuestTest {
                 try {
                     Map<String, String> before = GuestCensus.take();
                     assertTrue(before.size() >= 80, "entries in the census: " + before.size());
-                    RenderSettings settings = RenderSettings.standalone().sky(SKY);
+                    // with the sun's shadow map: its own framebuffer is bound and put back within each render
+                    RenderSettings settings = RenderSettings.standalone().sky(SKY).shadows(0.6f)
+                            .shadowPath(ShadowPath.MAP);
                     SceneRenderer renderer = new SceneRenderer(gl, world, settings);
                     assertEquals(before, GuestCensus.take(), "construction, unusual host state " + unusual);
                     Frame frame = TestFrames.wind(world, 0.4, camera());

@@ -102,7 +102,9 @@ class RenderResourcesTest {
         GlCensus before = GlCensus.take();
         int tracked = gl.tracker().live();
         GlCensus during;
-        try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone(), path);
+        // with the shadow map drawn: its depth texture, framebuffer and programs are tracked too
+        RenderSettings mapped = RenderSettings.standalone().shadows(0.6f).shadowPath(ShadowPath.MAP);
+        try (SceneRenderer r = new SceneRenderer(gl, world, mapped, path);
              FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
             fb.bind();
             r.render(TestFrames.wind(world, 0.5, camera), camera, W, H);
@@ -128,6 +130,8 @@ class RenderResourcesTest {
         // with ground cover: its blades (tiles, bend map) are drawn every frame too
         RenderSettings covered = RenderSettings.standalone().groundCover(new org.jecosys.scene.RenderDef.GroundCover(
                 1, 0.06, 800, 6, 1.5, new org.jecosys.math.Rgb(0.3f, 0.5f, 0.16f), new org.jecosys.math.Rgb(0.6f, 0.55f, 0.3f)));
+        // and the sun's shadow map, drawn every frame
+        covered.shadows(0.6f).shadowPath(ShadowPath.MAP);
         try (SceneRenderer r = new SceneRenderer(gl, world, covered)) {
             fb.bind();
             for (int i = 0; i < 200; i++) {
@@ -150,7 +154,8 @@ class RenderResourcesTest {
                 windows[w] = THREADS.getThreadAllocatedBytes(thread) - start;
                 zeroRun = windows[w] == 0 ? zeroRun + 1 : 0;
             }
-            assertEquals(2, zeroRun, "two consecutive windows of 300 frames of C1 with ground cover allocating 0 bytes"
+            assertEquals(2, zeroRun, "two consecutive windows of 300 frames of C1 with ground cover and the shadow map"
+                    + " allocating 0 bytes"
                     + " on the render thread; bytes per window: " + java.util.Arrays.toString(java.util.Arrays.copyOf(windows, w)));
         }
     }

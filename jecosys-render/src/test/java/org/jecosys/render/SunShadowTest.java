@@ -16,10 +16,12 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 26, "Done when" (sun shadows, the software path: {@code <light shadows>}, SunShadow): an
- * isolated C1 grass tuft on flat ground. The ground's darkening is the terrain rendered with shadows
- * minus the terrain rendered without (the plants left out of both pictures, so only the ground is
- * compared), read at world points on a 1 cm grid round the tuft through the camera's projection:
+ * Issue 26, "Done when" (sun shadows, {@code <light shadows>}), on both paths: the splat of each plant's
+ * rest pose onto the ground ({@link ShadowPath#GROUND}, SunShadow) and the shadow map drawn every frame
+ * ({@link ShadowPath#MAP}, SunShadowMap). An isolated C1 grass tuft on flat ground. The ground's
+ * darkening is the terrain rendered with shadows minus the terrain rendered without (the plants left
+ * off the screen in both pictures, so only the ground is compared; they still cast into the map), read
+ * at world points on a 1 cm grid round the tuft through the camera's projection:
  * <ul>
  *   <li>under a sun 30 degrees high the darkening lies away from the sun (its centroid within 14 degrees
  *       of the sun's line), elongated along the sun's heading (s.d. along at least 1.3 x across), its
@@ -30,6 +32,11 @@ import org.junit.jupiter.api.Test;
  *       2/255 on average where there is shadow;</li>
  *   <li>with shadows off nothing changes, bit for bit.</li>
  * </ul>
+ * The map's shadow is the blades' own, with light between them, so "elongated" is 1.2 there. And on the
+ * map's path plants shade plants: a tuft 0.4 m from another, away from a sun 20 degrees high, is at
+ * least 1.5/255 darker over its own pixels than the same tuft standing alone (both with shadows on; the
+ * other's shadow is its blades', with light between them), at least 5% of its pixels by more than
+ * 4/255; on the ground path its pixels do not change (under 0.5/255 and 1%).
  */
 class SunShadowTest {
     private static final int W = 480;
@@ -51,11 +58,20 @@ class SunShadowTest {
             """;
 
     @Test
-    void aTuftsShadowFallsAwayFromTheSunIsCentredAtNoonAndDoesNotSwim() throws Exception {
+    void aTuftsSplattedShadowFallsAwayFromTheSunIsCentredAtNoonAndDoesNotSwim() throws Exception {
+        tuftShadow(ShadowPath.GROUND);
+    }
+
+    @Test
+    void aTuftsMappedShadowFallsAwayFromTheSunIsCentredAtNoonAndDoesNotSwim() throws Exception {
+        tuftShadow(ShadowPath.MAP);
+    }
+
+    private static void tuftShadow(ShadowPath path) throws Exception {
         SceneDef def = SceneFiles.parse(SCENE.getBytes(StandardCharsets.UTF_8), "tuft.xml", Path.of("scenes"));
         World world = RenderScenes.build(def);
         double height = height(world);
-        RenderSettings settings = RenderSettings.standalone().contactShadow(0.5f);
+        RenderSettings settings = RenderSettings.standalone().contactShadow(0.5f).shadowPath(path);
         try (Shots s = new Shots(world, settings, W, H)) {
             ViewCamera above = new ViewCamera().setPosition(0, 3, 0).setOrientation(0, -Math.PI / 2 + 1e-4)
                     .setLens(Math.toRadians(60), 1, 0.05, 50);
@@ -69,20 +85,23 @@ class SunShadowTest {
             double along = -low[1];                       // the sun stands toward +X: its shadow toward -X
             double across = Math.abs(low[2]);
             double elongation = Math.sqrt(low[3] / Math.max(1e-12, low[4]));
-            System.out.printf("[look] tuft %.2f m high, sun 30 deg up: shadow centroid %.3f m away from the sun "
-                            + "(%.2f x the height, >= 0.5), %.3f m across; spread along/across %.2f; %.0f dark-level cm2%n",
+            System.out.printf("[look] " + path + ": tuft %.2f m high, sun 30 deg up: shadow centroid %.3f m away from the"
+                            + " sun (%.2f x the height, >= 0.5), %.3f m across; spread along/across %.2f; %.0f dark-level"
+                            + " cm2%n",
                     height, along, along / height, across, elongation, low[0]);
             assertTrue(low[0] > 0, "the tuft casts a shadow");
             assertTrue(along >= 0.5 * height, String.format("centroid %.3f m from the base, want >= %.3f", along,
                     0.5 * height));
             assertTrue(across <= 0.25 * along, String.format("centroid %.3f m off the sun's line", across));
-            assertTrue(elongation >= 1.3, String.format("elongated along the sun: %.2f", elongation));
+            // the splat is each plant's hull, the map the blades' own shadows, with light between them
+            double elongated = path == ShadowPath.MAP ? 1.2 : 1.3;
+            assertTrue(elongation >= elongated, String.format("elongated along the sun: %.2f", elongation));
 
             settings.sun(0, 90);
             double[] noon = moments(s, settings, frame, above);
             double[] under = footprintCentroid(world);
             double off = Math.hypot(noon[1] - under[0], noon[2] - under[1]);
-            System.out.printf("[look] sun overhead: shadow centroid %.3f m from the centroid of the tuft's outline "
+            System.out.printf("[look] " + path + ": sun overhead: shadow centroid %.3f m from the centroid of the tuft's outline "
                     + "seen from above (<= 0.1 x height; %.3f m from the base)%n", off, Math.hypot(noon[1], noon[2]));
             assertTrue(noon[0] > 0, "an overhead sun still shades the ground under the tuft");
             assertTrue(off <= 0.1 * height, String.format("centroid %.3f m from the tuft's own outline's", off));
@@ -102,7 +121,7 @@ class SunShadowTest {
                 }
             }
             double swim = sum / Math.max(1, n);
-            System.out.printf("[look] camera moved half a pixel: shadowed ground changes by %.2f/255 on average over"
+            System.out.printf("[look] " + path + ": camera moved half a pixel: shadowed ground changes by %.2f/255 on average over"
                     + " %d pixels (<= 2)%n", swim, n);
             assertTrue(n > 100, "shadowed pixels in the oblique view: " + n);
             assertTrue(swim <= 2, String.format("the shadow swims by %.2f/255", swim));
@@ -114,6 +133,69 @@ class SunShadowTest {
             assertTrue(java.util.Arrays.equals(neverOn.rgb(), offAgain.rgb()), "shadows off gives today's picture");
         }
     }
+
+    @Test
+    void inTheMapsPathPlantsShadeEachOther() throws Exception {
+        // a tuft 0.4 m away from the sun of another, with and without that other one
+        String one = "<plant species=\"grassA\" x=\"0\" z=\"0\"/>";
+        String alone = SCENE.replace(one, "<plant species=\"grassA\" x=\"-0.4\" z=\"0\"/>");
+        // the shaded one first in both, so it is the same plant (variant and rest azimuth go by index)
+        String behind = SCENE.replace(one, "<plant species=\"grassA\" x=\"-0.4\" z=\"0\"/>" + one);
+        ShadowPath[] paths = {ShadowPath.GROUND, ShadowPath.MAP};
+        double[] darker = new double[2];
+        double[] share = new double[2];
+        for (int k = 0; k < 2; k++) {
+            Img[] off = new Img[2];
+            Img[] on = new Img[2];
+            Img bare = null;
+            String[] scenes = {alone, behind};
+            for (int w = 0; w < 2; w++) {
+                SceneDef def = SceneFiles.parse(scenes[w].getBytes(StandardCharsets.UTF_8), "row.xml", Path.of("scenes"));
+                World world = RenderScenes.build(def);
+                RenderSettings settings = RenderSettings.standalone().shadowPath(paths[k]).sun(0, 20).sunIntensity(1.6f);
+                try (Shots s = new Shots(world, settings, W, H)) {
+                    Frame frame = TestFrames.rest(world, SIDE);
+                    settings.shadows(0);
+                    // the plants alone (no terrain: only the plants' own pixels differ from the empty sky)
+                    if (w == 0) {
+                        bare = s.render(frame, SIDE, false, false);
+                    }
+                    off[w] = s.render(frame, SIDE, true, false);
+                    settings.shadows(0.8f);
+                    on[w] = s.render(frame, SIDE, true, false);
+                }
+            }
+            // the shaded tuft's pixels: a plant alone (it is the only one there), the same without shadows
+            // with the other one there (not hidden by it)
+            double sum = 0;
+            int dark = 0;
+            int n = 0;
+            for (int i = 0; i < W * H; i++) {
+                if (!ImageMetrics.differ(bare.rgb()[i], off[0].rgb()[i])
+                        || ImageMetrics.differ(off[0].rgb()[i], off[1].rgb()[i])) {
+                    continue;
+                }
+                double d = ImageMetrics.luma(on[0].rgb()[i]) - ImageMetrics.luma(on[1].rgb()[i]);
+                sum += d;
+                dark += d > 4 ? 1 : 0;
+                n++;
+            }
+            assertTrue(n > 200, "pixels of the shaded tuft: " + n);
+            darker[k] = sum / n;
+            share[k] = dark / (double) n;
+            System.out.printf("[look] %s: a tuft 0.4 m from another, away from a sun 20 deg up: %.2f/255 darker over"
+                    + " %d of its pixels than standing alone, %.1f%% of them by more than 4/255%n", paths[k], darker[k],
+                    n, 100 * share[k]);
+        }
+        assertTrue(darker[1] >= 1.5 && share[1] >= 0.05, String.format("map: a tuft in another's shadow darkens by"
+                + " %.2f/255, %.3f of its pixels by more than 4/255", darker[1], share[1]));
+        assertTrue(Math.abs(darker[0]) < 0.5 && share[0] < 0.01, String.format("ground path: the plants are not"
+                + " shaded (%.2f/255, %.3f)", darker[0], share[0]));
+    }
+
+    /** From above the sun's side, past the shading tuft, at the shaded one. */
+    private static final ViewCamera SIDE = Shots.lookAt(1.3, 1.2, 1.8, -0.4, 0.12, 0, Math.toRadians(40), 1, 0.05,
+            50);
 
     /** Height of the tuft's tallest rest-pose point above its base, metres. */
     private static double height(World world) {

@@ -102,8 +102,9 @@ import org.lwjgl.system.MemoryUtil;
  * colour logic op, sample mask and sample coverage, primitive restart, depth clamp and the eight clip
  * distances;</li>
  * <li>values: depth function and mask, blend factors and equations, colour masks (draw buffers 0 to 7),
- * front face, polygon mode, scissor box, clear colour and depth, viewport, and the pixel-unpack store (alignment,
- * row length, skips, image height, byte order) that texture uploads read.</li>
+ * front face, polygon mode, polygon offset factor and units, scissor box, clear colour and depth, viewport,
+ * and the pixel-unpack store (alignment, row length, skips, image height, byte order) that texture uploads
+ * read.</li>
  * </ul>
  * {@link #setGuestState()} then sets what the renderers depend on, whatever the host left: additive
  * blend equations, all colour channels of draw buffer 0 written and none of a host's other draw buffers, no stencil test, polygon offset, logic op, sample mask
@@ -112,7 +113,8 @@ import org.lwjgl.system.MemoryUtil;
  * on the renderer's units, and sRGB conversion off. The plants' colours are display (sRGB-encoded)
  * values: written unconverted into an sRGB framebuffer they read back exactly as in a linear one (and
  * a host with gamma correction, such as jMonkeyEngine's default, sees the same picture as without).
- * The framebuffer binding, depth range and multisample switch stay the host's.
+ * The framebuffer binding, depth range and multisample switch stay the host's (the sun's shadow map binds
+ * its own framebuffer for its pass and binds the host's again right after).
  *
  * <p>Render thread only. {@link #save} and {@link #restore} allocate nothing (the storage is made once
  * in native memory, freed by {@link #close}); together about 120 {@code glGet}/{@code glSet} calls
@@ -129,6 +131,12 @@ public final class GlStateGuard implements AutoCloseable {
 
     /** Draw buffers whose colour masks are saved: every one OpenGL 3.3 guarantees. */
     public static final int DRAW_BUFFERS = 8;
+
+    /**
+     * The texture unit whose 2D texture binding the sun's shadow map takes while the plants, the ground
+     * cover and the terrain are drawn (the per-component pass uses the unit's buffer texture before).
+     */
+    public static final int UNIT_SHADOW = 4;
 
     /** The texture unit whose 2D texture binding the terrain uses: the occlusion map. */
     public static final int UNIT_2D = 5;
@@ -189,6 +197,8 @@ public final class GlStateGuard implements AutoCloseable {
     private int frontFace;
     private int polygonMode;
     private double clearDepth;
+    private float polygonOffsetFactor;
+    private float polygonOffsetUnits;
     private int provokingVertex;
     private boolean dither;
     private boolean closed;
@@ -245,6 +255,8 @@ public final class GlStateGuard implements AutoCloseable {
         GL11C.nglGetFloatv(GL_COLOR_CLEAR_VALUE, MemoryUtil.memAddress(clear));
         GL11C.nglGetFloatv(GL11C.GL_DEPTH_CLEAR_VALUE, MemoryUtil.memAddress(clear) + 12); // the 4th float is read back below
         clearDepth = clear.get(3);
+        polygonOffsetFactor = GL11C.glGetFloat(GL11C.GL_POLYGON_OFFSET_FACTOR);
+        polygonOffsetUnits = GL11C.glGetFloat(GL11C.GL_POLYGON_OFFSET_UNITS);
         GL11C.nglGetFloatv(GL_COLOR_CLEAR_VALUE, MemoryUtil.memAddress(clear));
     }
 
@@ -348,6 +360,7 @@ public final class GlStateGuard implements AutoCloseable {
         glScissor(ints.get(4), ints.get(5), ints.get(6), ints.get(7));
         glClearColor(clear.get(0), clear.get(1), clear.get(2), clear.get(3));
         GL11C.glClearDepth(clearDepth);
+        GL11C.glPolygonOffset(polygonOffsetFactor, polygonOffsetUnits);
         org.lwjgl.opengl.GL32C.glProvokingVertex(provokingVertex);
         if (dither) {
             glEnable(GL11C.GL_DITHER);

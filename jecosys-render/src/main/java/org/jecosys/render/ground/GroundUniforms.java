@@ -3,10 +3,13 @@ package org.jecosys.render.ground;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
+import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
 import org.jecosys.math.Rgb;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlStateGuard;
 import org.jecosys.scene.RenderDef;
 
 /**
@@ -14,7 +17,8 @@ import org.jecosys.scene.RenderDef;
  * settings: the sun's direction and colour, the sky's ambient light, the haze, the healthy/dry patches,
  * the contact shadow and the ground cover's colours ({@code uLightDir}, {@code uSunColour},
  * {@code uAmbient}, {@code uFogColour}, {@code uFogStart}, {@code uFogEnd}, {@code uPatch},
- * {@code uPatchSeed}, {@code uContactShadow}, {@code uCoverColour}, {@code uCoverDry}). Render thread;
+ * {@code uPatchSeed}, {@code uContactShadow}, {@code uCoverColour}, {@code uCoverDry}), and the sun's
+ * shadow map of the frame ({@code uShadowMap}, {@code uSunShadow}, {@code uShadowMatrix}). Render thread;
  * {@link #set} allocates nothing.
  */
 final class GroundUniforms {
@@ -29,6 +33,8 @@ final class GroundUniforms {
     private final int contactShadow;
     private final int coverColour;
     private final int coverDry;
+    private final int sunShadow;
+    private final int shadowMatrix;
 
     /** Looks the uniforms up in a program that has them all. Setup time. */
     GroundUniforms(GlProgram program) {
@@ -43,6 +49,24 @@ final class GroundUniforms {
         contactShadow = program.uniform("uContactShadow");
         coverColour = program.uniform("uCoverColour");
         coverDry = program.uniform("uCoverDry");
+        sunShadow = program.uniform("uSunShadow");
+        shadowMatrix = program.uniform("uShadowMatrix");
+    }
+
+    /** Points the program's shadow-map sampler at {@link GlStateGuard#UNIT_SHADOW}; the program is in use. */
+    static void bindShadowSampler(GlProgram program) {
+        glUniform1i(program.uniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
+    }
+
+    /**
+     * Sets the sun's shadow map on the program in use ({@code sun_shadow.glsl}): params as
+     * {@code uSunShadow} (x 0: no map this frame), matrix world to map (null: none). No allocation.
+     */
+    void setShadowMap(float[] params, java.nio.FloatBuffer matrix) {
+        glUniform4f(sunShadow, params[0], params[1], params[2], params[3]);
+        if (matrix != null) {
+            glUniformMatrix4fv(shadowMatrix, false, matrix);
+        }
     }
 
     /** Sets them from the settings on the program in use. No allocation. */

@@ -87,6 +87,9 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uShadows;
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
     private final GroundUniforms ground;
+    /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
+    private float[] shadowParams = new float[4];
+    private java.nio.FloatBuffer shadowMatrix;
     private TerrainTint tint;
     private boolean closed;
 
@@ -190,6 +193,7 @@ public final class TerrainRenderer implements AutoCloseable {
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        GroundUniforms.bindShadowSampler(program);
         glUniform1i(program.uniform("uGrain"), GlStateGuard.UNIT_GRAIN);
         glUniform1i(program.uniform("uBend"), GlStateGuard.UNIT_GRAIN + 1);
         if (occlusionMap == null) {
@@ -366,6 +370,7 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
         ground.set(settings);
+        ground.setShadowMap(shadowParams, shadowMatrix);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
         Rgb amb = settings.ambient();
@@ -447,5 +452,22 @@ public final class TerrainRenderer implements AutoCloseable {
             Closing.closeAll(vao, vertices, indices, program, maps, grain);
             MemoryUtil.memFree((java.nio.Buffer) matrix);
         }
+    }
+
+    /**
+     * Reads the sun's shadow map from these holders at every draw: {@code params} as
+     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame), {@code matrix} world to map
+     * (16 floats, column-major); the map itself is bound to {@link GlStateGuard#UNIT_SHADOW} by the
+     * caller. Render thread; no allocation.
+     *
+     * @param params 4 floats, changed by the caller between frames
+     * @param matrix 16 floats, or null for none
+     */
+    public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
+        if (params.length != 4) {
+            throw new IllegalArgumentException("params must hold 4 floats, got " + params.length);
+        }
+        shadowParams = params;
+        shadowMatrix = matrix;
     }
 }

@@ -27,6 +27,13 @@ public final class PlantLook {
     public float ambB = 0.52f;
     /** Strength of the wind's sheen on bent blades (plant_light.glsl windSheen), 0: off. */
     public float sheen = 1f;
+    /**
+     * The sun's shadow map this frame ({@code sun_shadow.glsl}'s uSunShadow: 1 when drawn else 0, a
+     * texel in map units, the depth bias in map units, the strength) and its world-to-map matrix
+     * (column-major; null while no map is drawn).
+     */
+    public final float[] shadow = new float[4];
+    public java.nio.FloatBuffer shadowMatrix;
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;
     private int seed;

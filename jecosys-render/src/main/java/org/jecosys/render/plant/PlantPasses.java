@@ -38,7 +38,19 @@ public final class PlantPasses {
     /** Number of programs: every combination of {@code DITHER}, lines and {@code FLOWERS}. */
     public static final int COUNT = 8;
 
+    /** Number of caster programs (for the sun's shadow map): with and without the dither test and flower parts. */
+    public static final int CASTERS = 4;
+
     private final PlantUniforms[] passes = new PlantUniforms[COUNT];
+    /** The caster programs, program k from {@link #compileCaster}{@code (t, k)}; null until {@link #useCasters}. */
+    private PlantUniforms[] casters;
+    /**
+     * The triangle programs that read the shadow map, program k from {@link #compileReceiver}{@code (t, k)};
+     * null until {@link #useCasters}.
+     */
+    private PlantUniforms[] receivers;
+    /** Whether the triangle levels read the shadow map this frame ({@link #shadow}). */
+    private boolean mapped;
     private final boolean[] flowers;
     private int draws;
     private long instances;
@@ -59,6 +71,91 @@ public final class PlantPasses {
         return (k & LINES) != 0
                 ? GlProgram.variant(t, "plant_line.vert", "plant_line.frag", defines)
                 : GlProgram.variant(t, "plant.vert", "plant.frag", defines);
+    }
+
+    /**
+     * Compiles caster program {@code k} of {@link #CASTERS} (bit 0: the dither test, bit 1: flower
+     * parts): {@code plant.vert} with {@code SHADOW_CASTER}, depth only. Render thread; allocates.
+     */
+    public static GlProgram compileCaster(GlTracker t, int k) {
+        List<String> d = new ArrayList<>(3);
+        d.add("SHADOW_CASTER");
+        if ((k & 1) != 0) {
+            d.add("DITHER");
+        }
+        if ((k & 2) != 0) {
+            d.add("FLOWERS");
+        }
+        return GlProgram.variant(t, "plant.vert", "plant_caster.frag", d.toArray(new String[0]));
+    }
+
+    /**
+     * Compiles receiver program {@code k} of {@link #CASTERS} (bit 0: the dither test, bit 1: flower
+     * parts): the triangle levels' programs with {@code SHADOW_MAP}, which read the sun's shadow map per
+     * fragment. Render thread; allocates.
+     */
+    public static GlProgram compileReceiver(GlTracker t, int k) {
+        List<String> d = new ArrayList<>(3);
+        d.add("SHADOW_MAP");
+        if ((k & 1) != 0) {
+            d.add("DITHER");
+        }
+        if ((k & 2) != 0) {
+            d.add("FLOWERS");
+        }
+        return GlProgram.variant(t, "plant.vert", "plant.frag", d.toArray(new String[0]));
+    }
+
+    /**
+     * Takes the shadow map's programs into use: {@link #CASTERS} casters (program {@code k} from
+     * {@link #compileCaster}{@code (t, k)}) and as many receivers ({@link #compileReceiver}). Render
+     * thread; allocates.
+     */
+    public void useCasters(GlProgram[] casterPrograms, GlProgram[] receiverPrograms) {
+        PlantUniforms[] c = new PlantUniforms[CASTERS];
+        PlantUniforms[] r = new PlantUniforms[CASTERS];
+        for (int k = 0; k < CASTERS; k++) {
+            c[k] = new PlantUniforms(casterPrograms[k]);
+            r[k] = new PlantUniforms(receiverPrograms[k]);
+        }
+        casters = c;
+        receivers = r;
+    }
+
+    /** {@return whether {@link #useCasters} was called} */
+    public boolean hasCasters() {
+        return casters != null;
+    }
+
+    /**
+     * Sets the caster programs' per-frame values: as {@link #frame} with the sun's view-projection, a
+     * point far toward the sun as the eye, and a pixel of {@code texel} metres at any distance; thin
+     * parts at least one texel wide, flower parts at their real size and untilted, no thinning widening.
+     * No allocation.
+     */
+    public void casterFrame(PlantLook look, FloatBuffer sunViewProj, float ex, float ey, float ez, Rgb fog,
+                            float texel, Frame frame) {
+        for (PlantUniforms u : casters) {
+            u.program.use();
+            u.frame(look, sunViewProj, ex, ey, ez, fog, 0f, 1f, 0f, 1f, 0f, texel, 0f, frame, 1f);
+            glUniform1f(u.minPixels, 1f);
+            glUniform1f(u.headPixels, 0f);
+            glUniform1f(u.flowerTilt, 0f);
+            glUniform3f(u.thin, 0f, 1f, 1f);
+        }
+    }
+
+    /**
+     * Draws the triangle levels' lists with the caster programs (as {@link #draw}, into the bound shadow
+     * map). Counts no draws. No allocation.
+     */
+    public void drawCasters(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                            int levelMask) {
+        int draws0 = draws;
+        long instances0 = instances;
+        draw(casters, false, batches, vaos, indexCount, look, levelMask);
+        draws = draws0;
+        instances = instances0;
     }
 
     /**
@@ -88,6 +185,27 @@ public final class PlantPasses {
             u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
                     multisampled ? 0f : 1f);
         }
+        if (receivers != null) {
+            for (PlantUniforms u : receivers) {
+                u.program.use();
+                u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
+                        multisampled ? 0f : 1f);
+            }
+        }
+    }
+
+    /**
+     * Sets the sun's shadow map of the look (after {@link #frame}): while one is drawn this frame the
+     * triangle levels are drawn by the receiver programs, which read it. No allocation.
+     */
+    public void shadow(PlantLook look) {
+        mapped = look.shadow[0] > 0 && receivers != null;
+        if (mapped) {
+            for (PlantUniforms u : receivers) {
+                u.program.use();
+                u.shadow(look);
+            }
+        }
     }
 
     /**
@@ -104,10 +222,17 @@ public final class PlantPasses {
      */
     public void draw(boolean lines, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
               int levelMask) {
+        draw(!lines && mapped ? receivers : passes, lines, batches, vaos, indexCount, look, levelMask);
+    }
+
+    private void draw(PlantUniforms[] programs, boolean lines, PlantBatches batches, GlVertexArray[] vaos,
+                      int[] indexCount, PlantLook look, int levelMask) {
         for (int k = 0; k < 4; k++) {
             boolean dither = (k & 1) != 0;
             boolean flowerPass = (k & 2) != 0;
-            PlantUniforms u = passes[(lines ? LINES : 0) | (dither ? DITHER : 0) | (flowerPass ? FLOWERS : 0)];
+            PlantUniforms u = programs == passes
+                    ? passes[(lines ? LINES : 0) | (dither ? DITHER : 0) | (flowerPass ? FLOWERS : 0)]
+                    : programs[(dither ? 1 : 0) | (flowerPass ? 2 : 0)];
             boolean inUse = false;
             for (int s = 0; s < batches.speciesCount(); s++) {
                 if (flowers[s] != flowerPass) {

@@ -35,6 +35,7 @@ import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlBufferTexture;
 import org.jecosys.render.gl.GlInts;
 import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.gl.GlVertexArray;
 
 /**
@@ -93,7 +94,13 @@ public final class PlantRenderer implements AutoCloseable {
     private final PlantPasses passes;
     private final GlInts query = new GlInts();
     private final PlantLook look;
+    private final org.jecosys.render.gl.GlTracker tracker;
     private boolean pending;
+    /** The last {@link #prepareNear}'s view-projection, eye, fog and pixel scale, for {@link #drawPreparedNear}. */
+    private Frame preparedFrame;
+    private Rgb preparedFog;
+    /** ... and its eye (3), fog start and end, light direction (3) and pixel scale (2). */
+    private final float[] prepared = new float[10];
     /** Whether the target of the last {@link #drawNear} is multisampled (coverage to samples) or not (opaque). */
     private boolean multisampled;
     /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
@@ -131,6 +138,7 @@ public final class PlantRenderer implements AutoCloseable {
     public PlantRenderer(GlContext gl, World world, ResolvePath path) {
         gl.checkThread();
         this.world = world;
+        this.tracker = gl.tracker();
         this.batches = new PlantBatches(world);
         this.view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
@@ -237,16 +245,6 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
-     * the sky's ambient light (the direction goes in with each draw). {@code SceneRenderer} sets it
-     * from its {@link RenderSettings} every frame. Render thread; no allocation.
-     *
-     * @param sun       sunlight colour, components in [0, 4]
-     * @param intensity factor on the sun's colour, in [0, 4]
-     * @param ambient   sky light colour and strength, components in [0, 4]
-     * @throws IllegalArgumentException when a value is out of range
-     */
-    /**
      * Sets the strength of the wind's sheen: how much a blade bent by the wind brightens toward its pale,
      * sky-lit side (0 off, 1 the default look). Render thread; no allocation.
      *
@@ -256,6 +254,16 @@ public final class PlantRenderer implements AutoCloseable {
         look.sheen = (float) Require.range("sheen", strength, 0, 2);
     }
 
+    /**
+     * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
+     * the sky's ambient light (the direction goes in with each draw). {@code SceneRenderer} sets it
+     * from its {@link RenderSettings} every frame. Render thread; no allocation.
+     *
+     * @param sun       sunlight colour, components in [0, 4]
+     * @param intensity factor on the sun's colour, in [0, 4]
+     * @param ambient   sky light colour and strength, components in [0, 4]
+     * @throws IllegalArgumentException when a value is out of range
+     */
     public void setLight(Rgb sun, float intensity, Rgb ambient) {
         checkLight("sun", sun);
         checkLight("ambient", ambient);
@@ -384,6 +392,18 @@ public final class PlantRenderer implements AutoCloseable {
      */
     public void drawNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
                          float fogEnd, int viewportHeight) {
+        prepareNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
+        drawPreparedNear();
+    }
+
+    /**
+     * The first half of {@link #drawNear}: culls, chooses levels, uploads and resolves what the frame
+     * draws for this camera and sets the draw programs' uniforms, drawing nothing yet, so the resolved
+     * plants can first be drawn into the sun's shadow map ({@link #drawCasters}). Follow it in the same
+     * frame with {@link #drawPreparedNear}. Arguments as {@link #drawNear}. Render thread; no allocation.
+     */
+    public void prepareNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
+                            float fogEnd, int viewportHeight) {
         if (frame.componentCount() != world.componentCount()) {
             throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
                     + world.componentCount());
@@ -397,6 +417,8 @@ public final class PlantRenderer implements AutoCloseable {
         }
         passes.resetCounts();
         pending = batches.instances() > 0;
+        preparedFrame = frame;
+        preparedFog = fog;
         if (!pending) {
             return;
         }
@@ -412,6 +434,71 @@ public final class PlantRenderer implements AutoCloseable {
         resolver.resolve(look);
         multisampled = query.get(GL13C.GL_SAMPLES) > 1;
         passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame, multisampled);
+        prepared[0] = ex;
+        prepared[1] = ey;
+        prepared[2] = ez;
+        prepared[3] = fogStart;
+        prepared[4] = fogEnd;
+        prepared[5] = lx;
+        prepared[6] = ly;
+        prepared[7] = lz;
+        prepared[8] = px;
+        prepared[9] = py;
+    }
+
+    /**
+     * Draws the triangle levels of the last {@link #prepareNear} into the bound shadow map's framebuffer,
+     * seen from the sun (depth only; the caster programs are compiled at the first call). Nothing if
+     * nothing is in view. The caller binds the map, clears it and puts its own framebuffer back.
+     * Render thread; allocates only at the first call.
+     *
+     * @param shadow the map, fitted to this frame's view and sun
+     */
+    public void drawCasters(SunShadowMap shadow) {
+        if (!pending) {
+            return;
+        }
+        if (!passes.hasCasters()) {
+            GlProgram[] casters = new GlProgram[PlantPasses.CASTERS];
+            GlProgram[] receivers = new GlProgram[PlantPasses.CASTERS];
+            for (int k = 0; k < casters.length; k++) {
+                casters[k] = own(PlantPasses.compileCaster(tracker, k));
+                receivers[k] = own(PlantPasses.compileReceiver(tracker, k));
+            }
+            passes.useCasters(casters, receivers);
+            float[] a = prepared; // this frame's values onto the new programs
+            passes.frame(look, matrix, a[0], a[1], a[2], preparedFog, a[3], a[4], a[5], a[6], a[7], a[8], a[9],
+                    preparedFrame, multisampled);
+        }
+        passes.casterFrame(look, shadow.viewProjection(), (float) shadow.sunward(0), (float) shadow.sunward(1),
+                (float) shadow.sunward(2), preparedFog, (float) shadow.texelMetres(), preparedFrame);
+        poseTexture.bind(0);
+        resolver.bindRecords(1);
+        passes.drawCasters(batches, vaos, indexCount, look, levelMask);
+    }
+
+    /**
+     * Sets the sun's shadow map the triangle levels read from {@link #drawPreparedNear} on
+     * ({@code sun_shadow.glsl}; the map bound to {@code GlStateGuard.UNIT_SHADOW} by the caller): params
+     * as its uSunShadow (x = 0: none this frame), matrix world to map. Render thread; no allocation.
+     *
+     * @param params 4 floats (copied)
+     * @param matrix 16 floats, or null while no map is drawn (kept, not copied)
+     */
+    public void setShadowMap(float[] params, FloatBuffer matrix) {
+        System.arraycopy(params, 0, look.shadow, 0, 4);
+        look.shadowMatrix = matrix;
+    }
+
+    /**
+     * The second half of {@link #drawNear}: draws the triangle (near) levels the last
+     * {@link #prepareNear} resolved, opaque, writing depth. Render thread; no allocation.
+     */
+    public void drawPreparedNear() {
+        if (!pending) {
+            return;
+        }
+        passes.shadow(look);
         poseTexture.bind(0);
         resolver.bindRecords(1);
         // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque

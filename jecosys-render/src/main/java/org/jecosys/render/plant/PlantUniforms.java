@@ -4,12 +4,14 @@ import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
+import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
 import java.nio.FloatBuffer;
 import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlStateGuard;
 
 /**
  * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
@@ -36,6 +38,8 @@ public final class PlantUniforms {
     public final int thin;
     public final int sheen;
     public final int alphaFloor;
+    public final int sunShadow;
+    public final int shadowMatrix;
 
     public PlantUniforms(GlProgram p) {
         program = p;
@@ -58,6 +62,9 @@ public final class PlantUniforms {
         thin = p.optionalUniform("uThin");
         sheen = p.optionalUniform("uSheen");
         alphaFloor = p.optionalUniform("uAlphaFloor");
+        sunShadow = p.optionalUniform("uSunShadow");
+        shadowMatrix = p.optionalUniform("uShadowMatrix");
+        glUniform1i(p.optionalUniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
         glUniform1i(p.optionalUniform("uPoses"), 0);
         glUniform1i(p.optionalUniform("uComponents"), 1);
     }
@@ -84,5 +91,13 @@ public final class PlantUniforms {
         glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
         glUniform1f(fogStart, start);
         glUniform1f(fogEnd, end);
+    }
+
+    /** Sets the look's sun shadow map on the program in use ({@code sun_shadow.glsl}). No allocation. */
+    public void shadow(PlantLook r) {
+        glUniform4f(sunShadow, r.shadow[0], r.shadow[1], r.shadow[2], r.shadow[3]);
+        if (r.shadowMatrix != null) {
+            glUniformMatrix4fv(shadowMatrix, false, r.shadowMatrix);
+        }
     }
 }

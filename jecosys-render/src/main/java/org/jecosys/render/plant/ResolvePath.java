@@ -83,8 +83,6 @@ public enum ResolvePath {
      * @return the path to use
      */
     public static ResolvePath best(GLCapabilities caps, String renderer) {
-        boolean software = renderer != null && (renderer.startsWith("llvmpipe") || renderer.startsWith("softpipe")
-                || renderer.contains("SwiftShader"));
-        return software ? TRANSFORM_FEEDBACK : best(caps);
+        return org.jecosys.render.ShadowPath.software(renderer) ? TRANSFORM_FEEDBACK : best(caps);
     }
 }

@@ -28,6 +28,7 @@ out vec3 vColour;
 
 #include "patches.glsl"
 #include "plant_light.glsl"
+#include "sun_shadow.glsl"
 
 float groundHeight(vec2 xz) {
     vec2 g = clamp((xz - uField.xy) * uField.zw, vec2(0.0), vec2(float(uFieldRes) - 1.001));
@@ -89,5 +90,7 @@ void main() {
     float bent = length(bend);
     vColour = lit(albedo, 0, along, 0.3 * along, cross(side, tip - base), toEye, length(toEye), false,
             bent * (1.0 / 1.2), bent > 1e-4 ? bend / bent : vec2(0.0));
-    vColour *= 1.0 - uShadows.x * maps.b * uShadows.y;
+    // the splatted shadows, or the shadow map where it reaches
+    vec2 map = sunShadowMap(p);
+    vColour *= 1.0 - uShadows.x * mix(maps.b, map.x, map.y) * uShadows.y;
 }

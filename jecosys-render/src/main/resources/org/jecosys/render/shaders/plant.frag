@@ -6,6 +6,8 @@
 // the vertex shader; alpha is the share of the drawn width the real part covers, used by
 // alpha-to-coverage when multisampling (which then stores alpha 1: alpha-to-one); otherwise the plants
 // are drawn opaque and uAlphaFloor = 1 writes alpha 1, so a host's screenshot sees opaque plants.
+// Compiled with SHADOW_MAP (the sun's shadow map is drawn) it takes the sun's share away where the map
+// says the fragment is in shadow.
 in vec4 vShade;
 uniform float uAlphaFloor;
 #ifdef DITHER
@@ -17,22 +19,26 @@ layout(location = 0) out vec4 fragColour;
 layout(location = 1) out vec4 fragDetail;
 
 #ifdef DITHER
-// 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
-float bayer4(vec2 p) {
-    ivec2 q = ivec2(p) & 3;
-    int a = q.x ^ q.y;
-    int m = ((a & 1) << 3) | ((q.y & 1) << 2) | (a & 2) | ((q.y & 2) >> 1);
-    return (float(m) + 0.5) / 16.0;
-}
+#include "dither.glsl"
+#endif
+#ifdef SHADOW_MAP
+in vec3 vSun;
+in vec3 vWorld;
+#include "sun_shadow.glsl"
 #endif
 
 void main() {
 #ifdef DITHER
-    float b = bayer4(gl_FragCoord.xy);
-    if (b < vKeep.x || b >= vKeep.y) {
+    if (dithered(vKeep)) {
         discard;
     }
 #endif
+#ifdef SHADOW_MAP
+    // the other plants' shadows (and its own), per fragment: the sun's share taken away
+    vec2 shadow = sunShadowMap(vWorld);
+    fragColour = vec4(vShade.rgb - (uSunShadow.w * shadow.x * shadow.y) * vSun, max(vShade.a, uAlphaFloor));
+#else
     fragColour = vec4(vShade.rgb, max(vShade.a, uAlphaFloor));
+#endif
     fragDetail = vec4(1.0);
 }

@@ -6,13 +6,21 @@
 // parent), its bend azimuth as cosine and sine, the pose-table texel of pose k, the blend weight
 // toward k + 1, this level's dither window, and its colour variation (hue turn, brightness, patch
 // dryness). plant_common.glsl places and shades the vertex; 3 + 6 texel fetches.
-// Line levels use plant_line.vert instead.
+// Line levels use plant_line.vert instead. Compiled with SHADOW_CASTER it only places the vertex, for
+// the sun's shadow map (uViewProj is then the sun's; plant_caster.frag); with SHADOW_MAP it also passes
+// on the world position and the sun's share of the colour, and plant.frag reads the map per fragment.
 
 #include "plant_common.glsl"
 
+#ifndef SHADOW_CASTER
 out vec4 vShade;                                 // rgb: lit and fogged per vertex; a: the share of the
                                                  // drawn width the part covers (one varying: a software
                                                  // rasteriser sets up each varying of each primitive)
+#endif
+#ifdef SHADOW_MAP
+out vec3 vSun;                                   // what the sun's direct light adds to vShade.rgb
+out vec3 vWorld;                                 // the vertex, world: plant.frag reads the shadow map there
+#endif
 #ifdef DITHER
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
 #endif
@@ -32,8 +40,16 @@ void main() {
     vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
     Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
     gl_Position = uViewProj * vec4(v.world, 1.0);
+#ifndef SHADOW_CASTER
     // record texel 1's w: the dither window (whole part) and how far the component is bent (fraction)
     vShade = vec4(shade(v, c2, false, fract(c1.w) * (1.0 / 0.99), vec2(c0.w, c1.z)), v.cover);
+#endif
+#ifdef SHADOW_MAP
+    // lit again without the sun: plant.frag moves toward that where the shadow map says it is shaded
+    gSunLit = 0.0;
+    vSun = vShade.rgb - shade(v, c2, false, fract(c1.w) * (1.0 / 0.99), vec2(c0.w, c1.z));
+    vWorld = v.world;
+#endif
 #ifdef DITHER
     int keep = int(c1.w);
     vKeep = vec2(float(keep >> 8), float(keep & 255)) / 255.0;

@@ -18,6 +18,10 @@ float uDryTips = 0.0;                            // set per list by plant_resolv
 uniform float uDryTips;                          // this species: how far tips turn to straw, 0..1
 #endif
 
+// the share of the sun's direct light that reaches the point being lit: 1; plant.vert compiled with
+// SHADOW_MAP lights each vertex a second time with 0, for the shadow map's per-fragment shading
+float gSunLit = 1.0;
+
 const vec3 STRAW = vec3(0.74, 0.66, 0.38);
 const vec3 THROUGH = vec3(1.05, 1.22, 0.6);      // light through a blade: yellower than reflected light
 
@@ -90,17 +94,17 @@ vec3 lit(vec3 c, int kind, float along, float height, vec3 normal, vec3 toEye, f
         // a blade lit from behind glows: thin leaves pass on much of the light, more toward the tip
         // thin tips pass on the most
         float through = kind == 3 ? 0.0 : back * (1.6 + 1.6 * toward * toward) * (0.35 + 0.9 * along * along);
-        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + uSunColour * (front * (0.2 + 0.8 * ao))
-                + uSunColour * THROUGH * through;
+        vec3 sun = gSunLit * uSunColour;
+        light = uAmbient * ao * (0.8 + 0.2 * abs(n.y)) + sun * (front * (0.2 + 0.8 * ao)) + sun * THROUGH * through;
         if (!far) {
             // sheen: a blade's waxy surface glints toward the tip when seen against the sun, at grazing
             // angles (forward scattering), not when the sun is behind the viewer
             float t2 = toward * toward;
             float grazing = 1.0 - abs(dot(n, e));
-            gloss = uSunColour * (0.35 * along * t2 * t2 * t2 * (0.4 + 0.6 * grazing));
+            gloss = gSunLit * uSunColour * (0.35 * along * t2 * t2 * t2 * (0.4 + 0.6 * grazing));
         }
     } else {
-        light = uAmbient * ao + uSunColour * 0.45;
+        light = uAmbient * ao + gSunLit * uSunColour * 0.45;
     }
     vec3 colour = c * light + gloss;
     // brighter than white: scale down instead of clipping each channel, which would turn a sunlit

@@ -16,19 +16,12 @@ layout(location = 0) out vec4 fragColour;
 layout(location = 1) out vec4 fragDetail;
 
 #ifdef DITHER
-// 4x4 ordered-dither threshold in (0, 1), arithmetic (bit-reversed interleave of x ^ y and y)
-float bayer4(vec2 p) {
-    ivec2 q = ivec2(p) & 3;
-    int a = q.x ^ q.y;
-    int m = ((a & 1) << 3) | ((q.y & 1) << 2) | (a & 2) | ((q.y & 2) >> 1);
-    return (float(m) + 0.5) / 16.0;
-}
+#include "dither.glsl"
 #endif
 
 void main() {
 #ifdef DITHER
-    float b = bayer4(gl_FragCoord.xy);
-    if (b < vKeep.x || b >= vKeep.y) {
+    if (dithered(vKeep)) {
         discard;
     }
 #endif

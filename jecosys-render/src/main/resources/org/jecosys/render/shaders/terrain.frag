@@ -2,7 +2,8 @@
 // Terrain: the soil or, where the plants grow, the ground cover (RenderDef.GroundCover) in its colour
 // with a grain of blade tips at two scales (a mipmapped tile, so it fades to its mean with distance
 // instead of shimmering), drier in the dry patches; lit by the light from the vertex shader, darkened
-// under the plants by the contact-occlusion map, the sun's share by the plants' shadows (SunShadow),
+// under the plants by the contact-occlusion map, the sun's share by the plants' shadows (SunShadow's
+// splat, SunShadowMap's map near the eye),
 // then hazed toward the horizon colour with distance.
 in vec3 vSoil;
 in vec3 vLight;
@@ -25,6 +26,7 @@ uniform vec4 uBendMap;                           // bend map minX, minZ, 1 / (ti
 uniform float uSheen;                            // the wind's sheen on the cover (plant_light.glsl), 0: off
 uniform vec3 uSheenLight;                        // the sky's light a bent blade's pale side catches
 uniform vec2 uSunXZ;                             // horizontal direction toward the sun, unit
+#include "sun_shadow.glsl"
 layout(location = 0) out vec4 fragColour;
 // the resolve's detail mask (GlFramebuffer): 1 where thin geometry wants the wide filter, 0 elsewhere;
 // written only into the library's own framebuffer (a host's other draw buffers are masked off)
@@ -37,7 +39,9 @@ void main() {
     vec3 maps = texture(uOcclusion, uv).rgb;
     bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
     float occlusion = inside ? maps.r : 0.0;
-    float shadow = inside ? uShadows * maps.b : 0.0;
+    // the splatted shadows, or the shadow map where it reaches (with the plants as they sway)
+    vec2 map = sunShadowMap(vWorld);
+    float shadow = uShadows * mix(inside ? maps.b : 0.0, map.x, map.y);
     vec3 albedo = vSoil;
     if (uCover.x > 0.0) {
         vec2 p = vWorld.xz * uCover.y;
