@@ -16,6 +16,7 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.ShadowPath;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
@@ -44,6 +45,9 @@ import org.lwjgl.system.MemoryUtil;
  *     game's player) crosses 8 m of the first species' densest patch (along X) in {@link #TRAIL_STEPS}
  *     steps; the picture is taken from 4 m up, 1.5 m back from the middle of its path: the lane of
  *     flattened tufts it leaves (the grasses' {@code recovery}; without it they would stand again)</li>
+ * <li>{@code meadow-shadowmap.png}: the close-up's view with the sun's shadows drawn by the shadow map
+ *     ({@code ShadowPath.MAP}, whatever the GL): the plants shade the ground and each other as they
+ *     sway (the other views take the path the GL calls for: the ground splat on llvmpipe);</li>
  * <li>{@code rose-level0.png}, {@code rose-level1.png}, {@code rose-level2.png}: the rose at 1.2 m,
  *     12 m and 20 m (each distance falls in one level of detail: triangles, fewer triangles, lines),
  *     from 45 degrees, the lens narrowed so that the rose fills the picture's height at every distance;</li>
@@ -65,8 +69,8 @@ final class Gallery {
     static final List<String> SCENES = List.of("meadow.xml", "rose.xml", "c1.xml", "c2.xml", "c3.xml");
     /** Every file the gallery writes, in order. */
     static final List<String> FILES = List.of("meadow-default.png", "meadow-closeup.png", "meadow-above.png",
-            "meadow-backlit.png", "meadow-gusts.png", "meadow-trail.png", "rose-level0.png", "rose-level1.png", "rose-level2.png", "c1.png", "c2.png",
-            "c3.png");
+            "meadow-backlit.png", "meadow-gusts.png", "meadow-trail.png", "meadow-shadowmap.png", "rose-level0.png",
+            "rose-level1.png", "rose-level2.png", "c1.png", "c2.png", "c3.png");
 
     /** A scene file with problems (already printed). */
     static final class BadScene extends Exception {
@@ -84,9 +88,9 @@ final class Gallery {
      * A view: its file, camera, the steps run before it and, for the trail view, a walker's path from
      * (x0, z0) to (x1, z1), metres (null for none).
      */
-    private record View(String file, ViewCamera camera, int steps, double[] walk) {
+    private record View(String file, ViewCamera camera, int steps, double[] walk, ShadowPath shadows) {
         View(String file, ViewCamera camera) {
-            this(file, camera, STEPS, null);
+            this(file, camera, STEPS, null, ShadowPath.AUTO);
         }
     }
 
@@ -122,6 +126,7 @@ final class Gallery {
                                 sim.stepFixed(v.camera());
                             }
                             Frame frame = sim.latestFrame();
+                            renderer.settings().shadowPath(v.shadows());
                             fb.bind();
                             renderer.render(frame, v.camera(), width, height);
                             fb.resolve();
@@ -154,6 +159,7 @@ final class Gallery {
                 views.add(new View("meadow-backlit.png", back));
                 views.add(gusts(def, ground, aspect));
                 views.add(trail(def, world, aspect));
+                views.add(new View("meadow-shadowmap.png", closeUp(def, world, aspect), STEPS, null, ShadowPath.MAP));
             }
             case "rose.xml" -> {
                 double[] distances = {1.2, 12, 20};
@@ -179,7 +185,7 @@ final class Gallery {
         ViewCamera c = new ViewCamera().setPosition(def.camera().x(), ground + 4, def.camera().z())
                 .setOrientation(Math.atan2(Math.cos(heading), -Math.sin(heading)), Math.toRadians(-15))
                 .setLens(def.camera().fovY(), aspect, 0.1, 300);
-        return new View("meadow-gusts.png", c, GUST_STEPS, null);
+        return new View("meadow-gusts.png", c, GUST_STEPS, null, ShadowPath.AUTO);
     }
 
     /**
@@ -194,7 +200,7 @@ final class Gallery {
         double pitch = Math.atan2(world.plantY(best) - eye, 1.5);
         ViewCamera c = new ViewCamera().setPosition(x, eye, z + 1.5).setOrientation(0, pitch)
                 .setLens(def.camera().fovY(), aspect, 0.05, 300);
-        return new View("meadow-trail.png", c, TRAIL_STEPS, new double[] {x - 4, z, x + 4, z});
+        return new View("meadow-trail.png", c, TRAIL_STEPS, new double[] {x - 4, z, x + 4, z}, ShadowPath.AUTO);
     }
 
     /** 1 m south of the yellow flowers' densest patch, eye 0.6 m up, looking at the flower heads. */

@@ -11,6 +11,7 @@ import org.jecosys.anim.AnimationMode;
 import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.ShadowPath;
 import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
@@ -24,6 +25,9 @@ import org.jecosys.sim.Simulation;
  * Java strings); edits allocate.
  */
 final class ViewerPanel {
+    /** The shadow paths' radio labels, by ordinal: auto, the ground splat, the map (plants shade plants). */
+    private static final String[] SHADOW_LABELS = {"auto", "ground splat", "shadow map"};
+
     private static final String[] MODES = {"static", "random", "constraint"};
     private static final String[] TINTS = {"none", "water", "nutrients"};
 
@@ -179,8 +183,18 @@ final class ViewerPanel {
                 s.sheen(s.sheen() > 0 ? 0f : (float) Math.max(0.25, editor.sceneSheen()));
             }
             // likewise: the scene file keeps its own <light shadows>
-            if (ImGui.checkbox("sun shadows on the ground", s.shadows() > 0)) {
+            if (ImGui.checkbox("sun shadows", s.shadows() > 0)) {
                 s.shadows(s.shadows() > 0 ? 0f : (float) Math.max(0.6, editor.sceneShadows()));
+            }
+            if (s.shadows() > 0) {
+                // how they are drawn: a view setting too (auto: the map on a GPU, the splat on llvmpipe)
+                ImGui.text("  drawn as");
+                for (ShadowPath p : ShadowPath.values()) {
+                    ImGui.sameLine();
+                    if (ImGui.radioButton(SHADOW_LABELS[p.ordinal()], s.shadowPath() == p)) {
+                        s.shadowPath(p);
+                    }
+                }
             }
         }
         if (ImGui.collapsingHeader("Overlays")) {

@@ -13,6 +13,8 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.plant.ResolvePath;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.ShadowPath;
+import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.sim.CameraWalk;
@@ -118,13 +120,13 @@ final class RenderScaleSection implements Section {
 
     /**
      * What the wind's sheen and the sun shadows cost: the meadow with its own look ({@code <render>}:
-     * ground cover, sheen, shadows) from its start camera after the wind has blown for a second, each
-     * switched on and off, on the path a renderer takes by itself: frame time (render + glFinish) and
-     * the frame's GPU work by pipeline statistics.
+     * ground cover, sheen, shadows) from its start camera after the wind has blown for a second, the
+     * sheen on and off, the shadows on each path ({@link ShadowPath#GROUND}, {@link ShadowPath#MAP}) and
+     * off: frame time (render + glFinish) and the frame's GPU work by pipeline statistics.
      */
     private Table looks(int width, int height, int warm, int frames, Map<String, Object> raw) throws Exception {
         Table t = new Table("render-looks", "The meadow's look switched: " + width + "x" + height + ", start camera",
-                java.util.List.of("sheen", "shadows", "frame ms (median)", "VS invocations / frame",
+                java.util.List.of("sheen", "sun shadows", "frame ms (median)", "VS invocations / frame",
                         "FS invocations / frame", "primitives / frame", "fragments / pixel"));
         SceneDef def = SceneFiles.load(scenes.resolve(FILES[0]));
         try (GlContext gl = GlContext.headless(false);
@@ -141,10 +143,15 @@ final class RenderScaleSection implements Section {
             float shadows = settings.shadows() > 0 ? settings.shadows() : 0.6f;
             try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings); GpuWork work = new GpuWork(gl)) {
                 fb.bind();
-                for (int v = 0; v < 4; v++) {
-                    boolean on = v < 2;
-                    boolean shade = v % 2 == 0;
-                    settings.sheen(on ? sheen : 0f).shadows(shade ? shadows : 0f);
+                // sheen on and off; shadows on the ground path, on the map's path (the plants drawn a
+                // second time, from the sun) and off
+                ShadowPath[] paths = {ShadowPath.GROUND, ShadowPath.MAP, null, ShadowPath.GROUND, null};
+                for (int v = 0; v < paths.length; v++) {
+                    boolean on = v < 3;
+                    boolean shade = paths[v] != null;
+                    settings.sheen(on ? sheen : 0f).shadows(shade ? shadows : 0f)
+                            .shadowPath(shade ? paths[v] : ShadowPath.AUTO);
+                    String shadowName = shade ? paths[v] == ShadowPath.MAP ? "map" : "ground" : "off";
                     double[] ms = new double[frames];
                     double[] vs = new double[frames];
                     double[] fs = new double[frames];
@@ -165,16 +172,19 @@ final class RenderScaleSection implements Section {
                             prims[k] = work.primitives();
                         }
                     }
-                    t.row(on ? "on" : "off", shade ? "on" : "off", Stats.median(ms), (long) Stats.median(vs),
+                    t.row(on ? "on" : "off", shadowName, Stats.median(ms), (long) Stats.median(vs),
                             (long) Stats.median(fs), (long) Stats.median(prims),
                             Stats.median(fs) / ((double) width * height));
-                    raw.put("looks / sheen " + (on ? "on" : "off") + " / shadows " + (shade ? "on" : "off"), ms);
+                    raw.put("looks / sheen " + (on ? "on" : "off") + " / shadows " + shadowName, ms);
                 }
             }
             t.note("GL renderer: " + gl.describe() + ". The meadow's frame after 30 steps from its start camera, drawn"
-                    + " with its own <render> settings; sheen " + sheen + ", shadows " + shadows + " when on. The"
-                    + " shadows' map is rebuilt when switched on (during the warm-up frames), then read as one more"
-                    + " texture channel: no extra pass. Frame = render + glFinish; GPU work counted apart by"
+                    + " with its own <render> settings; sheen " + sheen + ", shadows " + shadows + " when on."
+                    + " Shadows \"ground\": the splat of the plants' rest poses, rebuilt when switched on (during"
+                    + " the warm-up frames), then read as one more texture channel, no extra pass; \"map\": the"
+                    + " plants resolved for the view drawn again from the sun into a " + SunShadowMap.DEFAULT_SIZE
+                    + "-texel depth map every frame (the counts include that pass), read per fragment by the"
+                    + " plants and the terrain. Frame = render + glFinish; GPU work counted apart by"
                     + " pipeline-statistics queries.");
         }
         return t;
