@@ -281,7 +281,7 @@ public final class SceneRenderer implements AutoCloseable {
             if (map) {
                 drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);
             }
-            plants.setShadowMap(shadowParams, shadowMap == null ? null : shadowMap.shadowMatrix());
+            plants.setShadowMap(shadowParams, shadowMap == null ? null : shadowMap.placement().shadowMatrix());
         }
         if (drawPlants) {
             plants.drawPreparedNear();
@@ -324,8 +324,8 @@ public final class SceneRenderer implements AutoCloseable {
     private void drawShadowMap(Camera camera, float lx, float ly, float lz, int vx, int vy, int width, int height) {
         if (shadowMap == null) {
             shadowMap = new SunShadowMap(gl.tracker(), SunShadowMap.DEFAULT_SIZE);
-            terrain.useShadowMap(shadowParams, shadowMap.shadowMatrix());
-            cover.useShadowMap(shadowParams, shadowMap.shadowMatrix());
+            terrain.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
+            cover.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
         }
         shadowMap.fit(camera, lx, ly, lz, settings.shadowReach());
         // a host's scissor box clips what the library draws into the host's picture, not the map
@@ -346,7 +346,7 @@ public final class SceneRenderer implements AutoCloseable {
         shadowMap.map().bind(GlStateGuard.UNIT_SHADOW);
         shadowParams[0] = 1f;
         shadowParams[1] = 1f / shadowMap.map().size();
-        shadowParams[2] = (float) shadowMap.bias();
+        shadowParams[2] = (float) shadowMap.placement().bias();
         shadowParams[3] = settings.shadows();
     }
 

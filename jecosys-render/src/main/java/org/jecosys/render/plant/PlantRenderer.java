@@ -35,6 +35,7 @@ import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlBufferTexture;
 import org.jecosys.render.gl.GlInts;
 import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.ground.ShadowFit;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.gl.GlVertexArray;
 
@@ -470,8 +471,9 @@ public final class PlantRenderer implements AutoCloseable {
             passes.frame(look, matrix, a[0], a[1], a[2], preparedFog, a[3], a[4], a[5], a[6], a[7], a[8], a[9],
                     preparedFrame, multisampled);
         }
-        passes.casterFrame(look, shadow.viewProjection(), (float) shadow.sunward(0), (float) shadow.sunward(1),
-                (float) shadow.sunward(2), preparedFog, (float) shadow.texelMetres(), preparedFrame);
+        ShadowFit at = shadow.placement();
+        passes.casterFrame(look, at.viewProjection(), (float) at.sunward(0), (float) at.sunward(1),
+                (float) at.sunward(2), preparedFog, (float) at.texelMetres(), preparedFrame);
         poseTexture.bind(0);
         resolver.bindRecords(1);
         passes.drawCasters(batches, vaos, indexCount, look, levelMask);
