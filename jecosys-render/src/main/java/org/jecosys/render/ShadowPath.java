@@ -48,7 +48,6 @@ public enum ShadowPath {
      * @return whether it is one
      */
     public static boolean software(String renderer) {
-        return renderer != null && (renderer.startsWith("llvmpipe") || renderer.startsWith("softpipe")
-                || renderer.contains("SwiftShader"));
+        return org.jecosys.render.gl.SoftwareGl.is(renderer);
     }
 }

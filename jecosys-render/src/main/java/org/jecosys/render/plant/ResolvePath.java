@@ -83,6 +83,6 @@ public enum ResolvePath {
      * @return the path to use
      */
     public static ResolvePath best(GLCapabilities caps, String renderer) {
-        return org.jecosys.render.ShadowPath.software(renderer) ? TRANSFORM_FEEDBACK : best(caps);
+        return org.jecosys.render.gl.SoftwareGl.is(renderer) ? TRANSFORM_FEEDBACK : best(caps);
     }
 }
