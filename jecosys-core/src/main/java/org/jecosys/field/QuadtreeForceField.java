@@ -82,7 +82,20 @@ public final class QuadtreeForceField implements ForceField {
     /** The effective nodes of the last update, in visiting order. */
     private int[] effective;
     private int effectiveCount;
-    private final int[] probe = new int[4];
+    /**
+     * The visible nodes at or above the cut (the effective nodes and their visible ancestors), in visiting
+     * order, of the last update and of the one before: while they are the same, every edge neighbour an
+     * effective node's gradient looks up is the same too, and {@link #probes} are reused.
+     */
+    private int[] top;
+    private int[] topBefore;
+    private int topCount;
+    private int topBeforeCount;
+    /** Per effective node, by its place in {@link #effective}: the four edge neighbours its gradient fits to. */
+    private int[] probes;
+    /** Whether {@link #probes} hold the neighbours of the cut in {@link #topBefore} (false after the tree changes). */
+    private boolean probesValid;
+    private long neighbourReuses;
     private final NodeGradient fit = new NodeGradient();
     private int current;
 
@@ -185,6 +198,12 @@ public final class QuadtreeForceField implements ForceField {
         gradZX = gradZX == null ? new float[n] : Arrays.copyOf(gradZX, n);
         gradZZ = gradZZ == null ? new float[n] : Arrays.copyOf(gradZZ, n);
         effective = effective == null ? new int[n] : Arrays.copyOf(effective, n);
+        top = new int[n];
+        topBefore = new int[n];
+        topCount = 0;
+        topBeforeCount = 0;
+        probes = new int[4 * n];
+        probesValid = false;
     }
 
     /** Largest wind component stored, m/s: far beyond any real wind (a faster flow is capped). */
@@ -213,6 +232,7 @@ public final class QuadtreeForceField implements ForceField {
     public int addPlant(double x, double z) {
         int p = tree.insert(x, z);
         ensureNodeState();
+        probesValid = false; // node bounds may have changed
         return p;
     }
 
@@ -220,6 +240,7 @@ public final class QuadtreeForceField implements ForceField {
     public void movePlant(int plant, double x, double z) {
         tree.move(plant, x, z);
         ensureNodeState();
+        probesValid = false;
     }
 
     private void ensureNodeState() {
@@ -281,12 +302,21 @@ public final class QuadtreeForceField implements ForceField {
         c.effectiveNodes = 0;
         c.flowEvaluations = 0;
         effectiveCount = 0;
+        topCount = 0;
         eddyTime = wind.time() * EDDY_FREQUENCY;
         eddy = def.enabled() ? finite(EDDY_GAIN * wind.eddySpeed()) : 0f;
         visit(0, 0, -1);
+        boolean sameCut = probesValid && topCount == topBeforeCount
+                && Arrays.equals(top, 0, topCount, topBefore, 0, topCount);
+        neighbourReuses += sameCut ? 1 : 0;
         for (int i = 0; i < effectiveCount; i++) {
-            gradient(effective[i]);
+            gradient(effective[i], 4 * i, sameCut);
         }
+        int[] swap = topBefore;
+        topBefore = top;
+        top = swap;
+        topBeforeCount = topCount;
+        probesValid = true;
     }
 
     /**
@@ -311,6 +341,9 @@ public final class QuadtreeForceField implements ForceField {
         }
         stamp[n] = current;
         counters.visibleNodes++;
+        if (r < 0) {
+            top[topCount++] = n;
+        }
         int fc = t.firstChild[n];
         if (r < 0 && (fc < 0 || (lod2.length > 0 && t.height[n] <= lodLevel(n)))) {
             r = n;
@@ -382,25 +415,29 @@ public final class QuadtreeForceField implements ForceField {
      * Fits effective node n's wind gradient to its edge neighbours and weighs it by how well it
      * predicts them ({@link NodeGradient}; see the class comment). No flow evaluation; no allocation.
      */
-    private void gradient(int n) {
+    private void gradient(int n, int o, boolean sameCut) {
         Quadtree t = tree;
         if (!def.enabled() || t.count[n] == 0) {
             return;
         }
         float cx = centX[n];
         float cz = centZ[n];
-        double ex = 1e-4 * (t.maxX[n] - t.minX[n]);
-        double ez = 1e-4 * (t.maxZ[n] - t.minZ[n]);
-        probe[0] = neighbour(t.maxX[n] + ex, cz);
-        probe[1] = neighbour(t.minX[n] - ex, cz);
-        probe[2] = neighbour(cx, t.maxZ[n] + ez);
-        probe[3] = neighbour(cx, t.minZ[n] - ez);
+        int[] probe = probes;
+        if (!sameCut) {
+            // the node at the middle of each edge, just outside (a centroid is a function of the tree alone)
+            double ex = 1e-4 * (t.maxX[n] - t.minX[n]);
+            double ez = 1e-4 * (t.maxZ[n] - t.minZ[n]);
+            probe[o] = neighbour(t.maxX[n] + ex, cz);
+            probe[o + 1] = neighbour(t.minX[n] - ex, cz);
+            probe[o + 2] = neighbour(cx, t.maxZ[n] + ez);
+            probe[o + 3] = neighbour(cx, t.minZ[n] - ez);
+        }
         NodeGradient g = fit;
         g.clear();
         for (int i = 0; i < 4; i++) {
-            int m = probe[i];
-            if (m < 0 || m == n || t.count[m] == 0 || (i > 0 && m == probe[i - 1]) || (i > 1 && m == probe[i - 2])
-                    || (i > 2 && m == probe[0])) {
+            int m = probe[o + i];
+            if (m < 0 || m == n || t.count[m] == 0 || (i > 0 && m == probe[o + i - 1])
+                    || (i > 1 && m == probe[o + i - 2]) || (i > 2 && m == probe[o])) {
                 continue;
             }
             g.add(centX[m] - cx, centZ[m] - cz, windX[m] - windX[n], windZ[m] - windZ[n]);
@@ -433,6 +470,16 @@ public final class QuadtreeForceField implements ForceField {
             m = fc + (x >= mx ? 1 : 0) + (z >= mz ? 2 : 0);
         }
         return -1;
+    }
+
+    /** Makes the next update look every edge neighbour up again (tests: the reuse changes nothing). */
+    void forgetNeighbours() {
+        probesValid = false;
+    }
+
+    /** {@return how many updates reused the edge neighbours of the one before (tests)} */
+    long neighbourReuses() {
+        return neighbourReuses;
     }
 
     /** Whether node n passed the frustum test at the last update. */

@@ -1,5 +1,6 @@
 package org.jecosys.field;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -296,5 +297,41 @@ class QuadtreeForceFieldTest {
         QuadtreeTest.checkInvariants(f.tree());
         assertTrue(f.isVisible(0));
         assertTrue(f.counters().nodes() > 1000);
+    }
+
+    @Test
+    void reusingTheEdgeNeighboursWhileTheCutStaysChangesNoWindBitForBit() {
+        WindField wind = someWind();
+        wind.add(org.jecosys.wind.FlowDef.builder("g", org.jecosys.wind.FlowKind.GUST).strength(4).direction(0.5)
+                .build());
+        QuadtreeForceField reuse = randomField(ForceFieldDef.defaults(), wind, 20_000, 11);
+        QuadtreeForceField fresh = randomField(ForceFieldDef.defaults(), wind, 20_000, 11);
+        int plants = reuse.plantCount();
+        float[][] w = new float[4][plants + 1];
+        boolean[][] vis = new boolean[2][plants + 1];
+        ViewCamera cam = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 300);
+        for (int k = 0; k < 120; k++) {
+            // still stretches (the same cut) and moves (a new cut), the wind blowing on
+            int stretch = k / 10;
+            cam.setPosition(40 + 7 * stretch + (k % 10 < 5 ? 0 : 0.01 * k), 2, 150 - 5 * stretch)
+                    .setOrientation(0.2 * stretch, -0.15);
+            if (k == 60) {
+                reuse.addPlant(100, 100);
+                fresh.addPlant(100, 100);
+                plants++;
+            }
+            wind.advance(1 / 60.0);
+            reuse.update(cam);
+            fresh.forgetNeighbours();
+            fresh.update(cam);
+            reuse.gather(0, plants, w[0], w[1], vis[0]);
+            fresh.gather(0, plants, w[2], w[3], vis[1]);
+            assertArrayEquals(w[2], w[0], "wind X, step " + k);
+            assertArrayEquals(w[3], w[1], "wind Z, step " + k);
+            assertArrayEquals(vis[1], vis[0], "visible, step " + k);
+        }
+        long reused = reuse.neighbourReuses();
+        assertTrue(reused > 40 && reused < 120, "updates that reused the neighbours of the one before: " + reused);
+        assertEquals(0, fresh.neighbourReuses());
     }
 }
