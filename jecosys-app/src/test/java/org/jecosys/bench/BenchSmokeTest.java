@@ -62,6 +62,16 @@ class BenchSmokeTest {
                 assertTrue(((Number) row.get(c)).doubleValue() > 0, column + " of " + row.get(0) + ": " + row.get(c));
             }
         }
+        // the meadow's fixed step without rendering, and its look switched (the shadows on both paths)
+        Table step = r.tables().stream().filter(x -> x.id().equals("render-scale-step")).findFirst().orElseThrow();
+        assertTrue(((Number) step.rows().get(0).get(2)).doubleValue() > 0, "ms per fixed step");
+        Table looks = r.tables().stream().filter(x -> x.id().equals("render-looks")).findFirst().orElseThrow();
+        assertEquals(List.of("ground", "map", "off", "ground", "off"), looks.rows().stream().map(x -> x.get(1)).toList());
+        for (List<Object> row : looks.rows()) {
+            for (int c = 2; c < row.size(); c++) {
+                assertTrue(((Number) row.get(c)).doubleValue() > 0, "looks " + row.get(0) + "/" + row.get(1) + " " + c);
+            }
+        }
         for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
                 "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
                 "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {

@@ -77,12 +77,23 @@ class AllocationTest {
         }
         long base = allocated();
         long baseline = allocated() - base; // cost of reading the counter itself
-        long before = allocated();
-        for (int i = 0; i < 500; i++) {
-            frame.run();
+        // Warm-up ends when the JIT has settled: once in a while a hundred bytes appear on this thread
+        // as compiled code is thrown away and redone (a branch the profile had never seen, after other
+        // tests shaped it), never again after. A per-frame allocation of even one byte would never give
+        // a zero window.
+        long[] windows = new long[10];
+        int zeroRun = 0;
+        int w = 0;
+        for (; w < windows.length && zeroRun < 2; w++) {
+            long before = allocated();
+            for (int i = 0; i < 500; i++) {
+                frame.run();
+            }
+            windows[w] = allocated() - before - baseline;
+            zeroRun = windows[w] == 0 ? zeroRun + 1 : 0;
         }
-        long used = allocated() - before - baseline;
-        assertEquals(0, used, "bytes allocated by 500 frames");
+        assertEquals(2, zeroRun, "two consecutive windows of 500 frames allocating 0 bytes; bytes per window: "
+                + java.util.Arrays.toString(java.util.Arrays.copyOf(windows, w)));
         assertTrue(Double.isFinite(sink[0]));
     }
 }
