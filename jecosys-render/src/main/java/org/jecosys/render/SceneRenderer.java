@@ -63,7 +63,12 @@ public final class SceneRenderer implements AutoCloseable {
     /** The sun's shadow map, made at the first frame that draws one. */
     private SunShadowMap shadowMap;
     /** The shadow map's per-frame parameters and matrix as the shaders read them (x = 0: no map). */
-    private final float[] shadowParams = new float[4];
+    private final float[] shadowParams = new float[8];
+    /**
+     * How far from the eye plants cast into the map: the nearest distance at which a species with a
+     * line level draws lines (lines do not cast), metres; infinite when none has one.
+     */
+    private final double castReach;
     private boolean closed;
     /**
      * Benchmark breakdown and tests only (package-private): skip the terrain or the plants (plants
@@ -133,6 +138,7 @@ public final class SceneRenderer implements AutoCloseable {
         plants = p;
         state = g;
         autoShadows = ShadowPath.AUTO.on(org.lwjgl.opengl.GL11C.glGetString(org.lwjgl.opengl.GL11C.GL_RENDERER));
+        castReach = castReach(world);
         terrain.useShadowMap(shadowParams, null);
         cover.useShadowMap(shadowParams, null);
     }
@@ -327,7 +333,8 @@ public final class SceneRenderer implements AutoCloseable {
             terrain.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
             cover.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
         }
-        shadowMap.fit(camera, lx, ly, lz, settings.shadowReach());
+        double reach = Math.min(settings.shadowReach(), castReach);
+        shadowMap.fit(camera, lx, ly, lz, reach);
         // a host's scissor box clips what the library draws into the host's picture, not the map
         boolean scissor = glIsEnabled(GL_SCISSOR_TEST);
         glDisable(GL_SCISSOR_TEST);
@@ -348,6 +355,26 @@ public final class SceneRenderer implements AutoCloseable {
         shadowParams[1] = 1f / shadowMap.map().size();
         shadowParams[2] = (float) shadowMap.placement().bias();
         shadowParams[3] = settings.shadows();
+        shadowParams[4] = (float) camera.x();
+        shadowParams[5] = (float) camera.y();
+        shadowParams[6] = (float) camera.z();
+        shadowParams[7] = (float) reach;
+    }
+
+    /** The nearest distance at which a species with a line level draws lines, metres (infinite: none). */
+    private static double castReach(World world) {
+        double reach = Double.POSITIVE_INFINITY;
+        for (org.jecosys.plant.SpeciesModel m : world.plants().species()) {
+            double triangles = 0;
+            for (org.jecosys.plant.LodDef l : m.def().lods()) {
+                if (l.primitive() != org.jecosys.plant.Primitive.TRIANGLES) {
+                    reach = Math.min(reach, triangles);
+                    break;
+                }
+                triangles = l.maxDistance();
+            }
+        }
+        return Math.max(2, reach);
     }
 
     /** {@return the number of triangles submitted by the last {@link #render}: plants plus terrain} */

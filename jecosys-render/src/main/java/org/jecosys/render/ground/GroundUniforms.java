@@ -35,6 +35,7 @@ final class GroundUniforms {
     private final int coverDry;
     private final int sunShadow;
     private final int shadowMatrix;
+    private final int shadowEye;
 
     /** Looks the uniforms up in a program that has them all. Setup time. */
     GroundUniforms(GlProgram program) {
@@ -51,6 +52,7 @@ final class GroundUniforms {
         coverDry = program.uniform("uCoverDry");
         sunShadow = program.uniform("uSunShadow");
         shadowMatrix = program.uniform("uShadowMatrix");
+        shadowEye = program.uniform("uShadowEye");
     }
 
     /** Points the program's shadow-map sampler at {@link GlStateGuard#UNIT_SHADOW}; the program is in use. */
@@ -60,10 +62,12 @@ final class GroundUniforms {
 
     /**
      * Sets the sun's shadow map on the program in use ({@code sun_shadow.glsl}): params as
-     * {@code uSunShadow} (x 0: no map this frame), matrix world to map (null: none). No allocation.
+     * {@code uSunShadow} (x 0: no map this frame) then {@code uShadowEye}, matrix world to map (null:
+     * none). No allocation.
      */
     void setShadowMap(float[] params, java.nio.FloatBuffer matrix) {
         glUniform4f(sunShadow, params[0], params[1], params[2], params[3]);
+        glUniform4f(shadowEye, params[4], params[5], params[6], params[7]);
         if (matrix != null) {
             glUniformMatrix4fv(shadowMatrix, false, matrix);
         }

@@ -88,7 +88,7 @@ public final class TerrainRenderer implements AutoCloseable {
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
     private final GroundUniforms ground;
     /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
-    private float[] shadowParams = new float[4];
+    private float[] shadowParams = new float[8];
     private java.nio.FloatBuffer shadowMatrix;
     private TerrainTint tint;
     private boolean closed;
@@ -456,16 +456,17 @@ public final class TerrainRenderer implements AutoCloseable {
 
     /**
      * Reads the sun's shadow map from these holders at every draw: {@code params} as
-     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame), {@code matrix} world to map
+     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
+     * the map's reach, metres), {@code matrix} world to map
      * (16 floats, column-major); the map itself is bound to {@link GlStateGuard#UNIT_SHADOW} by the
      * caller. Render thread; no allocation.
      *
-     * @param params 4 floats, changed by the caller between frames
+     * @param params 8 floats, changed by the caller between frames
      * @param matrix 16 floats, or null for none
      */
     public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        if (params.length != 4) {
-            throw new IllegalArgumentException("params must hold 4 floats, got " + params.length);
+        if (params.length != 8) {
+            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
         }
         shadowParams = params;
         shadowMatrix = matrix;

@@ -33,6 +33,8 @@ public final class PlantLook {
      * (column-major; null while no map is drawn).
      */
     public final float[] shadow = new float[4];
+    /** The eye (xyz) and the shadow map's reach (w), metres ({@code sun_shadow.glsl}'s uShadowEye). */
+    public final float[] shadowEye = new float[4];
     public java.nio.FloatBuffer shadowMatrix;
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;

@@ -482,13 +482,15 @@ public final class PlantRenderer implements AutoCloseable {
     /**
      * Sets the sun's shadow map the triangle levels read from {@link #drawPreparedNear} on
      * ({@code sun_shadow.glsl}; the map bound to {@code GlStateGuard.UNIT_SHADOW} by the caller): params
-     * as its uSunShadow (x = 0: none this frame), matrix world to map. Render thread; no allocation.
+     * as its uSunShadow (x = 0: none this frame) then its uShadowEye (the eye and the map's reach),
+     * matrix world to map. Render thread; no allocation.
      *
-     * @param params 4 floats (copied)
+     * @param params 8 floats (copied)
      * @param matrix 16 floats, or null while no map is drawn (kept, not copied)
      */
     public void setShadowMap(float[] params, FloatBuffer matrix) {
         System.arraycopy(params, 0, look.shadow, 0, 4);
+        System.arraycopy(params, 4, look.shadowEye, 0, 4);
         look.shadowMatrix = matrix;
     }
 

@@ -40,6 +40,7 @@ public final class PlantUniforms {
     public final int alphaFloor;
     public final int sunShadow;
     public final int shadowMatrix;
+    public final int shadowEye;
 
     public PlantUniforms(GlProgram p) {
         program = p;
@@ -64,6 +65,7 @@ public final class PlantUniforms {
         alphaFloor = p.optionalUniform("uAlphaFloor");
         sunShadow = p.optionalUniform("uSunShadow");
         shadowMatrix = p.optionalUniform("uShadowMatrix");
+        shadowEye = p.optionalUniform("uShadowEye");
         glUniform1i(p.optionalUniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
         glUniform1i(p.optionalUniform("uPoses"), 0);
         glUniform1i(p.optionalUniform("uComponents"), 1);
@@ -96,6 +98,7 @@ public final class PlantUniforms {
     /** Sets the look's sun shadow map on the program in use ({@code sun_shadow.glsl}). No allocation. */
     public void shadow(PlantLook r) {
         glUniform4f(sunShadow, r.shadow[0], r.shadow[1], r.shadow[2], r.shadow[3]);
+        glUniform4f(shadowEye, r.shadowEye[0], r.shadowEye[1], r.shadowEye[2], r.shadowEye[3]);
         if (r.shadowMatrix != null) {
             glUniformMatrix4fv(shadowMatrix, false, r.shadowMatrix);
         }

@@ -6,9 +6,12 @@ uniform sampler2DShadow uShadowMap;
 uniform mat4 uShadowMatrix;                      // world -> map: texel coordinates and depth in [0, 1]
 uniform vec4 uSunShadow;                         // x: 1 when the map is drawn this frame, else 0; y: a texel
                                                  // (map units); z: depth bias (map units); w: strength
+uniform vec4 uShadowEye;                         // the eye (xyz) and the map's reach (w), metres: plants
+                                                 // farther than the reach may be lines, which do not cast
 
 // x: the share of the sun's light the map says is blocked at world point p (0 lit .. 1 in full
-// shadow), y: how far the map covers p (1 inside, falling to 0 over the outer fifth of the square)
+// shadow), y: how far the map covers p (1 inside, falling to 0 over the outer fifth of the reach and
+// of the square)
 vec2 sunShadowMap(vec3 p) {
     if (uSunShadow.x <= 0.0) {
         return vec2(0.0);
@@ -23,5 +26,6 @@ vec2 sunShadowMap(vec3 p) {
     float z = s.z - uSunShadow.z;
     float lit = texture(uShadowMap, vec3(s.xy + vec2(-o, -o), z)) + texture(uShadowMap, vec3(s.xy + vec2(o, -o), z))
             + texture(uShadowMap, vec3(s.xy + vec2(-o, o), z)) + texture(uShadowMap, vec3(s.xy + vec2(o, o), z));
-    return vec2(1.0 - 0.25 * lit, 1.0 - smoothstep(0.8, 1.0, edge));
+    float reach = 1.0 - smoothstep(0.8 * uShadowEye.w, uShadowEye.w, distance(p, uShadowEye.xyz));
+    return vec2(1.0 - 0.25 * lit, min(reach, 1.0 - smoothstep(0.8, 1.0, edge)));
 }
