@@ -53,6 +53,8 @@ import static org.lwjgl.opengl.GL30C.glGenFramebuffers;
 public final class GlDepthMap extends GlResource {
     private final int size;
     private Fbo fbo;
+    /** Allocation-free queries of the host's bindings (LWJGL's glGetInteger may allocate). */
+    private GlInts query = new GlInts();
     private int hostDraw;
     private int hostRead;
 
@@ -119,8 +121,8 @@ public final class GlDepthMap extends GlResource {
      * depth writes). No allocation.
      */
     public void begin() {
-        hostDraw = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
-        hostRead = glGetInteger(GL_READ_FRAMEBUFFER_BINDING);
+        hostDraw = query.get(GL_DRAW_FRAMEBUFFER_BINDING);
+        hostRead = query.get(GL_READ_FRAMEBUFFER_BINDING);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, size, size);
         glClear(GL_DEPTH_BUFFER_BIT);
@@ -147,6 +149,10 @@ public final class GlDepthMap extends GlResource {
         if (fbo != null) {
             fbo.close();
             fbo = null;
+        }
+        if (query != null) {
+            query.close();
+            query = null;
         }
         glDeleteTextures(name);
     }

@@ -165,6 +165,8 @@ public final class GlStateGuard implements AutoCloseable {
     private final ByteBuffer mask = MemoryUtil.memAlloc(4 * DRAW_BUFFERS);
     private final GlInts query = new GlInts();
     private final FloatBuffer clear = MemoryUtil.memAllocFloat(4);
+    /** The polygon offset factor and units, read into native memory (LWJGL 3.3's glGetFloat allocates). */
+    private final FloatBuffer offset = MemoryUtil.memAllocFloat(2);
     private final boolean[] caps = new boolean[CAPS.length];
     private final int[] unpack = new int[UNPACK.length];
     private final int[] unitBufferTextures = new int[UNITS];
@@ -255,8 +257,10 @@ public final class GlStateGuard implements AutoCloseable {
         GL11C.nglGetFloatv(GL_COLOR_CLEAR_VALUE, MemoryUtil.memAddress(clear));
         GL11C.nglGetFloatv(GL11C.GL_DEPTH_CLEAR_VALUE, MemoryUtil.memAddress(clear) + 12); // the 4th float is read back below
         clearDepth = clear.get(3);
-        polygonOffsetFactor = GL11C.glGetFloat(GL11C.GL_POLYGON_OFFSET_FACTOR);
-        polygonOffsetUnits = GL11C.glGetFloat(GL11C.GL_POLYGON_OFFSET_UNITS);
+        GL11C.nglGetFloatv(GL11C.GL_POLYGON_OFFSET_FACTOR, MemoryUtil.memAddress(offset));
+        GL11C.nglGetFloatv(GL11C.GL_POLYGON_OFFSET_UNITS, MemoryUtil.memAddress(offset) + 4);
+        polygonOffsetFactor = offset.get(0);
+        polygonOffsetUnits = offset.get(1);
         GL11C.nglGetFloatv(GL_COLOR_CLEAR_VALUE, MemoryUtil.memAddress(clear));
     }
 
@@ -376,6 +380,7 @@ public final class GlStateGuard implements AutoCloseable {
             closed = true;
             MemoryUtil.memFree((java.nio.Buffer) ints);
             MemoryUtil.memFree((java.nio.Buffer) clear);
+            MemoryUtil.memFree((java.nio.Buffer) offset);
             MemoryUtil.memFree((java.nio.Buffer) mask);
             query.close();
         }
