@@ -82,20 +82,8 @@ public final class QuadtreeForceField implements ForceField {
     /** The effective nodes of the last update, in visiting order. */
     private int[] effective;
     private int effectiveCount;
-    /**
-     * The visible nodes at or above the cut (the effective nodes and their visible ancestors), in visiting
-     * order, of the last update and of the one before: while they are the same, every edge neighbour an
-     * effective node's gradient looks up is the same too, and {@link #probes} are reused.
-     */
-    private int[] top;
-    private int[] topBefore;
-    private int topCount;
-    private int topBeforeCount;
-    /** Per effective node, by its place in {@link #effective}: the four edge neighbours its gradient fits to. */
-    private int[] probes;
-    /** Whether {@link #probes} hold the neighbours of the cut in {@link #topBefore} (false after the tree changes). */
-    private boolean probesValid;
-    private long neighbourReuses;
+    /** The effective nodes' edge neighbours, kept while the cut stays the same. */
+    private final EdgeNeighbours neighbours = new EdgeNeighbours();
     private final NodeGradient fit = new NodeGradient();
     private int current;
 
@@ -198,12 +186,7 @@ public final class QuadtreeForceField implements ForceField {
         gradZX = gradZX == null ? new float[n] : Arrays.copyOf(gradZX, n);
         gradZZ = gradZZ == null ? new float[n] : Arrays.copyOf(gradZZ, n);
         effective = effective == null ? new int[n] : Arrays.copyOf(effective, n);
-        top = new int[n];
-        topBefore = new int[n];
-        topCount = 0;
-        topBeforeCount = 0;
-        probes = new int[4 * n];
-        probesValid = false;
+        neighbours.resize(n);
     }
 
     /** Largest wind component stored, m/s: far beyond any real wind (a faster flow is capped). */
@@ -232,7 +215,7 @@ public final class QuadtreeForceField implements ForceField {
     public int addPlant(double x, double z) {
         int p = tree.insert(x, z);
         ensureNodeState();
-        probesValid = false; // node bounds may have changed
+        neighbours.invalidate(); // node bounds may have changed
         return p;
     }
 
@@ -240,7 +223,7 @@ public final class QuadtreeForceField implements ForceField {
     public void movePlant(int plant, double x, double z) {
         tree.move(plant, x, z);
         ensureNodeState();
-        probesValid = false;
+        neighbours.invalidate();
     }
 
     private void ensureNodeState() {
@@ -302,21 +285,14 @@ public final class QuadtreeForceField implements ForceField {
         c.effectiveNodes = 0;
         c.flowEvaluations = 0;
         effectiveCount = 0;
-        topCount = 0;
+        neighbours.begin();
         eddyTime = wind.time() * EDDY_FREQUENCY;
         eddy = def.enabled() ? finite(EDDY_GAIN * wind.eddySpeed()) : 0f;
         visit(0, 0, -1);
-        boolean sameCut = probesValid && topCount == topBeforeCount
-                && Arrays.equals(top, 0, topCount, topBefore, 0, topCount);
-        neighbourReuses += sameCut ? 1 : 0;
+        boolean sameCut = neighbours.keep();
         for (int i = 0; i < effectiveCount; i++) {
             gradient(effective[i], 4 * i, sameCut);
         }
-        int[] swap = topBefore;
-        topBefore = top;
-        top = swap;
-        topBeforeCount = topCount;
-        probesValid = true;
     }
 
     /**
@@ -342,7 +318,7 @@ public final class QuadtreeForceField implements ForceField {
         stamp[n] = current;
         counters.visibleNodes++;
         if (r < 0) {
-            top[topCount++] = n;
+            neighbours.visited(n);
         }
         int fc = t.firstChild[n];
         if (r < 0 && (fc < 0 || (lod2.length > 0 && t.height[n] <= lodLevel(n)))) {
@@ -422,7 +398,7 @@ public final class QuadtreeForceField implements ForceField {
         }
         float cx = centX[n];
         float cz = centZ[n];
-        int[] probe = probes;
+        int[] probe = neighbours.probes();
         if (!sameCut) {
             // the node at the middle of each edge, just outside (a centroid is a function of the tree alone)
             double ex = 1e-4 * (t.maxX[n] - t.minX[n]);
@@ -474,12 +450,12 @@ public final class QuadtreeForceField implements ForceField {
 
     /** Makes the next update look every edge neighbour up again (tests: the reuse changes nothing). */
     void forgetNeighbours() {
-        probesValid = false;
+        neighbours.invalidate();
     }
 
     /** {@return how many updates reused the edge neighbours of the one before (tests)} */
     long neighbourReuses() {
-        return neighbourReuses;
+        return neighbours.reuses();
     }
 
     /** Whether node n passed the frustum test at the last update. */

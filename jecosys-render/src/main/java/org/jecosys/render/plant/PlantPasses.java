@@ -78,15 +78,20 @@ public final class PlantPasses {
      * parts): {@code plant.vert} with {@code SHADOW_CASTER}, depth only. Render thread; allocates.
      */
     public static GlProgram compileCaster(GlTracker t, int k) {
+        return GlProgram.variant(t, "plant.vert", "plant_caster.frag", mapDefines("SHADOW_CASTER", k));
+    }
+
+    /** The defines of a shadow-map program: {@code role}, then DITHER for bit 0 and FLOWERS for bit 1 of k. */
+    private static String[] mapDefines(String role, int k) {
         List<String> d = new ArrayList<>(3);
-        d.add("SHADOW_CASTER");
+        d.add(role);
         if ((k & 1) != 0) {
             d.add("DITHER");
         }
         if ((k & 2) != 0) {
             d.add("FLOWERS");
         }
-        return GlProgram.variant(t, "plant.vert", "plant_caster.frag", d.toArray(new String[0]));
+        return d.toArray(new String[0]);
     }
 
     /**
@@ -95,15 +100,7 @@ public final class PlantPasses {
      * fragment. Render thread; allocates.
      */
     public static GlProgram compileReceiver(GlTracker t, int k) {
-        List<String> d = new ArrayList<>(3);
-        d.add("SHADOW_MAP");
-        if ((k & 1) != 0) {
-            d.add("DITHER");
-        }
-        if ((k & 2) != 0) {
-            d.add("FLOWERS");
-        }
-        return GlProgram.variant(t, "plant.vert", "plant.frag", d.toArray(new String[0]));
+        return GlProgram.variant(t, "plant.vert", "plant.frag", mapDefines("SHADOW_MAP", k));
     }
 
     /**
