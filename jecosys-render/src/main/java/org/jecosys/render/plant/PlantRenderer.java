@@ -487,8 +487,12 @@ public final class PlantRenderer implements AutoCloseable {
      *
      * @param params 8 floats (copied)
      * @param matrix 16 floats, or null while no map is drawn (kept, not copied)
+     * @throws IllegalArgumentException when params does not hold 8 floats
      */
     public void setShadowMap(float[] params, FloatBuffer matrix) {
+        if (params.length != 8) {
+            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
+        }
         System.arraycopy(params, 0, look.shadow, 0, 4);
         System.arraycopy(params, 4, look.shadowEye, 0, 4);
         look.shadowMatrix = matrix;
