@@ -97,11 +97,16 @@ final class EglHeadless {
         }
     }
 
-    /** Releases the context from this thread, destroys it and terminates the display. Idempotent per object. */
+    /**
+     * Releases the context from this thread, destroys it, terminates the display and releases the
+     * thread's EGL state (without that, NVIDIA's EGL crashed in its own thread at process exit).
+     * Idempotent per object.
+     */
     void destroy() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
         eglTerminate(display);
+        org.lwjgl.egl.EGL12.eglReleaseThread();
     }
 
     /**
