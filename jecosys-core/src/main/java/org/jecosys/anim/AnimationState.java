@@ -82,12 +82,7 @@ public final class AnimationState implements AnimationView {
     /** Per-component D and v of plants in RANDOM mode. */
     private final ScatteredState scattered;
     // per-component copies of the kind constants the output loops need (no gather there)
-    private final float[] leanX;
-    private final float[] leanZ;
-    private final float[] compLean;
-    private final float[] compLength;
-    private final float[] compScale;
-    private final float[] compPoseMax;
+    private final BendGeometry geometry;
     /** Per component its deviation: {@link SpringRuns#compDevX}, read in place. */
     private final float[] devX;
     private final float[] devZ;
@@ -148,6 +143,20 @@ public final class AnimationState implements AnimationView {
     public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
                           float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, float[] restHeading,
                           byte[] response, float[] compliance) {
+        this(kinds, lodEdges, plantSpecies, firstComponent, plantX, plantY, plantZ, componentKind,
+                BendGeometry.of(Require.nonNull("kinds", kinds), componentKind, restHeading), response, compliance);
+    }
+
+    /**
+     * As {@link #AnimationState(SpringKinds, double[][], int[], int[], float[], float[], float[], int[],
+     * float[], byte[], float[])}, with the components' bend geometry built already (from the same kinds
+     * and their rest headings) and shared, not copied. Build time; allocates.
+     *
+     * @param geometry the bend geometry of the components, one entry per component
+     */
+    public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
+                          float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, BendGeometry geometry,
+                          byte[] response, float[] compliance) {
         this.kinds = Require.nonNull("kinds", kinds);
         plants = Require.nonNull("plantSpecies", plantSpecies).length;
         if (firstComponent.length != plants + 1 || plantX.length != plants || plantY.length != plants
@@ -156,8 +165,8 @@ public final class AnimationState implements AnimationView {
                     + " values and plantX/Y/Z plants = " + plants);
         }
         components = componentKind.length;
-        if (restHeading.length != components || firstComponent[plants] != components) {
-            throw new IllegalArgumentException("restHeading and firstComponent[plants] must match the "
+        if (geometry.componentCount() != components || firstComponent[plants] != components) {
+            throw new IllegalArgumentException("the bend geometry and firstComponent[plants] must match the "
                     + components + " components");
         }
         this.plantSpecies = plantSpecies.clone();
@@ -170,23 +179,10 @@ public final class AnimationState implements AnimationView {
             }
         }
         kind = new short[components];
-        leanX = new float[components];
-        leanZ = new float[components];
-        compLean = new float[components];
-        compLength = new float[components];
-        compScale = new float[components];
-        compPoseMax = new float[components];
         for (int c = 0; c < components; c++) {
-            int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
-            kind[c] = (short) k;
-            double h = restHeading[c];
-            leanX[c] = (float) (kinds.leanMag[k] * Math.cos(h));
-            leanZ[c] = (float) (kinds.leanMag[k] * Math.sin(h));
-            compLean[c] = kinds.leanMag[k];
-            compLength[c] = kinds.length[k];
-            compScale[c] = kinds.poseScale[k];
-            compPoseMax[c] = kinds.poseMax[k];
+            kind[c] = (short) Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
         }
+        this.geometry = geometry;
         plantResponse = new byte[plants];
         plantCompliance = new float[plants];
         if ((response != null && response.length != plants) || (compliance != null && compliance.length != plants)) {
@@ -578,8 +574,8 @@ public final class AnimationState implements AnimationView {
      * {@link BendOutputs#outputs}, the same arithmetic as {@link #poseCoordinate} and {@link #azimuth}.
      */
     private void outputs(int c0, int c1, float[] pose, float[] azimuth) {
-        BendOutputs.outputs(c0, c1, devX, devZ, leanX, leanZ, compLean, compLength, compScale, compPoseMax, pose,
-                azimuth);
+        BendGeometry g = geometry;
+        BendOutputs.outputs(c0, c1, devX, devZ, g.leanX, g.leanZ, g.lean, g.length, g.scale, g.poseMax, pose, azimuth);
     }
 
     /**
@@ -623,7 +619,7 @@ public final class AnimationState implements AnimationView {
      * operations as the output loops of {@link #animate}, hence the same bits). No allocation.
      */
     public float poseCoordinate(int c) {
-        return BendOutputs.poseCoordinate(c, devX, devZ, leanX, leanZ, compLean, compLength, compScale, compPoseMax);
+        return geometry.poseCoordinate(c, devX[c], devZ[c]);
     }
 
     /**
@@ -631,7 +627,35 @@ public final class AnimationState implements AnimationView {
      * its deviation (as {@link #poseCoordinate}). No allocation.
      */
     public float azimuth(int c) {
-        return BendOutputs.azimuth(c, devX, devZ, leanX, leanZ);
+        return geometry.azimuth(c, devX[c], devZ[c]);
+    }
+
+    /**
+     * {@return the constants that map each component's deviation to its pose coordinate and azimuth}
+     * (immutable; the published frames compute their outputs through it)
+     */
+    public BendGeometry geometry() {
+        return geometry;
+    }
+
+    /**
+     * Copies the deviations D of components {@code first .. end-1} into {@code dest} as interleaved
+     * floats (X at {@code 2 c}, Z at {@code 2 c + 1}, absolute component indices), through
+     * {@code scratch} (the caller's own, at least 2 floats; longer is faster): the render states of a
+     * published frame. Any thread that owns the range (as {@link #animate}). No allocation.
+     */
+    public void copyDeviations(int first, int end, java.nio.FloatBuffer dest, float[] scratch) {
+        int block = scratch.length / 2;
+        float[] x = devX;
+        float[] z = devZ;
+        for (int b = first; b < end; b += block) {
+            int n = Math.min(block, end - b);
+            for (int i = 0; i < n; i++) {
+                scratch[2 * i] = x[b + i];
+                scratch[2 * i + 1] = z[b + i];
+            }
+            dest.put(2 * b, scratch, 0, 2 * n);
+        }
     }
 
     /** Kind of component c. */

@@ -83,8 +83,12 @@ final class BendOutputs {
      */
     static float poseCoordinate(int c, float[] devX, float[] devZ, float[] leanX, float[] leanZ, float[] lean,
                                 float[] len, float[] scale, float[] poseMax) {
-        float x = devX[c];
-        float z = devZ[c];
+        return poseCoordinate(c, devX[c], devZ[c], leanX, leanZ, lean, len, scale, poseMax);
+    }
+
+    /** {@link #poseCoordinate(int, float[], float[], float[], float[], float[], float[], float[], float[])} at D = (x, z). */
+    static float poseCoordinate(int c, float x, float z, float[] leanX, float[] leanZ, float[] lean, float[] len,
+                                float[] scale, float[] poseMax) {
         float tx = leanX[c] + x;
         float tz = leanZ[c] + z;
         float t = (float) Math.sqrt(tx * tx + tz * tz);
@@ -99,10 +103,15 @@ final class BendOutputs {
      * {@link #outputs}). Arrays as {@link #outputs}.
      */
     static float azimuth(int c, float[] devX, float[] devZ, float[] leanX, float[] leanZ) {
-        float tx = leanX[c] + devX[c];
-        float tz = leanZ[c] + devZ[c];
+        return azimuth(c, devX[c], devZ[c], leanX, leanZ);
+    }
+
+    /** {@link #azimuth(int, float[], float[], float[], float[])} at D = (x, z). */
+    static float azimuth(int c, float x, float z, float[] leanX, float[] leanZ) {
+        float tx = leanX[c] + x;
+        float tz = leanZ[c] + z;
         float t = (float) Math.sqrt(tx * tx + tz * tz);
-        return Trig.azimuth(leanZ[c] + devZ[c], Trig.azimuthArgument(leanZ[c] + devZ[c], leanX[c] + devX[c], t));
+        return Trig.azimuth(tz, Trig.azimuthArgument(tz, tx, t));
     }
 
     /**

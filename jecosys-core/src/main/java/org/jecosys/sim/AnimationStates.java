@@ -2,6 +2,7 @@ package org.jecosys.sim;
 
 import java.util.List;
 import org.jecosys.anim.AnimationState;
+import org.jecosys.anim.BendGeometry;
 import org.jecosys.anim.SpringKinds;
 import org.jecosys.plant.LodDef;
 import org.jecosys.math.Rng;
@@ -33,6 +34,44 @@ final class AnimationStates {
         return trail;
     }
 
+    /** Per component of {@code world} its kind in {@code kinds}. Build time; allocates. */
+    private static int[] kinds(World world, SpringKinds kinds, int[] first) {
+        List<SpeciesModel> species = world.plants().species();
+        int[] kind = new int[world.componentCount()];
+        for (int p = 0; p < world.plantCount(); p++) {
+            int sp = world.plantSpecies(p);
+            SpeciesModel sm = species.get(sp);
+            int v = world.plantVariant(p);
+            for (int s = 0; s < sm.slotCount(); s++) {
+                kind[first[p] + s] = kinds.kindOf(sp, sm.slotComponent(s), sm.slotVariant(s, v));
+            }
+        }
+        return kind;
+    }
+
+    /**
+     * The bend geometry of every component of {@code world} ({@link World#bendGeometry()}): its kind's
+     * lean, length and pose scale, its rest heading the plant's rest azimuth plus its slot's azimuth.
+     * Build time; allocates.
+     */
+    static BendGeometry geometry(World world) {
+        SpringKinds kinds = SpringKinds.of(world.plants().species());
+        int[] first = new int[world.plantCount() + 1];
+        for (int p = 0; p < world.plantCount(); p++) {
+            first[p] = world.firstComponent(p);
+        }
+        first[world.plantCount()] = world.componentCount();
+        List<SpeciesModel> species = world.plants().species();
+        float[] heading = new float[world.componentCount()];
+        for (int p = 0; p < world.plantCount(); p++) {
+            SpeciesModel sm = species.get(world.plantSpecies(p));
+            for (int s = 0; s < sm.slotCount(); s++) {
+                heading[first[p] + s] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
+            }
+        }
+        return BendGeometry.of(kinds, kinds(world, kinds, first), heading);
+    }
+
     /**
      * Builds the state of every component of {@code world} at rest, with the trails of its species
      * ({@code TrailDef}), each plant with its seeded response
@@ -57,8 +96,7 @@ final class AnimationStates {
         }
         int plants = world.plantCount();
         int[] sp = new int[plants];
-        int[] kind = new int[world.componentCount()];
-        float[] heading = new float[world.componentCount()];
+        int[] kind = kinds(world, kinds, first);
         byte[] response = new byte[plants];
         float[] compliance = new float[plants];
         for (int p = 0; p < plants; p++) {
@@ -70,15 +108,9 @@ final class AnimationStates {
                     : SpringKinds.NOMINAL_VARIANT);
             double u = (Rng.mix(h) >>> 11) * 0x1.0p-53 * 2 - 1;
             compliance[p] = (float) (1 / (1 + var.stiffness() * u));
-            int v = world.plantVariant(p);
-            for (int s = 0; s < sm.slotCount(); s++) {
-                int c = first[p] + s;
-                kind[c] = kinds.kindOf(sp[p], sm.slotComponent(s), sm.slotVariant(s, v));
-                heading[c] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
-            }
         }
-        AnimationState state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, heading, response,
-                compliance);
+        AnimationState state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, world.bendGeometry(),
+                response, compliance);
         double[] recovery = new double[species.size()];
         double[] flattenAt = new double[species.size()];
         for (int s = 0; s < species.size(); s++) {

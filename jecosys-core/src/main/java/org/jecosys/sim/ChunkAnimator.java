@@ -27,29 +27,22 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final boolean[] chunkAtRest;
     private final DrawDecision draw;
     private final FrustumIntersection[] frustum;
-    /*
-     * framePlantVersion[i][p]: the AnimationState.version of plant p whose outputs frame i holds (-1:
-     * none). A plant whose outputs in the back frame are current is not written at all; stale ones
-     * are copied from the frame published last (always complete and current) unless updated now.
-     * Each entry is touched only by the worker running that plant's chunk in a step.
-     */
-    private final long[][] framePlantVersion;
     /**
-     * framePackedVersion[i][p]: the version of plant p whose render states frame i holds (-1: none).
-     * Plants out of view keep their version, so their states are packed once per frame buffer, not
-     * every step, and stay current for any view that draws them.
+     * framePackedVersion[i][p]: the AnimationState.version of plant p whose deviations frame i holds
+     * (-1: none). Plants out of view keep their version, so their states are copied once per frame
+     * buffer, not every step, and stay current for any view that draws them. Each entry is touched
+     * only by the worker running that plant's chunk in a step.
      */
     private final long[][] framePackedVersion;
     private final Rng[] chunkRng;
     /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
     private final AnimationStep[] chunkStep;
-    /** Per worker, its scratch for packing render states ({@link Frame#packRenderStates}). */
+    /** Per worker, its scratch for copying render states ({@link AnimationState#copyDeviations}). */
     private final float[][] packScratch;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
     private Frame stepFrame;
-    private Frame stepBefore;
     private int stepFrameIndex;
     private int stepBuffer;
     private long stepNumber;
@@ -79,7 +72,6 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         int chunks = chunkFirstPlant.length - 1;
         chunkCount = new int[chunks];
         chunkAtRest = new boolean[chunks];
-        framePlantVersion = new long[3][plants];
         framePackedVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
@@ -128,14 +120,13 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * @param end   the simulation time at the end of this step, seconds
      * @param stamp whether to stamp every component of the frame with its number (tests)
      */
-    void prepare(AnimationMode mode, int buffer, Frame frame, int frameIndex, Frame before, long steps,
+    void prepare(AnimationMode mode, int buffer, Frame frame, int frameIndex, long steps,
                  double end, boolean stamp) {
         stepEnd = end;
         stepMode = mode;
         stepBuffer = buffer;
         stepFrame = frame;
         stepFrameIndex = frameIndex;
-        stepBefore = before;
         stepNumber = steps;
         this.stamp = stamp;
     }
@@ -161,45 +152,35 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         Frame f = stepFrame;
         int c0 = state.firstComponent(p0);
         int c1 = state.firstComponent(p1);
-        long[] written = framePlantVersion[stepFrameIndex];
         FieldSampler fs = sampler;
         AnimationStep in = chunkStep[chunk].set(m, windX[b], windZ[b], visible[b])
                 .views(fs.viewCount[b], fs.viewX[b], fs.viewY[b], fs.viewZ[b], fs.scale2[b], fs.fixed2[b])
                 .rng(chunkRng[chunk]).time(stepEnd)
                 .pushes(fs.pushX == null ? null : fs.pushX[b], fs.pushZ == null ? null : fs.pushZ[b]);
-        if (stamp) {
-            chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
-            float s = (float) ((stepNumber + 1) % 1_000_000);
-            java.util.Arrays.fill(f.poseCoord, c0, c1, s);
-            java.util.Arrays.fill(f.bendAzimuth, c0, c1, -s);
-            java.util.Arrays.fill(written, p0, p1, -1L);
-        } else if (reset) {
-            chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
-            state.copyOutputs(c0, c1, f.poseCoord, f.bendAzimuth);
-            for (int p = p0; p < p1; p++) {
-                written[p] = state.version(p);
-            }
-        } else {
-            // outputs straight into the back frame for the updated plants; of the others only
-            // those whose outputs there are stale, copied from the frame published last
-            Frame before = stepBefore;
-            chunkCount[chunk] = state.animate(p0, p1,
-                    in.outputs(f.poseCoord, f.bendAzimuth, before.poseCoord, before.bendAzimuth, written));
-        }
+        // the frame holds deviations only: poses and azimuths are computed from them where they are
+        // read (Frame.poseCoord, the renderer's resolve pass), so the step writes no per-component output
+        chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
-        packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset || stamp, stamp, packScratch[worker]);
+        if (stamp) {
+            float n = (float) ((stepNumber + 1) % 1_000_000);
+            for (int c = c0; c < c1; c++) {
+                f.setDeviation(c, n, -n);
+            }
+            java.util.Arrays.fill(framePackedVersion[stepFrameIndex], p0, p1, -1L);
+        } else {
+            packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset, packScratch[worker]);
+        }
         draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], f);
     }
 
     /**
-     * Packs the render states (the GPU's copy of pose and azimuth) of the chunk's plants whose outputs
-     * in this frame changed since the frame's last packing (every animated plant, and a plant seen
-     * last in another frame buffer), in runs of consecutive plants; of every plant when {@code all}.
-     * So every plant's render state is current in every published frame, whichever view draws it.
-     * No allocation.
+     * Copies the deviations (the render states) of the chunk's plants whose state changed since this
+     * frame buffer last received it (every animated plant, and a plant seen last in another frame
+     * buffer), in runs of consecutive plants; of every plant when {@code all}. So every plant's render
+     * state is current in every published frame, whichever view draws it. No allocation.
      */
-    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, boolean stamped, float[] scratch) {
+    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, float[] scratch) {
         int p = p0;
         while (p < p1) {
             if (!all && packed[p] == state.version(p)) {
@@ -208,10 +189,10 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
             }
             int start = p;
             while (p < p1 && (all || packed[p] != state.version(p))) {
-                packed[p] = stamped ? -1 : state.version(p);
+                packed[p] = state.version(p);
                 p++;
             }
-            f.packRenderStates(state.firstComponent(start), state.firstComponent(p), scratch);
+            state.copyDeviations(state.firstComponent(start), state.firstComponent(p), f.renderStates, scratch);
         }
     }
 }

@@ -3,29 +3,34 @@ package org.jecosys.sim;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
+import org.jecosys.anim.BendGeometry;
 import org.jecosys.field.ForceFieldDef;
+import org.jecosys.math.Require;
 
 /**
  * One complete, published frame of animation output (paper §4.2.2's "displacement angle" per
- * component), read by the renderer or a game. Per component: the continuous pose coordinate
- * {@code k + w} into its pose table (pose k blended toward k + 1 by w) and the bend azimuth, the
- * world heading of the component's bending plane: the pose table's local +X axis maps to world
- * (cos a, 0, sin a). With no wind a component shows pose 0 at its rest heading. Per plant: whether
- * it was on a visible node and the level of detail it was animated at.
+ * component), read by the renderer or a game. Per component the frame holds its deviation D (the
+ * horizontal offset of its tip from rest, world X and Z, metres: {@link #renderStates()}), and from
+ * it, through the world's {@link BendGeometry}, gives the continuous pose coordinate {@code k + w}
+ * into its pose table (pose k blended toward k + 1 by w) and the bend azimuth, the world heading of
+ * the component's bending plane: the pose table's local +X axis maps to world (cos a, 0, sin a). With
+ * no wind a component shows pose 0 at its rest heading. Per plant: whether it was on a visible node
+ * and the level of detail it was animated at.
  *
  * <p>Frames are written by the simulation's threads and published whole by triple buffering
  * ({@link FrameExchange}); a reader sees a frame only after it is complete, and the frame does not
  * change until that reader asks for the next one. Accessors allocate nothing.
  */
 public final class Frame {
-    /** Bytes per component of {@link #renderStates()}: the pose coordinate and the azimuth, two floats. */
+    /** Bytes per component of {@link #renderStates()}: the deviation D, X and Z, two floats. */
     public static final int RENDER_STATE_BYTES = 8;
 
-    final float[] poseCoord;
-    /** Per component, interleaved little-endian floats (pose coordinate, bend azimuth), for the GPU. */
-    private final FloatBuffer renderStates;
+    private final BendGeometry geometry;
+    /** Per component, interleaved little-endian floats (deviation X, Z, metres), for the GPU. */
+    final FloatBuffer renderStates;
     private final ByteBuffer renderStatesView;
-    final float[] bendAzimuth;
+    /** {@link #set}'s deviation, so that it allocates nothing. */
+    private final float[] posed = new float[2];
     final boolean[] plantVisible;
     final byte[] plantLevel;
     final byte[] drawLevel;
@@ -53,14 +58,16 @@ public final class Frame {
     private double lodReference = org.jecosys.math.ViewLod.referenceScale(ForceFieldDef.DEFAULT_LOD_FOV_Y);
 
     /**
-     * An empty frame sized for a world: every pose and azimuth 0, no plant visible. Allocates.
+     * An empty frame sized for a world: every component at rest (D = 0: pose 0 at its rest heading),
+     * no plant visible. Allocates.
      *
-     * @param plants     plants of the world, &gt;= 0
-     * @param components components of all plants, &gt;= 0
+     * @param plants   plants of the world, &gt;= 0
+     * @param geometry the bend geometry of the world's components ({@link World#bendGeometry()},
+     *                 {@code Simulation.bendGeometry()})
      */
-    public Frame(int plants, int components) {
-        poseCoord = new float[components];
-        bendAzimuth = new float[components];
+    public Frame(int plants, BendGeometry geometry) {
+        this.geometry = Require.nonNull("geometry", geometry);
+        int components = geometry.componentCount();
         ByteBuffer states = ByteBuffer.allocateDirect(Math.max(RENDER_STATE_BYTES, components * RENDER_STATE_BYTES))
                 .order(ByteOrder.LITTLE_ENDIAN);
         renderStates = states.asFloatBuffer();
@@ -84,7 +91,12 @@ public final class Frame {
 
     /** {@return the number of components} */
     public int componentCount() {
-        return poseCoord.length;
+        return geometry.componentCount();
+    }
+
+    /** {@return the bend geometry the frame computes its poses and azimuths with} */
+    public BendGeometry geometry() {
+        return geometry;
     }
 
     /** {@return the number of plants} */
@@ -93,21 +105,34 @@ public final class Frame {
     }
 
     /**
-     * {@return the continuous pose coordinate of component c, in [0, poses - 1]}
+     * {@return the continuous pose coordinate of component c, in [0, poses - 1]}, computed from its
+     * deviation ({@link BendGeometry#poseCoordinate}; the animation's own value bit for bit). No
+     * allocation.
      *
      * @param c component index, in [0, componentCount())
      */
     public float poseCoord(int c) {
-        return poseCoord[c];
+        return geometry.poseCoordinate(c, renderStates.get(2 * c), renderStates.get(2 * c + 1));
     }
 
     /**
-     * {@return the world heading a of component c's bending plane, radians: local +X goes to (cos a, 0, sin a)}
+     * {@return the world heading a of component c's bending plane, radians in [-pi, pi]: local +X goes
+     * to (cos a, 0, sin a)}, computed from its deviation ({@link BendGeometry#azimuth}). No allocation.
      *
      * @param c component index, in [0, componentCount())
      */
     public float bendAzimuth(int c) {
-        return bendAzimuth[c];
+        return geometry.azimuth(c, renderStates.get(2 * c), renderStates.get(2 * c + 1));
+    }
+
+    /** {@return component c's deviation D, X part, metres} */
+    public float deviationX(int c) {
+        return renderStates.get(2 * c);
+    }
+
+    /** {@return component c's deviation D, Z part, metres} */
+    public float deviationZ(int c) {
+        return renderStates.get(2 * c + 1);
     }
 
     /**
@@ -149,19 +174,30 @@ public final class Frame {
     }
 
     /**
-     * Sets component c's pose coordinate and bend azimuth. For tools and tests that build frames
-     * without the animation engine (for example a renderer preview); the simulation writes its frames
-     * itself. Only on a frame the caller owns (never one read through {@link FrameExchange}). No
-     * allocation.
+     * Poses component c at pose coordinate {@code poseCoord} and bend azimuth {@code azimuth}: sets
+     * the deviation that gives them ({@link BendGeometry#deviationFor}; read back, they agree to float
+     * rounding). For tools and tests that build frames without the animation engine (for example a
+     * renderer preview); the simulation writes its frames itself. Only on a frame the caller owns
+     * (never one read through {@link FrameExchange}); one thread. No allocation.
      *
      * @param c          component index
      * @param poseCoord  pose coordinate k + w, in [0, poses - 1] of the component's pose table
      * @param azimuth    world heading of the bending plane, radians
      */
     public void set(int c, float poseCoord, float azimuth) {
-        this.poseCoord[c] = poseCoord;
-        this.bendAzimuth[c] = azimuth;
-        renderStates.put(2 * c, poseCoord).put(2 * c + 1, azimuth);
+        geometry.deviationFor(c, poseCoord, azimuth, posed);
+        setDeviation(c, posed[0], posed[1]);
+    }
+
+    /**
+     * Sets component c's deviation D (metres, world X and Z), as {@link #set}. No allocation.
+     *
+     * @param c  component index
+     * @param dx deviation X, metres
+     * @param dz deviation Z, metres
+     */
+    public void setDeviation(int c, float dx, float dz) {
+        renderStates.put(2 * c, dx).put(2 * c + 1, dz);
     }
 
     /**
@@ -236,11 +272,11 @@ public final class Frame {
 
     /**
      * The compact render state of every component, {@link #RENDER_STATE_BYTES} bytes each, for upload
-     * to the GPU as it is: at byte {@code 8 c} the pose coordinate of component c and at {@code 8 c +
-     * 4} its bend azimuth (radians), little-endian floats. The simulation's workers write it as they
-     * animate: it is current for every plant, equal to {@link #poseCoord} and {@link #bendAzimuth}
-     * (a plant out of view keeps its last state), so a view other than the one the step followed can
-     * draw any plant. A read-only view, direct (off the Java heap); its position and limit are not
+     * to the GPU as it is: at byte {@code 8 c} the deviation X of component c and at {@code 8 c + 4}
+     * its deviation Z (metres), little-endian floats; a renderer maps them to pose and azimuth with the
+     * {@link BendGeometry} it uploaded once, as {@link #poseCoord} and {@link #bendAzimuth} do. The
+     * simulation's workers write it as they animate: it is current for every plant (a plant out of
+     * view keeps its last state), so a view other than the one the step followed can draw any plant. A read-only view, direct (off the Java heap); its position and limit are not
      * used. No allocation.
      *
      * @return the read-only view, {@code 8 * componentCount()} bytes
@@ -249,30 +285,8 @@ public final class Frame {
         return renderStatesView;
     }
 
-    /** Floats of a scratch array for {@link #packRenderStates}: two per component of a block. */
+    /** Floats of a scratch array for copying render states (two per component of a block). */
     static final int PACK_SCRATCH = 2 * 2048;
-
-    /**
-     * Writes the render states of components [c0, c1) from the pose and azimuth arrays: interleaved
-     * block by block into {@code scratch} (at least {@link #PACK_SCRATCH} floats, the caller's own),
-     * each block copied into the direct buffer at once (element-wise puts into a direct buffer cost
-     * a scope check each and are not vectorised). Worker threads, each on its own range and scratch;
-     * no allocation.
-     */
-    void packRenderStates(int c0, int c1, float[] scratch) {
-        FloatBuffer d = renderStates;
-        float[] pose = poseCoord;
-        float[] az = bendAzimuth;
-        int block = scratch.length / 2;
-        for (int b = c0; b < c1; b += block) {
-            int n = Math.min(block, c1 - b);
-            for (int i = 0; i < n; i++) {
-                scratch[2 * i] = pose[b + i];
-                scratch[2 * i + 1] = az[b + i];
-            }
-            d.put(2 * b, scratch, 0, 2 * n);
-        }
-    }
 
     /**
      * Records what the frame's decision was made with: the camera (its view-projection and eye), the
@@ -362,9 +376,7 @@ public final class Frame {
 
     /** Copies everything from {@code src}, which must have the same sizes. No allocation. */
     void copyFrom(Frame src) {
-        System.arraycopy(src.poseCoord, 0, poseCoord, 0, poseCoord.length);
-        System.arraycopy(src.bendAzimuth, 0, bendAzimuth, 0, bendAzimuth.length);
-        renderStates.put(0, src.renderStates, 0, 2 * poseCoord.length);
+        renderStates.put(0, src.renderStates, 0, 2 * componentCount());
         System.arraycopy(src.plantVisible, 0, plantVisible, 0, plantVisible.length);
         System.arraycopy(src.plantLevel, 0, plantLevel, 0, plantLevel.length);
         System.arraycopy(src.drawLevel, 0, drawLevel, 0, drawLevel.length);

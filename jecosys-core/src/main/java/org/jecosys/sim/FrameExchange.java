@@ -38,12 +38,12 @@ public final class FrameExchange {
     /**
      * Three empty frames sized for a world. Allocates.
      *
-     * @param plants     plants of the world, &gt;= 0
-     * @param components components of all plants, &gt;= 0
+     * @param plants   plants of the world, &gt;= 0
+     * @param geometry the bend geometry of its components ({@link Frame#Frame(int, org.jecosys.anim.BendGeometry)})
      */
-    public FrameExchange(int plants, int components) {
+    public FrameExchange(int plants, org.jecosys.anim.BendGeometry geometry) {
         for (int i = 0; i < 3; i++) {
-            frames[i] = new Frame(plants, components);
+            frames[i] = new Frame(plants, geometry);
         }
     }
 

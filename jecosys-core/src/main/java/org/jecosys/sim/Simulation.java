@@ -167,11 +167,9 @@ public final class Simulation implements AutoCloseable {
         sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals, def.field().lodFovY(),
                 trailPlants == null ? null : new FlatteningPushes(wind, state, xs, zs, trailPlants));
         settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
-        exchange = new FrameExchange(plants, comps);
+        exchange = new FrameExchange(plants, state.geometry());
         for (int i = 0; i < 3; i++) {
-            Frame f = exchange.frame(i);
-            state.copyOutputs(0, comps, f.poseCoord, f.bendAzimuth);
-            f.packRenderStates(0, comps, new float[Frame.PACK_SCRATCH]);
+            state.copyDeviations(0, comps, exchange.frame(i).renderStates, new float[Frame.PACK_SCRATCH]);
         }
         int[] speciesLevels = new int[world.plants().species().size()];
         for (int sp = 0; sp < speciesLevels.length; sp++) {
@@ -380,7 +378,7 @@ public final class Simulation implements AutoCloseable {
         Frame f = exchange.back();
         exchange.beginWrite();
         int b = current; // the buffer the workers animate from: the views sampled one step ago
-        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), exchange.lastPublished(), steps, time + fixedStep,
+        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), steps, time + fixedStep,
                 stampFrames);
         draw.prepare();
         long t0 = System.nanoTime();
@@ -515,7 +513,7 @@ public final class Simulation implements AutoCloseable {
      * step. Any thread; no allocation (copies every component: about 1 ms per million components).
      *
      * @param dest a frame of {@link #plantCount()} plants and {@link #componentCount()} components
-     *             ({@code new Frame(sim.plantCount(), sim.componentCount())}), owned by the caller
+     *             ({@code new Frame(sim.plantCount(), sim.bendGeometry())}), owned by the caller
      * @return {@code dest}
      * @throws IllegalArgumentException when {@code dest} is null or of other sizes
      */
@@ -788,6 +786,15 @@ public final class Simulation implements AutoCloseable {
     /** {@return the number of components} Any thread. */
     public int componentCount() {
         return world.componentCount();
+    }
+
+    /**
+     * {@return the bend geometry of the components (immutable): what maps the deviations a frame holds
+     * to pose coordinates and azimuths}, for {@link Frame#Frame(int, org.jecosys.anim.BendGeometry)}.
+     * Any thread; no allocation.
+     */
+    public org.jecosys.anim.BendGeometry bendGeometry() {
+        return state.geometry();
     }
 
     /**

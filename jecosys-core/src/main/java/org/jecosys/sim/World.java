@@ -43,6 +43,8 @@ public final class World {
 
     /** World plant p is plant order[p] of the layout. */
     private final int[] order;
+    /** {@link #bendGeometry()}, once built. */
+    private volatile org.jecosys.anim.BendGeometry bendGeometry;
     private long terrainNanos;
     private long distributionNanos;
 
@@ -298,6 +300,25 @@ public final class World {
     /** {@return the number of components of all plants} */
     public int componentCount() {
         return componentPlant.length;
+    }
+
+    /**
+     * {@return the bend geometry of every component (immutable; built on the first call, then the same
+     * object)}: what maps a component's deviation to its pose coordinate and azimuth, for the frames of
+     * a simulation of this world and for renderers. Any thread; allocates on the first call only.
+     */
+    public org.jecosys.anim.BendGeometry bendGeometry() {
+        org.jecosys.anim.BendGeometry g = bendGeometry;
+        if (g == null) {
+            synchronized (this) {
+                g = bendGeometry;
+                if (g == null) {
+                    g = AnimationStates.geometry(this);
+                    bendGeometry = g;
+                }
+            }
+        }
+        return g;
     }
 
     /**

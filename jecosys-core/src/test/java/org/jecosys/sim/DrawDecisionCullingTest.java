@@ -20,7 +20,7 @@ class DrawDecisionCullingTest {
     void aPlantIsCulledOnlyWhenItsSphereIsOutside() throws Exception {
         World world = SimFixtures.world();
         DrawDecision decision = DrawDecision.of(world);
-        Frame frame = new Frame(world.plantCount(), world.componentCount());
+        Frame frame = new Frame(world.plantCount(), world.bendGeometry());
         Matrix4f vp = new Matrix4f();
         Vector4f plane = new Vector4f();
         int culled = 0;

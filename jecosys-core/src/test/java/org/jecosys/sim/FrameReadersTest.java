@@ -64,7 +64,7 @@ class FrameReadersTest {
             List<Thread> readers = new ArrayList<>();
             for (int t = 0; t <= COPIERS; t++) {
                 boolean primary = t == 0;
-                Frame own = new Frame(sim.plantCount(), sim.componentCount());
+                Frame own = new Frame(sim.plantCount(), sim.bendGeometry());
                 Thread r = new Thread(() -> {
                     long last = 0;
                     while (!done.get() && problem.get() == null) {
@@ -80,9 +80,9 @@ class FrameReadersTest {
                         }
                         float s = (float) (n % 1_000_000);
                         for (int c = 0; c < f.componentCount(); c++) {
-                            if (f.poseCoord(c) != s || f.bendAzimuth(c) != -s) {
+                            if (f.deviationX(c) != s || f.deviationZ(c) != -s) {
                                 problem.compareAndSet(null, Thread.currentThread().getName() + ": frame " + n
-                                        + " component " + c + " holds " + f.poseCoord(c) + ", " + f.bendAzimuth(c));
+                                        + " component " + c + " holds " + f.deviationX(c) + ", " + f.deviationZ(c));
                                 break;
                             }
                         }
@@ -113,8 +113,8 @@ class FrameReadersTest {
     void aCopyNeedsAFrameOfTheSimulationsSizes() throws Exception {
         try (Simulation sim = SimFixtures.c1(1)) {
             assertThrows(IllegalArgumentException.class, () -> sim.copyLatestFrame(null));
-            assertThrows(IllegalArgumentException.class, () -> sim.copyLatestFrame(new Frame(1, 1)));
-            Frame own = new Frame(sim.plantCount(), sim.componentCount());
+            assertThrows(IllegalArgumentException.class, () -> sim.copyLatestFrame(new Frame(1, sim.bendGeometry())));
+            Frame own = new Frame(sim.plantCount(), sim.bendGeometry());
             sim.stepFixed(SimFixtures.camera());
             assertSame(own, sim.copyLatestFrame(own));
             assertEquals(1, own.number());

@@ -15,7 +15,7 @@ class FramesTest {
     @Test
     void aConcurrentReaderSeesOnlyCompleteFramesInOrder() throws Exception {
         try (Simulation sim = SimFixtures.c1(2)) {
-            sim.stampFrames = true; // every component of frame n carries n (pose) and -n (azimuth)
+            sim.stampFrames = true; // every component of frame n carries D = (n, -n)
             AtomicBoolean done = new AtomicBoolean();
             AtomicReference<String> problem = new AtomicReference<>();
             AtomicLong checked = new AtomicLong();
@@ -33,9 +33,9 @@ class FramesTest {
                     }
                     float s = (float) (n % 1_000_000);
                     for (int c = 0; c < f.componentCount(); c++) {
-                        if (f.poseCoord(c) != s || f.bendAzimuth(c) != -s) {
-                            problem.set("frame " + n + " component " + c + " holds " + f.poseCoord(c) + ", "
-                                    + f.bendAzimuth(c));
+                        if (f.deviationX(c) != s || f.deviationZ(c) != -s) {
+                            problem.set("frame " + n + " component " + c + " holds " + f.deviationX(c) + ", "
+                                    + f.deviationZ(c));
                             break;
                         }
                     }
@@ -118,12 +118,37 @@ class FramesTest {
                 for (int p = 0; p < f.plantCount(); p++) {
                     culledChecked += f.plantVisible(p) ? 0 : 1;
                     for (int c = sim.state().firstComponent(p); c < sim.state().firstComponent(p + 1); c++) {
+                        assertEquals(sim.state().deviationX(c), f.deviationX(c), "step " + i + " component " + c);
+                        assertEquals(sim.state().deviationZ(c), f.deviationZ(c), "step " + i + " component " + c);
+                        assertEquals(sim.state().deviationX(c), f.renderStates().getFloat(8 * c));
+                        assertEquals(sim.state().deviationZ(c), f.renderStates().getFloat(8 * c + 4));
                         assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c), "step " + i + " component " + c);
                         assertEquals(sim.state().azimuth(c), f.bendAzimuth(c), "step " + i + " component " + c);
                     }
                 }
             }
             assertTrue(culledChecked > 0);
+        }
+    }
+
+    /** A frame posed by hand ({@link Frame#set}) reads back the pose and azimuth it was given, to float rounding. */
+    @Test
+    void aFramePosedByHandReadsBackItsPosesAndAzimuths() throws Exception {
+        try (Simulation sim = SimFixtures.c1(1)) {
+            Frame f = new Frame(sim.plantCount(), sim.bendGeometry());
+            java.util.Random rnd = new java.util.Random(7);
+            for (int c = 0; c < f.componentCount(); c++) {
+                assertEquals(0f, f.poseCoord(c));
+                float max = f.geometry().poseMax(c);
+                float pose = (float) (rnd.nextDouble() * max);
+                float az = (float) rnd.nextDouble(-Math.PI, Math.PI);
+                f.set(c, pose, az);
+                assertEquals(pose, f.poseCoord(c), 2e-3 * Math.max(1, max), "component " + c);
+                if (pose > 0.05) { // at pose 0 the azimuth is the rest heading's, not the one given
+                    double turn = Math.IEEEremainder(f.bendAzimuth(c) - az, 2 * Math.PI);
+                    assertEquals(0, turn, 1e-4, "component " + c);
+                }
+            }
         }
     }
 }

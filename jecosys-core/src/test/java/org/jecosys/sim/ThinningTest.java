@@ -44,7 +44,7 @@ class ThinningTest {
     }
 
     static Frame decide(DrawDecision dd, ViewCamera cam) {
-        return dd.decideAll(cam, new Frame(world.plantCount(), world.componentCount()));
+        return dd.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry()));
     }
 
     static double distance(int p, ViewCamera cam) {
@@ -164,7 +164,7 @@ class ThinningTest {
                 for (int k = 0; k < 30; k++) {
                     sim.step(1.0 / 60 + 1e-9, camera(0.01 * k));
                 }
-                frames[i] = sim.copyLatestFrame(new Frame(w.plantCount(), w.componentCount()));
+                frames[i] = sim.copyLatestFrame(new Frame(w.plantCount(), w.bendGeometry()));
                 int far = 0;
                 int farDrawn = 0;
                 for (int p = 0; p < w.plantCount(); p++) {

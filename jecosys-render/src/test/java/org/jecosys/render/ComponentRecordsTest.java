@@ -57,7 +57,7 @@ abstract class ComponentRecordsTest {
         poseTexel = new int[models.size()][][];
         PlantRenderer.poseTexelLayout(models, poseTexel); // the pose buffer's layout as the renderer uploads it
         // a frame with every component bent somewhere, some pose coordinates outside the table on purpose
-        frame = new Frame(world.plantCount(), world.componentCount());
+        frame = new Frame(world.plantCount(), world.bendGeometry());
         SplittableRandom rnd = new SplittableRandom(7);
         for (int c = 0; c < world.componentCount(); c++) {
             float coord = (float) rnd.nextDouble(-1, 17); // C1's tables have 16 poses

@@ -199,7 +199,7 @@ class ManyViewsTest {
             // a frame recorded by a simulation of C1: its LOD edges and lens (<field lodFovY="50">)
             try (Simulation sim = simulation()) {
                 sim.stepFixed(looking(false));
-                decided = new Frame(world.plantCount(), world.componentCount());
+                decided = new Frame(world.plantCount(), world.bendGeometry());
                 sim.copyLatestFrame(decided);
             }
             decision = new ViewDecision(world);

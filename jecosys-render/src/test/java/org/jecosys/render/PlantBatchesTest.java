@@ -39,7 +39,7 @@ class PlantBatchesTest {
     private void update(PlantBatches b, double band, ViewCamera cam) {
         DrawDecision d = DrawDecision.of(world);
         d.setTransition(band);
-        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.componentCount())));
+        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
     }
 
     private static int levelsHolding(PlantBatches b, int s, int plant, boolean[] at) {
@@ -171,7 +171,7 @@ class PlantBatchesTest {
         ViewCamera cam = looking(0, 1.7, 14, 0);
         DrawDecision d = DrawDecision.of(world);
         d.setTransition(2.0);
-        Frame f = d.decideAll(cam, new Frame(world.plantCount(), world.componentCount()));
+        Frame f = d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry()));
         b.update(f);
         int banded = 0;
         int whole = 0;
@@ -214,7 +214,7 @@ class PlantBatchesTest {
         assertTrue(banded > 4 && whole > 4, "both kinds present: " + whole + " whole, " + banded + " banded");
         // a second frame with no band: every plant whole again, the lists refilled from scratch
         d.setTransition(0);
-        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.componentCount())));
+        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
         for (int li = 0; li < b.listCount(); li++) {
             assertEquals(b.count(li), b.whole(li), "no band, list " + li);
         }

@@ -226,7 +226,7 @@ class RenderC1Test {
         assertEquals(tri + renderer.terrain().triangles(), renderer.triangles());
         assertEquals(lines, renderer.lines());
         // the far tuft's lines reach the image: it differs from the same view without plants
-        render(new Frame(world.plantCount(), world.componentCount()), cam, other);
+        render(new Frame(world.plantCount(), world.bendGeometry()), cam, other);
         assertTrue(differing(px, other, W * H) > 0);
     }
 

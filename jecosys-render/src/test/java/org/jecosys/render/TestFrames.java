@@ -15,7 +15,7 @@ public final class TestFrames {
 
     /** Every component at pose 0 and its rest heading: the plant's rest azimuth plus its slot's. */
     public static Frame rest(World world) {
-        Frame f = new Frame(world.plantCount(), world.componentCount());
+        Frame f = new Frame(world.plantCount(), world.bendGeometry());
         for (int p = 0; p < world.plantCount(); p++) {
             SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
             for (int s = 0; s < world.componentsOf(p); s++) {
@@ -27,7 +27,7 @@ public final class TestFrames {
 
     /** A travelling breeze along +X at time t (seconds): bend toward +X by a wave over x. */
     public static Frame wind(World world, double t) {
-        Frame f = new Frame(world.plantCount(), world.componentCount());
+        Frame f = new Frame(world.plantCount(), world.bendGeometry());
         for (int p = 0; p < world.plantCount(); p++) {
             SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
             double wave = 0.5 + 0.5 * Math.sin(1.7 * t - 0.6 * world.plantX(p) + 0.3 * world.plantZ(p));

@@ -122,12 +122,13 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class GlStateGuard implements AutoCloseable {
     /**
-     * The texture units whose bindings the renderers change: 0 to 7 (poses, component records or
+     * The texture units whose bindings the renderers change: 0 to 8 (poses, component records or
      * instances, render states, static data, links, the components' looks, the species slots' looks,
-     * the compute resolve pass's list table; the terrain's occlusion and cover map is the 2D texture of
-     * {@link #UNIT_2D}, the ground cover's grain that of {@link #UNIT_GRAIN}).
+     * the compute resolve pass's list table, the components' bend geometry; the terrain's occlusion and
+     * cover map is the 2D texture of {@link #UNIT_2D}, the ground cover's grain that of
+     * {@link #UNIT_GRAIN}).
      */
-    public static final int UNITS = 8;
+    public static final int UNITS = 9;
 
     /** Draw buffers whose colour masks are saved: every one OpenGL 3.3 guarantees. */
     public static final int DRAW_BUFFERS = 8;

@@ -74,6 +74,8 @@ public final class ComponentResolver implements AutoCloseable {
     private final GlBufferTexture componentTexture;
     private final GlBuffer staticBuffer;
     private final GlBufferTexture staticTexture;
+    private final GlBuffer bendBuffer;
+    private final GlBufferTexture bendTexture;
     private final GlBuffer linkBuffer;
     private final GlBufferTexture linkTexture;
     private final GlBuffer dynamicBuffer;
@@ -99,6 +101,8 @@ public final class ComponentResolver implements AutoCloseable {
     private static final int GROUP = 64;
     /** Most invocations in one dispatch: 65535 groups, the least every 4.3 context allows. */
     private static final int MAX_DISPATCH = GROUP * 65535;
+    /** The texture unit of the components' bend geometry during the resolve pass. */
+    public static final int BEND_UNIT = 8;
     /** The texture unit of the species slots' looks (colour, vertex kind) during the resolve pass. */
     public static final int SLOT_LOOK_UNIT = 6;
     /** The texture unit of the components' baked looks during the resolve pass. */
@@ -150,6 +154,8 @@ public final class ComponentResolver implements AutoCloseable {
             componentTexture = own(new GlBufferTexture(t, componentBuffer, GL_RGBA32F));
             staticBuffer = own(PlantMeshes.uploadStatic(t, world, poseTexel));
             staticTexture = own(new GlBufferTexture(t, staticBuffer, GL_RGBA32F));
+            bendBuffer = own(PlantMeshes.uploadBend(t, world.bendGeometry()));
+            bendTexture = own(new GlBufferTexture(t, bendBuffer, GL_RGBA32F));
             linkBuffer = own(PlantMeshes.uploadLinks(t, world));
             linkTexture = own(new GlBufferTexture(t, linkBuffer, GL_RGBA32I));
             dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
@@ -241,6 +247,7 @@ public final class ComponentResolver implements AutoCloseable {
             glUniform1i(p.uniform("uDynamic"), 2);
             glUniform1i(p.uniform("uStatic"), 3);
             glUniform1i(p.optionalUniform("uLinks"), 4);
+            glUniform1i(p.uniform("uBend"), BEND_UNIT);
             glUniform1i(p.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
             glUniform1i(p.uniform("uLooks"), LOOK_UNIT);
             glUniform1i(p.optionalUniform("uLists"), LIST_UNIT);
@@ -301,6 +308,7 @@ public final class ComponentResolver implements AutoCloseable {
         dynamicTexture.bind(2);
         staticTexture.bind(3);
         linkTexture.bind(4);
+        bendTexture.bind(BEND_UNIT);
         slotLookTexture.bind(SLOT_LOOK_UNIT);
         lookTexture.bind(LOOK_UNIT);
         detach();

@@ -11,6 +11,7 @@ import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
+import org.jecosys.anim.BendGeometry;
 import java.util.List;
 import org.jecosys.math.Rgb;
 import org.jecosys.plant.ComponentDef;
@@ -236,6 +237,26 @@ public final class PlantMeshes {
                     }
                     b.put(o + 3, poseTexel[s][m.slotComponent(slot)][m.slotVariant(slot, v)]);
                 }
+            }
+            b.position(0).limit(4 * n);
+            return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree((java.nio.Buffer) b);
+        }
+    }
+
+    /**
+     * The bend geometry for the resolve pass, one RGBA32F texel per component: its rest lean (world X,
+     * Z, metres), its length (metres) and its pose scale ({@link BendGeometry}), with which the pass
+     * turns the frame's deviations into pose coordinates and azimuths.
+     */
+    public static GlBuffer uploadBend(GlTracker t, BendGeometry g) {
+        int n = Math.max(1, g.componentCount());
+        FloatBuffer b = MemoryUtil.memAllocFloat(4 * n);
+        try {
+            for (int c = 0; c < g.componentCount(); c++) {
+                b.put(4 * c, g.leanX(c)).put(4 * c + 1, g.leanZ(c)).put(4 * c + 2, g.length(c))
+                        .put(4 * c + 3, g.poseScale(c));
             }
             b.position(0).limit(4 * n);
             return GlBuffer.of(t, GL_TEXTURE_BUFFER, b, GL_STATIC_DRAW);

@@ -4,10 +4,11 @@
 // drawn component, the record stored into a shader storage buffer). Either way the records are what
 // plant.vert and plant_line.vert read (3 RGBA32F texels per drawn component, in draw-list order).
 // Inputs: the instance records of this frame (first component of the drawn plant and its level's
-// dither window), the compact animated state of every component (8 bytes: pose coordinate and bend
-// azimuth, two floats, as the simulation's workers wrote them), and static per-component data
-// uploaded once (the base of a root component, the pose texel of its table, its parent, stride, tip
-// and pose count). The base of an attached component is its parent's animated tip, which follows its
+// dither window), the compact animated state of every component (8 bytes: its deviation D, world X
+// and Z, two floats, as the simulation's workers wrote them), and static per-component data uploaded
+// once (the base of a root component, the pose texel of its table, its parent, stride, tip and pose
+// count; its bend geometry: rest lean, length and pose scale). D becomes pose coordinate and azimuth
+// here as the CPU's BendGeometry makes them (see "Bend" in AnimationState), to float rounding. The base of an attached component is its parent's animated tip, which follows its
 // own parent, up to 4 deep; the variant compiled without ATTACHED, for species whose components all
 // stand on the ground (most grasses), leaves that walk out.
 //
@@ -19,7 +20,8 @@
 // colour lit once at its middle point, its thinning widening, 1 / its distance, a pixel's size there.
 
 uniform isamplerBuffer uInstances;               // RG32I: first component, dither window
-uniform samplerBuffer uDynamic;                  // RG32F: pose coordinate, bend azimuth (radians)
+uniform samplerBuffer uDynamic;                  // RG32F: deviation D (X, Z), metres
+uniform samplerBuffer uBend;                     // RGBA32F: rest lean L (X, Z), metres; length, metres; pose scale
 uniform samplerBuffer uStatic;                   // RGBA32F: root base xyz (world), texel of pose 0
 uniform isamplerBuffer uLinks;                   // RGBA32I: parent component or -1, texels per pose, tip, poses
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
@@ -51,15 +53,34 @@ struct Pose {
     float bend;                                  // pose coordinate over the last pose: 0 rest, 1 most bent
 };
 
+// atan(x) for x in [-1, 1]: the CPU's polynomial (Trig.atanUnit, Abramowitz and Stegun 4.4.49), so the
+// pose coordinate does not depend on the driver's asin, whose error reaches 1e-4 rad on some (llvmpipe)
+float atanUnit(float x) {
+    float z = x * x;
+    return x * (1.0 + z * (-0.3333314528 + z * (0.1999355085 + z * (-0.1420889944 + z * (0.1065626393
+            + z * (-0.0752896400 + z * (0.0429096138 + z * (-0.0161657367 + z * 0.0028662257))))))));
+}
+
 Pose pose(int component, ivec4 link, float texel0) {
     vec2 d = texelFetch(uDynamic, component).xy;
-    float coord = clamp(d.x, 0.0, float(link.w - 1));
+    vec4 g = texelFetch(uBend, component);
+    // the tip moves from L to T = L + D: the azimuth is T's direction ((0, 1) for T = 0, as on the
+    // CPU); the extra tip offset |T| - |L| times (|T| + |L|) is num = 2 L.D + |D|^2 (no cancellation),
+    // and the extra bend asin(e / length) = atan2(num, sqrt(dd^2 - num^2)) with dd = (|T| + |L|) length,
+    // as pi/4 + atan((num - den) / (num + den)); the pose scale maps it to the pose coordinate
+    vec2 t = g.xy + d;
+    float r = length(t);
+    float num = max(0.0, 2.0 * dot(g.xy, d) + dot(d, d));
+    float dd = (r + length(g.xy)) * g.z;
+    float den = sqrt(max(0.0, (dd - num) * (dd + num)));
+    float bend = 0.7853981634 + atanUnit((num - den) / max(num + den, 1e-30));
+    float coord = clamp(bend * g.w, 0.0, float(link.w - 1));
     int k = min(int(coord), link.w - 2);
     Pose p;
     p.texel = int(texel0 + 0.5) + k * link.y;
     p.w = coord - float(k);
-    p.c = cos(d.y);
-    p.s = sin(d.y);
+    p.c = r > 0.0 ? t.x / r : 0.0;
+    p.s = r > 0.0 ? t.y / r : 1.0;
     p.bend = coord / float(max(link.w - 1, 1));
     return p;
 }
