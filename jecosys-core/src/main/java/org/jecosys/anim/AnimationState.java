@@ -7,8 +7,7 @@ import org.jecosys.math.Require;
  * structure of arrays, no object per component or plant), and its updater. Per component:
  * deviation D and velocity v (2D, ground plane,
  * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
- * function of D and the component's constants, written by {@link #animate} into the caller's arrays
- * (the simulation's back frame) and computed on demand by the accessors. Per plant: the force input
+ * function of D and the component's constants ({@link BendGeometry}), computed on demand. Per plant: the force input
  * of the last update, the level of detail, its response variant and compliance (the seeded
  * variation of response time and stiffness between plants, {@link SpringKinds}), and whether its
  * state follows the wind (see "Start"). Sized at construction; nothing grows.
@@ -51,13 +50,11 @@ import org.jecosys.math.Require;
  * ({@link SpringKinds#springClass}: the shape variants of one component type share them, so a 25-leaf
  * tuft is one run) and the same level-of-detail mask. The components of a run are driven by the same
  * force from the same start, so they share one D and one v, kept once per run: {@link #animate}
- * advances each drawn run of a plant once (the per-component update's arithmetic, hence its bits),
- * then computes the outputs, which differ per component through its rest lean and shape, in
- * branch-free loops over blocks of contiguous components that C2 vectorises ({@link BendOutputs}). A
- * range may also cover components that were not advanced (a short gap of invisible plants, components
- * outside the level of detail): their outputs are recomputed from their unchanged D and come out
- * bit-identical; components outside every range copy their outputs from the caller's previous ones.
- * RANDOM mode gives each component its own deviation, kept per component ({@link ScatteredState})
+ * advances each drawn run of a plant once (the per-component update's arithmetic, hence its bits)
+ * and writes the run's D to each of its components. The outputs, which differ per component through
+ * its rest lean and shape, are not part of the step: they are computed where they are read, from D
+ * ({@link BendGeometry}; {@link #copyOutputs} for many at once, in branch-free loops that C2
+ * vectorises, {@link BendOutputs}; a renderer on the GPU). RANDOM mode gives each component its own deviation, kept per component ({@link ScatteredState})
  * until the plant settles again.
  *
  * <h2>Threads</h2>
@@ -150,9 +147,22 @@ public final class AnimationState implements AnimationView {
     /**
      * As {@link #AnimationState(SpringKinds, double[][], int[], int[], float[], float[], float[], int[],
      * float[], byte[], float[])}, with the components' bend geometry built already (from the same kinds
-     * and their rest headings) and shared, not copied. Build time; allocates.
+     * and their rest headings, {@link BendGeometry#of}) and shared, not copied. Build time; allocates.
      *
-     * @param geometry the bend geometry of the components, one entry per component
+     * @param kinds          the component kinds
+     * @param lodEdges       per species, the ascending distances (metres) where its levels of detail end,
+     *                       the last (unbounded) level left out
+     * @param plantSpecies   per plant, its species index into {@code lodEdges}
+     * @param firstComponent per plant its first component, plus the total at the end (length plants + 1)
+     * @param plantX         per plant X, metres
+     * @param plantY         per plant base height, metres
+     * @param plantZ         per plant Z, metres
+     * @param componentKind  per component its kind
+     * @param geometry       the bend geometry of the components, one entry per component
+     * @param response       per plant its response variant, or null (as the other constructor)
+     * @param compliance     per plant the factor on its equilibrium deviation, or null (as the other
+     *                       constructor)
+     * @throws IllegalArgumentException when an array has the wrong length or a value is out of range
      */
     public AnimationState(SpringKinds kinds, double[][] lodEdges, int[] plantSpecies, int[] firstComponent,
                           float[] plantX, float[] plantY, float[] plantZ, int[] componentKind, BendGeometry geometry,
@@ -389,8 +399,7 @@ public final class AnimationState implements AnimationView {
 
     /**
      * Advances plants {@code first .. end-1} by one step of the length last given to
-     * {@link SpringKinds#prepare} (paper §4.2.2) and, if {@code step} has output arrays, writes the
-     * outputs of all their components. Only plants with {@code visible[p]} are updated (the others
+     * {@link SpringKinds#prepare} (paper §4.2.2). Only plants with {@code visible[p]} are updated (the others
      * keep their last state), and of those only the components that their level of detail draws.
      * The level of every plant in the range is recomputed from the eye.
      *
@@ -403,26 +412,16 @@ public final class AnimationState implements AnimationView {
      * <li>STATIC: nothing moves (see {@link #resetToRest}).</li>
      * </ul>
      *
-     * <p>Outputs ({@link AnimationStep#outputs}): for every component c of the range,
-     * {@code poseOut[c]} and {@code azimuthOut[c]} receive its pose coordinate and azimuth
-     * ({@link #poseCoordinate}, {@link #azimuth}), bit for bit. They are computed for the updated
-     * plants (and short gaps between them); the other components' D did not change, so their outputs
-     * are copied from {@code poseBefore} and {@code azimuthBefore}, which must hold the outputs of the
-     * state before this call (for example the frame published last), but only for plants whose
-     * outputs in {@code poseOut} are stale: {@code outVersion[p]} says which {@link #version} of plant
-     * p the output arrays hold, and is brought up to date here. Without output arrays
-     * ({@link AnimationStep#noOutputs}) no output is written: the outputs are a function of D (see
-     * {@link #poseCoordinate}, {@link #copyOutputs}). No allocation.
+     * <p>Each plant updated gets a new {@link #version}. The outputs (pose coordinate and azimuth) are
+     * a function of D: {@link #poseCoordinate}, {@link #azimuth}, {@link #copyOutputs}, or a frame's
+     * {@link BendGeometry}. No allocation.
      *
      * @param first first plant of the range
      * @param end   end of the range (exclusive)
-     * @param step  the step's inputs; also holds this call's bookkeeping, so it must not be given to
-     *              another call running at the same time
+     * @param step  the step's inputs (read only)
      * @return components updated
      */
     public int animate(int first, int end, AnimationStep step) {
-        final boolean out = step.hasOutputs();
-        final StepCursor cursor = step.cursor;
         final AnimationMode mode = step.mode;
         final boolean[] visible = step.visible;
         final double eyeX = step.eyeX;
@@ -432,7 +431,6 @@ public final class AnimationState implements AnimationView {
         // one view (or only the eye): its level-of-detail metric once, not per plant
         final double scale2 = views == 0 ? 1 : step.viewScale2[0];
         final double fixed2 = views == 0 ? -1 : step.viewFixed2[0];
-        cursor.begin(first);
         int updated = 0;
         for (int p = first; p < end; p++) {
             int l = views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
@@ -454,12 +452,6 @@ public final class AnimationState implements AnimationView {
                 updated += trails != null && trails.on(p) ? flattenedRuns(p, bit, step)
                         : springRuns(p, bit, step.windX[p], step.windZ[p], 0, 0, 0, 0);
             }
-            if (out) {
-                cursor.queueOutputs(this, step, p, c0, c1);
-            }
-        }
-        if (out) {
-            cursor.finishOutputs(this, step, end);
         }
         return updated;
     }
@@ -537,27 +529,6 @@ public final class AnimationState implements AnimationView {
             tr.push(p, step.time, finiteWind(step.pushX[p]), finiteWind(step.pushZ[p]), runs);
         }
         return springRuns(p, bit, ux, uz, l0x, l0z, tr.nowX[p], tr.nowZ[p]);
-    }
-
-    /**
-     * Brings the stale outputs of plants [done, p0) up to date from before, computes the outputs of
-     * plant p0's first component to component c1 (a plant boundary); returns the plant that starts at
-     * c1. The output arrays are the step's.
-     */
-    int writeOutputs(int done, int p0, int c1, AnimationStep step) {
-        copyStale(done, p0, step);
-        outputs(firstComponent[p0], c1, step.poseOut, step.azimuthOut);
-        int p = p0;
-        for (; p < plants && firstComponent[p] < c1; p++) {
-            step.outVersion[p] = plantVersion[p];
-        }
-        return p;
-    }
-
-    /** Copies the outputs of plants [p0, p1) whose outVersion is stale from before (runs of them at once). */
-    void copyStale(int p0, int p1, AnimationStep step) {
-        BendOutputs.copyStale(p0, p1, firstComponent, plantVersion, step.poseOut, step.azimuthOut, step.poseBefore,
-                step.azimuthBefore, step.outVersion);
     }
 
     /**
@@ -643,6 +614,11 @@ public final class AnimationState implements AnimationView {
      * floats (X at {@code 2 c}, Z at {@code 2 c + 1}, absolute component indices), through
      * {@code scratch} (the caller's own, at least 2 floats; longer is faster): the render states of a
      * published frame. Any thread that owns the range (as {@link #animate}). No allocation.
+     *
+     * @param first   first component
+     * @param end     end of the range (exclusive)
+     * @param dest    receives the deviations, metres ({@code 2 * end} floats at least)
+     * @param scratch the caller's own scratch
      */
     public void copyDeviations(int first, int end, java.nio.FloatBuffer dest, float[] scratch) {
         int block = scratch.length / 2;

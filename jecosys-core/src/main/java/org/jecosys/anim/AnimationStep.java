@@ -5,17 +5,16 @@ import org.jecosys.math.Rng;
 
 /**
  * The per-step inputs of {@link AnimationState#animate(int, int, AnimationStep)}: the mode, the
- * per-plant wind and visibility, the eye, the random source and, optionally, the output arrays. A
+ * per-plant wind and visibility, the eyes of its views and the random source. A
  * reusable holder: create one at build time for each range of plants that may be animated while
  * another is (for example one per chunk), then refill it before each call with its setters, which
  * return it for chaining and allocate nothing. Arrays are referenced, not copied, and read during
  * the call only.
  *
- * <p>The holder also keeps the bookkeeping of the call it is given to, which is how that call
- * allocates nothing: one holder must not be given to two calls that run at the same time. Fill it
- * on the thread that calls {@code animate}, or publish it to that thread (as the worker pool's start
- * does). A new holder is in CONSTRAINT mode with the eye at the origin, no random source and no
- * outputs; wind and visibility must be set before use.
+ * <p>One holder must not be refilled while a call reads it. Fill it on the thread that calls
+ * {@code animate}, or publish it to that thread (as the worker pool's start does). A new holder is in
+ * CONSTRAINT mode with the eye at the origin and no random source; wind and visibility must be set
+ * before use.
  */
 public final class AnimationStep {
     AnimationMode mode = AnimationMode.CONSTRAINT;
@@ -36,20 +35,13 @@ public final class AnimationStep {
     double time;
     float[] pushX;
     float[] pushZ;
-    float[] poseOut;
-    float[] azimuthOut;
-    float[] poseBefore;
-    float[] azimuthBefore;
-    long[] outVersion;
-    /** The bookkeeping of the call this holder is given to (allocated here, once). */
-    final StepCursor cursor = new StepCursor();
 
     /** An empty holder (see the class comment). Build time; allocates. */
     public AnimationStep() {
     }
 
     /**
-     * A new holder with these inputs, the eye at the origin, no random source and no outputs: for
+     * A new holder with these inputs, the eye at the origin and no random source: for
      * tests and one-off calls. Allocates.
      *
      * @param mode    CONSTRAINT, RANDOM or STATIC
@@ -163,47 +155,5 @@ public final class AnimationStep {
     public AnimationStep rng(Rng rng) {
         this.rng = rng;
         return this;
-    }
-
-    /**
-     * Makes the call write the outputs of every component of its range (see
-     * {@link AnimationState#animate(int, int, AnimationStep)}): give all five arrays or none (the
-     * call throws IllegalArgumentException otherwise). No allocation.
-     *
-     * @param poseOut       per component, receives the pose coordinate (indexed by component)
-     * @param azimuthOut    per component, receives the azimuth
-     * @param poseBefore    per component, the pose coordinates before the call (read only)
-     * @param azimuthBefore per component, the azimuths before the call (read only)
-     * @param outVersion    per plant, the version of its outputs in poseOut/azimuthOut (updated)
-     * @return this holder
-     */
-    public AnimationStep outputs(float[] poseOut, float[] azimuthOut, float[] poseBefore, float[] azimuthBefore,
-                                 long[] outVersion) {
-        this.poseOut = poseOut;
-        this.azimuthOut = azimuthOut;
-        this.poseBefore = poseBefore;
-        this.azimuthBefore = azimuthBefore;
-        this.outVersion = outVersion;
-        return this;
-    }
-
-    /**
-     * Makes the call write no output: it only advances the state (the outputs are a function of it,
-     * see {@link AnimationState#copyOutputs}). No allocation.
-     *
-     * @return this holder
-     */
-    public AnimationStep noOutputs() {
-        return outputs(null, null, null, null, null);
-    }
-
-    /** Whether outputs are to be written; throws IllegalArgumentException if only some arrays are given. */
-    boolean hasOutputs() {
-        final boolean out = poseOut != null;
-        if (out != (azimuthOut != null) || out != (poseBefore != null) || out != (azimuthBefore != null)
-                || out != (outVersion != null)) {
-            throw new IllegalArgumentException("give all five output arrays or none");
-        }
-        return out;
     }
 }

@@ -28,6 +28,7 @@ public final class BendGeometry {
      * @param kinds         the component kinds
      * @param componentKind per component its kind, in [0, kinds.count())
      * @param restHeading   per component its rest heading h, radians (plant rest azimuth + slot azimuth)
+     * @return the geometry
      * @throws IllegalArgumentException when the arrays differ in length or a kind is out of range
      */
     public static BendGeometry of(SpringKinds kinds, int[] componentKind, float[] restHeading) {
@@ -64,27 +65,47 @@ public final class BendGeometry {
         return lean.length;
     }
 
-    /** {@return component c's rest lean, X part, metres} */
+    /**
+     * {@return component c's rest lean, X part, metres}
+     *
+     * @param c component index
+     */
     public float leanX(int c) {
         return leanX[c];
     }
 
-    /** {@return component c's rest lean, Z part, metres} */
+    /**
+     * {@return component c's rest lean, Z part, metres}
+     *
+     * @param c component index
+     */
     public float leanZ(int c) {
         return leanZ[c];
     }
 
-    /** {@return component c's length, metres} */
+    /**
+     * {@return component c's length, metres}
+     *
+     * @param c component index
+     */
     public float length(int c) {
         return length[c];
     }
 
-    /** {@return component c's pose scale (K - 1) / maxBend, pose coordinates per radian of extra bend} */
+    /**
+     * {@return component c's pose scale (K - 1) / maxBend, pose coordinates per radian of extra bend}
+     *
+     * @param c component index
+     */
     public float poseScale(int c) {
         return scale[c];
     }
 
-    /** {@return component c's last pose coordinate K - 1} */
+    /**
+     * {@return component c's last pose coordinate K - 1}
+     *
+     * @param c component index
+     */
     public float poseMax(int c) {
         return poseMax[c];
     }
@@ -92,6 +113,10 @@ public final class BendGeometry {
     /**
      * {@return the pose coordinate of component c at deviation (dx, dz) metres, in [0, K - 1]}: the
      * arithmetic of {@link AnimationState#poseCoordinate}, bit for bit. No allocation.
+     *
+     * @param c  component index
+     * @param dx deviation X, metres
+     * @param dz deviation Z, metres
      */
     public float poseCoordinate(int c, float dx, float dz) {
         return BendOutputs.poseCoordinate(c, dx, dz, leanX, leanZ, lean, length, scale, poseMax);
@@ -100,6 +125,10 @@ public final class BendGeometry {
     /**
      * {@return the bend azimuth of component c at deviation (dx, dz) metres, radians in [-pi, pi]}:
      * the arithmetic of {@link AnimationState#azimuth}, bit for bit. No allocation.
+     *
+     * @param c  component index
+     * @param dx deviation X, metres
+     * @param dz deviation Z, metres
      */
     public float azimuth(int c, float dx, float dz) {
         return BendOutputs.azimuth(c, dx, dz, leanX, leanZ);

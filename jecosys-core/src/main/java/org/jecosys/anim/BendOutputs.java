@@ -3,9 +3,8 @@ package org.jecosys.anim;
 /**
  * The bend outputs of {@link AnimationState}: a component's pose coordinate and bend azimuth as a
  * pure function of its deviation D and its constants (see "Bend" in {@link AnimationState}), in the
- * vectorisable output loops and in the scalar form of the accessors, plus the copying of stale output
- * ranges from the previous outputs. Static methods over the caller's flat arrays, all indexed by
- * component (or by plant where named so), so the hot loops read the arrays directly with no extra
+ * vectorisable output loops and in the scalar form of the accessors. Static methods over the
+ * caller's flat arrays, all indexed by component, so the loops read the arrays directly with no extra
  * indirection. Any thread that owns the range written; no allocation.
  */
 final class BendOutputs {
@@ -112,41 +111,5 @@ final class BendOutputs {
         float tz = leanZ[c] + z;
         float t = (float) Math.sqrt(tx * tx + tz * tz);
         return Trig.azimuth(tz, Trig.azimuthArgument(tz, tx, t));
-    }
-
-    /**
-     * Copies the outputs of plants [p0, p1) whose {@code outVersion} differs from {@code version}
-     * from before (runs of such plants at once), and brings their {@code outVersion} up to date.
-     *
-     * @param firstComponent per plant its first component, plus the total at the end
-     * @param version        per plant, the version of its current state
-     * @param outVersion     per plant, the version its outputs in poseOut/azimuthOut hold (updated)
-     */
-    static void copyStale(int p0, int p1, int[] firstComponent, long[] version, float[] poseOut,
-                          float[] azimuthOut, float[] poseBefore, float[] azimuthBefore, long[] outVersion) {
-        int q = p0;
-        while (q < p1) {
-            if (outVersion[q] == version[q]) {
-                q++;
-                continue;
-            }
-            int s = q;
-            while (q < p1 && outVersion[q] != version[q]) {
-                outVersion[q] = version[q];
-                q++;
-            }
-            copyBefore(firstComponent[s], firstComponent[q], poseOut, azimuthOut, poseBefore, azimuthBefore);
-        }
-    }
-
-    /** Copies [c0, c1) of the previous outputs, unless they are the output arrays themselves. */
-    private static void copyBefore(int c0, int c1, float[] poseOut, float[] azimuthOut, float[] poseBefore,
-                                   float[] azimuthBefore) {
-        if (poseBefore != poseOut) {
-            System.arraycopy(poseBefore, c0, poseOut, c0, c1 - c0);
-        }
-        if (azimuthBefore != azimuthOut) {
-            System.arraycopy(azimuthBefore, c0, azimuthOut, c0, c1 - c0);
-        }
     }
 }

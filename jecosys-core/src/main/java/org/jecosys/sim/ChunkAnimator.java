@@ -159,7 +159,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
                 .pushes(fs.pushX == null ? null : fs.pushX[b], fs.pushZ == null ? null : fs.pushZ[b]);
         // the frame holds deviations only: poses and azimuths are computed from them where they are
         // read (Frame.poseCoord, the renderer's resolve pass), so the step writes no per-component output
-        chunkCount[chunk] = state.animate(p0, p1, in.noOutputs());
+        chunkCount[chunk] = state.animate(p0, p1, in);
         System.arraycopy(visible[b], p0, f.plantVisible, p0, p1 - p0);
         state.copyLevels(p0, p1, f.plantLevel);
         if (stamp) {

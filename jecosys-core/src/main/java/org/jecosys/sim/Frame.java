@@ -125,12 +125,20 @@ public final class Frame {
         return geometry.azimuth(c, renderStates.get(2 * c), renderStates.get(2 * c + 1));
     }
 
-    /** {@return component c's deviation D, X part, metres} */
+    /**
+     * {@return component c's deviation D, X part, metres}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public float deviationX(int c) {
         return renderStates.get(2 * c);
     }
 
-    /** {@return component c's deviation D, Z part, metres} */
+    /**
+     * {@return component c's deviation D, Z part, metres}
+     *
+     * @param c component index, in [0, componentCount())
+     */
     public float deviationZ(int c) {
         return renderStates.get(2 * c + 1);
     }

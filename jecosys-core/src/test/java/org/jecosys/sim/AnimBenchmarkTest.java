@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 /**
  * Animation benchmark (issue "Animation and simulation", Performance): component updates per
  * second of the constraint updater for 10k, 100k, 1M and 4M components (all plants visible, wind
- * everywhere) with 1 and 2 workers over fixed chunks, including writing the outputs into a frame,
+ * everywhere) with 1 and 2 workers over fixed chunks, including writing the deviations into a frame,
  * and the ratio of the step to a plain copy of the same six state arrays (D, v, pose, azimuth: the
  * memory bound) with the same workers. Reports only; asserts no timing. Run with
  * {@code mvn -B verify -Pbench}; writes target/bench/anim.md.
@@ -45,9 +45,9 @@ class AnimBenchmarkTest {
         final float[] wx;
         final float[] wz;
         final boolean[] vis;
-        final float[] poseOut;
-        final float[] azOut;
-        final long[] outVersion;
+        /** The render states of a frame (deviations, 2 floats per component) and a scratch per worker. */
+        final java.nio.FloatBuffer states;
+        final float[][] scratch = new float[2][4096];
         /** Per chunk, its animate inputs (chunks run on several workers at once). */
         final AnimationStep[] steps;
         final float[][] src = new float[6][];
@@ -107,9 +107,7 @@ class AnimBenchmarkTest {
                 wz[q] = (float) rng.nextDouble(-3, 3);
                 vis[q] = true;
             }
-            poseOut = new float[n];
-            azOut = new float[n];
-            outVersion = new long[plants];
+            states = java.nio.ByteBuffer.allocateDirect(8 * n).order(java.nio.ByteOrder.LITTLE_ENDIAN).asFloatBuffer();
             int[] chunks = new int[plants + 2]; // the chunking rule of Simulation
             int m = 0;
             chunks[m++] = 0;
@@ -126,8 +124,7 @@ class AnimBenchmarkTest {
             chunkFirst = Arrays.copyOf(chunks, m);
             steps = new AnimationStep[m - 1];
             for (int i = 0; i < steps.length; i++) {
-                steps[i] = AnimationStep.of(AnimationMode.CONSTRAINT, wx, wz, vis)
-                        .outputs(poseOut, azOut, poseOut, azOut, outVersion);
+                steps[i] = AnimationStep.of(AnimationMode.CONSTRAINT, wx, wz, vis);
             }
             for (int i = 0; i < 6; i++) {
                 src[i] = new float[n];
@@ -149,6 +146,7 @@ class AnimBenchmarkTest {
                 return;
             }
             state.animate(p0, p1, steps[chunk]);
+            state.copyDeviations(c0, c1, states, scratch[worker]);
         }
     }
 
@@ -171,7 +169,7 @@ class AnimBenchmarkTest {
                 .append("Constraint mode, 4 sub-intervals, 3/4 grass tufts of ").append(TUFT)
                 .append(" leaves (8 variants) and 1/4 flowers of ").append(FLOWER)
                 .append(" components (3 types), all visible, fixed chunks of ").append(Simulation.CHUNK_COMPONENTS)
-                .append(" components; step = update + pose/azimuth written into a frame. Copy = the six state ")
+                .append(" components; step = update + deviations written into a frame. Copy = the six state ")
                 .append("arrays copied by the same workers. Medians; ")
                 .append(Runtime.getRuntime().availableProcessors()).append(" processors.\n\n")
                 .append("| components | workers | step ms | updates/s | copy ms | step/copy | speed-up |\n")
