@@ -7,7 +7,8 @@ import org.jecosys.math.Require;
  * structure of arrays, no object per component or plant), and its updater. Per component:
  * deviation D and velocity v (2D, ground plane,
  * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
- * function of D and the component's constants ({@link BendGeometry}), computed on demand. Per plant: the force input
+ * function of D and the component's constants ({@link BendGeometry}), computed on demand. Per plant:
+ * the force input
  * of the last update, the level of detail, its response variant and compliance (the seeded
  * variation of response time and stiffness between plants, {@link SpringKinds}), and whether its
  * state follows the wind (see "Start"). Sized at construction; nothing grows.
@@ -41,7 +42,7 @@ import org.jecosys.math.Require;
  * lean in from upright at start-up, and a plant coming into view is already bent by the wind.
  * {@link #settle} does the same for the wind at a given time (the simulation's first sample, at
  * t = 0), and {@link #resetToRest} puts plants at rest as a state that does follow (STATIC mode).
- * The output loops and the scalar forms live in {@code BendOutputs}; the spring runs, their state and
+ * The mapping from D to the outputs lives in {@link BendGeometry}; the spring runs, their state and
  * their step in {@code SpringRuns}.
  *
  * <h2>Update order</h2>
@@ -53,8 +54,8 @@ import org.jecosys.math.Require;
  * advances each drawn run of a plant once (the per-component update's arithmetic, hence its bits)
  * and writes the run's D to each of its components. The outputs, which differ per component through
  * its rest lean and shape, are not part of the step: they are computed where they are read, from D
- * ({@link BendGeometry}; {@link #copyOutputs} for many at once, in branch-free loops that C2
- * vectorises, {@link BendOutputs}; a renderer on the GPU). RANDOM mode gives each component its own deviation, kept per component ({@link ScatteredState})
+ * ({@link BendGeometry}; {@link #copyOutputs} for many at once; a renderer on the GPU). RANDOM mode
+ * gives each component its own deviation, kept per component ({@link ScatteredState})
  * until the plant settles again.
  *
  * <h2>Threads</h2>
@@ -80,9 +81,8 @@ public final class AnimationState implements AnimationView {
     private final ScatteredState scattered;
     // per-component copies of the kind constants the output loops need (no gather there)
     private final BendGeometry geometry;
-    /** Per component its deviation: {@link SpringRuns#compDevX}, read in place. */
-    private final float[] devX;
-    private final float[] devZ;
+    /** Per component its deviation, X at 2 c and Z at 2 c + 1: {@link SpringRuns#compDev}, read in place. */
+    private final float[] dev;
     private final byte[] plantResponse;
     private final float[] plantCompliance;
     /** Per plant, whether its state follows the wind (see "Start" in the class comment). */
@@ -207,8 +207,7 @@ public final class AnimationState implements AnimationView {
         }
         live = new boolean[plants];
         runs = new SpringRuns(kinds, kind, this.firstComponent, plantCompliance);
-        devX = runs.compDevX;
-        devZ = runs.compDevZ;
+        dev = runs.compDev;
         scattered = new ScatteredState(plants, components);
         pressX = new float[plants];
         pressZ = new float[plants];
@@ -542,11 +541,10 @@ public final class AnimationState implements AnimationView {
     /**
      * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations (see the
      * class comment) into {@code pose} and {@code azimuth} (indexed by component):
-     * {@link BendOutputs#outputs}, the same arithmetic as {@link #poseCoordinate} and {@link #azimuth}.
+     * {@link BendGeometry#outputs}, the same arithmetic as {@link #poseCoordinate} and {@link #azimuth}.
      */
     private void outputs(int c0, int c1, float[] pose, float[] azimuth) {
-        BendGeometry g = geometry;
-        BendOutputs.outputs(c0, c1, devX, devZ, g.leanX, g.leanZ, g.lean, g.length, g.scale, g.poseMax, pose, azimuth);
+        geometry.outputs(c0, c1, dev, pose, azimuth);
     }
 
     /**
@@ -565,12 +563,12 @@ public final class AnimationState implements AnimationView {
 
     /** Deviation X of component c, metres. */
     public float deviationX(int c) {
-        return devX[c];
+        return dev[2 * c];
     }
 
     /** Deviation Z of component c, metres. */
     public float deviationZ(int c) {
-        return devZ[c];
+        return dev[2 * c + 1];
     }
 
     /** Velocity X of component c, m/s. */
@@ -590,7 +588,7 @@ public final class AnimationState implements AnimationView {
      * operations as the output loops of {@link #animate}, hence the same bits). No allocation.
      */
     public float poseCoordinate(int c) {
-        return geometry.poseCoordinate(c, devX[c], devZ[c]);
+        return geometry.poseCoordinate(c, dev[2 * c], dev[2 * c + 1]);
     }
 
     /**
@@ -598,7 +596,7 @@ public final class AnimationState implements AnimationView {
      * its deviation (as {@link #poseCoordinate}). No allocation.
      */
     public float azimuth(int c) {
-        return geometry.azimuth(c, devX[c], devZ[c]);
+        return geometry.azimuth(c, dev[2 * c], dev[2 * c + 1]);
     }
 
     /**
@@ -611,27 +609,16 @@ public final class AnimationState implements AnimationView {
 
     /**
      * Copies the deviations D of components {@code first .. end-1} into {@code dest} as interleaved
-     * floats (X at {@code 2 c}, Z at {@code 2 c + 1}, absolute component indices), through
-     * {@code scratch} (the caller's own, at least 2 floats; longer is faster): the render states of a
-     * published frame. Any thread that owns the range (as {@link #animate}). No allocation.
+     * floats (X at {@code 2 c}, Z at {@code 2 c + 1}, absolute component indices), one bulk copy: the
+     * render states of a published frame. Any thread that owns the range (as {@link #animate}). No
+     * allocation.
      *
-     * @param first   first component
-     * @param end     end of the range (exclusive)
-     * @param dest    receives the deviations, metres ({@code 2 * end} floats at least)
-     * @param scratch the caller's own scratch
+     * @param first first component
+     * @param end   end of the range (exclusive)
+     * @param dest  receives the deviations, metres ({@code 2 * end} floats at least)
      */
-    public void copyDeviations(int first, int end, java.nio.FloatBuffer dest, float[] scratch) {
-        int block = scratch.length / 2;
-        float[] x = devX;
-        float[] z = devZ;
-        for (int b = first; b < end; b += block) {
-            int n = Math.min(block, end - b);
-            for (int i = 0; i < n; i++) {
-                scratch[2 * i] = x[b + i];
-                scratch[2 * i + 1] = z[b + i];
-            }
-            dest.put(2 * b, scratch, 0, 2 * n);
-        }
+    public void copyDeviations(int first, int end, java.nio.FloatBuffer dest) {
+        dest.put(2 * first, dev, 2 * first, 2 * (end - first));
     }
 
     /** Kind of component c. */

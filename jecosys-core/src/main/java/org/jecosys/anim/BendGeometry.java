@@ -3,8 +3,8 @@ package org.jecosys.anim;
 import org.jecosys.math.Require;
 
 /**
- * The constants that turn a component's deviation D into its outputs (see "Bend" in
- * {@link AnimationState}): per component its rest lean {@code L = l (cos h, sin h)} (metres, world X
+ * The constants that turn a component's deviation D into its outputs, and that mapping (see "Bend"
+ * in {@link AnimationState}; arc tangents by {@code Trig}'s polynomial): per component its rest lean {@code L = l (cos h, sin h)} (metres, world X
  * and Z), the lean's size l, its length, its pose scale {@code (K - 1) / maxBend} and its last pose
  * coordinate {@code K - 1}. A published {@code Frame} holds only D per component (the GPU's render
  * state) and computes pose coordinate and azimuth through these on demand, with the arithmetic of
@@ -119,7 +119,13 @@ public final class BendGeometry {
      * @param dz deviation Z, metres
      */
     public float poseCoordinate(int c, float dx, float dz) {
-        return BendOutputs.poseCoordinate(c, dx, dz, leanX, leanZ, lean, length, scale, poseMax);
+        float tx = leanX[c] + dx;
+        float tz = leanZ[c] + dz;
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        float num = Math.max(0f, 2 * (leanX[c] * dx + leanZ[c] * dz) + dx * dx + dz * dz);
+        float d = (t + lean[c]) * length[c];
+        float u = Trig.poseArgument(num, (float) Math.sqrt(Math.max(0f, (d - num) * (d + num))));
+        return Math.max(0f, Math.min(poseMax[c], Trig.poseAngle(u) * scale[c]));
     }
 
     /**
@@ -131,7 +137,23 @@ public final class BendGeometry {
      * @param dz deviation Z, metres
      */
     public float azimuth(int c, float dx, float dz) {
-        return BendOutputs.azimuth(c, dx, dz, leanX, leanZ);
+        float tx = leanX[c] + dx;
+        float tz = leanZ[c] + dz;
+        float t = (float) Math.sqrt(tx * tx + tz * tz);
+        return Trig.azimuth(tz, Trig.azimuthArgument(tz, tx, t));
+    }
+
+    /**
+     * Pose coordinates and azimuths of components {@code c0 .. c1-1} from their deviations into
+     * {@code pose} and {@code azimuth} (indexed by component). No allocation.
+     *
+     * @param dev deviation per component, metres, X at {@code 2 c} and Z at {@code 2 c + 1}
+     */
+    void outputs(int c0, int c1, float[] dev, float[] pose, float[] azimuth) {
+        for (int c = c0; c < c1; c++) {
+            pose[c] = poseCoordinate(c, dev[2 * c], dev[2 * c + 1]);
+            azimuth[c] = azimuth(c, dev[2 * c], dev[2 * c + 1]);
+        }
     }
 
     /**

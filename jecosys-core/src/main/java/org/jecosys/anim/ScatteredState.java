@@ -6,8 +6,8 @@ import org.jecosys.math.Rng;
  * The per-component velocities of plants in RANDOM mode (paper Table 7's S2), where each component
  * takes a random deviation of its own, so the components of a spring run no longer share their state
  * ({@link SpringRuns}). A plant is <em>scattered</em> from its first random update until it settles or
- * rests again; meanwhile its components' D are their own entries of {@link SpringRuns#compDevX} and
- * {@link SpringRuns#compDevZ} (not their run's) and their v are read here. Sized at construction (every component may scatter); no allocation after. A caller
+ * rests again; meanwhile its components' D are their own entries of {@link SpringRuns#compDev}
+ * (not their run's) and their v are read here. Sized at construction (every component may scatter); no allocation after. A caller
  * touches only its own plants' entries, so disjoint plant ranges may run at once.
  */
 final class ScatteredState {
@@ -48,8 +48,8 @@ final class ScatteredState {
                 float r = 0.3f * length[k] * (float) Math.sqrt(rng.nextDouble());
                 float a = (float) (rng.nextDouble() * 2 * Math.PI);
                 float ca = (float) StrictMath.cos(a);
-                runs.compDevX[c] = r * ca;
-                runs.compDevZ[c] = r * (float) StrictMath.sin(a);
+                runs.compDev[2 * c] = r * ca;
+                runs.compDev[2 * c + 1] = r * (float) StrictMath.sin(a);
                 velX[c] = 0;
                 velZ[c] = 0;
                 updated++;

@@ -14,9 +14,9 @@ import java.util.Arrays;
  * of a run share one deviation D and one velocity v. They are kept once per run ({@link #devX} ...),
  * and {@link #advance} steps a run, not each of its components, with the arithmetic the
  * per-component update had, so the bits are those of the per-component update. Each change of a
- * run's D is also written to its components' entries of {@link #compDevX} and {@link #compDevZ}, the
- * deviation of every component, which the output loops read (they vectorise only over arrays indexed
- * by component). RANDOM mode, which gives each component a deviation of its own, writes those
+ * run's D is also written to its components' entries of {@link #compDev}, the deviation of every
+ * component, interleaved (X, Z) as a frame's render states hold it, so that publishing them is one
+ * bulk copy. RANDOM mode, which gives each component a deviation of its own, writes those
  * directly and keeps the velocities in {@link ScatteredState} until the plant settles again.
  *
  * <p>A run's rest point at the end of a step is its rest point at the start of the next (the plant's
@@ -69,9 +69,11 @@ final class SpringRuns {
      * advanced or settled to, and that P ({@link #restPoint}).
      */
     private final float[] restPoint;
-    /** Per component, its deviation D (X, Z), metres: its run's, or its own while its plant is scattered. */
-    final float[] compDevX;
-    final float[] compDevZ;
+    /**
+     * Per component, its deviation D, metres, X at {@code 2 c} and Z at {@code 2 c + 1}: its run's, or its
+     * own while its plant is scattered.
+     */
+    final float[] compDev;
 
     /**
      * Cuts the components of each plant into runs, all at rest. Build time; allocates.
@@ -133,8 +135,7 @@ final class SpringRuns {
             limit[r] = knee[r] / KNEE;
             restPoint[r * REST_STRIDE + 2] = Float.NaN; // of no P yet
         }
-        compDevX = new float[components];
-        compDevZ = new float[components];
+        compDev = new float[2 * components];
     }
 
     /** Number of runs. */
@@ -217,15 +218,14 @@ final class SpringRuns {
         spread(r);
     }
 
-    /** Writes run r's D to its components' entries of {@link #compDevX}, {@link #compDevZ}. */
+    /** Writes run r's D to its components' entries of {@link #compDev}. */
     private void spread(int r) {
         float x = devX[r];
         float z = devZ[r];
-        float[] cx = compDevX;
-        float[] cz = compDevZ;
-        for (int c = start[r], e = start[r + 1]; c < e; c++) {
-            cx[c] = x;
-            cz[c] = z;
+        float[] cd = compDev;
+        for (int i = 2 * start[r], e = 2 * start[r + 1]; i < e; i += 2) {
+            cd[i] = x;
+            cd[i + 1] = z;
         }
     }
 
@@ -235,8 +235,7 @@ final class SpringRuns {
         Arrays.fill(devZ, r0, r1, 0f);
         Arrays.fill(velX, r0, r1, 0f);
         Arrays.fill(velZ, r0, r1, 0f);
-        Arrays.fill(compDevX, start[r0], start[r1], 0f);
-        Arrays.fill(compDevZ, start[r0], start[r1], 0f);
+        Arrays.fill(compDev, 2 * start[r0], 2 * start[r1], 0f);
     }
 
     /**

@@ -1,12 +1,12 @@
 package org.jecosys.anim;
 
 /**
- * Fast, deterministic arc tangents for the per-component hot loop (Java's {@code Math.atan2} is not
+ * Fast, deterministic arc tangents for the bend outputs (Java's {@code Math.atan2} is not
  * an intrinsic on JDK 17 and costs tens of nanoseconds). An odd polynomial of degree 17 on [-1, 1]
  * (Abramowitz and Stegun 4.4.49), absolute error below 2e-7 rad in float arithmetic. Plain float
  * arithmetic, hence bit-identical on every thread and JVM (strict IEEE semantics since Java 17).
  *
- * <p>{@link #poseAngle} and {@link #azimuth} are the forms the animation loop uses: they need only
+ * <p>{@link #poseAngle} and {@link #azimuth} are the forms the bend outputs use: they need only
  * add, multiply, divide, abs, min and max (no branches, no sign-bit tricks), so C2's superword pass
  * can vectorise a loop made of them. Any thread; no allocation.
  */
@@ -42,7 +42,7 @@ final class Trig {
 
     /**
      * atan2(y, x) in [-pi, pi]; 0 for (0, 0). Branch-free (octant selection by sign bits, min/max
-     * and copySign). Tests and build time; the hot loop uses {@link #azimuth}.
+     * and copySign). Tests and build time; the outputs use {@link #azimuth}.
      */
     static float atan2(float y, float x) {
         float ax = Math.abs(x);

@@ -37,8 +37,6 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final Rng[] chunkRng;
     /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
     private final AnimationStep[] chunkStep;
-    /** Per worker, its scratch for copying render states ({@link AnimationState#copyDeviations}). */
-    private final float[][] packScratch;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -56,10 +54,9 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * @param sampler the field's buffers: wind, visibility, views, frustum (shared with the simulation,
      *                read here)
      * @param seed    the animation seed of the chunks' random streams
-     * @param workers the pool's workers (the owner included)
      */
     ChunkAnimator(AnimationState state, int[] first, int plants, int chunkComponents, FieldSampler sampler,
-                  long seed, DrawDecision draw, int workers) {
+                  long seed, DrawDecision draw) {
         this.state = state;
         this.sampler = sampler;
         this.draw = draw;
@@ -75,7 +72,6 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         framePackedVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
-        packScratch = new float[workers][Frame.PACK_SCRATCH];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
             chunkStep[c] = new AnimationStep();
@@ -169,7 +165,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
             }
             java.util.Arrays.fill(framePackedVersion[stepFrameIndex], p0, p1, -1L);
         } else {
-            packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset, packScratch[worker]);
+            packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset);
         }
         draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], f);
     }
@@ -180,7 +176,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
      * buffer), in runs of consecutive plants; of every plant when {@code all}. So every plant's render
      * state is current in every published frame, whichever view draws it. No allocation.
      */
-    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all, float[] scratch) {
+    private void packChanged(Frame f, long[] packed, int p0, int p1, boolean all) {
         int p = p0;
         while (p < p1) {
             if (!all && packed[p] == state.version(p)) {
@@ -192,7 +188,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
                 packed[p] = state.version(p);
                 p++;
             }
-            state.copyDeviations(state.firstComponent(start), state.firstComponent(p), f.renderStates, scratch);
+            state.copyDeviations(state.firstComponent(start), state.firstComponent(p), f.renderStates);
         }
     }
 }

@@ -293,9 +293,6 @@ public final class Frame {
         return renderStatesView;
     }
 
-    /** Floats of a scratch array for copying render states (two per component of a block). */
-    static final int PACK_SCRATCH = 2 * 2048;
-
     /**
      * Records what the frame's decision was made with: the camera (its view-projection and eye), the
      * level-of-detail edges of every species with the LOD scale applied, the transition band and the

@@ -169,7 +169,7 @@ public final class Simulation implements AutoCloseable {
         settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
         exchange = new FrameExchange(plants, state.geometry());
         for (int i = 0; i < 3; i++) {
-            state.copyDeviations(0, comps, exchange.frame(i).renderStates, new float[Frame.PACK_SCRATCH]);
+            state.copyDeviations(0, comps, exchange.frame(i).renderStates);
         }
         int[] speciesLevels = new int[world.plants().species().size()];
         for (int sp = 0; sp < speciesLevels.length; sp++) {
@@ -187,7 +187,7 @@ public final class Simulation implements AutoCloseable {
             }
         });
         draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw, threads);
+        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
         pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
     }
 

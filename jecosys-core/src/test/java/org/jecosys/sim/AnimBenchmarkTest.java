@@ -45,9 +45,8 @@ class AnimBenchmarkTest {
         final float[] wx;
         final float[] wz;
         final boolean[] vis;
-        /** The render states of a frame (deviations, 2 floats per component) and a scratch per worker. */
+        /** The render states of a frame (deviations, 2 floats per component). */
         final java.nio.FloatBuffer states;
-        final float[][] scratch = new float[2][4096];
         /** Per chunk, its animate inputs (chunks run on several workers at once). */
         final AnimationStep[] steps;
         final float[][] src = new float[6][];
@@ -146,7 +145,7 @@ class AnimBenchmarkTest {
                 return;
             }
             state.animate(p0, p1, steps[chunk]);
-            state.copyDeviations(c0, c1, states, scratch[worker]);
+            state.copyDeviations(c0, c1, states);
         }
     }
 
