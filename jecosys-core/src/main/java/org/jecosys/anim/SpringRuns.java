@@ -37,6 +37,14 @@ final class SpringRuns {
      */
     static final double MAX_TARGET_KNEES = 1e12;
     private static final float KNEE = SpringKinds.KNEE;
+    /**
+     * Below this share of the squared knee, the linear rest point's size m over the bend limit, taken
+     * in float as {@link #restPoint} takes it, is below {@link SpringKinds#KNEE} whatever the rounding
+     * (m below the knee by 5e-5 of it, the roundings about 2e-7), so {@link #saturation} is exactly 1.
+     */
+    private static final double SURELY_BELOW_KNEE = 1 - 1e-4;
+    /** Above this share of the squared knee, that size is far above float's subnormals (see {@link #saturation}). */
+    private static final double SURELY_NORMAL = 1e-60;
     private static final float SPAN = 1 - KNEE;
     private static final float INV_SPAN = 1 / SPAN;
 
@@ -168,15 +176,24 @@ final class SpringRuns {
         double g = gain[r];
         double tx = g * px;
         double tz = g * pz;
-        double m = Math.sqrt(tx * tx + tz * tz);
-        double most = MAX_TARGET_KNEES * knee[r];
-        if (m > most) {
-            double k = most / m;
-            tx *= k;
-            tz *= k;
-            m = most;
+        double m2 = tx * tx + tz * tz;
+        double k2 = (double) knee[r] * knee[r];
+        float s;
+        if (m2 <= k2 * SURELY_BELOW_KNEE && m2 >= k2 * SURELY_NORMAL) {
+            // clearly below the knee (and far above float's subnormals): the factor is exactly 1, as
+            // the general path finds, without its square root
+            s = 1f;
+        } else {
+            double m = Math.sqrt(m2);
+            double most = MAX_TARGET_KNEES * knee[r];
+            if (m > most) {
+                double k = most / m;
+                tx *= k;
+                tz *= k;
+                m = most;
+            }
+            s = saturation((float) m * invLimit[r]);
         }
-        float s = saturation((float) m * invLimit[r]);
         int f = r * REST_STRIDE;
         float[] rp = restPoint;
         rp[f] = s * (float) tx;
