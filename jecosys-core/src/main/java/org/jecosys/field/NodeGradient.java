@@ -72,8 +72,10 @@ final class NodeGradient {
                 pu = fitXX * dx[i] + fitXZ * dz[i];
                 pv = fitZX * dx[i] + fitZZ * dz[i];
             }
-            with += Math.hypot(du[i] - pu, dv[i] - pv);
-            without += Math.hypot(du[i], dv[i]);
+            double eu = du[i] - pu;
+            double ev = dv[i] - pv;
+            with += Math.sqrt(eu * eu + ev * ev);
+            without += Math.sqrt(du[i] * du[i] + dv[i] * dv[i]);
             maxDiff2 = Math.max(maxDiff2, du[i] * du[i] + dv[i] * dv[i]);
         }
         double r = without > 0 ? with / without : 1;
