@@ -574,13 +574,13 @@ public final class AnimationState implements AnimationView {
     /** Velocity X of component c, m/s. */
     public float velocityX(int c) {
         int p = plantOf(c);
-        return scattered.scattered[p] ? scattered.velX[c] : runs.velX[runs.runOf(p, c)];
+        return scattered.scattered[p] ? scattered.velX[c] : runs.velX(runs.runOf(p, c));
     }
 
     /** Velocity Z of component c, m/s. */
     public float velocityZ(int c) {
         int p = plantOf(c);
-        return scattered.scattered[p] ? scattered.velZ[c] : runs.velZ[runs.runOf(p, c)];
+        return scattered.scattered[p] ? scattered.velZ[c] : runs.velZ(runs.runOf(p, c));
     }
 
     /**

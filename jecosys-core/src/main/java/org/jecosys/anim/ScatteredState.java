@@ -36,8 +36,8 @@ final class ScatteredState {
             for (int r = runs.plantRun[p], re = runs.plantRun[p + 1]; r < re; r++) {
                 int s = runs.start[r];
                 int e = runs.start[r + 1];
-                java.util.Arrays.fill(velX, s, e, runs.velX[r]);
-                java.util.Arrays.fill(velZ, s, e, runs.velZ[r]);
+                java.util.Arrays.fill(velX, s, e, runs.velX(r));
+                java.util.Arrays.fill(velZ, s, e, runs.velZ(r));
             }
             scattered[p] = true;
         }

@@ -11,7 +11,7 @@ import java.util.Arrays;
  *
  * <p>Every component of a run gets the same spring update from the same force, and is put at the
  * same rest point when its plant settles or rests, so in CONSTRAINT and STATIC modes all components
- * of a run share one deviation D and one velocity v. They are kept once per run ({@link #devX} ...),
+ * of a run share one deviation D and one velocity v. They are kept once per run ({@link #state}),
  * and {@link #advance} steps a run, not each of its components, with the arithmetic the
  * per-component update had, so the bits are those of the per-component update. Each change of a
  * run's D is also written to its components' entries of {@link #compDev}, the deviation of every
@@ -29,8 +29,18 @@ import java.util.Arrays;
  * runs of its own plants, so disjoint plant ranges may run at once.
  */
 final class SpringRuns {
-    /** Values per run in {@link #restPoint}: the stiffened rest point (X, Z), metres, and the P (X, Z) it is of. */
-    static final int REST_STRIDE = 4;
+    /**
+     * Floats per run in {@link #state}: D (X, Z), metres; v (X, Z), m/s; the stiffened rest point of
+     * the force P the run was last advanced or settled to (X, Z), metres, and that P (X, Z), m^2/s^2
+     * ({@link #restPoint}). One run's state is one half of a 64-byte cache line.
+     */
+    static final int STRIDE = 8;
+    private static final int VX = 2;
+    private static final int VZ = 3;
+    private static final int RX = 4;
+    private static final int RZ = 5;
+    private static final int PX = 6;
+    private static final int PZ = 7;
     /**
      * Largest linear rest point kept, in knees of the run ({@link #knee}): far beyond every bend
      * limit, so the saturation is complete, and small enough for {@link #saturation}'s float products.
@@ -60,23 +70,14 @@ final class SpringRuns {
     final int[] runPlant;
     /** Per run, the knee of the bend limit of its shortest component, metres (see {@link #advance}). */
     final float[] knee;
-    /** Per run, the deviation D (X, Z) of each of its components, metres. */
-    final float[] devX;
-    final float[] devZ;
-    /** Per run, the velocity v (X, Z) of each of its components, m/s. */
-    final float[] velX;
-    final float[] velZ;
+    /** Per run, {@value #STRIDE} floats of state (see {@link #STRIDE}), together so that a step streams one array. */
+    private final float[] state;
     /** Per run, its equilibrium deviation per unit P = |u| u, metres per (m/s)^2, the plant's compliance included. */
     private final double[] gain;
     /** Per run, {@code KNEE / knee}: 1 / its shortest component's bend limit, 1/m. */
     private final float[] invLimit;
     /** Per run, its shortest component's bend limit dMax, metres ({@code knee / KNEE}). */
     private final float[] limit;
-    /**
-     * Per run, {@value #REST_STRIDE} values: the stiffened rest point of the force P it was last
-     * advanced or settled to, and that P ({@link #restPoint}).
-     */
-    private final float[] restPoint;
     /**
      * Per component, its deviation D, metres, X at {@code 2 c} and Z at {@code 2 c + 1}: its run's, or its
      * own while its plant is scattered.
@@ -129,21 +130,37 @@ final class SpringRuns {
             }
             knee[r] = KNEE / most;
         }
-        devX = new float[runs];
-        devZ = new float[runs];
-        velX = new float[runs];
-        velZ = new float[runs];
+        state = new float[runs * STRIDE];
         gain = new double[runs];
         invLimit = new float[runs];
         limit = new float[runs];
-        restPoint = new float[runs * REST_STRIDE];
         for (int r = 0; r < runs; r++) {
             gain[r] = kinds.gain(springClass[r]) * (double) compliance[runPlant[r]];
             invLimit[r] = KNEE / knee[r];
             limit[r] = knee[r] / KNEE;
-            restPoint[r * REST_STRIDE + 2] = Float.NaN; // of no P yet
+            state[r * STRIDE + PX] = Float.NaN; // a rest point of no P yet
         }
         compDev = new float[2 * components];
+    }
+
+    /** Run r's deviation D, X part, metres. */
+    float devX(int r) {
+        return state[r * STRIDE];
+    }
+
+    /** Run r's deviation D, Z part, metres. */
+    float devZ(int r) {
+        return state[r * STRIDE + 1];
+    }
+
+    /** Run r's velocity v, X part, m/s. */
+    float velX(int r) {
+        return state[r * STRIDE + VX];
+    }
+
+    /** Run r's velocity v, Z part, m/s. */
+    float velZ(int r) {
+        return state[r * STRIDE + VZ];
     }
 
     /** Number of runs. */
@@ -194,12 +211,12 @@ final class SpringRuns {
             }
             s = saturation((float) m * invLimit[r]);
         }
-        int f = r * REST_STRIDE;
-        float[] rp = restPoint;
-        rp[f] = s * (float) tx;
-        rp[f + 1] = s * (float) tz;
-        rp[f + 2] = px;
-        rp[f + 3] = pz;
+        int f = r * STRIDE;
+        float[] st = state;
+        st[f + RX] = s * (float) tx;
+        st[f + RZ] = s * (float) tz;
+        st[f + PX] = px;
+        st[f + PZ] = pz;
     }
 
     /**
@@ -227,18 +244,19 @@ final class SpringRuns {
      */
     void settle(int r, float px, float pz) {
         restPoint(r, px, pz);
-        int f = r * REST_STRIDE;
-        devX[r] = restPoint[f];
-        devZ[r] = restPoint[f + 1];
-        velX[r] = 0;
-        velZ[r] = 0;
+        int f = r * STRIDE;
+        float[] st = state;
+        st[f] = st[f + RX];
+        st[f + 1] = st[f + RZ];
+        st[f + VX] = 0;
+        st[f + VZ] = 0;
         spread(r);
     }
 
     /** Writes run r's D to its components' entries of {@link #compDev}. */
     private void spread(int r) {
-        float x = devX[r];
-        float z = devZ[r];
+        float x = devX(r);
+        float z = devZ(r);
         float[] cd = compDev;
         for (int i = 2 * start[r], e = 2 * start[r + 1]; i < e; i += 2) {
             cd[i] = x;
@@ -248,10 +266,9 @@ final class SpringRuns {
 
     /** Puts the components of runs {@code r0 .. r1-1} at rest: D = v = 0. */
     void rest(int r0, int r1) {
-        Arrays.fill(devX, r0, r1, 0f);
-        Arrays.fill(devZ, r0, r1, 0f);
-        Arrays.fill(velX, r0, r1, 0f);
-        Arrays.fill(velZ, r0, r1, 0f);
+        for (int f = r0 * STRIDE, e = r1 * STRIDE; f < e; f += STRIDE) {
+            Arrays.fill(state, f, f + RX, 0f); // D and v; the kept rest point stays that of its P
+        }
         Arrays.fill(compDev, 2 * start[r0], 2 * start[r1], 0f);
     }
 
@@ -267,11 +284,11 @@ final class SpringRuns {
      */
     void advance(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z) {
         int f = startRestPoint(r, p0x, p0z);
-        float[] rp = restPoint;
-        float ax = rp[f];
-        float az = rp[f + 1];
+        float[] st = state;
+        float ax = st[f + RX];
+        float az = st[f + RZ];
         restPoint(r, p1x, p1z);
-        step(r, co, o, ax, az, rp[f], rp[f + 1]);
+        step(r, co, o, ax, az, st[f + RX], st[f + RZ]);
     }
 
     /**
@@ -280,10 +297,10 @@ final class SpringRuns {
      * {@link #restPoint}. No allocation.
      */
     private int startRestPoint(int r, float p0x, float p0z) {
-        int f = r * REST_STRIDE;
-        float[] rp = restPoint;
-        if (Float.floatToRawIntBits(rp[f + 2]) != Float.floatToRawIntBits(p0x)
-                || Float.floatToRawIntBits(rp[f + 3]) != Float.floatToRawIntBits(p0z)) {
+        int f = r * STRIDE;
+        float[] st = state;
+        if (Float.floatToRawIntBits(st[f + PX]) != Float.floatToRawIntBits(p0x)
+                || Float.floatToRawIntBits(st[f + PZ]) != Float.floatToRawIntBits(p0z)) {
             restPoint(r, p0x, p0z);
         }
         return f;
@@ -298,14 +315,14 @@ final class SpringRuns {
     void advanceFlattened(int r, float[] co, int o, float p0x, float p0z, float p1x, float p1z,
                           float l0x, float l0z, float l1x, float l1z) {
         int f = startRestPoint(r, p0x, p0z);
-        float[] rp = restPoint;
+        float[] st = state;
         float lim = limit[r];
         float k0 = 1 - (float) Math.sqrt((double) l0x * l0x + (double) l0z * l0z);
-        float ax = k0 * rp[f] + l0x * lim;
-        float az = k0 * rp[f + 1] + l0z * lim;
+        float ax = k0 * st[f + RX] + l0x * lim;
+        float az = k0 * st[f + RZ] + l0z * lim;
         restPoint(r, p1x, p1z);
         float k1 = 1 - (float) Math.sqrt((double) l1x * l1x + (double) l1z * l1z);
-        step(r, co, o, ax, az, k1 * rp[f] + l1x * lim, k1 * rp[f + 1] + l1z * lim);
+        step(r, co, o, ax, az, k1 * st[f + RX] + l1x * lim, k1 * st[f + RZ] + l1z * lim);
     }
 
     /**
@@ -315,12 +332,13 @@ final class SpringRuns {
      */
     void settleFlattened(int r, float px, float pz, float lx, float lz) {
         restPoint(r, px, pz);
-        int f = r * REST_STRIDE;
+        int f = r * STRIDE;
+        float[] st = state;
         float k = 1 - (float) Math.sqrt((double) lx * lx + (double) lz * lz);
-        devX[r] = k * restPoint[f] + lx * limit[r];
-        devZ[r] = k * restPoint[f + 1] + lz * limit[r];
-        velX[r] = 0;
-        velZ[r] = 0;
+        st[f] = k * st[f + RX] + lx * limit[r];
+        st[f + 1] = k * st[f + RZ] + lz * limit[r];
+        st[f + VX] = 0;
+        st[f + VZ] = 0;
         spread(r);
     }
 
@@ -360,14 +378,16 @@ final class SpringRuns {
      * the order {@code ((aDD D + aDv v) + bD A) + cD B}; then written to the run's components.
      */
     private void step(int r, float[] co, int o, float ax, float az, float bx, float bz) {
-        float x = devX[r];
-        float z = devZ[r];
-        float vx = velX[r];
-        float vz = velZ[r];
-        devX[r] = co[o] * x + co[o + 1] * vx + co[o + 2] * ax + co[o + 3] * bx;
-        devZ[r] = co[o] * z + co[o + 1] * vz + co[o + 2] * az + co[o + 3] * bz;
-        velX[r] = co[o + 4] * x + co[o + 5] * vx + co[o + 6] * ax + co[o + 7] * bx;
-        velZ[r] = co[o + 4] * z + co[o + 5] * vz + co[o + 6] * az + co[o + 7] * bz;
+        int f = r * STRIDE;
+        float[] st = state;
+        float x = st[f];
+        float z = st[f + 1];
+        float vx = st[f + VX];
+        float vz = st[f + VZ];
+        st[f] = co[o] * x + co[o + 1] * vx + co[o + 2] * ax + co[o + 3] * bx;
+        st[f + 1] = co[o] * z + co[o + 1] * vz + co[o + 2] * az + co[o + 3] * bz;
+        st[f + VX] = co[o + 4] * x + co[o + 5] * vx + co[o + 6] * ax + co[o + 7] * bx;
+        st[f + VZ] = co[o + 4] * z + co[o + 5] * vz + co[o + 6] * az + co[o + 7] * bz;
         spread(r);
     }
 }

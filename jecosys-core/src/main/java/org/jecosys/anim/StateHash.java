@@ -21,8 +21,8 @@ final class StateHash {
             for (int c = runs.start[r], e = runs.start[r + 1]; c < e; c++) {
                 h = mix(h, Float.floatToRawIntBits(runs.compDev[2 * c]));
                 h = mix(h, Float.floatToRawIntBits(runs.compDev[2 * c + 1]));
-                h = mix(h, Float.floatToRawIntBits(own ? scattered.velX[c] : runs.velX[r]));
-                h = mix(h, Float.floatToRawIntBits(own ? scattered.velZ[c] : runs.velZ[r]));
+                h = mix(h, Float.floatToRawIntBits(own ? scattered.velX[c] : runs.velX(r)));
+                h = mix(h, Float.floatToRawIntBits(own ? scattered.velZ[c] : runs.velZ(r)));
                 h = mix(h, Float.floatToRawIntBits(state.poseCoordinate(c)));
                 h = mix(h, Float.floatToRawIntBits(state.azimuth(c)));
             }
