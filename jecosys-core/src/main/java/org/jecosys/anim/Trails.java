@@ -95,9 +95,13 @@ final class Trails {
         return flattenAt[species[p]];
     }
 
-    /** Whether plant p is not flattened: no flattening now and none at its last update. */
+    /**
+     * Whether plant p is not flattened: no flattening now and none at its last update. The flattening
+     * at the last update ({@link #nowX}, {@link #nowZ}) is 0 whenever the amplitude is ({@link #at} sets
+     * it so, {@link #push} sets both, {@link #clear} clears both), so the amplitude alone tells.
+     */
     boolean upright(int p) {
-        return ampX[p] == 0 && ampZ[p] == 0 && nowX[p] == 0 && nowZ[p] == 0;
+        return ampX[p] == 0 && ampZ[p] == 0;
     }
 
     /** Whether plant p's species leaves trails. */

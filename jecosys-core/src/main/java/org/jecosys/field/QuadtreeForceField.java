@@ -511,13 +511,13 @@ public final class QuadtreeForceField implements ForceField {
     private float plantWindX(int r, int plant) {
         float dx = (float) (tree.plantX(plant) - centX[r]);
         float dz = (float) (tree.plantZ(plant) - centZ[r]);
-        return windX[r] + gradXX[r] * dx + gradXZ[r] * dz + flutter(plant, 0x3C6EF372FE94F82BL);
+        return windX[r] + gradXX[r] * dx + gradXZ[r] * dz + flutter(plant, FLUTTER_X);
     }
 
     private float plantWindZ(int r, int plant) {
         float dx = (float) (tree.plantX(plant) - centX[r]);
         float dz = (float) (tree.plantZ(plant) - centZ[r]);
-        return windZ[r] + gradZX[r] * dx + gradZZ[r] * dz + flutter(plant, 0xA54FF53A5F1D36F1L);
+        return windZ[r] + gradZX[r] * dx + gradZZ[r] * dz + flutter(plant, FLUTTER_Z);
     }
 
     /** One component of a plant's flutter (see the class comment); 0 without turbulence. */
@@ -536,17 +536,50 @@ public final class QuadtreeForceField implements ForceField {
         }
         int[] leafOf = tree.leafOf;
         int cur = current;
+        // plants come in spatial order, so neighbours share their leaf: its node's wind, gradient and
+        // centre of gravity are read once per run of plants of one leaf (the arithmetic of plantWindX
+        // and plantWindZ, term for term)
+        int last = -1;
+        boolean v = false;
+        float ux = 0;
+        float uz = 0;
+        float xx = 0;
+        float xz = 0;
+        float zx = 0;
+        float zz = 0;
+        float cx = 0;
+        float cz = 0;
         for (int i = 0; i < n; i++) {
-            int leaf = leafOf[first + i];
-            boolean v = stamp[leaf] == cur && cur != 0;
+            int plant = first + i;
+            int leaf = leafOf[plant];
+            if (leaf != last) {
+                last = leaf;
+                v = stamp[leaf] == cur && cur != 0;
+                if (v) {
+                    int r = rep[leaf];
+                    ux = windX[r];
+                    uz = windZ[r];
+                    xx = gradXX[r];
+                    xz = gradXZ[r];
+                    zx = gradZX[r];
+                    zz = gradZZ[r];
+                    cx = centX[r];
+                    cz = centZ[r];
+                }
+            }
             visible[i] = v;
             if (v) {
-                int r = rep[leaf];
-                wx[i] = plantWindX(r, first + i);
-                wz[i] = plantWindZ(r, first + i);
+                float dx = (float) (tree.plantX(plant) - cx);
+                float dz = (float) (tree.plantZ(plant) - cz);
+                wx[i] = ux + xx * dx + xz * dz + flutter(plant, FLUTTER_X);
+                wz[i] = uz + zx * dx + zz * dz + flutter(plant, FLUTTER_Z);
             }
         }
     }
+
+    /** The salts of a plant's flutter along X and along Z. */
+    private static final long FLUTTER_X = 0x3C6EF372FE94F82BL;
+    private static final long FLUTTER_Z = 0xA54FF53A5F1D36F1L;
 
     private int checkPlant(int plant) {
         if (plant < 0 || plant >= tree.plantCount()) {
