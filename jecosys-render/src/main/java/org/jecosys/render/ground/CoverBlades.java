@@ -328,6 +328,7 @@ public final class CoverBlades implements AutoCloseable {
         java.util.Arrays.fill(bendWeight, 0f);
         double minX = field.minX();
         double minZ = field.minZ();
+        org.jecosys.anim.BendGeometry g = frame.geometry();
         for (int p = 0; p < firstComponent.length; p++) {
             int i = (int) ((world.plantX(p) - minX) / TILE);
             int j = (int) ((world.plantZ(p) - minZ) / TILE);
@@ -335,11 +336,17 @@ public final class CoverBlades implements AutoCloseable {
                 continue;
             }
             int c = firstComponent[p];
-            float bend = frame.poseCoord(c) * poseScale[p] * maxBend[p];
-            float az = frame.bendAzimuth(c);
+            float dx = frame.deviationX(c);
+            float dz = frame.deviationZ(c);
+            float bend = g.poseCoordinate(c, dx, dz) * poseScale[p] * maxBend[p];
+            // the bend's heading is the direction of the tip T = L + D (Frame.bendAzimuth), taken
+            // straight from T: no arc tangent, cosine or sine
+            float tx = g.leanX(c) + dx;
+            float tz = g.leanZ(c) + dz;
+            float r = (float) Math.sqrt(tx * tx + tz * tz);
             int t = j * bendWidth + i;
-            bendSum[2 * t] += bend * (float) Math.cos(az);
-            bendSum[2 * t + 1] += bend * (float) Math.sin(az);
+            bendSum[2 * t] += r > 0 ? bend * tx / r : 0f;
+            bendSum[2 * t + 1] += r > 0 ? bend * tz / r : bend;
             bendWeight[t] += 1f;
         }
         bendData.clear();
