@@ -83,12 +83,9 @@ public final class AnimationState implements AnimationView {
     private final BendGeometry geometry;
     /** Per component its deviation, X at 2 c and Z at 2 c + 1: {@link SpringRuns#compDev}, read in place. */
     private final float[] dev;
-    private final byte[] plantResponse;
     private final float[] plantCompliance;
-    /** Per plant, whether its state follows the wind (see "Start" in the class comment). */
-    private final boolean[] live;
-    private final float[] pressX;
-    private final float[] pressZ;
+    /** Per plant its force, whether it follows the wind, and the CONSTRAINT update ({@link PlantSprings}). */
+    private final PlantSprings springs;
     /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
     private final long[] plantVersion;
     /** The flattening of plants whose species leave trails, or null when none does ({@link #useTrails}). */
@@ -193,7 +190,7 @@ public final class AnimationState implements AnimationView {
             kind[c] = (short) Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
         }
         this.geometry = geometry;
-        plantResponse = new byte[plants];
+        byte[] plantResponse = new byte[plants];
         plantCompliance = new float[plants];
         if ((response != null && response.length != plants) || (compliance != null && compliance.length != plants)) {
             throw new IllegalArgumentException("response and compliance must hold one value per plant (" + plants
@@ -205,15 +202,13 @@ public final class AnimationState implements AnimationView {
             plantCompliance[p] = compliance == null ? 1f
                     : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
         }
-        live = new boolean[plants];
         runs = new SpringRuns(kinds, kind, this.firstComponent, plantCompliance);
         dev = runs.compDev;
         scattered = new ScatteredState(plants, components);
-        pressX = new float[plants];
-        pressZ = new float[plants];
         plantVersion = new long[plants];
+        springs = new PlantSprings(kinds, runs, scattered, plantVersion, plantResponse);
         resetToRest(0, plants);
-        java.util.Arrays.fill(live, false);
+        java.util.Arrays.fill(springs.live, false);
     }
 
     /**
@@ -234,6 +229,7 @@ public final class AnimationState implements AnimationView {
                     + "), got " + recovery.length);
         }
         trails = Trails.of(recovery, flattenAt, plantSpecies);
+        springs.trails = trails;
     }
 
     /**
@@ -331,11 +327,7 @@ public final class AnimationState implements AnimationView {
      */
     public void resetToRest(int first, int end) {
         for (int p = first; p < end; p++) {
-            pressX[p] = 0;
-            pressZ[p] = 0;
-            live[p] = true;
-            scattered.scattered[p] = false;
-            plantVersion[p]++;
+            springs.rest(p);
         }
         runs.rest(runs.plantRun[first], runs.plantRun[end]);
         if (trails != null) {
@@ -360,37 +352,11 @@ public final class AnimationState implements AnimationView {
         int settled = 0;
         for (int p = first; p < end; p++) {
             if (step.visible[p]) {
-                settle(p, step.windX[p], step.windZ[p]);
+                springs.settle(p, step.windX[p], step.windZ[p]);
                 settled++;
             }
         }
         return settled;
-    }
-
-    /** Puts plant p at the equilibrium of wind (ux, uz), m/s, remembered as its force; it then follows the wind. */
-    private void settle(int p, float ux, float uz) {
-        ux = finiteWind(ux);
-        uz = finiteWind(uz);
-        float speed = (float) Math.sqrt(ux * ux + uz * uz);
-        float px = speed * ux;
-        float pz = speed * uz;
-        SpringRuns sr = runs;
-        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
-            sr.settle(r, px, pz);
-        }
-        pressX[p] = px;
-        pressZ[p] = pz;
-        live[p] = true;
-        scattered.scattered[p] = false;
-        plantVersion[p]++;
-    }
-
-    /**
-     * A wind component made safe for the spring: NaN (from a user force field) becomes 0 and the
-     * magnitude is capped at {@link #MAX_WIND} m/s, so that {@code |u| u} stays finite in float.
-     */
-    private static float finiteWind(float u) {
-        return u == u ? Math.max(-MAX_WIND, Math.min(MAX_WIND, u)) : 0f;
     }
 
     /** Largest wind component the spring takes, m/s: far beyond any real wind, and |u|^2 stays finite. */
@@ -434,7 +400,7 @@ public final class AnimationState implements AnimationView {
         for (int p = first; p < end; p++) {
             int l = views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
             if (!visible[p]) {
-                live[p] = false; // its state stops following the wind: it starts afresh when seen again
+                springs.live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
             }
             if (mode == AnimationMode.STATIC) {
@@ -446,88 +412,12 @@ public final class AnimationState implements AnimationView {
             int c1 = firstComponent[p + 1];
             if (mode == AnimationMode.RANDOM) {
                 updated += scattered.randomise(p, c0, c1, bit, runs, kind, kinds.lodMask, kinds.length, step.rng);
-                live[p] = false;
+                springs.live[p] = false;
             } else {
-                updated += trails != null && trails.on(p) ? flattenedRuns(p, bit, step)
-                        : springRuns(p, bit, step.windX[p], step.windZ[p], 0, 0, 0, 0);
+                updated += springs.update(p, bit, step);
             }
         }
         return updated;
-    }
-
-    /**
-     * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
-     * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
-     * runs drawn at that level is advanced from the plant's
-     * force at its last update to the force of that wind with its coefficient row
-     * (spring class and the plant's response variant), toward rest points flattened by L0 at the start
-     * of the step and L1 at its end ({@link Trails}; all four 0: the elastic update, bit for bit); the
-     * plant then remembers the new force.
-     *
-     * @return components advanced
-     */
-    private int springRuns(int p, int bit, float ux, float uz, float l0x, float l0z, float l1x, float l1z) {
-        if (!live[p]) {
-            settle(p, ux, uz);
-        }
-        ux = finiteWind(ux);
-        uz = finiteWind(uz);
-        float speed = (float) Math.sqrt(ux * ux + uz * uz);
-        float p1x = speed * ux;
-        float p1z = speed * uz;
-        float p0x = pressX[p];
-        float p0z = pressZ[p];
-        boolean flat = l0x != 0 || l0z != 0 || l1x != 0 || l1z != 0;
-        int variant = plantResponse[p];
-        int advanced = 0;
-        SpringRuns sr = runs;
-        float[] coef = kinds.coef;
-        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
-            if ((sr.mask[r] & bit) == 0) {
-                continue;
-            }
-            int o = SpringKinds.row(sr.springClass[r], variant) * SpringKinds.STRIDE;
-            if (flat) {
-                sr.advanceFlattened(r, coef, o, p0x, p0z, p1x, p1z, l0x, l0z, l1x, l1z);
-            } else {
-                sr.advance(r, coef, o, p0x, p0z, p1x, p1z);
-            }
-            advanced += sr.size(r);
-        }
-        pressX[p] = p1x;
-        pressZ[p] = p1z;
-        return advanced;
-    }
-
-    /**
-     * {@link #springRuns} for a plant whose species leaves trails ({@link Trails}): the push of the flows
-     * that flatten ({@link AnimationStep#pushes}) may flatten it at the step's end time; the flattening
-     * at the plant's last update and at that time enter the runs' rest points; while both are 0 the
-     * runs advance exactly as without trails.
-     *
-     * @return components advanced
-     */
-    private int flattenedRuns(int p, int bit, AnimationStep step) {
-        float ux = step.windX[p];
-        float uz = step.windZ[p];
-        Trails tr = trails;
-        boolean pushed = step.pushX != null && (step.pushX[p] != 0 || step.pushZ[p] != 0);
-        if (!pushed && tr.upright(p)) {
-            return springRuns(p, bit, ux, uz, 0, 0, 0, 0); // nothing to flatten or recover from
-        }
-        float l0x = tr.nowX[p];
-        float l0z = tr.nowZ[p];
-        tr.at(p, step.time);
-        if (!live[p]) {
-            settle(p, ux, uz);
-            tr.settle(p, runs, pressX[p], pressZ[p]);
-            l0x = tr.nowX[p];
-            l0z = tr.nowZ[p];
-        }
-        if (pushed) {
-            tr.push(p, step.time, finiteWind(step.pushX[p]), finiteWind(step.pushZ[p]), runs);
-        }
-        return springRuns(p, bit, ux, uz, l0x, l0z, tr.nowX[p], tr.nowZ[p]);
     }
 
     /**
@@ -637,13 +527,13 @@ public final class AnimationState implements AnimationView {
      */
     public double forceX(int c) {
         return 0.5 * org.jecosys.field.DragLaw.AIR_DENSITY * kinds.dragArea(kind[c])
-                * pressX[plantOf(c)];
+                * springs.pressX[plantOf(c)];
     }
 
     /** Force on component c at the plant's last update, N, Z part. */
     public double forceZ(int c) {
         return 0.5 * org.jecosys.field.DragLaw.AIR_DENSITY * kinds.dragArea(kind[c])
-                * pressZ[plantOf(c)];
+                * springs.pressZ[plantOf(c)];
     }
 
     /** The plant of component c (binary search; not for per-frame use on every component). */

@@ -1,0 +1,162 @@
+package org.jecosys.anim;
+
+/**
+ * The CONSTRAINT update of one plant for {@link AnimationState} (paper §4.2.2; see "Start" and
+ * "Update order" there): per plant the force {@code P = |u| u} of its last update, whether its
+ * state follows the wind, its response variant, and the update that drives its spring runs
+ * ({@link SpringRuns}) from the force of the last update to that of the wind now, through its
+ * flattening when its species leaves trails ({@link Trails}). A caller touches only its own plants,
+ * so disjoint plant ranges may run at once. Built once (allocates); nothing else allocates.
+ */
+final class PlantSprings {
+    /** Largest wind component the spring takes, m/s ({@link AnimationState#MAX_WIND}). */
+    private static final float MAX_WIND = AnimationState.MAX_WIND;
+
+    private final SpringKinds kinds;
+    private final SpringRuns runs;
+    private final ScatteredState scattered;
+    /** Per plant, incremented whenever its deviations may have changed (shared with the state). */
+    private final long[] version;
+    /** Per plant its response variant (a row of the spring coefficients). */
+    private final byte[] response;
+    /** Per plant, whether its state follows the wind (see "Start" in {@link AnimationState}). */
+    final boolean[] live;
+    /** Per plant, the force P of its last update, m^2/s^2. */
+    final float[] pressX;
+    final float[] pressZ;
+    /** The trails of the plants whose species leave them, or null. */
+    Trails trails;
+
+    PlantSprings(SpringKinds kinds, SpringRuns runs, ScatteredState scattered, long[] version, byte[] response) {
+        this.kinds = kinds;
+        this.runs = runs;
+        this.scattered = scattered;
+        this.version = version;
+        this.response = response;
+        int plants = response.length;
+        live = new boolean[plants];
+        pressX = new float[plants];
+        pressZ = new float[plants];
+    }
+
+    /**
+     * A wind component made safe for the spring: NaN (from a user force field) becomes 0 and the
+     * magnitude is capped at {@link AnimationState#MAX_WIND} m/s, so that {@code |u| u} stays finite
+     * in float.
+     */
+    static float finiteWind(float u) {
+        return u == u ? Math.max(-MAX_WIND, Math.min(MAX_WIND, u)) : 0f;
+    }
+
+    /** Puts plant p at rest with no remembered force, as a state that follows the wind. */
+    void rest(int p) {
+        pressX[p] = 0;
+        pressZ[p] = 0;
+        live[p] = true;
+        scattered.scattered[p] = false;
+        version[p]++;
+    }
+
+    /** Puts plant p at the equilibrium of wind (ux, uz), m/s, remembered as its force; it then follows the wind. */
+    void settle(int p, float ux, float uz) {
+        ux = finiteWind(ux);
+        uz = finiteWind(uz);
+        float speed = (float) Math.sqrt(ux * ux + uz * uz);
+        float px = speed * ux;
+        float pz = speed * uz;
+        SpringRuns sr = runs;
+        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
+            sr.settle(r, px, pz);
+        }
+        pressX[p] = px;
+        pressZ[p] = pz;
+        live[p] = true;
+        scattered.scattered[p] = false;
+        version[p]++;
+    }
+
+    /**
+     * The CONSTRAINT update of plant p at level-of-detail bit {@code bit} with the step's wind (and
+     * pushes, for a species that leaves trails).
+     *
+     * @return components advanced
+     */
+    int update(int p, int bit, AnimationStep step) {
+        return trails != null && trails.on(p) ? flattenedRuns(p, bit, step)
+                : springRuns(p, bit, step.windX[p], step.windZ[p], 0, 0, 0, 0);
+    }
+
+    /**
+     * CONSTRAINT update of plant p at level-of-detail bit {@code bit}: a plant that does not follow the
+     * wind is first settled at the equilibrium of wind {@code (ux, uz)} (m/s); then each of its spring
+     * runs drawn at that level is advanced from the plant's force at its last update to the force of
+     * that wind with its coefficient row (spring class and the plant's response variant), toward rest
+     * points flattened by L0 at the start of the step and L1 at its end ({@link Trails}; all four 0:
+     * the elastic update, bit for bit); the plant then remembers the new force.
+     *
+     * @return components advanced
+     */
+    private int springRuns(int p, int bit, float ux, float uz, float l0x, float l0z, float l1x, float l1z) {
+        if (!live[p]) {
+            settle(p, ux, uz);
+        }
+        ux = finiteWind(ux);
+        uz = finiteWind(uz);
+        float speed = (float) Math.sqrt(ux * ux + uz * uz);
+        float p1x = speed * ux;
+        float p1z = speed * uz;
+        float p0x = pressX[p];
+        float p0z = pressZ[p];
+        boolean flat = l0x != 0 || l0z != 0 || l1x != 0 || l1z != 0;
+        int variant = response[p];
+        int advanced = 0;
+        SpringRuns sr = runs;
+        float[] coef = kinds.coef;
+        for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
+            if ((sr.mask[r] & bit) == 0) {
+                continue;
+            }
+            int o = SpringKinds.row(sr.springClass[r], variant) * SpringKinds.STRIDE;
+            if (flat) {
+                sr.advanceFlattened(r, coef, o, p0x, p0z, p1x, p1z, l0x, l0z, l1x, l1z);
+            } else {
+                sr.advance(r, coef, o, p0x, p0z, p1x, p1z);
+            }
+            advanced += sr.size(r);
+        }
+        pressX[p] = p1x;
+        pressZ[p] = p1z;
+        return advanced;
+    }
+
+    /**
+     * {@link #springRuns} for a plant whose species leaves trails ({@link Trails}): the push of the flows
+     * that flatten ({@link AnimationStep#pushes}) may flatten it at the step's end time; the flattening
+     * at the plant's last update and at that time enter the runs' rest points; while both are 0 the
+     * runs advance exactly as without trails.
+     *
+     * @return components advanced
+     */
+    private int flattenedRuns(int p, int bit, AnimationStep step) {
+        float ux = step.windX[p];
+        float uz = step.windZ[p];
+        Trails tr = trails;
+        boolean pushed = step.pushX != null && (step.pushX[p] != 0 || step.pushZ[p] != 0);
+        if (!pushed && tr.upright(p)) {
+            return springRuns(p, bit, ux, uz, 0, 0, 0, 0); // nothing to flatten or recover from
+        }
+        float l0x = tr.nowX[p];
+        float l0z = tr.nowZ[p];
+        tr.at(p, step.time);
+        if (!live[p]) {
+            settle(p, ux, uz);
+            tr.settle(p, runs, pressX[p], pressZ[p]);
+            l0x = tr.nowX[p];
+            l0z = tr.nowZ[p];
+        }
+        if (pushed) {
+            tr.push(p, step.time, finiteWind(step.pushX[p]), finiteWind(step.pushZ[p]), runs);
+        }
+        return springRuns(p, bit, ux, uz, l0x, l0z, tr.nowX[p], tr.nowZ[p]);
+    }
+}
