@@ -26,8 +26,6 @@ public final class FrameExchange {
     private final AtomicInteger ready = new AtomicInteger(1);
     private int back;
     private int front = 2;
-    /** The buffer the writer published last (initially the ready one): it keeps its content until the next publish. */
-    private int published = 1;
     /** The newest published buffer, for copies by any thread. */
     private volatile int newest = 1;
     /** Per buffer, its write sequence: odd while the writer fills it. */
@@ -57,15 +55,6 @@ public final class FrameExchange {
         return frames[back];
     }
 
-    /**
-     * The frame the writer published last (before the first publish: the initial ready frame). The
-     * reader may hold it but never writes it, and the writer gets it back only at the next
-     * {@link #publish}, so the writer may read it while filling {@link #back()}. Writer thread only.
-     */
-    Frame lastPublished() {
-        return frames[published];
-    }
-
     /** Index (0-2) of {@link #back()}, for bookkeeping per buffer. Writer thread only. */
     int backIndex() {
         return back;
@@ -87,7 +76,6 @@ public final class FrameExchange {
             writes.incrementAndGet(back);
         }
         newest = back;
-        published = back;
         int old = ready.getAndSet(back | FRESH);
         back = old & 3;
     }
