@@ -43,16 +43,17 @@ import org.jecosys.render.gl.GlVertexArray;
 
 /**
  * The GPU per-component resolve pass of {@link PlantRenderer} (paper §4.1-4.2; docs/ARCHITECTURE.md,
- * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component, as the
- * animation workers wrote them) and 8 bytes per drawn plant and level, then resolves each drawn
- * component's record (3 RGBA32F texels: base, cos/sin of the bend azimuth, pose texel and weight,
+ * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component: the
+ * deviation D the animation workers wrote) and 8 bytes per drawn plant and level, then resolves each
+ * drawn component's record from D and its bend geometry (3 RGBA32F texels: base, cos/sin of the bend
+ * azimuth, pose texel and weight,
  * dither window, colour variation) into the component buffer the instanced draws read, on its
  * {@link ResolvePath}: a compute shader ({@code plant_resolve.comp}) or transform feedback
  * ({@code plant_resolve.vert}), both around {@code plant_resolve.glsl}, each compiled twice: with
  * the parent walk ({@code ATTACHED}) for species with attached components, without it for the others.
  *
  * <p>Holds the resolve programs, the static per-component data (root bases and pose texels; parent
- * links; made by {@link PlantMeshes}), the dynamic render-state and instance buffers with their
+ * links; bend geometry: rest lean, length, pose scale; made by {@link PlantMeshes}), the dynamic render-state and instance buffers with their
  * buffer textures, the component record buffer, the compute path's list table, an empty VAO for the
  * points and the staging memory. It reads the renderer's pose texture and {@link PlantBatches}, which
  * it does not own.
