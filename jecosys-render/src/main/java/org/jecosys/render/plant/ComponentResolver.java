@@ -46,8 +46,8 @@ import org.jecosys.render.gl.GlVertexArray;
  * "Rendering"): per frame it uploads the drawn plants' render states (8 bytes per component: the
  * deviation D the animation workers wrote) and 8 bytes per drawn plant and level, then resolves each
  * drawn component's record from D and its bend geometry (3 RGBA32F texels: base, cos/sin of the bend
- * azimuth, pose texel and weight,
- * dither window, colour variation) into the component buffer the instanced draws read, on its
+ * azimuth, pose texel and weight, dither window, colour variation) into the component buffer the
+ * instanced draws read, on its
  * {@link ResolvePath}: a compute shader ({@code plant_resolve.comp}) or transform feedback
  * ({@code plant_resolve.vert}), both around {@code plant_resolve.glsl}, each compiled twice: with
  * the parent walk ({@code ATTACHED}) for species with attached components, without it for the others.
