@@ -538,7 +538,7 @@ public final class QuadtreeForceField implements ForceField {
         int cur = current;
         // plants come in spatial order, so neighbours share their leaf: its node's wind, gradient and
         // centre of gravity are read once per run of plants of one leaf (the arithmetic of plantWindX
-        // and plantWindZ, term for term)
+        // and plantWindZ, term for term: wind(plant) must give the same bits)
         int last = -1;
         boolean v = false;
         float ux = 0;

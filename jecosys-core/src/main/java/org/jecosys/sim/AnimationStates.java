@@ -56,11 +56,7 @@ final class AnimationStates {
      */
     static BendGeometry geometry(World world) {
         SpringKinds kinds = SpringKinds.of(world.plants().species());
-        int[] first = new int[world.plantCount() + 1];
-        for (int p = 0; p < world.plantCount(); p++) {
-            first[p] = world.firstComponent(p);
-        }
-        first[world.plantCount()] = world.componentCount();
+        int[] first = SimulationBuild.firstComponents(world);
         List<SpeciesModel> species = world.plants().species();
         float[] heading = new float[world.componentCount()];
         for (int p = 0; p < world.plantCount(); p++) {

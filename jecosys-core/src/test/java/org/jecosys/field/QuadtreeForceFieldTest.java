@@ -225,6 +225,8 @@ class QuadtreeForceFieldTest {
                 assertTrue(a >= 0, "the effective node is an ancestor of the leaf");
             }
             f.wind(p, got);
+            assertEquals((float) got.x, wx[p], "gather gives the plant's wind bit for bit");
+            assertEquals((float) got.y, wz[p]);
             wind.velocity(t.centroidX(e), t.centroidZ(e), want);
             assertEquals(want.x, f.debugView().windX(e), 1e-5, "the node's wind is the flows' at its centroid");
             assertEquals(want.y, f.debugView().windZ(e), 1e-5);
