@@ -78,7 +78,8 @@ public final class QuadtreeForceField implements ForceField {
     private float[] gradZZ;
     /** The flutter's amplitude (m/s) and noise coordinate at the last update. */
     private float eddy;
-    private double eddyTime;
+    /** The flutter's noise at the step's time (the same for every plant; {@link Noise.Slice1}). */
+    private final Noise.Slice1 eddyNoise = new Noise.Slice1();
     /** The effective nodes of the last update, in visiting order. */
     private int[] effective;
     private int effectiveCount;
@@ -286,7 +287,7 @@ public final class QuadtreeForceField implements ForceField {
         c.flowEvaluations = 0;
         effectiveCount = 0;
         neighbours.begin();
-        eddyTime = wind.time() * EDDY_FREQUENCY;
+        eddyNoise.at(wind.time() * EDDY_FREQUENCY);
         eddy = def.enabled() ? finite(EDDY_GAIN * wind.eddySpeed()) : 0f;
         visit(0, 0, -1);
         boolean sameCut = neighbours.keep();
@@ -523,7 +524,7 @@ public final class QuadtreeForceField implements ForceField {
     /** One component of a plant's flutter (see the class comment); 0 without turbulence. */
     private float flutter(int plant, long salt) {
         float a = eddy;
-        return a == 0 ? 0 : a * (float) Noise.value1(salt + plant * 0x9E3779B97F4A7C15L, eddyTime);
+        return a == 0 ? 0 : a * (float) eddyNoise.value(salt + plant * 0x9E3779B97F4A7C15L);
     }
 
     @Override
