@@ -403,19 +403,16 @@ public final class AnimationState implements AnimationView {
                 springs.live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
             }
-            if (mode == AnimationMode.STATIC) {
-                continue;
+            if (mode != AnimationMode.RANDOM) {
+                continue; // STATIC: nothing moves; CONSTRAINT: below
             }
-            int bit = 1 << l;
             plantVersion[p]++;
-            int c0 = firstComponent[p];
-            int c1 = firstComponent[p + 1];
-            if (mode == AnimationMode.RANDOM) {
-                updated += scattered.randomise(p, c0, c1, bit, runs, kind, kinds.lodMask, kinds.length, step.rng);
-                springs.live[p] = false;
-            } else {
-                updated += springs.update(p, bit, step);
-            }
+            updated += scattered.randomise(p, firstComponent[p], firstComponent[p + 1], 1 << l, runs, kind,
+                    kinds.lodMask, kinds.length, step.rng);
+            springs.live[p] = false;
+        }
+        if (mode == AnimationMode.CONSTRAINT) {
+            updated = springs.update(first, end, levels, step);
         }
         return updated;
     }

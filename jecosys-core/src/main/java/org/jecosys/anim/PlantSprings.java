@@ -76,14 +76,60 @@ final class PlantSprings {
     }
 
     /**
-     * The CONSTRAINT update of plant p at level-of-detail bit {@code bit} with the step's wind (and
-     * pushes, for a species that leaves trails).
+     * The CONSTRAINT update of the visible plants of {@code [first, end)}, each at the level of detail
+     * {@code levels} holds for it, with the step's wind (and pushes, for a species that leaves trails):
+     * a new version for each, then {@link #springRuns}, written out here for a plant that is not
+     * flattened (all of them while no trail is being left) so that the JIT compiles it into this loop:
+     * as a method of its own it is too large to be inlined, and a call per plant cost more than its
+     * arithmetic. No allocation.
      *
      * @return components advanced
      */
-    int update(int p, int bit, AnimationStep step) {
-        return trails != null && trails.on(p) ? flattenedRuns(p, bit, step)
-                : springRuns(p, bit, step.windX[p], step.windZ[p], 0, 0, 0, 0);
+    int update(int first, int end, PlantLevels levels, AnimationStep step) {
+        boolean[] visible = step.visible;
+        float[] windX = step.windX;
+        float[] windZ = step.windZ;
+        float[] pushX = step.pushX;
+        float[] pushZ = step.pushZ;
+        Trails tr = trails;
+        SpringRuns sr = runs;
+        float[] coef = kinds.coef;
+        int advanced = 0;
+        for (int p = first; p < end; p++) {
+            if (!visible[p]) {
+                continue;
+            }
+            version[p]++;
+            int bit = 1 << levels.level(p);
+            if (tr != null && tr.on(p) && (!tr.upright(p) || pushX != null && (pushX[p] != 0 || pushZ[p] != 0))) {
+                advanced += flattenedRuns(p, bit, step);
+                continue;
+            }
+            // springRuns(p, bit, ux, uz, 0, 0, 0, 0), term for term
+            float ux = windX[p];
+            float uz = windZ[p];
+            if (!live[p]) {
+                settle(p, ux, uz);
+            }
+            ux = finiteWind(ux);
+            uz = finiteWind(uz);
+            float speed = (float) Math.sqrt(ux * ux + uz * uz);
+            float p1x = speed * ux;
+            float p1z = speed * uz;
+            float p0x = pressX[p];
+            float p0z = pressZ[p];
+            int variant = response[p];
+            for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
+                if ((sr.mask[r] & bit) != 0) {
+                    sr.advance(r, coef, SpringKinds.row(sr.springClass[r], variant) * SpringKinds.STRIDE, p0x, p0z,
+                            p1x, p1z);
+                    advanced += sr.size(r);
+                }
+            }
+            pressX[p] = p1x;
+            pressZ[p] = p1z;
+        }
+        return advanced;
     }
 
     /**

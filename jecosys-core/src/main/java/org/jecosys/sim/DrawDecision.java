@@ -67,11 +67,19 @@ public final class DrawDecision {
         final int[] levels;
         double[][] edges;
         final double[] band;
+        /**
+         * Per species, per level l, the squared equivalent distances {@code [plain[2l], plain[2l + 1]]}
+         * where level l is drawn whole and alone (packed window 255): past the last edge by a margin,
+         * short of the transition band by a margin, so that {@link #decide} may skip the square root
+         * and the window's arithmetic there with the very result they give.
+         */
+        double[][] plain;
 
         Bands(int species) {
             levels = new int[species];
             edges = new double[species][0];
             band = new double[species];
+            plain = new double[species][0];
         }
 
         /** Copies the edges of {@code e} and each species' band for a decision band {@code b}, metres. */
@@ -86,9 +94,30 @@ public final class DrawDecision {
                     edges[s][l] = e.edge(s, l);
                 }
                 band[s] = Math.min(b, minGap(e, s, n));
+                if (plain[s].length < 2 * n) {
+                    plain[s] = new double[2 * n];
+                }
+                for (int l = 0; l < n; l++) {
+                    plain[s][2 * l] = l == 0 ? Double.NEGATIVE_INFINITY : above2(edges[s][l - 1]);
+                    plain[s][2 * l + 1] = l == n - 1 ? Double.POSITIVE_INFINITY
+                            : below2(band[s] > 0 ? edges[s][l] - band[s] : edges[s][l]);
+                }
             }
             return this;
         }
+    }
+
+    /** Relative margin of the plain windows ({@link Bands#plain}), far above the roundings of a square and its root. */
+    private static final double PLAIN_MARGIN = 1e-9;
+
+    /** A square that a squared distance reaches only when the distance is surely at least {@code e} (e &gt;= 0). */
+    private static double above2(double e) {
+        return e * e * (1 + PLAIN_MARGIN);
+    }
+
+    /** A square that a squared distance stays below only when the distance is surely below {@code e}; -1 for e &lt;= 0. */
+    static double below2(double e) {
+        return e > 0 ? e * e * (1 - PLAIN_MARGIN) : -1;
     }
 
     private final World world;
@@ -298,6 +327,8 @@ public final class DrawDecision {
                        double ex, double ey, double ez, double scale2, double fixed2, FrustumIntersection frustum,
                        double thinStart, double thinEnd, double thinMin, byte[] levelOut, int[] keepOut) {
         boolean thinned = thinMin < 1;
+        // below this squared distance no plant is thinned (the thinning needs the distance itself)
+        double unthinned2 = thinned ? below2(thinStart) : Double.POSITIVE_INFINITY;
         for (int p = p0; p < p1; p++) {
             int s = world.plantSpecies(p);
             float x = world.plantX(p);
@@ -322,6 +353,13 @@ public final class DrawDecision {
                     break;
                 }
                 l++;
+            }
+            double[] plain = bands.plain[s];
+            if (q2 >= plain[2 * l] && q2 <= plain[2 * l + 1] && d2 < unthinned2) {
+                // level l whole and alone, unthinned: what the window's arithmetic below gives there
+                levelOut[p] = (byte) l;
+                keepOut[p] = 255;
+                continue;
             }
             double q = Math.sqrt(q2);
             double b = bands.band[s];
