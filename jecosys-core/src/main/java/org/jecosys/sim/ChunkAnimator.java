@@ -37,6 +37,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final Rng[] chunkRng;
     /** Per chunk, the holder of its animate inputs (refilled each step; never two chunks' at once). */
     private final AnimationStep[] chunkStep;
+    /** Per chunk the box round its plants' bases ({@link DrawDecision#baseBoxes}). */
+    private final float[] chunkBox;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -72,6 +74,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         framePackedVersion = new long[3][plants];
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
+        chunkBox = draw.baseBoxes(chunkFirstPlant);
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
             chunkStep[c] = new AnimationStep();
@@ -167,7 +170,11 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         } else {
             packChanged(f, framePackedVersion[stepFrameIndex], p0, p1, reset);
         }
-        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], f);
+        float[] box = chunkBox;
+        int o = 6 * chunk;
+        boolean inside = frustum[b].intersectAab(box[o], box[o + 1], box[o + 2], box[o + 3], box[o + 4], box[o + 5])
+                == FrustumIntersection.INSIDE;
+        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], !inside, f);
     }
 
     /**

@@ -308,12 +308,52 @@ public final class DrawDecision {
      * @param scale2  the camera's level-of-detail metric ({@link org.jecosys.math.ViewLod})
      * @param fixed2  likewise, &lt; 0 for a perspective camera
      * @param frustum the camera's frustum, read only
+     * @param test    whether to test each plant's bounding sphere against the frustum: false when the
+     *                plants' bases all lie inside it ({@link #baseBoxes}), where every sphere passes
      */
     void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, double scale2, double fixed2,
-                FrustumIntersection frustum, Frame frame) {
+                FrustumIntersection frustum, boolean test, Frame frame) {
         double[] thin = thinning;
-        decide(world, stepBands, radius, p0, p1, visible, true, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
+        decide(world, stepBands, radius, p0, p1, visible, test, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
                 thin[2], frame.drawLevel, frame.drawKeep);
+    }
+
+    /**
+     * The boxes round the bases of the plants of each range {@code [first[i], first[i + 1])}: six floats
+     * per range (minimum X, Y, Z, then maximum), metres. When a frustum holds a range's box whole
+     * ({@link FrustumIntersection#INSIDE}), every base in it is inside each plane, so every bounding sphere
+     * (radius &gt; 0) passes the sphere test. Build time; allocates the array.
+     *
+     * @param first per range its first plant, plus the end of the last
+     * @return the boxes
+     */
+    float[] baseBoxes(int[] first) {
+        int n = first.length - 1;
+        float[] box = new float[6 * n];
+        for (int i = 0; i < n; i++) {
+            float x0 = Float.POSITIVE_INFINITY;
+            float y0 = Float.POSITIVE_INFINITY;
+            float z0 = Float.POSITIVE_INFINITY;
+            float x1 = Float.NEGATIVE_INFINITY;
+            float y1 = Float.NEGATIVE_INFINITY;
+            float z1 = Float.NEGATIVE_INFINITY;
+            for (int p = first[i]; p < first[i + 1]; p++) {
+                x0 = Math.min(x0, world.plantX(p));
+                y0 = Math.min(y0, world.plantY(p));
+                z0 = Math.min(z0, world.plantZ(p));
+                x1 = Math.max(x1, world.plantX(p));
+                y1 = Math.max(y1, world.plantY(p));
+                z1 = Math.max(z1, world.plantZ(p));
+            }
+            int o = 6 * i;
+            box[o] = x0;
+            box[o + 1] = y0;
+            box[o + 2] = z0;
+            box[o + 3] = x1;
+            box[o + 4] = y1;
+            box[o + 5] = z1;
+        }
+        return box;
     }
 
     /**

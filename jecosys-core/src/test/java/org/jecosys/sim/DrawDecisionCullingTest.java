@@ -57,4 +57,49 @@ class DrawDecisionCullingTest {
         assertTrue(culled > 100 && drawn > 100 && nearEdge > 10, "culled " + culled + ", drawn " + drawn
                 + ", drawn with the base outside the picture " + nearEdge);
     }
+
+    /**
+     * The step skips the sphere test for a chunk whose box of plant bases the frustum holds whole: then
+     * every sphere of the chunk passes it. Checked on C1's plants cut into ranges of 7, for cameras
+     * that hold some ranges whole and cut others.
+     */
+    @Test
+    void aRangeInsideTheFrustumHasEverySphereInside() throws Exception {
+        World world = SimFixtures.world();
+        DrawDecision decision = DrawDecision.of(world);
+        int plants = world.plantCount();
+        int[] first = new int[(plants + 6) / 7 + 1];
+        for (int i = 0; i < first.length; i++) {
+            first[i] = Math.min(plants, 7 * i);
+        }
+        float[] box = decision.baseBoxes(first);
+        org.joml.FrustumIntersection frustum = new org.joml.FrustumIntersection();
+        Matrix4f vp = new Matrix4f();
+        int inside = 0;
+        int cut = 0;
+        for (double pitch : new double[] {-0.3, -0.7, -1.2, -1.5}) {
+            for (double yaw = 0; yaw < 2 * Math.PI; yaw += Math.PI / 4) {
+                ViewCamera cam = new ViewCamera().setPosition(0, pitch < -1 ? 12 : 3, 0).setOrientation(yaw, pitch)
+                        .setLens(Math.toRadians(60), 16 / 9.0, 0.05, 200);
+                frustum.set(cam.viewProjection(vp), true);
+                for (int i = 0; i + 1 < first.length; i++) {
+                    int o = 6 * i;
+                    if (frustum.intersectAab(box[o], box[o + 1], box[o + 2], box[o + 3], box[o + 4], box[o + 5])
+                            != org.joml.FrustumIntersection.INSIDE) {
+                        cut++;
+                        continue;
+                    }
+                    inside++;
+                    for (int p = first[i]; p < first[i + 1]; p++) {
+                        assertTrue(world.plantX(p) >= box[o] && world.plantX(p) <= box[o + 3]
+                                && world.plantZ(p) >= box[o + 2] && world.plantZ(p) <= box[o + 5], "plant " + p);
+                        float r = decision.radius(world.plantSpecies(p));
+                        assertTrue(frustum.testSphere(world.plantX(p), world.plantY(p), world.plantZ(p), r),
+                                "plant " + p + " of a range held whole");
+                    }
+                }
+            }
+        }
+        assertTrue(inside > 50 && cut > 50, "ranges held whole " + inside + ", others " + cut);
+    }
 }
