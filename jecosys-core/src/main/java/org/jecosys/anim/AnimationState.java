@@ -81,8 +81,8 @@ public final class AnimationState implements AnimationView {
     private final ScatteredState scattered;
     // per-component copies of the kind constants the output loops need (no gather there)
     private final BendGeometry geometry;
-    /** Per component its deviation, X at 2 c and Z at 2 c + 1: {@link SpringRuns#compDev}, read in place. */
-    private final float[] dev;
+    /** Per component its deviation, packed ({@link SpringRuns#pack}): {@link SpringRuns#compDev}, read in place. */
+    private final long[] dev;
     private final float[] plantCompliance;
     /** Per plant its force, whether it follows the wind, and the CONSTRAINT update ({@link PlantSprings}). */
     private final PlantSprings springs;
@@ -450,12 +450,12 @@ public final class AnimationState implements AnimationView {
 
     /** Deviation X of component c, metres. */
     public float deviationX(int c) {
-        return dev[2 * c];
+        return SpringRuns.unpackX(dev[c]);
     }
 
     /** Deviation Z of component c, metres. */
     public float deviationZ(int c) {
-        return dev[2 * c + 1];
+        return SpringRuns.unpackZ(dev[c]);
     }
 
     /** Velocity X of component c, m/s. */
@@ -475,7 +475,7 @@ public final class AnimationState implements AnimationView {
      * operations as the output loops of {@link #animate}, hence the same bits). No allocation.
      */
     public float poseCoordinate(int c) {
-        return geometry.poseCoordinate(c, dev[2 * c], dev[2 * c + 1]);
+        return geometry.poseCoordinate(c, SpringRuns.unpackX(dev[c]), SpringRuns.unpackZ(dev[c]));
     }
 
     /**
@@ -483,7 +483,7 @@ public final class AnimationState implements AnimationView {
      * its deviation (as {@link #poseCoordinate}). No allocation.
      */
     public float azimuth(int c) {
-        return geometry.azimuth(c, dev[2 * c], dev[2 * c + 1]);
+        return geometry.azimuth(c, SpringRuns.unpackX(dev[c]), SpringRuns.unpackZ(dev[c]));
     }
 
     /**
@@ -495,17 +495,22 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
-     * Copies the deviations D of components {@code first .. end-1} into {@code dest} as interleaved
-     * floats (X at {@code 2 c}, Z at {@code 2 c + 1}, absolute component indices), one bulk copy: the
-     * render states of a published frame. Any thread that owns the range (as {@link #animate}). No
-     * allocation.
+     * Copies the deviations D of components {@code first .. end-1} into {@code dest}, one bulk copy: the
+     * render states of a published frame. {@code dest} is a view of little-endian bytes, one long per
+     * component at its absolute index, which those bytes hold as two floats, X then Z, metres
+     * ({@code ByteBuffer.order(ByteOrder.LITTLE_ENDIAN).asLongBuffer()}). Any thread that owns the
+     * range (as {@link #animate}). No allocation.
      *
      * @param first first component
      * @param end   end of the range (exclusive)
-     * @param dest  receives the deviations, metres ({@code 2 * end} floats at least)
+     * @param dest  receives the deviations ({@code end} longs at least), little-endian
+     * @throws IllegalArgumentException when dest is not little-endian
      */
-    public void copyDeviations(int first, int end, java.nio.FloatBuffer dest) {
-        dest.put(2 * first, dev, 2 * first, 2 * (end - first));
+    public void copyDeviations(int first, int end, java.nio.LongBuffer dest) {
+        if (dest.order() != java.nio.ByteOrder.LITTLE_ENDIAN) {
+            throw new IllegalArgumentException("dest must be a view of little-endian bytes");
+        }
+        dest.put(first, dev, first, end - first);
     }
 
     /** Kind of component c. */

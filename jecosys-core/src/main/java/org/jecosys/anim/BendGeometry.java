@@ -147,12 +147,14 @@ public final class BendGeometry {
      * Pose coordinates and azimuths of components {@code c0 .. c1-1} from their deviations into
      * {@code pose} and {@code azimuth} (indexed by component). No allocation.
      *
-     * @param dev deviation per component, metres, X at {@code 2 c} and Z at {@code 2 c + 1}
+     * @param dev deviation per component, metres, packed ({@code SpringRuns.pack}: X's bits low, Z's high)
      */
-    void outputs(int c0, int c1, float[] dev, float[] pose, float[] azimuth) {
+    void outputs(int c0, int c1, long[] dev, float[] pose, float[] azimuth) {
         for (int c = c0; c < c1; c++) {
-            pose[c] = poseCoordinate(c, dev[2 * c], dev[2 * c + 1]);
-            azimuth[c] = azimuth(c, dev[2 * c], dev[2 * c + 1]);
+            float x = SpringRuns.unpackX(dev[c]);
+            float z = SpringRuns.unpackZ(dev[c]);
+            pose[c] = poseCoordinate(c, x, z);
+            azimuth[c] = azimuth(c, x, z);
         }
     }
 

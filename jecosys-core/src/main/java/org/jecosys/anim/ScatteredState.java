@@ -48,8 +48,7 @@ final class ScatteredState {
                 float r = 0.3f * length[k] * (float) Math.sqrt(rng.nextDouble());
                 float a = (float) (rng.nextDouble() * 2 * Math.PI);
                 float ca = (float) StrictMath.cos(a);
-                runs.compDev[2 * c] = r * ca;
-                runs.compDev[2 * c + 1] = r * (float) StrictMath.sin(a);
+                runs.compDev[c] = SpringRuns.pack(r * ca, r * (float) StrictMath.sin(a));
                 velX[c] = 0;
                 velZ[c] = 0;
                 updated++;

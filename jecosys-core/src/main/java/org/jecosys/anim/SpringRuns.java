@@ -15,8 +15,8 @@ import java.util.Arrays;
  * and {@link #advance} steps a run, not each of its components, with the arithmetic the
  * per-component update had, so the bits are those of the per-component update. Each change of a
  * run's D is also written to its components' entries of {@link #compDev}, the deviation of every
- * component, interleaved (X, Z) as a frame's render states hold it, so that publishing them is one
- * bulk copy. RANDOM mode, which gives each component a deviation of its own, writes those
+ * component, packed in one long as a frame's render states hold it (X, Z), so that publishing them is
+ * one bulk copy. RANDOM mode, which gives each component a deviation of its own, writes those
  * directly and keeps the velocities in {@link ScatteredState} until the plant settles again.
  *
  * <p>A run's rest point at the end of a step is its rest point at the start of the next (the plant's
@@ -79,10 +79,10 @@ final class SpringRuns {
     /** Per run, its shortest component's bend limit dMax, metres ({@code knee / KNEE}). */
     private final float[] limit;
     /**
-     * Per component, its deviation D, metres, X at {@code 2 c} and Z at {@code 2 c + 1}: its run's, or its
+     * Per component c, its deviation D, metres, at {@code c}, packed ({@link #pack}): its run's, or its
      * own while its plant is scattered.
      */
-    final float[] compDev;
+    final long[] compDev;
 
     /**
      * Cuts the components of each plant into runs, all at rest. Build time; allocates.
@@ -140,7 +140,7 @@ final class SpringRuns {
             limit[r] = knee[r] / KNEE;
             state[r * STRIDE + PX] = Float.NaN; // a rest point of no P yet
         }
-        compDev = new float[2 * components];
+        compDev = new long[components];
     }
 
     /** Run r's deviation D, X part, metres. */
@@ -253,15 +253,31 @@ final class SpringRuns {
         spread(r);
     }
 
-    /** Writes run r's D to its components' entries of {@link #compDev}. */
+    /** Writes run r's D to its components' entries of {@link #compDev}: one 8-byte store per component. */
     private void spread(int r) {
-        float x = devX(r);
-        float z = devZ(r);
-        float[] cd = compDev;
-        for (int i = 2 * start[r], e = 2 * start[r + 1]; i < e; i += 2) {
-            cd[i] = x;
-            cd[i + 1] = z;
+        long d = pack(devX(r), devZ(r));
+        long[] cd = compDev;
+        for (int c = start[r], e = start[r + 1]; c < e; c++) {
+            cd[c] = d;
         }
+    }
+
+    /**
+     * A deviation (X, Z), metres, as one long: X's bits low, Z's high, so that the long written to
+     * little-endian memory is the two floats X, Z (a frame's render state).
+     */
+    static long pack(float x, float z) {
+        return (long) Float.floatToRawIntBits(z) << 32 | Float.floatToRawIntBits(x) & 0xFFFF_FFFFL;
+    }
+
+    /** {@return the X part of a packed deviation ({@link #pack})} */
+    static float unpackX(long d) {
+        return Float.intBitsToFloat((int) d);
+    }
+
+    /** {@return the Z part of a packed deviation ({@link #pack})} */
+    static float unpackZ(long d) {
+        return Float.intBitsToFloat((int) (d >>> 32));
     }
 
     /** Puts the components of runs {@code r0 .. r1-1} at rest: D = v = 0. */
@@ -269,7 +285,7 @@ final class SpringRuns {
         for (int f = r0 * STRIDE, e = r1 * STRIDE; f < e; f += STRIDE) {
             Arrays.fill(state, f, f + RX, 0f); // D and v; the kept rest point stays that of its P
         }
-        Arrays.fill(compDev, 2 * start[r0], 2 * start[r1], 0f);
+        Arrays.fill(compDev, start[r0], start[r1], 0L); // pack(0, 0)
     }
 
     /**

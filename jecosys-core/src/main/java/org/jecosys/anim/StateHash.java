@@ -19,8 +19,8 @@ final class StateHash {
         for (int r = 0, n = runs.count(); r < n; r++) {
             boolean own = scattered.scattered[runs.runPlant[r]];
             for (int c = runs.start[r], e = runs.start[r + 1]; c < e; c++) {
-                h = mix(h, Float.floatToRawIntBits(runs.compDev[2 * c]));
-                h = mix(h, Float.floatToRawIntBits(runs.compDev[2 * c + 1]));
+                h = mix(h, (int) runs.compDev[c]); // X's bits
+                h = mix(h, (int) (runs.compDev[c] >>> 32)); // Z's bits
                 h = mix(h, Float.floatToRawIntBits(own ? scattered.velX[c] : runs.velX(r)));
                 h = mix(h, Float.floatToRawIntBits(own ? scattered.velZ[c] : runs.velZ(r)));
                 h = mix(h, Float.floatToRawIntBits(state.poseCoordinate(c)));

@@ -195,7 +195,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
                 packed[p] = state.version(p);
                 p++;
             }
-            state.copyDeviations(state.firstComponent(start), state.firstComponent(p), f.renderStates);
+            state.copyDeviations(state.firstComponent(start), state.firstComponent(p), f.renderStateLongs);
         }
     }
 }

@@ -28,6 +28,8 @@ public final class Frame {
     private final BendGeometry geometry;
     /** Per component, interleaved little-endian floats (deviation X, Z, metres), for the GPU. */
     final FloatBuffer renderStates;
+    /** The same bytes as {@link #renderStates}, one long per component (the step's bulk copy). */
+    final java.nio.LongBuffer renderStateLongs;
     private final ByteBuffer renderStatesView;
     /** {@link #set}'s deviation, so that it allocates nothing. */
     private final float[] posed = new float[2];
@@ -71,6 +73,7 @@ public final class Frame {
         ByteBuffer states = ByteBuffer.allocateDirect(Math.max(RENDER_STATE_BYTES, components * RENDER_STATE_BYTES))
                 .order(ByteOrder.LITTLE_ENDIAN);
         renderStates = states.asFloatBuffer();
+        renderStateLongs = states.asLongBuffer();
         renderStatesView = states.asReadOnlyBuffer().order(ByteOrder.LITTLE_ENDIAN);
         plantVisible = new boolean[plants];
         plantLevel = new byte[plants];

@@ -169,7 +169,7 @@ public final class Simulation implements AutoCloseable {
         settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
         exchange = new FrameExchange(plants, state.geometry());
         for (int i = 0; i < 3; i++) {
-            state.copyDeviations(0, comps, exchange.frame(i).renderStates);
+            state.copyDeviations(0, comps, exchange.frame(i).renderStateLongs);
         }
         int[] speciesLevels = new int[world.plants().species().size()];
         for (int sp = 0; sp < speciesLevels.length; sp++) {

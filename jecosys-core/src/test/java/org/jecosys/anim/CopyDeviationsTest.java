@@ -2,6 +2,7 @@ package org.jecosys.anim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -39,9 +40,12 @@ class CopyDeviationsTest {
         // plant 2 (components 8-19; plant 3 has none) scatters: its components take deviations of their own
         s.animate(2, 3, AnimationStep.of(AnimationMode.RANDOM, wx, wz, all).rng(Rng.forStream(7, 0)));
         assertNotEquals(s.deviationX(8), s.deviationX(9));
-        FloatBuffer dest = ByteBuffer.allocateDirect(8 * 27).order(ByteOrder.LITTLE_ENDIAN).asFloatBuffer();
+        ByteBuffer bytes = ByteBuffer.allocateDirect(8 * 27).order(ByteOrder.LITTLE_ENDIAN);
+        FloatBuffer dest = bytes.asFloatBuffer();
         dest.put(52, 99f).put(53, 99f);
-        s.copyDeviations(first[1], first[plants], dest);
+        s.copyDeviations(first[1], first[plants], bytes.asLongBuffer());
+        assertThrows(IllegalArgumentException.class, () -> s.copyDeviations(first[1], first[plants],
+                ByteBuffer.allocateDirect(8 * 27).order(ByteOrder.BIG_ENDIAN).asLongBuffer()));
         for (int c = 0; c < 26; c++) {
             float x = c < first[1] ? 0f : s.deviationX(c);
             float z = c < first[1] ? 0f : s.deviationZ(c);

@@ -45,8 +45,8 @@ class AnimBenchmarkTest {
         final float[] wx;
         final float[] wz;
         final boolean[] vis;
-        /** The render states of a frame (deviations, 2 floats per component). */
-        final java.nio.FloatBuffer states;
+        /** The render states of a frame (deviations, 2 floats per component, one long). */
+        final java.nio.LongBuffer states;
         /** Per chunk, its animate inputs (chunks run on several workers at once). */
         final AnimationStep[] steps;
         final float[][] src = new float[6][];
@@ -106,7 +106,7 @@ class AnimBenchmarkTest {
                 wz[q] = (float) rng.nextDouble(-3, 3);
                 vis[q] = true;
             }
-            states = java.nio.ByteBuffer.allocateDirect(8 * n).order(java.nio.ByteOrder.LITTLE_ENDIAN).asFloatBuffer();
+            states = java.nio.ByteBuffer.allocateDirect(8 * n).order(java.nio.ByteOrder.LITTLE_ENDIAN).asLongBuffer();
             int[] chunks = new int[plants + 2]; // the chunking rule of Simulation
             int m = 0;
             chunks[m++] = 0;
