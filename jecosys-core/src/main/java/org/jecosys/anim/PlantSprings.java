@@ -94,12 +94,22 @@ final class PlantSprings {
         Trails tr = trails;
         SpringRuns sr = runs;
         float[] coef = kinds.coef;
+        // the arrays in locals: the JIT then checks their bounds once for the loop, not per plant
+        // after each (rare) call the loop makes
+        long[] ver = version;
+        boolean[] follows = live;
+        float[] p0X = pressX;
+        float[] p0Z = pressZ;
+        byte[] variants = response;
+        int[] plantRun = sr.plantRun;
+        int[] mask = sr.mask;
+        int[] springClass = sr.springClass;
         int advanced = 0;
         for (int p = first; p < end; p++) {
             if (!visible[p]) {
                 continue;
             }
-            version[p]++;
+            ver[p]++;
             int bit = 1 << levels.level(p);
             if (tr != null && tr.on(p) && (!tr.upright(p) || pushX != null && (pushX[p] != 0 || pushZ[p] != 0))) {
                 advanced += flattenedRuns(p, bit, step);
@@ -108,7 +118,7 @@ final class PlantSprings {
             // springRuns(p, bit, ux, uz, 0, 0, 0, 0), term for term
             float ux = windX[p];
             float uz = windZ[p];
-            if (!live[p]) {
+            if (!follows[p]) {
                 settle(p, ux, uz);
             }
             ux = finiteWind(ux);
@@ -116,18 +126,18 @@ final class PlantSprings {
             float speed = (float) Math.sqrt(ux * ux + uz * uz);
             float p1x = speed * ux;
             float p1z = speed * uz;
-            float p0x = pressX[p];
-            float p0z = pressZ[p];
-            int variant = response[p];
-            for (int r = sr.plantRun[p], re = sr.plantRun[p + 1]; r < re; r++) {
-                if ((sr.mask[r] & bit) != 0) {
-                    sr.advance(r, coef, SpringKinds.row(sr.springClass[r], variant) * SpringKinds.STRIDE, p0x, p0z,
+            float p0x = p0X[p];
+            float p0z = p0Z[p];
+            int variant = variants[p];
+            for (int r = plantRun[p], re = plantRun[p + 1]; r < re; r++) {
+                if ((mask[r] & bit) != 0) {
+                    sr.advance(r, coef, SpringKinds.row(springClass[r], variant) * SpringKinds.STRIDE, p0x, p0z,
                             p1x, p1z);
                     advanced += sr.size(r);
                 }
             }
-            pressX[p] = p1x;
-            pressZ[p] = p1z;
+            p0X[p] = p1x;
+            p0Z[p] = p1z;
         }
         return advanced;
     }
