@@ -48,8 +48,8 @@ public final class Quadtree {
     private int[] head;
 
     private int plantCount;
-    private double[] px;
-    private double[] pz;
+    double[] px;
+    double[] pz;
     int[] leafOf;
     private int[] next;
     private int[] prev;

@@ -538,43 +538,49 @@ public final class QuadtreeForceField implements ForceField {
         int[] leafOf = tree.leafOf;
         int cur = current;
         // plants come in spatial order, so neighbours share their leaf: its node's wind, gradient and
-        // centre of gravity are read once per run of plants of one leaf (the arithmetic of plantWindX
-        // and plantWindZ, term for term: wind(plant) must give the same bits)
-        int last = -1;
-        boolean v = false;
-        float ux = 0;
-        float uz = 0;
-        float xx = 0;
-        float xz = 0;
-        float zx = 0;
-        float zz = 0;
-        float cx = 0;
-        float cz = 0;
-        for (int i = 0; i < n; i++) {
-            int plant = first + i;
-            int leaf = leafOf[plant];
-            if (leaf != last) {
-                last = leaf;
-                v = stamp[leaf] == cur && cur != 0;
-                if (v) {
-                    int r = rep[leaf];
-                    ux = windX[r];
-                    uz = windZ[r];
-                    xx = gradXX[r];
-                    xz = gradXZ[r];
-                    zx = gradZX[r];
-                    zz = gradZZ[r];
-                    cx = centX[r];
-                    cz = centZ[r];
+        // centre of gravity are read once per run of plants of one leaf, and the run's plants in a loop
+        // of their own (the arithmetic of plantWindX and plantWindZ, term for term: wind(plant) must
+        // give the same bits; without flutter it adds 0, as flutter() returns then)
+        double[] px = tree.px;
+        double[] pz = tree.pz;
+        float eddyNow = eddy;
+        int i = 0;
+        while (i < n) {
+            int leaf = leafOf[first + i];
+            int e = i + 1;
+            while (e < n && leafOf[first + e] == leaf) {
+                e++;
+            }
+            boolean v = stamp[leaf] == cur && cur != 0;
+            java.util.Arrays.fill(visible, i, e, v);
+            if (v) {
+                int r = rep[leaf];
+                float ux = windX[r];
+                float uz = windZ[r];
+                float xx = gradXX[r];
+                float xz = gradXZ[r];
+                float zx = gradZX[r];
+                float zz = gradZZ[r];
+                float cx = centX[r];
+                float cz = centZ[r];
+                if (eddyNow == 0) {
+                    for (int k = i; k < e; k++) {
+                        float dx = (float) (px[first + k] - cx);
+                        float dz = (float) (pz[first + k] - cz);
+                        wx[k] = ux + xx * dx + xz * dz + 0f;
+                        wz[k] = uz + zx * dx + zz * dz + 0f;
+                    }
+                } else {
+                    for (int k = i; k < e; k++) {
+                        int plant = first + k;
+                        float dx = (float) (px[plant] - cx);
+                        float dz = (float) (pz[plant] - cz);
+                        wx[k] = ux + xx * dx + xz * dz + flutter(plant, FLUTTER_X);
+                        wz[k] = uz + zx * dx + zz * dz + flutter(plant, FLUTTER_Z);
+                    }
                 }
             }
-            visible[i] = v;
-            if (v) {
-                float dx = (float) (tree.plantX(plant) - cx);
-                float dz = (float) (tree.plantZ(plant) - cz);
-                wx[i] = ux + xx * dx + xz * dz + flutter(plant, FLUTTER_X);
-                wz[i] = uz + zx * dx + zz * dz + flutter(plant, FLUTTER_Z);
-            }
+            i = e;
         }
     }
 
