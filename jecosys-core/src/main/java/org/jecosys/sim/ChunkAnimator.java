@@ -39,6 +39,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final AnimationStep[] chunkStep;
     /** Per chunk the box round its plants' bases ({@link DrawDecision#baseBoxes}). */
     private final float[] chunkBox;
+    /** Per chunk, one byte per species: the draw decision's scratch ({@link DrawDecision#decide}). */
+    private final byte[] chunkLevels;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -75,6 +77,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         chunkRng = new Rng[chunks];
         chunkStep = new AnimationStep[chunks];
         chunkBox = draw.baseBoxes(chunkFirstPlant);
+        chunkLevels = new byte[chunks * draw.species()];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
             chunkStep[c] = new AnimationStep();
@@ -174,7 +177,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         int o = 6 * chunk;
         boolean inside = frustum[b].intersectAab(box[o], box[o + 1], box[o + 2], box[o + 3], box[o + 4], box[o + 5])
                 == FrustumIntersection.INSIDE;
-        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], !inside, f);
+        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], !inside, box, o,
+                chunkLevels, chunk * draw.species(), f);
     }
 
     /**

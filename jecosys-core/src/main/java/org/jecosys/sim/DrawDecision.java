@@ -310,12 +310,78 @@ public final class DrawDecision {
      * @param frustum the camera's frustum, read only
      * @param test    whether to test each plant's bounding sphere against the frustum: false when the
      *                plants' bases all lie inside it ({@link #baseBoxes}), where every sphere passes
+     * @param box     the boxes of {@link #baseBoxes}; the range's is the six floats at {@code box[o]}
+     * @param o       offset of the range's box
+     * @param levels  scratch of the range's own, one byte per species from {@code levels[u]}
+     * @param u       offset of the range's scratch
      */
     void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, double scale2, double fixed2,
-                FrustumIntersection frustum, boolean test, Frame frame) {
+                FrustumIntersection frustum, boolean test, float[] box, int o, byte[] levels, int u, Frame frame) {
         double[] thin = thinning;
+        byte[] levelOut = frame.drawLevel;
+        int[] keepOut = frame.drawKeep;
+        if (!test && plainLevels(box, o, ex, ey, ez, scale2, fixed2, thin, levels, u)) {
+            // the whole range in view and, for each species, within one level's plain window: the levels
+            // and windows the per-plant arithmetic gives, without a distance per plant
+            for (int p = p0; p < p1; p++) {
+                boolean v = visible[p];
+                levelOut[p] = v ? levels[u + world.plantSpecies(p)] : -1;
+                keepOut[p] = v ? 255 : 0;
+            }
+            return;
+        }
         decide(world, stepBands, radius, p0, p1, visible, test, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
-                thin[2], frame.drawLevel, frame.drawKeep);
+                thin[2], levelOut, keepOut);
+    }
+
+    /**
+     * Whether every plant whose base lies in the box at {@code box[o]} is, for its species, within the
+     * plain window of one level ({@link Bands#plain}) and short of the thinning: then writes that level
+     * per species into {@code levels[u + s]}. The box's nearest and farthest squared distances from
+     * the eye, widened by {@link #PLAIN_MARGIN}, bound every base's. No allocation.
+     */
+    private boolean plainLevels(float[] box, int o, double ex, double ey, double ez, double scale2, double fixed2,
+                                double[] thin, byte[] levels, int u) {
+        if (!(box[o] <= box[o + 3])) {
+            return false; // no plant
+        }
+        double near2 = 0;
+        double far2 = 0;
+        for (int k = 0; k < 3; k++) {
+            double e = k == 0 ? ex : k == 1 ? ey : ez;
+            double lo = box[o + k];
+            double hi = box[o + 3 + k];
+            double near = e < lo ? lo - e : e > hi ? e - hi : 0;
+            double far = Math.max(Math.abs(e - lo), Math.abs(e - hi));
+            near2 += near * near;
+            far2 += far * far;
+        }
+        near2 *= 1 - PLAIN_MARGIN;
+        far2 *= 1 + PLAIN_MARGIN;
+        if (thin[2] < 1 && !(far2 < below2(thin[0]))) {
+            return false;
+        }
+        double q2near = org.jecosys.math.ViewLod.equivalent2(near2, scale2, fixed2);
+        double q2far = org.jecosys.math.ViewLod.equivalent2(far2, scale2, fixed2);
+        Bands bands = stepBands;
+        for (int s = 0; s < bands.levels.length; s++) {
+            double[] edge = bands.edges[s];
+            int l = 0;
+            while (l < bands.levels[s] - 1 && !(q2near < edge[l] * edge[l])) {
+                l++;
+            }
+            double[] plain = bands.plain[s];
+            if (!(q2near >= plain[2 * l] && q2far <= plain[2 * l + 1])) {
+                return false;
+            }
+            levels[u + s] = (byte) l;
+        }
+        return true;
+    }
+
+    /** {@return the number of species the decision knows} */
+    int species() {
+        return radius.length;
     }
 
     /**
