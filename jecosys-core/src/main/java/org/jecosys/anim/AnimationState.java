@@ -396,9 +396,20 @@ public final class AnimationState implements AnimationView {
         // one view (or only the eye): its level-of-detail metric once, not per plant
         final double scale2 = views == 0 ? 1 : step.viewScale2[0];
         final double fixed2 = views == 0 ? -1 : step.viewFixed2[0];
+        // a range whose plants all take one level per species (step.bounds): no distance per plant
+        byte[] table = null;
+        if (views <= 1 && step.bounds != null) {
+            if (step.speciesLevel == null || step.speciesLevel.length != levels.species()) {
+                step.speciesLevel = new byte[levels.species()];
+            }
+            if (levels.uniform(step.bounds, step.boundsAt, eyeX, eyeY, eyeZ, scale2, fixed2, step.speciesLevel)) {
+                table = step.speciesLevel;
+            }
+        }
         int updated = 0;
         for (int p = first; p < end; p++) {
-            int l = views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
+            int l = table != null ? levels.assign(p, table)
+                    : views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
             if (!visible[p]) {
                 springs.live[p] = false; // its state stops following the wind: it starts afresh when seen again
                 continue;
@@ -415,6 +426,11 @@ public final class AnimationState implements AnimationView {
             updated = springs.update(first, end, levels, step);
         }
         return updated;
+    }
+
+    /** The plants' levels of detail (this package's tests). */
+    PlantLevels levels() {
+        return levels;
     }
 
     /**

@@ -35,6 +35,11 @@ public final class AnimationStep {
     double time;
     float[] pushX;
     float[] pushZ;
+    /** The box round the range's plant bases, six floats from {@link #boundsAt}, or null. */
+    float[] bounds;
+    int boundsAt;
+    /** Per species, the level every plant of the range takes when they all take one ({@link PlantLevels#uniform}). */
+    byte[] speciesLevel;
 
     /** An empty holder (see the class comment). Build time; allocates. */
     public AnimationStep() {
@@ -142,6 +147,24 @@ public final class AnimationStep {
     public AnimationStep pushes(float[] x, float[] z) {
         pushX = x;
         pushZ = z;
+        return this;
+    }
+
+    /**
+     * Sets the box round the bases of the range's plants (minimum X, Y, Z, then maximum, metres, six
+     * floats from {@code box[offset]}), or null for none. Optional: with one view it lets
+     * {@link AnimationState#animate} find the levels of detail once per species for a range that lies,
+     * for each species, wholly within one level's distances, with the levels the per-plant distances
+     * give. The array is read, not copied; the first step with a box allocates a byte per species,
+     * later ones nothing.
+     *
+     * @param box    the boxes, or null
+     * @param offset where the range's box starts
+     * @return this holder
+     */
+    public AnimationStep bounds(float[] box, int offset) {
+        bounds = box;
+        boundsAt = offset;
         return this;
     }
 

@@ -53,6 +53,56 @@ final class PlantLevels {
         return store(p, ViewLod.equivalent2(dx * dx + dy * dy + dz * dz, scale2, fixed2));
     }
 
+    /**
+     * Whether every plant whose base lies in the box at {@code box[o]} (min X, Y, Z, max X, Y, Z,
+     * metres) takes, for its species, one level for the view at the eye: the box's nearest and
+     * farthest squared distances, widened by a margin far above their roundings, fall in one band
+     * (levels are monotonic in distance). Then writes each species' level into {@code table}. No
+     * allocation.
+     */
+    boolean uniform(float[] box, int o, double eyeX, double eyeY, double eyeZ, double scale2, double fixed2,
+                    byte[] table) {
+        if (!(box[o] <= box[o + 3])) {
+            return false; // no plant
+        }
+        double near2 = 0;
+        double far2 = 0;
+        for (int k = 0; k < 3; k++) {
+            double e = k == 0 ? eyeX : k == 1 ? eyeY : eyeZ;
+            double lo = box[o + k];
+            double hi = box[o + 3 + k];
+            double near = e < lo ? lo - e : e > hi ? e - hi : 0;
+            double far = Math.max(Math.abs(e - lo), Math.abs(e - hi));
+            near2 += near * near;
+            far2 += far * far;
+        }
+        double q2near = ViewLod.equivalent2(near2 * (1 - MARGIN), scale2, fixed2);
+        double q2far = ViewLod.equivalent2(far2 * (1 + MARGIN), scale2, fixed2);
+        for (int s = 0; s < table.length; s++) {
+            int l = bands.level(s, q2near);
+            if (l != bands.level(s, q2far)) {
+                return false;
+            }
+            table[s] = (byte) l;
+        }
+        return true;
+    }
+
+    /** Relative margin on a box's squared distances ({@link #uniform}). */
+    private static final double MARGIN = 1e-9;
+
+    /** The number of species. */
+    int species() {
+        return bands.species();
+    }
+
+    /** Sets plant p's level to its species' entry of {@code table} ({@link #uniform}); returns it. */
+    int assign(int p, byte[] table) {
+        int l = table[species[p]];
+        level[p] = (byte) l;
+        return l;
+    }
+
     /** Recomputes plant p's level for the step's views: the finest any view asks; stores and returns it. */
     int update(int p, AnimationStep step) {
         double nearest = Double.POSITIVE_INFINITY;

@@ -80,7 +80,7 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         chunkLevels = new byte[chunks * draw.species()];
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
-            chunkStep[c] = new AnimationStep();
+            chunkStep[c] = new AnimationStep().bounds(chunkBox, 6 * c);
         }
     }
 
