@@ -45,7 +45,9 @@ final class PlantSprings {
      * in float.
      */
     static float finiteWind(float u) {
-        return u == u ? Math.max(-MAX_WIND, Math.min(MAX_WIND, u)) : 0f;
+        // Math.max(-MAX_WIND, Math.min(MAX_WIND, u)) for a number, -0 kept, without the intrinsics'
+        // handling of NaN and signed zeros (NaN is out already)
+        return u == u ? u > MAX_WIND ? MAX_WIND : u < -MAX_WIND ? -MAX_WIND : u : 0f;
     }
 
     /** Puts plant p at rest with no remembered force, as a state that follows the wind. */
