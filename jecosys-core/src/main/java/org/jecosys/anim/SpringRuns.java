@@ -231,10 +231,12 @@ final class SpringRuns {
         if (x <= KNEE && x >= Float.MIN_NORMAL) {
             return 1f; // what the formula below gives there (x / x), without its division
         }
-        // (min(x, KNEE) + SPAN u / (1 + u)) / x with one division
-        float u = Math.max(0f, (x - KNEE) * INV_SPAN);
+        // (min(x, KNEE) + SPAN u / (1 + u)) / x with one division; the minima and maxima as comparisons
+        // (x is a number >= 0, so they equal Math.min and Math.max, whose float intrinsics cost more)
+        float t = (x - KNEE) * INV_SPAN;
+        float u = t > 0 ? t : 0f;
         float w = 1f + u;
-        return (Math.min(x, KNEE) * w + SPAN * u) / (Math.max(x, Float.MIN_NORMAL) * w);
+        return ((x < KNEE ? x : KNEE) * w + SPAN * u) / ((x > Float.MIN_NORMAL ? x : Float.MIN_NORMAL) * w);
     }
 
     /**
