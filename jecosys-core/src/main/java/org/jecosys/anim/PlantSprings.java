@@ -113,7 +113,9 @@ final class PlantSprings {
             }
             ver[p]++;
             int bit = 1 << levels.level(p);
-            if (tr != null && tr.on(p) && (!tr.upright(p) || pushX != null && (pushX[p] != 0 || pushZ[p] != 0))) {
+            int trail = tr == null ? Trails.NONE : tr.mode(p);
+            if (trail == Trails.FLATTENED
+                    || trail == Trails.UPRIGHT && pushX != null && (pushX[p] != 0 || pushZ[p] != 0)) {
                 advanced += flattenedRuns(p, bit, step);
                 continue;
             }

@@ -52,6 +52,18 @@ final class Trails {
     /** Per plant, the flattening L at its last update, fractions of the bend limit. */
     final float[] nowX;
     final float[] nowZ;
+    /**
+     * Per plant, {@link #NONE} when its species leaves no trails, else {@link #UPRIGHT} or
+     * {@link #FLATTENED} (amplitude not 0): what {@link #on} and {@link #upright} tell, in the one
+     * byte the step reads per plant.
+     */
+    private final byte[] mode;
+    /** {@link #mode}: a species without trails. */
+    static final byte NONE = 0;
+    /** {@link #mode}: trails, not flattened (amplitude 0). */
+    static final byte UPRIGHT = 1;
+    /** {@link #mode}: trails, flattened (amplitude not 0). */
+    static final byte FLATTENED = 2;
 
     private Trails(float[] recovery, float[] flattenAt, int[] species) {
         this.recovery = recovery;
@@ -63,6 +75,22 @@ final class Trails {
         start = new double[plants];
         nowX = new float[plants];
         nowZ = new float[plants];
+        mode = new byte[plants];
+        for (int p = 0; p < plants; p++) {
+            mode[p] = recovery[species[p]] > 0 ? UPRIGHT : NONE;
+        }
+    }
+
+    /** {@return plant p's {@link #mode}: NONE, UPRIGHT or FLATTENED} */
+    byte mode(int p) {
+        return mode[p];
+    }
+
+    /** Sets the amplitude of plant p (whose species leaves trails), and its {@link #mode} with it. */
+    private void amplitude(int p, float ax, float az) {
+        ampX[p] = ax;
+        ampZ[p] = az;
+        mode[p] = ax == 0 && az == 0 ? UPRIGHT : FLATTENED;
     }
 
     /**
@@ -101,12 +129,12 @@ final class Trails {
      * it so, {@link #push} sets both, {@link #clear} clears both), so the amplitude alone tells.
      */
     boolean upright(int p) {
-        return ampX[p] == 0 && ampZ[p] == 0;
+        return mode[p] != FLATTENED;
     }
 
     /** Whether plant p's species leaves trails. */
     boolean on(int p) {
-        return recovery[species[p]] > 0;
+        return mode[p] != NONE;
     }
 
     /**
@@ -123,8 +151,7 @@ final class Trails {
         }
         double s = Math.max(0, (t - start[p]) / recovery[species[p]]);
         if (s >= END) {
-            ampX[p] = 0;
-            ampZ[p] = 0;
+            amplitude(p, 0, 0);
             nowX[p] = 0;
             nowZ[p] = 0;
             return;
@@ -158,8 +185,7 @@ final class Trails {
             return;
         }
         float k = a / m;
-        ampX[p] = px * k;
-        ampZ[p] = pz * k;
+        amplitude(p, px * k, pz * k);
         start[p] = t;
         nowX[p] = ampX[p];
         nowZ[p] = ampZ[p];
@@ -185,6 +211,9 @@ final class Trails {
     void clear(int first, int end) {
         Arrays.fill(ampX, first, end, 0f);
         Arrays.fill(ampZ, first, end, 0f);
+        for (int p = first; p < end; p++) {
+            mode[p] = mode[p] == NONE ? NONE : UPRIGHT;
+        }
         Arrays.fill(start, first, end, 0d);
         Arrays.fill(nowX, first, end, 0f);
         Arrays.fill(nowZ, first, end, 0f);
