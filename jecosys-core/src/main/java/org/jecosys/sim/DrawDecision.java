@@ -56,77 +56,13 @@ public final class DrawDecision {
         double edge(int s, int l);
     }
 
-    /**
-     * Where each species' levels end, copied from an {@link Edges} once per decision (a step, a view)
-     * so that the per-plant loop reads arrays, not an interface: per species its level count, its
-     * edges (metres) and the transition band it uses (the decision's, at most the smallest gap
-     * between its edges). Sized for the world's species; {@link #fill} allocates only when a species
-     * has more levels than before.
-     */
-    static final class Bands {
-        final int[] levels;
-        double[][] edges;
-        final double[] band;
-        /**
-         * Per species, per level l, the squared equivalent distances {@code [plain[2l], plain[2l + 1]]}
-         * where level l is drawn whole and alone (packed window 255): past the last edge by a margin,
-         * short of the transition band by a margin, so that {@link #decide} may skip the square root
-         * and the window's arithmetic there with the very result they give.
-         */
-        double[][] plain;
-
-        Bands(int species) {
-            levels = new int[species];
-            edges = new double[species][0];
-            band = new double[species];
-            plain = new double[species][0];
-        }
-
-        /** Copies the edges of {@code e} and each species' band for a decision band {@code b}, metres. */
-        Bands fill(Edges e, double b) {
-            for (int s = 0; s < levels.length; s++) {
-                int n = e.levels(s);
-                levels[s] = n;
-                if (edges[s].length < n - 1) {
-                    edges[s] = new double[n - 1];
-                }
-                for (int l = 0; l < n - 1; l++) {
-                    edges[s][l] = e.edge(s, l);
-                }
-                band[s] = Math.min(b, minGap(e, s, n));
-                if (plain[s].length < 2 * n) {
-                    plain[s] = new double[2 * n];
-                }
-                for (int l = 0; l < n; l++) {
-                    plain[s][2 * l] = l == 0 ? Double.NEGATIVE_INFINITY : above2(edges[s][l - 1]);
-                    plain[s][2 * l + 1] = l == n - 1 ? Double.POSITIVE_INFINITY
-                            : below2(band[s] > 0 ? edges[s][l] - band[s] : edges[s][l]);
-                }
-            }
-            return this;
-        }
-    }
-
-    /** Relative margin of the plain windows ({@link Bands#plain}), far above the roundings of a square and its root. */
-    private static final double PLAIN_MARGIN = 1e-9;
-
-    /** A square that a squared distance reaches only when the distance is surely at least {@code e} (e &gt;= 0). */
-    private static double above2(double e) {
-        return e * e * (1 + PLAIN_MARGIN);
-    }
-
-    /** A square that a squared distance stays below only when the distance is surely below {@code e}; -1 for e &lt;= 0. */
-    static double below2(double e) {
-        return e > 0 ? e * e * (1 - PLAIN_MARGIN) : -1;
-    }
-
     private final World world;
     private final Edges edges;
     private final float[] radius;
     /** The bands of the step's decision: filled by {@link #prepare} on the stepping thread, read by the workers. */
-    private final Bands stepBands;
+    private final LevelBands stepBands;
     /** The bands of {@link #decideAll}, its caller's own. */
-    private final Bands allBands;
+    private final LevelBands allBands;
     private volatile double transition = DEFAULT_TRANSITION;
     /** start, end, min fraction: one array, swapped whole, so a decision never sees a mix. */
     private volatile double[] thinning = {ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END,
@@ -143,9 +79,9 @@ public final class DrawDecision {
         for (int s = 0; s < radius.length; s++) {
             radius[s] = boundingRadius(species.get(s));
         }
-        stepBands = new Bands(radius.length);
+        stepBands = new LevelBands(radius.length);
         stepBands.fill(edges, transition);
-        allBands = new Bands(radius.length);
+        allBands = new LevelBands(radius.length);
     }
 
     /**
@@ -320,7 +256,8 @@ public final class DrawDecision {
         double[] thin = thinning;
         byte[] levelOut = frame.drawLevel;
         int[] keepOut = frame.drawKeep;
-        if (!test && plainLevels(box, o, ex, ey, ez, scale2, fixed2, thin, levels, u)) {
+        if (!test && stepBands.plainLevels(box, o, ex, ey, ez, scale2, fixed2,
+                thin[2] < 1 ? LevelBands.below2(thin[0]) : Double.POSITIVE_INFINITY, levels, u)) {
             // the whole range in view and, for each species, within one level's plain window: the levels
             // and windows the per-plant arithmetic gives, without a distance per plant
             for (int p = p0; p < p1; p++) {
@@ -332,51 +269,6 @@ public final class DrawDecision {
         }
         decide(world, stepBands, radius, p0, p1, visible, test, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
                 thin[2], levelOut, keepOut);
-    }
-
-    /**
-     * Whether every plant whose base lies in the box at {@code box[o]} is, for its species, within the
-     * plain window of one level ({@link Bands#plain}) and short of the thinning: then writes that level
-     * per species into {@code levels[u + s]}. The box's nearest and farthest squared distances from
-     * the eye, widened by {@link #PLAIN_MARGIN}, bound every base's. No allocation.
-     */
-    private boolean plainLevels(float[] box, int o, double ex, double ey, double ez, double scale2, double fixed2,
-                                double[] thin, byte[] levels, int u) {
-        if (!(box[o] <= box[o + 3])) {
-            return false; // no plant
-        }
-        double near2 = 0;
-        double far2 = 0;
-        for (int k = 0; k < 3; k++) {
-            double e = k == 0 ? ex : k == 1 ? ey : ez;
-            double lo = box[o + k];
-            double hi = box[o + 3 + k];
-            double near = e < lo ? lo - e : e > hi ? e - hi : 0;
-            double far = Math.max(Math.abs(e - lo), Math.abs(e - hi));
-            near2 += near * near;
-            far2 += far * far;
-        }
-        near2 *= 1 - PLAIN_MARGIN;
-        far2 *= 1 + PLAIN_MARGIN;
-        if (thin[2] < 1 && !(far2 < below2(thin[0]))) {
-            return false;
-        }
-        double q2near = org.jecosys.math.ViewLod.equivalent2(near2, scale2, fixed2);
-        double q2far = org.jecosys.math.ViewLod.equivalent2(far2, scale2, fixed2);
-        Bands bands = stepBands;
-        for (int s = 0; s < bands.levels.length; s++) {
-            double[] edge = bands.edges[s];
-            int l = 0;
-            while (l < bands.levels[s] - 1 && !(q2near < edge[l] * edge[l])) {
-                l++;
-            }
-            double[] plain = bands.plain[s];
-            if (!(q2near >= plain[2 * l] && q2far <= plain[2 * l + 1])) {
-                return false;
-            }
-            levels[u + s] = (byte) l;
-        }
-        return true;
     }
 
     /** {@return the number of species the decision knows} */
@@ -429,12 +321,12 @@ public final class DrawDecision {
      * is where its equivalent distance ({@link org.jecosys.math.ViewLod}) falls among the edges, with the
      * next level too in a transition band, and distance thinning by its real distance. No allocation.
      */
-    static void decide(World world, Bands bands, float[] radius, int p0, int p1, boolean[] visible, boolean test,
+    static void decide(World world, LevelBands bands, float[] radius, int p0, int p1, boolean[] visible, boolean test,
                        double ex, double ey, double ez, double scale2, double fixed2, FrustumIntersection frustum,
                        double thinStart, double thinEnd, double thinMin, byte[] levelOut, int[] keepOut) {
         boolean thinned = thinMin < 1;
         // below this squared distance no plant is thinned (the thinning needs the distance itself)
-        double unthinned2 = thinned ? below2(thinStart) : Double.POSITIVE_INFINITY;
+        double unthinned2 = thinned ? LevelBands.below2(thinStart) : Double.POSITIVE_INFINITY;
         for (int p = p0; p < p1; p++) {
             int s = world.plantSpecies(p);
             float x = world.plantX(p);
@@ -524,17 +416,6 @@ public final class DrawDecision {
         return frame;
     }
 
-    private static double minGap(Edges edges, int s, int levels) {
-        double gap = Double.POSITIVE_INFINITY;
-        double prev = 0;
-        for (int l = 0; l < levels - 1; l++) {
-            double e = edges.edge(s, l);
-            gap = Math.min(gap, e - prev);
-            prev = e;
-        }
-        return gap;
-    }
-
     /**
      * The packed dither window of level {@code l} for a plant at distance {@code d}: level l keeps
      * the bayer thresholds in {@code [handOver, received)} (both /255), where handOver is the share
@@ -565,7 +446,7 @@ public final class DrawDecision {
      */
     public int keep(int s, int l, double d) {
         int levels = edges.levels(s);
-        double band = Math.min(transition, minGap(edges, s, levels));
+        double band = Math.min(transition, LevelBands.minGap(edges, s, levels));
         double handOver = l < levels - 1 ? fade(d, edges.edge(s, l), band) : 0;
         double received = l > 0 ? (d >= edges.edge(s, l - 1) ? 1 : fade(d, edges.edge(s, l - 1), band)) : 1;
         return 256 * (int) Math.round(handOver * 255) + (int) Math.round(received * 255);

@@ -35,7 +35,7 @@ public final class ViewDecision {
     private final FrustumIntersection frustum = new FrustumIntersection();
     private final double[] metric = new double[2];
     private final FrameEdges edges = new FrameEdges();
-    private final DrawDecision.Bands bands;
+    private final LevelBands bands;
     private int drawn;
 
     /** The edges a frame recorded, read through {@link DrawDecision.Edges}. */
@@ -65,7 +65,7 @@ public final class ViewDecision {
         for (int s = 0; s < radius.length; s++) {
             radius[s] = DrawDecision.boundingRadius(species.get(s));
         }
-        bands = new DrawDecision.Bands(radius.length);
+        bands = new LevelBands(radius.length);
         int plants = world.plantCount();
         level = new byte[plants];
         keep = new int[plants];

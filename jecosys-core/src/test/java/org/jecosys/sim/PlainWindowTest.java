@@ -9,7 +9,7 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * The draw decision's shortcut for plants drawn whole at one level ({@code Bands.plain}) gives the
+ * The draw decision's shortcut for plants drawn whole at one level ({@code LevelBands.plain}) gives the
  * levels and dither windows of the full arithmetic, bit for bit: the same decisions are made with the
  * shortcut's windows emptied, for eyes placed at, just inside and just outside each level's edge and
  * transition band, with and without a band, with and without distance thinning, and for eyes anywhere.
@@ -39,8 +39,8 @@ class PlainWindowTest {
         int plainSeen = 0;
         int fullSeen = 0;
         for (double transition : new double[] {0, 0.4, 1.0}) {
-            DrawDecision.Bands fast = new DrawDecision.Bands(species).fill(edges, transition);
-            DrawDecision.Bands slow = new DrawDecision.Bands(species).fill(edges, transition);
+            LevelBands fast = new LevelBands(species).fill(edges, transition);
+            LevelBands slow = new LevelBands(species).fill(edges, transition);
             for (double[] w : slow.plain) {
                 for (int i = 0; i < w.length; i += 2) {
                     w[i] = Double.POSITIVE_INFINITY; // no plain window: always the full arithmetic
