@@ -23,17 +23,22 @@ import org.joml.Vector2d;
  *
  * <p>{@link #velocity} returns 0 when the flow is disabled or outside its activation window, 0
  * beyond the influence radius (measured from the centre), and otherwise {@link #flow} times the
- * activation weight. Threads and allocation: see {@link WindSource}; nothing here allocates after
- * construction, and {@link #flow} must not allocate either.
+ * activation weight. The built-in flows extend it too (each applies its radius in its own formula).
+ * Threads and allocation: see {@link WindSource}; nothing here allocates after construction, and
+ * {@link #flow} must not allocate either.
  */
 public abstract class AbstractWindSource implements WindSource {
     private final String id;
     private final ActivationDef activation;
     private final double influenceRadius;
-    private final double influenceRadius2;
-    private boolean enabled = true;
-    private double cx;
-    private double cz;
+    /** The influence radius squared, metres^2 (the built-in flows' formulas read it). */
+    final double influenceRadius2;
+    /** Whether {@link #velocity} returns 0 beyond the influence radius (the built-in flows do it themselves). */
+    private final boolean clip;
+    private boolean enabled;
+    /** The centre, metres: the built-in flows' formulas read it, their paths and the wind's advection move it. */
+    double cx;
+    double cz;
 
     /**
      * An enabled flow centred on the origin, unbounded, always active. Allocates nothing else.
@@ -68,6 +73,24 @@ public abstract class AbstractWindSource implements WindSource {
         this.influenceRadius2 = influenceRadius == Double.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY
                 : influenceRadius * influenceRadius;
         this.activation = Require.nonNull("activation", activation);
+        this.clip = true;
+        this.enabled = true;
+    }
+
+    /**
+     * A built-in flow ({@link FlowBase}) of a checked definition, centred at (x, z) (its path's start
+     * when it has one), enabled as defined, its influence radius applied by its own formula.
+     */
+    AbstractWindSource(FlowDef def, double x, double z) {
+        this.id = def.id();
+        this.cx = x;
+        this.cz = z;
+        this.influenceRadius = def.influenceRadius();
+        this.influenceRadius2 = influenceRadius == Double.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY
+                : influenceRadius * influenceRadius;
+        this.activation = def.activation();
+        this.clip = false;
+        this.enabled = def.enabled();
     }
 
     /**
@@ -140,10 +163,15 @@ public abstract class AbstractWindSource implements WindSource {
     @Override
     public final Vector2d velocity(double x, double z, double time, Vector2d dest) {
         double w = weight(time);
-        double dx = x - cx;
-        double dz = z - cz;
-        if (w == 0 || dx * dx + dz * dz > influenceRadius2) {
+        if (w == 0) {
             return dest.set(0, 0);
+        }
+        if (clip) {
+            double dx = x - cx;
+            double dz = z - cz;
+            if (dx * dx + dz * dz > influenceRadius2) {
+                return dest.set(0, 0);
+            }
         }
         flow(x, z, time, dest);
         return dest.set(dest.x * w, dest.y * w);

@@ -4,32 +4,24 @@ import org.jecosys.math.Require;
 import org.joml.Vector2d;
 
 /**
- * State every built-in flow shares: definition, enabled switch, activation window, centre and
- * scripted path. One level of inheritance; each kind only adds its formula ({@link #unweighted}).
- * {@link WindField} moves the centres of these flows itself (PATH and ADVECTED motion); user flows
- * extend {@link AbstractWindSource} instead. Not thread-safe; no allocation after construction.
+ * What the built-in flows add to {@link AbstractWindSource} (id, enabled switch, activation window,
+ * centre, influence radius and the weighting of {@code velocity}, shared with user flows): their
+ * definition, core radius and scripted path. Each kind only adds its formula ({@link #unweighted}),
+ * which applies the influence radius itself. {@link WindField} moves the centres of these flows
+ * (PATH and ADVECTED motion). Not thread-safe; no allocation after construction.
  */
-abstract sealed class FlowBase implements WindSource
+abstract sealed class FlowBase extends AbstractWindSource
         permits UniformFlow, SourceFlow, VortexFlow, GustFlow, BlastFlow, RainFlow {
     final FlowDef def;
-    private boolean enabled;
-    double cx;
-    double cz;
-    final double influenceRadius2;
     final double coreRadius;
-    /** Cumulative arc length at each waypoint of a PATH motion (null otherwise). */
     private final double[] pathLength;
     private final double[] pathX;
     private final double[] pathZ;
 
     FlowBase(FlowDef def) {
-        this.def = Require.nonNull("def", def);
-        this.enabled = def.enabled();
-        this.cx = def.x();
-        this.cz = def.z();
+        super(Require.nonNull("def", def), start(def, true), start(def, false));
+        this.def = def;
         this.coreRadius = def.coreRadius();
-        double r = def.influenceRadius();
-        this.influenceRadius2 = r == Double.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : r * r;
         MotionDef m = def.motion();
         if (m.kind() == MotionDef.Kind.PATH) {
             int n = m.waypoints().size();
@@ -43,13 +35,20 @@ abstract sealed class FlowBase implements WindSource
                     pathLength[i] = pathLength[i - 1] + Math.hypot(pathX[i] - pathX[i - 1], pathZ[i] - pathZ[i - 1]);
                 }
             }
-            cx = pathX[0];
-            cz = pathZ[0];
         } else {
             pathX = null;
             pathZ = null;
             pathLength = null;
         }
+    }
+
+    /** The centre a flow starts at, X (or Z): its path's first waypoint, or its definition's centre. */
+    private static double start(FlowDef def, boolean x) {
+        MotionDef m = def.motion();
+        if (m.kind() == MotionDef.Kind.PATH) {
+            return x ? m.waypoints().get(0).x() : m.waypoints().get(0).z();
+        }
+        return x ? def.x() : def.z();
     }
 
     @Override
@@ -58,64 +57,13 @@ abstract sealed class FlowBase implements WindSource
     }
 
     @Override
-    public final String id() {
-        return def.id();
-    }
-
-    @Override
     public final FlowKind kind() {
         return def.kind();
     }
 
     @Override
-    public final boolean isEnabled() {
-        return enabled;
-    }
-
-    @Override
-    public final void setEnabled(boolean enabled) {
-        this.enabled = enabled;
-    }
-
-    @Override
-    public final double centreX() {
-        return cx;
-    }
-
-    @Override
-    public final double centreZ() {
-        return cz;
-    }
-
-    @Override
-    public final void setCentre(double x, double z) {
-        cx = Require.finite("x", x);
-        cz = Require.finite("z", z);
-    }
-
-    @Override
-    public final double weight(double time) {
-        return enabled ? def.activation().weight(time) : 0;
-    }
-
-    @Override
-    public final boolean expired(double time) {
-        return def.activation().expired(time);
-    }
-
-    @Override
-    public final double influenceRadius() {
-        return def.influenceRadius();
-    }
-
-    @Override
-    public final Vector2d velocity(double x, double z, double time, Vector2d dest) {
-        double w = weight(time);
-        if (w == 0) {
-            return dest.set(0, 0);
-        }
+    protected final void flow(double x, double z, double time, Vector2d dest) {
         unweighted(x, z, time, dest);
-        return dest.set(dest.x * w, dest.y * w);
     }
 
     /** The flow's own formula at full strength, written into dest (x = X, y = Z), m/s. */
