@@ -4,8 +4,8 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * A small JSON writer for reports: maps (insertion order kept), lists, strings, numbers, booleans
- * and null. Non-finite numbers are written as null. Any thread; allocates.
+ * A small JSON writer for reports: maps (insertion order kept), lists, arrays of numbers, strings,
+ * numbers, booleans and null. Non-finite numbers are written as null. Any thread; allocates.
  */
 public final class Json {
     private Json() {
@@ -30,6 +30,18 @@ public final class Json {
             sb.append(Double.isFinite(d) ? number(d) : "null");
         } else if (v instanceof Number n) {
             sb.append(n.longValue());
+        } else if (v instanceof double[] a) {
+            write(sb, java.util.Arrays.stream(a).boxed().toList(), depth);
+        } else if (v instanceof float[] a) {
+            java.util.List<Object> l = new java.util.ArrayList<>(a.length);
+            for (float x : a) {
+                l.add(x);
+            }
+            write(sb, l, depth);
+        } else if (v instanceof int[] a) {
+            write(sb, java.util.Arrays.stream(a).boxed().toList(), depth);
+        } else if (v instanceof long[] a) {
+            write(sb, java.util.Arrays.stream(a).boxed().toList(), depth);
         } else if (v instanceof Map<?, ?> m) {
             if (m.isEmpty()) {
                 sb.append("{}");

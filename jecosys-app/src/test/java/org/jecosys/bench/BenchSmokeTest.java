@@ -114,4 +114,15 @@ class BenchSmokeTest {
         String s = Json.write(java.util.Map.of("a\"b", List.of(1, 2.5, Double.NaN, "x\ny")));
         assertEquals("{\n  \"a\\\"b\": [1, 2.5, null, \"x\\ny\"]\n}\n", s);
     }
+
+    @Test
+    void jsonWriterWritesArraysOfNumbersAsLists() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("d", new double[] {1.5, Double.NaN, 2});
+        m.put("f", new float[] {0.25f});
+        m.put("i", new int[] {1, 2});
+        m.put("l", new long[] {});
+        assertEquals("{\n  \"d\": [1.5, null, 2],\n  \"f\": [0.25],\n  \"i\": [1, 2],\n  \"l\": []\n}\n",
+                Json.write(m));
+    }
 }
