@@ -161,8 +161,13 @@ public final class AnimationStep {
      * @param box    the boxes, or null
      * @param offset where the range's box starts
      * @return this holder
+     * @throws IllegalArgumentException when the box does not fit in the array from the offset
      */
     public AnimationStep bounds(float[] box, int offset) {
+        if (box != null && (offset < 0 || offset > box.length - 6)) {
+            throw new IllegalArgumentException("bounds: a box is six floats from the offset, got offset " + offset
+                    + " in an array of " + box.length);
+        }
         bounds = box;
         boundsAt = offset;
         return this;

@@ -88,4 +88,17 @@ class UniformLevelsTest {
         }
         assertTrue(uniform > 100 && mixed > 100, "ranges with one level per species " + uniform + ", others " + mixed);
     }
+
+    @Test
+    void aBoxMustFitItsArray() {
+        AnimationStep step = new AnimationStep();
+        float[] box = new float[12];
+        assertEquals(step, step.bounds(box, 6));
+        assertEquals(step, step.bounds(null, -1));
+        for (int bad : new int[] {-1, 7, 12}) {
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> step.bounds(box, bad));
+            assertTrue(e.getMessage().contains("offset " + bad), e.getMessage());
+        }
+    }
 }
