@@ -65,17 +65,8 @@ final class PlantLevels {
         if (!(box[o] <= box[o + 3])) {
             return false; // no plant
         }
-        double near2 = 0;
-        double far2 = 0;
-        for (int k = 0; k < 3; k++) {
-            double e = k == 0 ? eyeX : k == 1 ? eyeY : eyeZ;
-            double lo = box[o + k];
-            double hi = box[o + 3 + k];
-            double near = e < lo ? lo - e : e > hi ? e - hi : 0;
-            double far = Math.max(Math.abs(e - lo), Math.abs(e - hi));
-            near2 += near * near;
-            far2 += far * far;
-        }
+        double near2 = org.jecosys.math.Boxes.near2(box, o, eyeX, eyeY, eyeZ);
+        double far2 = org.jecosys.math.Boxes.far2(box, o, eyeX, eyeY, eyeZ);
         double q2near = ViewLod.equivalent2(near2 * (1 - MARGIN), scale2, fixed2);
         double q2far = ViewLod.equivalent2(far2 * (1 + MARGIN), scale2, fixed2);
         for (int s = 0; s < table.length; s++) {

@@ -89,17 +89,8 @@ final class LevelBands {
         if (!(box[o] <= box[o + 3])) {
             return false; // no plant
         }
-        double near2 = 0;
-        double far2 = 0;
-        for (int k = 0; k < 3; k++) {
-            double e = k == 0 ? ex : k == 1 ? ey : ez;
-            double lo = box[o + k];
-            double hi = box[o + 3 + k];
-            double near = e < lo ? lo - e : e > hi ? e - hi : 0;
-            double far = Math.max(Math.abs(e - lo), Math.abs(e - hi));
-            near2 += near * near;
-            far2 += far * far;
-        }
+        double near2 = org.jecosys.math.Boxes.near2(box, o, ex, ey, ez);
+        double far2 = org.jecosys.math.Boxes.far2(box, o, ex, ey, ez);
         near2 *= 1 - PLAIN_MARGIN;
         far2 *= 1 + PLAIN_MARGIN;
         if (!(far2 < unthinned2)) {
