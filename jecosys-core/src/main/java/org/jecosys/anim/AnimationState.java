@@ -79,7 +79,7 @@ public final class AnimationState implements AnimationView {
     private final SpringRuns runs;
     /** Per-component D and v of plants in RANDOM mode. */
     private final ScatteredState scattered;
-    // per-component copies of the kind constants the output loops need (no gather there)
+    // per component the constants that map its D to pose and azimuth
     private final BendGeometry geometry;
     /** Per component its deviation, packed ({@link SpringRuns#pack}): {@link SpringRuns#compDev}, read in place. */
     private final long[] dev;

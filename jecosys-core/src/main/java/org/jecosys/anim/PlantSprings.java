@@ -190,7 +190,8 @@ final class PlantSprings {
     }
 
     /**
-     * {@link #springRuns} for a plant whose species leaves trails ({@link Trails}): the push of the flows
+     * {@link #springRuns} for a plant whose species leaves trails ({@link Trails}) and that is flattened
+     * or pushed this step ({@link #update} takes the others itself): the push of the flows
      * that flatten ({@link AnimationStep#pushes}) may flatten it at the step's end time; the flattening
      * at the plant's last update and at that time enter the runs' rest points; while both are 0 the
      * runs advance exactly as without trails.
@@ -202,9 +203,6 @@ final class PlantSprings {
         float uz = step.windZ[p];
         Trails tr = trails;
         boolean pushed = step.pushX != null && (step.pushX[p] != 0 || step.pushZ[p] != 0);
-        if (!pushed && tr.upright(p)) {
-            return springRuns(p, bit, ux, uz, 0, 0, 0, 0); // nothing to flatten or recover from
-        }
         float l0x = tr.nowX[p];
         float l0z = tr.nowZ[p];
         tr.at(p, step.time);

@@ -54,8 +54,9 @@ final class Trails {
     final float[] nowZ;
     /**
      * Per plant, {@link #NONE} when its species leaves no trails, else {@link #UPRIGHT} or
-     * {@link #FLATTENED} (amplitude not 0): what {@link #on} and {@link #upright} tell, in the one
-     * byte the step reads per plant.
+     * {@link #FLATTENED} (amplitude not 0), in the one byte the step reads per plant. An UPRIGHT plant
+     * has no flattening now and none at its last update: {@link #nowX}, {@link #nowZ} are 0 whenever
+     * the amplitude is ({@link #at} sets them so, {@link #push} sets both, {@link #clear} clears both).
      */
     private final byte[] mode;
     /** {@link #mode}: a species without trails. */
@@ -121,15 +122,6 @@ final class Trails {
     /** The equilibrium bend fraction that flattens plant p. */
     float flattenAt(int p) {
         return flattenAt[species[p]];
-    }
-
-    /**
-     * Whether plant p is not flattened: no flattening now and none at its last update. The flattening
-     * at the last update ({@link #nowX}, {@link #nowZ}) is 0 whenever the amplitude is ({@link #at} sets
-     * it so, {@link #push} sets both, {@link #clear} clears both), so the amplitude alone tells.
-     */
-    boolean upright(int p) {
-        return mode[p] != FLATTENED;
     }
 
     /** Whether plant p's species leaves trails. */
