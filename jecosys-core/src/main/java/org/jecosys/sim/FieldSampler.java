@@ -92,6 +92,49 @@ final class FieldSampler {
     }
 
     /**
+     * Refuses, before the step touches anything, a camera or registered view whose eye or
+     * view-projection matrix is not finite (a NaN would silently stop every plant from animating).
+     * Stepping thread; allocates only the message of a refusal.
+     *
+     * @throws IllegalArgumentException naming the camera (the step's, or the index of a registered view)
+     */
+    void checkViews(Camera camera, Camera[] others, int count) {
+        checkView("camera", camera, scratch);
+        for (int v = 0; v < count; v++) {
+            if (!usable(others[v], scratch)) {
+                checkView("view " + v + " (registered with addView)", others[v], scratch);
+            }
+        }
+    }
+
+    /** Whether the camera's eye and view-projection matrix are finite; writes the matrix into scratch. */
+    static boolean usable(Camera c, Matrix4f scratch) {
+        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
+            return false;
+        }
+        c.viewProjection(scratch);
+        return scratch.isFinite();
+    }
+
+    /**
+     * Throws when the camera's eye or view-projection matrix is not finite.
+     *
+     * @param what the camera's name in the message
+     * @throws IllegalArgumentException saying what is not finite
+     */
+    static void checkView(String what, Camera c, Matrix4f scratch) {
+        if (usable(c, scratch)) {
+            return;
+        }
+        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
+            throw new IllegalArgumentException(what + ": its eye position must be finite, got (" + c.x() + ", "
+                    + c.y() + ", " + c.z() + ") metres");
+        }
+        throw new IllegalArgumentException(what + ": its view-projection matrix (projection * view) must be finite, got "
+                + scratch.toString().replace('\n', ' ').trim());
+    }
+
+    /**
      * Advances the wind one fixed step, notes where in the step the flows switched (if they did), and
      * writes the field's result for its end into buffer b.
      */

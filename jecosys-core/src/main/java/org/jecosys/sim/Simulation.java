@@ -301,7 +301,15 @@ public final class Simulation implements AutoCloseable {
      * @param dt     elapsed real time, seconds, finite and &gt;= 0
      * @param camera the viewer, for visibility and level of detail (read, not kept)
      * @return fixed steps run, in [0, maxSubSteps]
-     * @throws IllegalArgumentException when {@code dt} is negative, NaN or infinite, or the camera is null
+     * <p>When a game's own code throws during a step (its {@link Camera}, an
+     * {@link org.jecosys.wind.AbstractWindSource} it added), the exception reaches the caller as it
+     * is, after the workers finished the fixed step's chunks: that step's frame is not published, the
+     * plants keep its motion, and the next call steps normally.
+     *
+     * @throws IllegalArgumentException when {@code dt} is negative, NaN or infinite, the camera is
+     *                                  null, or the eye or view-projection matrix of the camera or of
+     *                                  a registered view is not finite (checked each fixed step,
+     *                                  before anything moves)
      * @throws IllegalStateException    when the simulation is closed (a step that {@link #close()}
      *                                  interrupts from another thread returns after the fixed step it
      *                                  runs, and the next call throws)
@@ -370,6 +378,8 @@ public final class Simulation implements AutoCloseable {
         steppingThread = Thread.currentThread().getId();
         commands.drain();
         checkOpen(); // a command may have closed the simulation (close() from this very thread)
+        Camera[] others = views;
+        sampler.checkViews(camera, others, others.length);
         if (!primed) {
             prime(camera);
             primed = true;
@@ -383,8 +393,19 @@ public final class Simulation implements AutoCloseable {
         draw.prepare();
         long t0 = System.nanoTime();
         pool.start();
-        Camera[] others = views;
-        sampler.update(camera, others, others.length, 1 - b, fieldEnabled);
+        try {
+            sampler.update(camera, others, others.length, 1 - b, fieldEnabled);
+        } catch (RuntimeException | Error e) {
+            // a game's flow or camera threw beside the workers: let them finish this step's chunks
+            // (every plant advances, whatever the number of workers) so the pool is idle for the next
+            // step, then give the exception to the caller; the frame is not published
+            try {
+                pool.await();
+            } catch (RuntimeException | Error w) {
+                e.addSuppressed(w);
+            }
+            throw e;
+        }
         long fieldNanos = System.nanoTime() - t0;
         pool.await();
         current = 1 - current;
@@ -431,13 +452,15 @@ public final class Simulation implements AutoCloseable {
      * follow); registering only keeps what it sees animated. Any thread; allocates a small array.
      *
      * @param view the camera, kept by reference until {@link #removeView}
-     * @throws IllegalArgumentException when it is null or already registered
+     * @throws IllegalArgumentException when it is null or already registered, or its eye or
+     *                                  view-projection matrix is not finite (NaN or infinite)
      * @throws IllegalStateException    when {@link #MAX_VIEWS} - 1 views are registered, or the simulation
      *                                  is closed
      */
     public synchronized void addView(Camera view) {
         Require.nonNull("view", view);
         checkOpen();
+        FieldSampler.checkView("view", view, new org.joml.Matrix4f());
         Camera[] v = views;
         for (Camera c : v) {
             if (c == view) {
@@ -916,19 +939,32 @@ public final class Simulation implements AutoCloseable {
     /**
      * Closes the simulation: from now on every step and every command call throws
      * {@code IllegalStateException("the simulation is closed")}; then waits for a step running on
-     * another thread to finish the fixed step it is in (that step returns normally) and stops the
-     * workers. Safe from any thread at any time, also from the stepping thread and during a step;
+     * another thread to finish the fixed step it is in (that step returns normally), at most
+     * {@value #CLOSE_WAIT_MILLIS} ms (a step stuck in a game's own flow or camera completes alone
+     * when that code returns), and stops the workers. Safe from any thread at any time, also from the stepping thread and during a step;
      * idempotent. Commands still queued are dropped. Allocates nothing unless it has to wait.
      */
     @Override
     public void close() {
         closed = true;
         commands.close();
-        stepLock.lock();
+        boolean locked = false;
         try {
+            locked = stepLock.tryLock(CLOSE_WAIT_MILLIS, java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt(); // stop the workers all the same, without waiting
+        }
+        try {
+            // with the lock: no step runs. Without it a step is stuck in a game's flow or camera: the
+            // workers finish the chunks they hold and end; that step completes alone when it returns
             pool.close();
         } finally {
-            stepLock.unlock();
+            if (locked) {
+                stepLock.unlock();
+            }
         }
     }
+
+    /** How long {@link #close()} waits for a running step to reach its end, milliseconds. */
+    static final long CLOSE_WAIT_MILLIS = 1000;
 }

@@ -130,7 +130,31 @@ final class WorkerPool implements AutoCloseable {
     void await() {
         // the caller helps: it runs every chunk no worker has claimed yet (each chunk is claimed once,
         // whoever runs it, so results do not depend on which thread did the work)
-        runChunks(threads.length);
+        Throwable own = null;
+        try {
+            runChunks(threads.length);
+        } catch (RuntimeException | Error t) {
+            own = t;
+            next.set(chunks); // no thread claims another chunk of this step
+        }
+        // always wait for the pool threads, also after a failure: a step they still run would
+        // otherwise overlap the next one (its counters reset under them) and park the owner for ever
+        drain();
+        if (own != null) {
+            failure = null; // the owner's own exception goes out as it is
+            if (own instanceof RuntimeException r) {
+                throw r;
+            }
+            throw (Error) own;
+        }
+        Throwable f = failure;
+        if (f != null) {
+            failure = null;
+            throw new IllegalStateException("an animation worker failed: " + f, f);
+        }
+    }
+
+    private void drain() {
         int spins = 0;
         while (pending.get() != 0) {
             if (stopped) {
@@ -145,11 +169,6 @@ final class WorkerPool implements AutoCloseable {
             } else {
                 LockSupport.park(this);
             }
-        }
-        Throwable f = failure;
-        if (f != null) {
-            failure = null;
-            throw new IllegalStateException("an animation worker failed: " + f, f);
         }
     }
 
