@@ -85,4 +85,42 @@ public interface Camera {
      * @return metres, &ge; 0
      */
     double viewHeightAtEye();
+
+    /**
+     * Whether the camera's eye and its view-projection matrix are finite (no NaN, no infinity). Any
+     * thread that may read the camera; no allocation.
+     *
+     * @param c       the camera
+     * @param scratch receives the view-projection matrix
+     * @return true when every coordinate and matrix element is finite
+     */
+    static boolean isFinite(Camera c, Matrix4f scratch) {
+        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
+            return false;
+        }
+        return c.viewProjection(scratch).isFinite();
+    }
+
+    /**
+     * Refuses a camera whose eye or view-projection matrix is not finite: such a camera would
+     * silently cull everything (nothing animates, nothing is drawn). The simulation checks its step's
+     * camera and registered views each fixed step, the renderer each frame. No allocation unless it
+     * throws.
+     *
+     * @param what    the camera's name in the message ("camera", "view 2")
+     * @param c       the camera
+     * @param scratch receives the view-projection matrix
+     * @throws IllegalArgumentException saying what is not finite
+     */
+    static void requireFinite(String what, Camera c, Matrix4f scratch) {
+        if (isFinite(c, scratch)) {
+            return;
+        }
+        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
+            throw new IllegalArgumentException(what + ": its eye position must be finite, got (" + c.x() + ", "
+                    + c.y() + ", " + c.z() + ") metres");
+        }
+        throw new IllegalArgumentException(what + ": its view-projection matrix (projection * view) must be finite, got "
+                + c.viewProjection(scratch).toString().replace('\n', ' ').trim());
+    }
 }

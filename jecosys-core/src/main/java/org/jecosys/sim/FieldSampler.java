@@ -99,39 +99,12 @@ final class FieldSampler {
      * @throws IllegalArgumentException naming the camera (the step's, or the index of a registered view)
      */
     void checkViews(Camera camera, Camera[] others, int count) {
-        checkView("camera", camera, scratch);
+        Camera.requireFinite("camera", camera, scratch);
         for (int v = 0; v < count; v++) {
-            if (!usable(others[v], scratch)) {
-                checkView("view " + v + " (registered with addView)", others[v], scratch);
+            if (!Camera.isFinite(others[v], scratch)) {
+                Camera.requireFinite("view " + v + " (registered with addView)", others[v], scratch);
             }
         }
-    }
-
-    /** Whether the camera's eye and view-projection matrix are finite; writes the matrix into scratch. */
-    static boolean usable(Camera c, Matrix4f scratch) {
-        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
-            return false;
-        }
-        c.viewProjection(scratch);
-        return scratch.isFinite();
-    }
-
-    /**
-     * Throws when the camera's eye or view-projection matrix is not finite.
-     *
-     * @param what the camera's name in the message
-     * @throws IllegalArgumentException saying what is not finite
-     */
-    static void checkView(String what, Camera c, Matrix4f scratch) {
-        if (usable(c, scratch)) {
-            return;
-        }
-        if (!(Double.isFinite(c.x()) && Double.isFinite(c.y()) && Double.isFinite(c.z()))) {
-            throw new IllegalArgumentException(what + ": its eye position must be finite, got (" + c.x() + ", "
-                    + c.y() + ", " + c.z() + ") metres");
-        }
-        throw new IllegalArgumentException(what + ": its view-projection matrix (projection * view) must be finite, got "
-                + scratch.toString().replace('\n', ' ').trim());
     }
 
     /**

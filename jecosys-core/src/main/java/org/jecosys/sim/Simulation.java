@@ -460,7 +460,7 @@ public final class Simulation implements AutoCloseable {
     public synchronized void addView(Camera view) {
         Require.nonNull("view", view);
         checkOpen();
-        FieldSampler.checkView("view", view, new org.joml.Matrix4f());
+        Camera.requireFinite("view", view, new org.joml.Matrix4f());
         Camera[] v = views;
         for (Camera c : v) {
             if (c == view) {

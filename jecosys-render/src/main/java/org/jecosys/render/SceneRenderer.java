@@ -192,6 +192,7 @@ public final class SceneRenderer implements AutoCloseable {
      * @param camera the viewer (its aspect should be width / height)
      * @param width  viewport width, pixels, &gt; 0
      * @param height viewport height, pixels, &gt; 0
+     * @throws IllegalArgumentException when the camera's eye or view-projection matrix is not finite
      */
     public void render(Frame frame, Camera camera, int width, int height) {
         gl.checkThread();
@@ -199,6 +200,7 @@ public final class SceneRenderer implements AutoCloseable {
         Require.range("height", height, 1, 1 << 16);
         Require.nonNull("frame", frame);
         Require.nonNull("camera", camera);
+        Camera.requireFinite("camera", camera, cameraCheck);
         state.save();
         try {
             glViewport(0, 0, width, height);
@@ -230,11 +232,13 @@ public final class SceneRenderer implements AutoCloseable {
      *
      * @param frame  the animation frame to show
      * @param camera the viewer (its projection's aspect should match the viewport's)
+     * @throws IllegalArgumentException when the camera's eye or view-projection matrix is not finite
      */
     public void render(Frame frame, Camera camera) {
         gl.checkThread();
         Require.nonNull("frame", frame);
         Require.nonNull("camera", camera);
+        Camera.requireFinite("camera", camera, cameraCheck);
         state.save();
         try {
             draw(frame, camera, state.viewportX(), state.viewportY(), state.viewportWidth(),
@@ -243,6 +247,9 @@ public final class SceneRenderer implements AutoCloseable {
             state.restore();
         }
     }
+
+    /** The view-projection of the camera being checked ({@link Camera#requireFinite}). */
+    private final org.joml.Matrix4f cameraCheck = new org.joml.Matrix4f();
 
     private void draw(Frame frame, Camera camera, int vx, int vy, int width, int height) {
         if (width <= 0 || height <= 0) {
