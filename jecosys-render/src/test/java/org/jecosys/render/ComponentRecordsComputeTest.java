@@ -8,11 +8,13 @@ import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.plant.PlantRenderer;
 import org.jecosys.render.plant.ResolvePath;
+import org.junit.jupiter.api.Tag;
 
 /**
  * {@link ComponentRecordsTest} on the OpenGL 4.3 path (skipped on an older context): the records
  * stored by the compute shader; and they are the transform-feedback path's records, value for value.
  */
+@Tag("lwjgl-compat")
 class ComponentRecordsComputeTest extends ComponentRecordsTest {
     @Override
     ResolvePath path() {

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
+import org.junit.jupiter.api.Tag;
 
 /**
  * Multisampled framebuffers (scene C1, headless): every object they make is tracked and released; a
@@ -20,6 +21,7 @@ import org.jecosys.render.gl.Pixels;
  * makes the picture smoother still than the plain average of the samples, and leaves the sky's
  * gradient alone.
  */
+@Tag("lwjgl-compat")
 class GlFramebufferTest {
     private static final int W = 320;
     private static final int H = 200;

@@ -19,6 +19,7 @@ import org.lwjgl.opengl.GL30C;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
+import org.junit.jupiter.api.Tag;
 
 /**
  * The renderer is a good guest in a host's GL (a game, libGDX, jMonkeyEngine): a census of
@@ -29,6 +30,7 @@ import org.jecosys.render.gl.Pixels;
  * store); plants write alpha 255; and into an sRGB framebuffer with the host's sRGB writes on, the
  * stored colours are within 3/255 of a linear framebuffer's.
  */
+@Tag("lwjgl-compat")
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class GoodGuestTest {
     private static final int W = 240;

@@ -25,6 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlStateGuard;
 import org.jecosys.render.gl.GlTracker;
+import org.junit.jupiter.api.Tag;
 
 /**
  * Making and closing a renderer in a host's context leaves the host's state as it was, like a frame
@@ -32,6 +33,7 @@ import org.jecosys.render.gl.GlTracker;
  * array of its core profile once and never again, and skips binding a program or texture it believes
  * bound), so a vertex array, program or texture changed under them breaks every later draw.
  */
+@Tag("lwjgl-compat")
 class GuestLifecycleTest {
     @Test
     void constructingAndClosingPutBackTheHostsBindings() {

@@ -67,6 +67,7 @@ import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.plant.PlantRenderer;
+import org.junit.jupiter.api.Tag;
 
 /**
  * The renderer inside a host's GL, as a game uses it: a wrapped context ({@link GlContext#current}),
@@ -74,6 +75,7 @@ import org.jecosys.render.plant.PlantRenderer;
  * touches, and more), drawing into the bound viewport only, over the host's own background when
  * clearing is off, and a camera given by the host's own matrices.
  */
+@Tag("lwjgl-compat")
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class HostCompositionTest {
     private static final int W = 320;

@@ -20,6 +20,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Tag;
 
 /**
  * The renderer runs on LWJGL 3.3.3 (what libGDX and jMonkeyEngine bring) and later: every LWJGL
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.Test;
  * both of the module's test runs, on the build's LWJGL and on 3.3.3), and an older LWJGL is refused
  * with a message that names the version found and the version needed.
  */
+@Tag("lwjgl-compat")
 class LwjglVersionTest {
     @Test
     void theTestRunUsesTheLwjglItSaysItDoes() {

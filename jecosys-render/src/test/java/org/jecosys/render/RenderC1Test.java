@@ -31,11 +31,13 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.plant.PlantBatches;
+import org.junit.jupiter.api.Tag;
 
 /**
  * Headless rendering of scene C1 (paper Table 4) through GLFW's null platform and EGL (Mesa llvmpipe
  * here and on CI), read back with glReadPixels. KHR_debug is on: any GL error fails the test.
  */
+@Tag("lwjgl-compat")
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class RenderC1Test {
     private static final int W = 320;

@@ -20,6 +20,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.plant.ResolvePath;
+import org.junit.jupiter.api.Tag;
 
 /**
  * The plant renderer's output on C1 against reference images of the same frames and views (test
@@ -35,6 +36,7 @@ import org.jecosys.render.plant.ResolvePath;
  * references. Run with the environment variable {@code JECOSYS_WRITE_RENDER_REFERENCE=DIR} to write
  * this renderer's images into DIR instead.
  */
+@Tag("lwjgl-compat")
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class RenderPathEquivalenceTest {
     private static final int W = 320;
