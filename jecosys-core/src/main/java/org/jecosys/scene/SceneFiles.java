@@ -89,7 +89,7 @@ public final class SceneFiles {
                 throw fail(name, "is a directory, not a scene file");
             }
             if (!attrs.isRegularFile()) {
-                throw fail(name, "is not a regular file (a pipe, device or socket); scene files are regular files");
+                throw fail(name, "is not a regular file but " + otherKind(file) + "; scene files are regular files");
             }
             long size = attrs.size();
             if (size > MAX_FILE_BYTES) {
@@ -253,6 +253,26 @@ public final class SceneFiles {
         return in.position();
     }
 
+    /** What a path that is neither a regular file nor a folder is, from its POSIX mode where there is one. */
+    private static String otherKind(Path file) {
+        int type = -1;
+        try {
+            if (Files.getAttribute(file, "unix:mode") instanceof Integer mode) {
+                type = mode & 0170000;
+            }
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException | SecurityException e) {
+            // no POSIX mode here: say what it may be
+        }
+        return switch (type) {
+            case 0010000 -> "a named pipe (FIFO)";
+            case 0020000 -> "a character device";
+            case 0060000 -> "a block device";
+            case 0140000 -> "a socket";
+            default -> "a pipe, device or socket";
+        };
+    }
+
+    /** A problem about the file itself: located by its path only (line 0, printed without 0:0). */
     private static SceneLoadException fail(String file, String message) {
         return new SceneLoadException(new SceneProblem(file, 0, 0, message));
     }
