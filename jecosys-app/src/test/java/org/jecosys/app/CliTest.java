@@ -153,6 +153,6 @@ class CliTest {
     void aMissingSceneIsBadInput() {
         Result r = run("view", "no/such/scene.xml");
         assertEquals(2, r.code());
-        assertTrue(r.err().contains("no/such/scene.xml:0:0: no such file"), r.err());
+        assertTrue(r.err().contains("no/such/scene.xml: no such file"), r.err());
     }
 }

@@ -5,8 +5,8 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
-import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
@@ -33,6 +33,15 @@ import org.jecosys.terrain.ImageSource;
 public final class SceneFiles {
     /** Largest scene file accepted, bytes (8 MiB). */
     public static final long MAX_FILE_BYTES = SceneSchema.MAX_FILE_BYTES;
+    /**
+     * Most elements in one scene file (300,000): above the most the schema's counts allow, so only
+     * files that could never be valid are refused by it; reading stops at the element that crosses it.
+     * Reading is also bounded by the heap: a file whose elements would not fit in this JVM's heap is
+     * refused, located, where they stop fitting.
+     */
+    public static final int MAX_ELEMENTS = XmlReader.MAX_ELEMENTS;
+    /** Most attributes in one scene file, all elements together (700,000), likewise. */
+    public static final int MAX_ATTRIBUTES = XmlReader.MAX_ATTRIBUTES;
 
     private SceneFiles() {
     }
@@ -43,10 +52,11 @@ public final class SceneFiles {
      *
      * @param file the scene file; its name as given appears in every problem
      * @return the complete scene
-     * @throws SceneLoadException if the file cannot be read, is not a valid scene, names an image that
-     *                            is missing, outside its folder, too large
+     * @throws SceneLoadException if the file cannot be read, is not a valid scene, has more than
+     *                            {@link #MAX_ELEMENTS} elements or {@link #MAX_ATTRIBUTES} attributes,
+     *                            names an image that is missing, outside its folder, too large
      *                            ({@link org.jecosys.terrain.ImageFiles#MAX_SIDE}) or corrupt, or needs
-     *                            more memory than this JVM's heap allows
+     *                            more memory to read or to build than this JVM's heap allows
      */
     public static SceneDef load(Path file) throws SceneLoadException {
         return read(file).def();
@@ -89,7 +99,7 @@ public final class SceneFiles {
                 throw fail(name, "is a directory, not a scene file");
             }
             if (!attrs.isRegularFile()) {
-                throw fail(name, "is not a regular file (a pipe, device or socket); scene files are regular files");
+                throw fail(name, "is not a regular file but " + otherKind(file) + "; scene files are regular files");
             }
             long size = attrs.size();
             if (size > MAX_FILE_BYTES) {
@@ -163,7 +173,8 @@ public final class SceneFiles {
             throw new SceneLoadException(new SceneProblem(fileName, 1, 1,
                     "file is empty; expected <scene version=\"1\"> (see scenes/jecosys-scene.xsd)"));
         }
-        XmlNode root = new XmlReader(fileName, text).read();
+        // bounded in elements and in memory at this JVM's heap: refused where it crosses, never run out of memory
+        XmlNode root = new XmlReader(fileName, text, bytes.length, Runtime.getRuntime().maxMemory()).read();
         SceneValidator validator = new SceneValidator(fileName);
         Values values = validator.validateRoot(root);
         if (values == null || !validator.problems().isEmpty()) {
@@ -218,41 +229,68 @@ public final class SceneFiles {
         });
     }
 
+    /**
+     * The text of a UTF-8 file, a leading byte order mark dropped. Checked in small chunks first, so
+     * decoding takes the text's own string and nothing the size of the file besides.
+     */
     private static String decode(byte[] bytes, String fileName) throws SceneLoadException {
         int start = bytes.length >= 3 && (bytes[0] & 0xff) == 0xEF && (bytes[1] & 0xff) == 0xBB
                 && (bytes[2] & 0xff) == 0xBF ? 3 : 0;
-        CharsetDecoder dec = StandardCharsets.UTF_8.newDecoder()
-                .onMalformedInput(CodingErrorAction.REPORT)
-                .onUnmappableCharacter(CodingErrorAction.REPORT);
-        ByteBuffer in = ByteBuffer.wrap(bytes, start, bytes.length - start);
-        try {
-            CharBuffer cb = dec.decode(in);
-            return cb.toString();
-        } catch (CharacterCodingException e) {
-            int bad = firstInvalid(bytes, start);
-            int line = 1;
-            int lineStart = 0;
-            for (int i = 0; i < bad; i++) {
-                if (bytes[i] == '\n') {
-                    line++;
-                    lineStart = i + 1;
-                }
-            }
-            throw new SceneLoadException(new SceneProblem(fileName, line, bad - lineStart + 1,
-                    "not valid UTF-8 (byte offset " + bad + "); scene files are UTF-8 text"));
+        int bad = firstInvalid(bytes, start);
+        if (bad < 0) {
+            return new String(bytes, start, bytes.length - start, StandardCharsets.UTF_8);
         }
+        int line = 1;
+        int lineStart = 0;
+        for (int i = 0; i < bad; i++) {
+            if (bytes[i] == '\n') {
+                line++;
+                lineStart = i + 1;
+            }
+        }
+        throw new SceneLoadException(new SceneProblem(fileName, line, bad - lineStart + 1,
+                "not valid UTF-8 (byte offset " + bad + "); scene files are UTF-8 text"));
     }
 
+    /** The byte offset of the first sequence that is not UTF-8, or -1 when there is none. */
     private static int firstInvalid(byte[] bytes, int start) {
         CharsetDecoder dec = StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT)
                 .onUnmappableCharacter(CodingErrorAction.REPORT);
         ByteBuffer in = ByteBuffer.wrap(bytes, start, bytes.length - start);
-        CharBuffer out = CharBuffer.allocate(bytes.length + 1);
-        dec.decode(in, out, true);
-        return in.position();
+        CharBuffer out = CharBuffer.allocate(8192);
+        while (true) {
+            CoderResult r = dec.decode(in, out, true);
+            if (r.isError()) {
+                return in.position();
+            }
+            if (r.isUnderflow()) {
+                return -1;
+            }
+            out.clear(); // overflow: the chunk is checked, its characters are not needed
+        }
     }
 
+    /** What a path that is neither a regular file nor a folder is, from its POSIX mode where there is one. */
+    private static String otherKind(Path file) {
+        int type = -1;
+        try {
+            if (Files.getAttribute(file, "unix:mode") instanceof Integer mode) {
+                type = mode & 0170000;
+            }
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException | SecurityException e) {
+            // no POSIX mode here: say what it may be
+        }
+        return switch (type) {
+            case 0010000 -> "a named pipe (FIFO)";
+            case 0020000 -> "a character device";
+            case 0060000 -> "a block device";
+            case 0140000 -> "a socket";
+            default -> "a pipe, device or socket";
+        };
+    }
+
+    /** A problem about the file itself: located by its path only (line 0, printed without 0:0). */
     private static SceneLoadException fail(String file, String message) {
         return new SceneLoadException(new SceneProblem(file, 0, 0, message));
     }

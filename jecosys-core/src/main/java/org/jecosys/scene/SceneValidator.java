@@ -66,8 +66,7 @@ final class SceneValidator {
                     problem(node.line, node.column, "<" + spec.name + "> is missing required attribute '" + as.name
                             + "' (" + as.allowed() + ")");
                 }
-                v.values.put(as.name, as.defaultValue);
-                continue;
+                continue; // read as its default (Values.get)
             }
             Object parsed = parse(spec, as, a);
             v.values.put(as.name, parsed == null ? as.defaultValue : parsed);

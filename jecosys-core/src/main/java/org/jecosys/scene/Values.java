@@ -6,8 +6,9 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * The checked, typed content of one element: each attribute's parsed value (defaults filled in),
- * and the children's Values in document order. Produced by {@link SceneValidator}; read by
+ * The checked, typed content of one element: each attribute's parsed value (an absent attribute
+ * reads as its default, which is not stored, so an element costs what it holds), and the children's
+ * Values in document order. Produced by {@link SceneValidator}; read by
  * {@link SceneBinder}. Not shared between threads.
  */
 final class Values {
@@ -22,27 +23,32 @@ final class Values {
     }
 
     double num(String name) {
-        return (Double) values.get(name);
+        return (Double) get(name);
     }
 
     int integer(String name) {
-        return (Integer) values.get(name);
+        return (Integer) get(name);
     }
 
     long longValue(String name) {
-        return (Long) values.get(name);
+        return (Long) get(name);
     }
 
     boolean bool(String name) {
-        return (Boolean) values.get(name);
+        return (Boolean) get(name);
     }
 
     String str(String name) {
-        return (String) values.get(name);
+        return (String) get(name);
     }
 
+    /** The attribute's checked value, or its default when it is absent (or was refused). */
     Object get(String name) {
-        return values.get(name);
+        if (values.containsKey(name)) {
+            return values.get(name);
+        }
+        AttrSpec as = spec.attrSpec(name);
+        return as == null ? null : as.defaultValue;
     }
 
     boolean present(String name) {

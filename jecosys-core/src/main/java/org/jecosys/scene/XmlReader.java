@@ -4,6 +4,8 @@ import com.fasterxml.jackson.dataformat.xml.XmlFactory;
 import java.io.StringReader;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.xml.XMLConstants;
 import javax.xml.stream.Location;
 import javax.xml.stream.XMLInputFactory;
@@ -17,23 +19,75 @@ import javax.xml.stream.XMLStreamReader;
  * factory of our own, and on top of that any DOCTYPE is rejected at once, so no entity is ever
  * declared, expanded or fetched (XXE, billion laughs). Text content is not part of the format and
  * is rejected. Any thread; one instance per call.
+ *
+ * <p>Reading is bounded in elements and in memory at any heap: the parser streams, and the reader
+ * stops at the element that crosses {@link #MAX_ELEMENTS}, {@link #MAX_ATTRIBUTES}, or the heap this
+ * JVM lets a scene's reading take (the tree and what the checks and binding build from it, estimated
+ * per element and attribute as they arrive), with a located problem naming the limit. Nesting depth,
+ * attributes per element and attribute length are bounded by the parser's own limits (1,000 levels,
+ * 1,000 attributes, 512 KiB), reported with a location too. Finding an attribute's line and column
+ * scans its start tag once, so a tag with many attributes costs linear time.
  */
 final class XmlReader {
+    /**
+     * Most elements in one scene file. The schema's own counts allow at most 276,637 (256 flows, each
+     * with a path of 1,024 waypoints, beside every other maximum), so no valid scene is refused by
+     * this limit; the shipped scenes have 18 to 62.
+     */
+    static final int MAX_ELEMENTS = 300_000;
+    /**
+     * Most attributes in one scene file, all elements together. The schema allows at most 616,009
+     * (every attribute of every element at the element counts' maxima); the shipped scenes have 68 to
+     * 352 (xsi attributes included).
+     */
+    static final int MAX_ATTRIBUTES = 700_000;
+    /**
+     * Heap bytes per element while a scene is read, checked and bound, attributes aside: its located
+     * node, its checked values and its share of the Defs. Measured: 136 for an unknown element (node
+     * only), 255 for a known one; rounded up.
+     */
+    static final long BYTES_PER_ELEMENT = 300;
+    /**
+     * Heap bytes per attribute beyond its value's characters: located name, value, checked value and
+     * the entries holding them. Measured: 128 for an unknown attribute, 190 to 290 for known ones
+     * (waypoints 286 with their few characters); rounded up.
+     */
+    static final long BYTES_PER_ATTRIBUTE = 300;
+    /** Heap bytes per character of the text and of each attribute value (a UTF-16 string at worst). */
+    static final long BYTES_PER_CHAR = 2;
+
     /** One factory, built and hardened by Jackson; XMLInputFactory is thread-safe once configured. */
     private static final XMLInputFactory FACTORY = new XmlFactory().getXMLInputFactory();
     private static final String XSI = XMLConstants.W3C_XML_SCHEMA_INSTANCE_NS_URI;
     /** The parser's limits: nesting depth (group 1 set) or attributes per element, with the limit (group 2). */
-    private static final java.util.regex.Pattern LIMIT = java.util.regex.Pattern.compile(
-            "(?i)(?:(Maximum Element Depth)|Attribute) limit \\((\\d+)\\)");
+    private static final Pattern LIMIT = Pattern.compile("(?i)(?:(Maximum Element Depth)|Attribute) limit \\((\\d+)\\)");
 
     private final String file;
     private final String text;
-    private final int[] lineStarts;
+    private final long heap;
+    /** Heap bytes the file's bytes and text take while it is read. */
+    private final long textBytes;
+    /** Heap bytes reading may take beyond the text: a share of the heap, less the program's own. */
+    private final long budget;
+    private int elements;
+    private long attributes;
+    /** Estimated heap bytes of what was read so far, text excluded. */
+    private long used;
 
-    XmlReader(String file, String text) {
+    /**
+     * A reader of one document.
+     *
+     * @param file      the name every problem is reported under
+     * @param text      the whole document
+     * @param fileBytes bytes of the file, held by the caller while it is read
+     * @param heap      the Java heap, bytes ({@code Runtime.maxMemory}): bounds what reading may take
+     */
+    XmlReader(String file, String text, long fileBytes, long heap) {
         this.file = file;
         this.text = text;
-        this.lineStarts = lineStarts(text);
+        this.heap = heap;
+        this.textBytes = fileBytes + BYTES_PER_CHAR * text.length();
+        this.budget = (long) (heap * SceneBudget.HEAP_SHARE) - SceneBudget.BASELINE_BYTES - textBytes;
     }
 
     /** Parses the whole document; the root element is returned. */
@@ -51,7 +105,9 @@ final class XmlReader {
                     case XMLStreamConstants.ENTITY_REFERENCE -> throw problem(r.getLocation(),
                             "entity reference &" + r.getLocalName() + "; is not allowed");
                     case XMLStreamConstants.START_ELEMENT -> {
+                        countElement(r);
                         XmlNode n = startElement(r);
+                        charge(r, n);
                         if (stack.isEmpty()) {
                             root = n;
                         } else {
@@ -77,28 +133,7 @@ final class XmlReader {
             }
             return root;
         } catch (XMLStreamException e) {
-            Location loc = e.getLocation();
-            if (loc == null || loc.getLineNumber() < 1) {
-                // the parser's own limits (nesting depth, attributes per element) carry no location:
-                // report where the reader stopped
-                loc = r == null ? null : r.getLocation();
-            }
-            String m = cleanMessage(e);
-            java.util.regex.Matcher limit = LIMIT.matcher(m);
-            if (limit.find()) {
-                int n = Integer.parseInt(limit.group(2));
-                if (limit.group(1) != null) {
-                    throw problem(loc, "elements are nested more than " + n + " levels deep (the limit)");
-                }
-                int at = loc == null ? -1 : nthAttributeOffset(loc.getCharacterOffset(), n);
-                if (at >= 0) {
-                    int line = lineOf(at);
-                    throw new SceneLoadException(new SceneProblem(file, line, at - lineStarts[line - 1] + 1,
-                            "more than " + n + " attributes on one element (the limit)"));
-                }
-                throw problem(loc, "more than " + n + " attributes on one element (the limit)");
-            }
-            throw problem(loc, "malformed XML: " + m);
+            throw parserProblem(e, r);
         } finally {
             if (r != null) {
                 try {
@@ -110,6 +145,52 @@ final class XmlReader {
         }
     }
 
+    /**
+     * Counts the element the reader is at against the limits on elements and attributes before
+     * anything of it is kept, and refuses it, located, when it crosses one: reading stops there.
+     */
+    private void countElement(XMLStreamReader r) throws SceneLoadException {
+        elements++;
+        attributes += r.getAttributeCount();
+        if (elements > MAX_ELEMENTS) {
+            throw problem(r.getLocation(), tag(r) + "more than " + SceneBudget.count(MAX_ELEMENTS)
+                    + " elements in one scene file (the limit; no valid scene has more); reading stopped here");
+        }
+        if (attributes > MAX_ATTRIBUTES) {
+            throw problem(r.getLocation(), tag(r) + "more than " + SceneBudget.count(MAX_ATTRIBUTES)
+                    + " attributes in one scene file, all elements together (the limit; no valid scene has more); "
+                    + "reading stopped here");
+        }
+    }
+
+    /**
+     * Adds what the element just read will take, kept, checked and bound, to the estimate, and
+     * refuses it, located, when the estimate passes what this heap allows: reading stops there.
+     */
+    private void charge(XMLStreamReader r, XmlNode n) throws SceneLoadException {
+        long valueChars = 0;
+        for (XmlNode.Attr a : n.attrs.values()) {
+            valueChars += a.value().length();
+        }
+        used += BYTES_PER_ELEMENT + r.getAttributeCount() * BYTES_PER_ATTRIBUTE + valueChars * BYTES_PER_CHAR;
+        if (used <= budget) {
+            return;
+        }
+        long allowed = Math.max(0, (long) (heap * SceneBudget.HEAP_SHARE) - SceneBudget.BASELINE_BYTES);
+        throw problem(r.getLocation(), tag(r) + "reading stopped at element " + SceneBudget.count(elements)
+                + " (with " + SceneBudget.count(attributes) + (attributes == 1 ? " attribute" : " attributes")
+                + " so far): the file's text (" + SceneBudget.bytes(textBytes) + ") and its elements so far ("
+                + SceneBudget.bytes(used) + ") need more memory to read and check than the " + SceneBudget.bytes(allowed)
+                + " a scene may use here (" + Math.round(SceneBudget.HEAP_SHARE * 100) + "% of the Java heap of "
+                + SceneBudget.bytes(heap) + ", Runtime.maxMemory, less " + SceneBudget.bytes(SceneBudget.BASELINE_BYTES)
+                + " for the program; set with -Xmx); whatever the heap, a scene file holds at most "
+                + SceneBudget.count(MAX_ELEMENTS) + " elements");
+    }
+
+    private static String tag(XMLStreamReader r) {
+        return "<" + qualified(r.getPrefix(), r.getLocalName()) + ">: ";
+    }
+
     private XmlNode startElement(XMLStreamReader r) throws SceneLoadException {
         Location loc = r.getLocation();
         String ns = r.getNamespaceURI();
@@ -118,19 +199,23 @@ final class XmlReader {
                     + "'; scene elements have no namespace");
         }
         XmlNode n = new XmlNode(r.getLocalName(), loc.getLineNumber(), loc.getColumnNumber());
-        int offset = loc.getCharacterOffset();
+        TagScan tag = new TagScan(loc);
         for (int i = 0; i < r.getAttributeCount(); i++) {
             String ans = r.getAttributeNamespace(i);
             String local = r.getAttributeLocalName(i);
             if (XSI.equals(ans)) {
                 continue; // xsi:noNamespaceSchemaLocation and friends, for schema-aware editors
             }
-            int at = attributeOffset(offset, qualified(r.getAttributePrefix(i), local));
-            int line = at < 0 ? n.line : lineOf(at);
-            int col = at < 0 ? n.column : at - lineStarts[line - 1] + 1;
+            String name = qualified(r.getAttributePrefix(i), local);
+            boolean found = tag.find(name);
+            if (!found) {
+                tag = new TagScan(loc); // not after the previous one: look from the tag's start
+                found = tag.find(name);
+            }
+            int line = found ? tag.line : n.line;
+            int col = found ? tag.column : n.column;
             if (ans != null && !ans.isEmpty()) {
-                throw new SceneLoadException(new SceneProblem(file, line, col, "attribute '"
-                        + qualified(r.getAttributePrefix(i), local) + "' of <" + n.name
+                throw new SceneLoadException(new SceneProblem(file, line, col, "attribute '" + name + "' of <" + n.name
                         + "> is in namespace '" + ans + "'; scene attributes have no namespace"));
             }
             n.attrs.put(local, new XmlNode.Attr(local, r.getAttributeValue(i), line, col));
@@ -138,128 +223,130 @@ final class XmlReader {
         return n;
     }
 
+    /** The parser's own failure as a located problem: its limits named, malformed XML quoted. */
+    private SceneLoadException parserProblem(XMLStreamException e, XMLStreamReader r) {
+        Location loc = e.getLocation();
+        if (loc == null || loc.getLineNumber() < 1) {
+            // the parser's own limits (nesting depth, attributes per element) carry no location:
+            // report where the reader stopped
+            loc = r == null ? null : r.getLocation();
+        }
+        String m = cleanMessage(e);
+        Matcher limit = LIMIT.matcher(m);
+        if (!limit.find()) {
+            return problem(loc, "malformed XML: " + m);
+        }
+        int n = Integer.parseInt(limit.group(2));
+        if (limit.group(1) != null) {
+            return problem(loc, "elements are nested more than " + n + " levels deep (the limit)");
+        }
+        String message = "more than " + n + " attributes on one element (the limit)";
+        if (loc != null) {
+            TagScan tag = new TagScan(loc);
+            for (int k = 0; k <= n && tag.next(); k++) {
+                if (k == n) {
+                    return new SceneLoadException(new SceneProblem(file, tag.line, tag.column, message));
+                }
+            }
+        }
+        return problem(loc, message);
+    }
+
     /**
-     * The char offset of the attribute at index {@code n} (0-based) of the start tag beginning at
-     * {@code tagStart}, scanning names and quoted values; -1 if the tag has no such attribute.
+     * Walks the attribute names of the start tag at a location, in document order, scanning names
+     * and quoted values once and counting lines on the way, so that each attribute is found where
+     * its name starts. Attributes come from the parser in document order, so finding them one after
+     * another costs one pass over the tag. Positions fall back to the element's when the location
+     * is not a start tag.
      */
-    private int nthAttributeOffset(int tagStart, int n) {
-        if (tagStart < 0 || tagStart >= text.length() || text.charAt(tagStart) != '<') {
-            return -1;
-        }
-        int i = tagStart + 1;
-        int len = text.length();
-        while (i < len && !isSpace(text.charAt(i)) && text.charAt(i) != '>' && text.charAt(i) != '/') {
-            i++;
-        }
-        for (int k = 0; i < len; k++) {
-            while (i < len && isSpace(text.charAt(i))) {
+    private final class TagScan {
+        /** Next character to scan; past the end when the location is not a start tag. */
+        private int i;
+        /** Offset of the first character of the current line (may be before the text for column 1). */
+        private int lineStart;
+        private int currentLine;
+        /** The last attribute name found: its line and 1-based column, start and end offsets. */
+        int line;
+        int column;
+        private int nameStart;
+        private int nameEnd;
+
+        TagScan(Location loc) {
+            int start = loc.getCharacterOffset();
+            if (start < 0 || start >= text.length() || text.charAt(start) != '<' || loc.getLineNumber() < 1) {
+                i = text.length();
+                return;
+            }
+            currentLine = loc.getLineNumber();
+            lineStart = start - (Math.max(loc.getColumnNumber(), 1) - 1);
+            i = start + 1;
+            while (i < text.length() && !isSpace(text.charAt(i)) && text.charAt(i) != '>' && text.charAt(i) != '/') {
                 i++;
             }
-            if (i >= len || text.charAt(i) == '>' || text.charAt(i) == '/') {
-                return -1;
+        }
+
+        /** Moves to the next attribute name of the tag; false at the tag's end. */
+        boolean next() {
+            int n = text.length();
+            skipSpace();
+            if (i >= n || text.charAt(i) == '>' || text.charAt(i) == '/') {
+                i = n;
+                return false;
             }
-            if (k == n) {
-                return i;
-            }
-            while (i < len && text.charAt(i) != '"' && text.charAt(i) != '\'' && text.charAt(i) != '>') {
+            nameStart = i;
+            line = currentLine;
+            column = i - lineStart + 1;
+            while (i < n && !isSpace(text.charAt(i)) && text.charAt(i) != '=' && text.charAt(i) != '>') {
                 i++;
             }
-            if (i < len && text.charAt(i) != '>') {
+            nameEnd = i;
+            skipSpace();
+            if (i < n && text.charAt(i) == '=') {
+                i++;
+            }
+            skipSpace();
+            if (i < n && (text.charAt(i) == '"' || text.charAt(i) == '\'')) {
                 char q = text.charAt(i++);
-                while (i < len && text.charAt(i) != q) {
+                while (i < n && text.charAt(i) != q) {
+                    newline();
                     i++;
                 }
                 i++;
             }
+            return true;
         }
-        return -1;
+
+        /** Moves to the next attribute called {@code name}; false (and the tag scanned) if none follows. */
+        boolean find(String name) {
+            while (next()) {
+                if (nameEnd - nameStart == name.length() && text.startsWith(name, nameStart)) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        private void skipSpace() {
+            while (i < text.length() && isSpace(text.charAt(i))) {
+                newline();
+                i++;
+            }
+        }
+
+        private void newline() {
+            if (text.charAt(i) == '\n') {
+                currentLine++;
+                lineStart = i + 1;
+            }
+        }
     }
 
     private static String qualified(String prefix, String local) {
         return prefix == null || prefix.isEmpty() ? local : prefix + ":" + local;
     }
 
-    /**
-     * The char offset of attribute {@code name} inside the start tag beginning at {@code tagStart}
-     * (the '&lt;'), scanning names and quoted values; -1 if not found.
-     */
-    private int attributeOffset(int tagStart, String name) {
-        if (tagStart < 0 || tagStart >= text.length() || text.charAt(tagStart) != '<') {
-            return -1;
-        }
-        int i = tagStart + 1;
-        int n = text.length();
-        while (i < n && !isSpace(text.charAt(i)) && text.charAt(i) != '>' && text.charAt(i) != '/') {
-            i++;
-        }
-        while (i < n) {
-            while (i < n && isSpace(text.charAt(i))) {
-                i++;
-            }
-            if (i >= n || text.charAt(i) == '>' || text.charAt(i) == '/') {
-                return -1;
-            }
-            int nameStart = i;
-            while (i < n && !isSpace(text.charAt(i)) && text.charAt(i) != '=') {
-                i++;
-            }
-            boolean match = text.startsWith(name, nameStart) && nameStart + name.length() == i;
-            while (i < n && isSpace(text.charAt(i))) {
-                i++;
-            }
-            if (i < n && text.charAt(i) == '=') {
-                i++;
-            }
-            while (i < n && isSpace(text.charAt(i))) {
-                i++;
-            }
-            if (i < n && (text.charAt(i) == '"' || text.charAt(i) == '\'')) {
-                char q = text.charAt(i++);
-                while (i < n && text.charAt(i) != q) {
-                    i++;
-                }
-                i++;
-            }
-            if (match) {
-                return nameStart;
-            }
-        }
-        return -1;
-    }
-
     private static boolean isSpace(char c) {
         return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-    }
-
-    private int lineOf(int offset) {
-        int lo = 0;
-        int hi = lineStarts.length - 1;
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (lineStarts[mid] <= offset) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo + 1;
-    }
-
-    private static int[] lineStarts(String s) {
-        int count = 1;
-        for (int i = 0; i < s.length(); i++) {
-            if (s.charAt(i) == '\n') {
-                count++;
-            }
-        }
-        int[] starts = new int[count];
-        int k = 1;
-        for (int i = 0; i < s.length(); i++) {
-            if (s.charAt(i) == '\n') {
-                starts[k++] = i + 1;
-            }
-        }
-        return starts;
     }
 
     private SceneLoadException problem(Location loc, String message) {
