@@ -31,7 +31,7 @@ import org.jecosys.wind.WindSource;
  * state: a save that needs confirmation ({@link SceneSaver.Plan#confirm()}) waits in
  * {@link #pendingSave()} until {@link #confirmSave()} or {@link #cancelSave()}.
  *
- * <p>Keys ({@link #CONTROLS} lists them for {@code view --help} and the README): W/A/S/D walk, Q/E
+ * <p>Keys ({@link #CONTROLS} lists them for {@code view --help} and docs/viewer.md): W/A/S/D walk, Q/E
  * down/up, Shift faster, Ctrl slower, mouse wheel scales the walking speed, right-drag looks, H or
  * Home frames the scene, P plays the scene's camera path, F adds the chosen flow at the pointer, 1-6
  * choose its kind, T places an agent, left-drag on a gizmo moves its flow or agent, left-drag on the
@@ -53,7 +53,7 @@ final class ViewerControls {
         FlowKind.GUST, FlowKind.BLAST};
     /** Seconds a blast added with F lasts. */
     static final double BLAST_SECONDS = 1;
-    /** The controls, one per line: {@code view --help} prints them and the README lists them. */
+    /** The controls, one per line: {@code view --help} prints them and docs/viewer.md lists them. */
     static final String[] CONTROLS = {
         "W A S D       walk (speed scaled to the terrain, shown in the HUD)",
         "Q E           down, up",
