@@ -213,6 +213,36 @@ class CliOutputsTest {
         }
     }
 
+    @Test
+    void everyFileTheAppAndTheBenchWriteGoesThroughTheOutputWriter() throws Exception {
+        // a raw write anywhere in jecosys-app's code would bypass the checks: each one found must be an
+        // encoder writing OutputFiles' temporary file, a chart drawn into a stream, or the viewer's scene save
+        java.util.regex.Pattern write = java.util.regex.Pattern.compile("Files\\.(write|writeString|newOutputStream|"
+                + "newBufferedWriter|copy|move|createFile|createTempFile)\\(|new (FileOutputStream|FileWriter|"
+                + "RandomAccessFile)|ImageIO\\.(write|createImageOutputStream)\\(|stbi_write_|AtomicFiles\\.write\\(|"
+                + "Pixels\\.writePng\\(|TerrainMaps\\.write|saveBitmap\\(|SceneFiles\\.save");
+        List<String> found = new ArrayList<>();
+        List<Path> sources;
+        try (Stream<Path> s = Files.walk(Path.of("jecosys-app/src/main/java"))) {
+            sources = s.filter(p -> p.toString().endsWith(".java")).toList();
+        }
+        assertTrue(sources.size() > 40, "sources: " + sources.size());
+        for (Path source : sources) {
+            List<String> lines = Files.readAllLines(source);
+            for (int i = 0; i < lines.size(); i++) {
+                String line = lines.get(i);
+                if (!write.matcher(line).find()) {
+                    continue;
+                }
+                found.add(source.getFileName() + ":" + (i + 1));
+                boolean allowed = line.contains("temporary") || line.contains("saveBitmap(chart, png, ")
+                        || line.contains("SceneFiles.save(");
+                assertTrue(allowed, source + ":" + (i + 1) + " writes a file without OutputFiles: " + line.trim());
+            }
+        }
+        assertTrue(found.size() >= 8, "the writes the scan should see: " + found);
+    }
+
     /**
      * Runs {@code args}; exit 2 with {@code message} on stderr (the flag and the path), no stack trace,
      * nothing built or written, and {@code target} exactly as it was.
