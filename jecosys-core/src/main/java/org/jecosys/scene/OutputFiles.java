@@ -30,8 +30,9 @@ import org.jecosys.math.Require;
  * owner made read-only is left alone by everyone.</li>
  * </ul>
  * {@link #problem(Path)} and {@link #folderProblem(Path)} are the same rules as questions, for a
- * program that checks its outputs before it starts working; {@link #write} asks them again before
- * the temporary file is made and once more just before the move. Missing folders above a target
+ * program that checks its outputs before it starts working; {@link #write} asks {@link #problem}
+ * again before the temporary file is made, and just before the move asks once more whether the
+ * target has become a link, folder, device, pipe or socket. Missing folders above a target
  * are made when it is written (as {@code mkdir -p}). Temporaries left in a folder by writers that
  * are gone are listed once per folder and writer, and removed as their target is written: a
  * hundred thousand frames in one folder cost one listing, not one each.
