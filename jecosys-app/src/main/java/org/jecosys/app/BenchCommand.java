@@ -17,6 +17,9 @@ import picocli.CommandLine.Spec;
         description = {"Run the benchmarks that reproduce the paper's tables and write tables.md, results.json "
                 + "and PNG charts."})
 final class BenchCommand implements Callable<Integer> {
+    /** The files the bench writes into its folder, beside {@code charts/}. */
+    static final java.util.List<String> REPORT_FILES = java.util.List.of("tables.md", "results.json");
+
     @Spec
     CommandSpec spec;
     @Mixin
@@ -24,7 +27,8 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "A short run (about 40 s on 2 cores; the full run takes about 5 minutes).")
     boolean quick;
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "bench-results",
-            description = "Output folder (default: ${DEFAULT-VALUE}).")
+            description = "Output folder (default: ${DEFAULT-VALUE}); tables.md, results.json and charts/*.png "
+                    + "in it are replaced, never through a link.")
     Path out;
     @Option(names = "--only", paramLabel = "WORD", description = "Run only the sections whose name contains WORD "
             + "(case-insensitive), e.g. --only \"render scale\".")
@@ -35,7 +39,6 @@ final class BenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        OutputPaths.folder(spec.commandLine(), "--out", out);
         Path scenes = SceneArgs.resolve("scenes");
         BenchSuite suite = BenchSuite.standard(scenes, quality);
         if (only != null) {
@@ -49,6 +52,16 @@ final class BenchCommand implements Callable<Integer> {
                 return ExitCodes.BAD_INPUT;
             }
         }
+        OutputPlan plan = new OutputPlan(spec.commandLine())
+                .filesIn("--out", out, REPORT_FILES)
+                .filesInSubfolder("--out", out, "charts", suite.charts());
+        try (java.util.stream.Stream<Path> files = java.nio.file.Files.list(scenes)) {
+            files.filter(p -> p.getFileName().toString().endsWith(".xml"))
+                    .forEach(p -> plan.input(p, "a scene file the bench reads"));
+        } catch (IOException e) {
+            // no scenes folder: the sections that need one fail and say so
+        }
+        plan.check();
         Report report = suite.run(quick ? Mode.QUICK : Mode.FULL, out, System.err);
         var o = spec.commandLine().getOut();
         o.println("wrote " + out.resolve("tables.md") + ", " + out.resolve("results.json") + " and "

@@ -3,7 +3,6 @@ package org.jecosys.app;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.ByteBuffer;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -17,6 +16,7 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.ShadowPath;
+import org.jecosys.scene.OutputFiles;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
@@ -96,7 +96,7 @@ final class Gallery {
 
     static void render(Path scenes, Path out, int width, int height, PrintWriter log, PrintWriter err)
             throws IOException, BadScene {
-        Files.createDirectories(out);
+        OutputFiles files = new OutputFiles(); // makes the folder with the first picture, once a scene was accepted
         double aspect = width / (double) height;
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false);
@@ -131,7 +131,8 @@ final class Gallery {
                             renderer.render(frame, v.camera(), width, height);
                             fb.resolve();
                             Pixels.read(width, height, px);
-                            Pixels.writePng(out.resolve(v.file()), px, width, height);
+                            files.writeFile(out.resolve(v.file()),
+                                    temporary -> Pixels.writePng(temporary, px, width, height));
                         }
                         log.println("Wrote " + out.resolve(v.file()));
                         log.flush();

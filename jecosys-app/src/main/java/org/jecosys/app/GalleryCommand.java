@@ -22,7 +22,7 @@ final class GalleryCommand implements Callable<Integer> {
     @Mixin
     Verbose verbose;
     @Option(names = "--out", paramLabel = "DIR", required = true, description = "Folder for the PNG files "
-            + "(created if missing; files of the same names are replaced).")
+            + "(created if missing; files of the same names are replaced, never through a link).")
     Path out;
     @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,
             description = "Image size in pixels, each side 16 to 8192 (default: 960x540).")
@@ -33,14 +33,16 @@ final class GalleryCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        OutputPaths.folder(spec.commandLine(), "--out", out);
         Path dir = SceneArgs.resolve(scenes);
+        OutputPlan plan = new OutputPlan(spec.commandLine()).filesIn("--out", out, Gallery.FILES);
         for (String name : Gallery.SCENES) {
             if (!Files.isRegularFile(dir.resolve(name))) {
                 throw new ParameterException(spec.commandLine(), "--scenes " + scenes + ": no " + name + " in "
                         + dir.toAbsolutePath());
             }
+            plan.input(dir.resolve(name), "a scene file the gallery reads");
         }
+        plan.check();
         int w = size == null ? Gallery.WIDTH : size.width();
         int h = size == null ? Gallery.HEIGHT : size.height();
         try {

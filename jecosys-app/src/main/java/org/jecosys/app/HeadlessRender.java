@@ -3,8 +3,10 @@ package org.jecosys.app;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.ByteBuffer;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
@@ -13,6 +15,7 @@ import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.TerrainTint;
+import org.jecosys.scene.OutputFiles;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
@@ -27,7 +30,9 @@ import org.lwjgl.system.MemoryUtil;
  * Renders a scene headless (GLFW null platform + EGL, e.g. Mesa llvmpipe; no X server) to numbered
  * PNG files {@code frame-00001.png ...}, at 30 frames per second of scene time from the scene's
  * start camera; optionally also the water, nutrient and species maps. Used by {@code jecosys render}
- * and by {@code jecosys view} when there is no display.
+ * and by {@code jecosys view} when there is no display. Every file goes through {@link OutputFiles}
+ * (atomic, never through a link, never onto a pipe or device); the command checks the names of
+ * {@link #outputNames} before the run with an {@link OutputPlan}. The command's thread; allocates.
  */
 final class HeadlessRender {
     /** Scene seconds between rendered frames. */
@@ -35,7 +40,27 @@ final class HeadlessRender {
     /** Side of the map images, pixels. */
     static final int MAP_SIDE = 512;
 
+    /** The map files {@code --maps} writes. */
+    static final List<String> MAPS = List.of("water.png", "nutrients.png", "species.png");
+
     private HeadlessRender() {
+    }
+
+    /** {@return the file name of frame {@code i} (from 1): frame-00001.png} */
+    static String frameName(int i) {
+        return String.format(Locale.ROOT, "frame-%05d.png", i);
+    }
+
+    /** {@return every file name a run of {@code frames} frames writes into its folder, maps included if asked} */
+    static List<String> outputNames(int frames, boolean maps) {
+        List<String> names = new ArrayList<>(frames + MAPS.size());
+        for (int i = 1; i <= frames; i++) {
+            names.add(frameName(i));
+        }
+        if (maps) {
+            names.addAll(MAPS);
+        }
+        return names;
     }
 
     /** The render settings a scene asks for, with the library's sky and terrain (the whole picture). */
@@ -46,7 +71,6 @@ final class HeadlessRender {
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
                     boolean maps, PrintWriter log, Progress progress) throws IOException {
         SceneDef def = scene.def();
-        Files.createDirectories(out);
         log.println("Building '" + def.name() + "' ...");
         log.flush();
         try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, 0)) {
@@ -62,16 +86,19 @@ final class HeadlessRender {
                                boolean maps, PrintWriter log) throws IOException {
         World world = sim.world();
         BuildReport.print(world, log, log);
+        OutputFiles files = new OutputFiles();
         if (maps) {
-            TerrainMaps.writeWater(world.terrain().water(), MAP_SIDE, MAP_SIDE, out.resolve("water.png"));
-            TerrainMaps.writeNutrients(world.terrain().nutrients(), MAP_SIDE, MAP_SIDE, out.resolve("nutrients.png"));
+            files.writeFile(out.resolve(MAPS.get(0)), temporary ->
+                    TerrainMaps.writeWater(world.terrain().water(), MAP_SIDE, MAP_SIDE, temporary));
+            files.writeFile(out.resolve(MAPS.get(1)), temporary ->
+                    TerrainMaps.writeNutrients(world.terrain().nutrients(), MAP_SIDE, MAP_SIDE, temporary));
             int[] palette = {0x4F8A2B, 0xF2D21B, 0x7B3FB0, 0xD0402A, 0x2A7FD0, 0xE08A1E, 0x20A0A0, 0xA02080};
             int[] pal = new int[Math.max(palette.length, world.plants().species().size())];
             for (int i = 0; i < pal.length; i++) {
                 pal[i] = palette[i % palette.length];
             }
-            TerrainMaps.writeSpecies(world.terrain().heightfield(), world.layout(), pal, MAP_SIDE, MAP_SIDE,
-                    out.resolve("species.png"));
+            files.writeFile(out.resolve(MAPS.get(2)), temporary -> TerrainMaps.writeSpecies(
+                    world.terrain().heightfield(), world.layout(), pal, MAP_SIDE, MAP_SIDE, temporary));
             log.println("Wrote water.png, nutrients.png and species.png to " + out);
         }
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
@@ -89,7 +116,7 @@ final class HeadlessRender {
                     renderer.render(frame, camera, width, height);
                     fb.resolve();
                     Pixels.read(width, height, px);
-                    Pixels.writePng(out.resolve(String.format("frame-%05d.png", i)), px, width, height);
+                    files.writeFile(out.resolve(frameName(i)), temporary -> Pixels.writePng(temporary, px, width, height));
                 }
             }
         } finally {

@@ -29,7 +29,7 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--frames", paramLabel = "N", required = true, description = "Frames to render, 1 to 100000.")
     int frames;
     @Option(names = "--out", paramLabel = "DIR", required = true, description = "Folder for the PNG files "
-            + "(created if missing).")
+            + "(created if missing; files of the same names are replaced, never through a link).")
     Path out;
     @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,
             description = "Image size in pixels, each side 16 to 8192 (default: the scene's render size).")
@@ -49,13 +49,17 @@ final class RenderCommand implements Callable<Integer> {
         if (frames < 1 || frames > 100_000) {
             throw new ParameterException(spec.commandLine(), "--frames must be in [1, 100000], got " + frames);
         }
-        OutputPaths.folder(spec.commandLine(), "--out", out);
-        OutputPaths.file(spec.commandLine(), "--gif", gif);
+        OutputPlan plan = new OutputPlan(spec.commandLine())
+                .filesIn("--out", out, HeadlessRender.outputNames(frames, maps))
+                .file("--gif", gif);
         Path file = SceneArgs.resolve(scene);
-        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        plan.input(file, "the scene file this run reads").check();
+        Scene loaded = SceneArgs.load(file, images.of(file, plan), spec.commandLine().getErr());
         if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
+        plan.checkImages();
+        plan.createFolders();
         SceneDef def = loaded.def();
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
@@ -65,7 +69,7 @@ final class RenderCommand implements Callable<Integer> {
             if (gif != null) {
                 java.util.List<Path> pngs = new java.util.ArrayList<>();
                 for (int i = 1; i <= frames; i++) {
-                    pngs.add(out.resolve(String.format("frame-%05d.png", i)));
+                    pngs.add(out.resolve(HeadlessRender.frameName(i)));
                 }
                 GifWriter.write(pngs, gif, 3);
                 spec.commandLine().getOut().println("Wrote " + gif.toAbsolutePath());

@@ -20,4 +20,9 @@ final class SceneImages {
         Path dir = Scenes.baseDir(file);
         return allowOutside ? ImageSource.anywhere(dir) : ImageSource.folder(dir);
     }
+
+    /** {@return where the images of scene {@code file} are read from, each read recorded as an input of {@code plan}} */
+    ImageSource of(Path file, OutputPlan plan) {
+        return plan.images(of(file), Scenes.baseDir(file));
+    }
 }

@@ -22,7 +22,7 @@ import org.jecosys.field.ForceFieldDef;
 import org.jecosys.field.ForceField;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
-import org.jecosys.scene.AtomicFiles;
+import org.jecosys.scene.OutputFiles;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.CameraWalk;
@@ -67,9 +67,11 @@ final class SimulateCommand implements Callable<Integer> {
     AnimationMode mode;
     @Option(names = "--field", paramLabel = "on|off", description = "Force field on or off (default: the scene's).")
     OnOff field;
-    @Option(names = "--json", paramLabel = "FILE", description = "Also write the results and field counters as JSON.")
+    @Option(names = "--json", paramLabel = "FILE", description = "Also write the results and field counters as JSON (a regular "
+            + "file, replaced atomically; never a link, device or pipe, never the scene).")
     Path json;
-    @Option(names = "--dump", paramLabel = "FILE.csv", description = "Write the final state, one row per component.")
+    @Option(names = "--dump", paramLabel = "FILE.csv", description = "Write the final state, one row per component (a regular file, "
+            + "replaced atomically; never a link, device or pipe, never the scene or the --json file).")
     Path dump;
 
     @Override
@@ -83,13 +85,15 @@ final class SimulateCommand implements Callable<Integer> {
         if (threads != null && (threads < 1 || threads > 256)) {
             throw new ParameterException(spec.commandLine(), "--threads must be in [1, 256], got " + threads);
         }
-        OutputPaths.file(spec.commandLine(), "--json", json);
-        OutputPaths.file(spec.commandLine(), "--dump", dump);
+        OutputPlan plan = new OutputPlan(spec.commandLine()).file("--json", json).file("--dump", dump);
         Path file = SceneArgs.resolve(scene);
-        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        plan.input(file, "the scene file this run reads").check();
+        Scene loaded = SceneArgs.load(file, images.of(file, plan), spec.commandLine().getErr());
         if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
+        plan.checkImages();
+        plan.createFolders();
         SceneDef def = loaded.def();
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
@@ -112,12 +116,13 @@ final class SimulateCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "allocated bytes/step  %.1f%n", run.allocatedPerStep);
             out.printf(Locale.ROOT, "state hash            %016x%n", run.hash);
             out.flush();
+            OutputFiles files = new OutputFiles();
             if (json != null) {
                 String text = json(file, sim, sd, run);
-                AtomicFiles.write(json, "write", o -> o.write(text.getBytes(StandardCharsets.UTF_8)));
+                files.write(json, o -> o.write(text.getBytes(StandardCharsets.UTF_8)));
             }
             if (dump != null) {
-                AtomicFiles.write(dump, "write", o -> dump(sim, o));
+                files.write(dump, o -> dump(sim, o));
             }
         } catch (IOException e) {
             return fail(err, e);

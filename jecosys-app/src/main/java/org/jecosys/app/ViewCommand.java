@@ -51,7 +51,15 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         Path file = SceneArgs.resolve(scene);
-        Scene loaded = SceneArgs.load(file, images.of(file), spec.commandLine().getErr());
+        boolean headless = !GlContext.hasDisplay();
+        Path out = Path.of(System.getProperty(FALLBACK_OUT, "jecosys-frames"));
+        int frames = Integer.getInteger(FALLBACK_FRAMES, 30);
+        OutputPlan plan = new OutputPlan(spec.commandLine());
+        if (headless) {
+            plan.filesIn("-D" + FALLBACK_OUT, out, HeadlessRender.outputNames(frames, true))
+                    .input(file, "the scene file this run reads").check();
+        }
+        Scene loaded = SceneArgs.load(file, images.of(file, plan), spec.commandLine().getErr());
         if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
@@ -59,9 +67,9 @@ final class ViewCommand implements Callable<Integer> {
         spec.commandLine().getOut().println("Scene '" + def.name() + "' (" + scene + ") is valid.");
         spec.commandLine().getOut().flush();
         try {
-            if (!GlContext.hasDisplay()) {
-                Path out = Path.of(System.getProperty(FALLBACK_OUT, "jecosys-frames"));
-                int frames = Integer.getInteger(FALLBACK_FRAMES, 30);
+            if (headless) {
+                plan.checkImages();
+                plan.createFolders();
                 spec.commandLine().getOut().println("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering "
                         + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
                 spec.commandLine().getOut().flush();

@@ -25,6 +25,7 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.scene.OutputFiles;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.terrain.ImageSource;
@@ -195,7 +196,7 @@ final class Viewer {
         ByteBuffer px = MemoryUtil.memAlloc(4 * w * h);
         try {
             Pixels.read(w, h, px);
-            Pixels.writePng(out, px, w, h);
+            new OutputFiles().writeFile(out, temporary -> Pixels.writePng(temporary, px, w, h));
             System.out.println("Saved " + out.toAbsolutePath());
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) px);

@@ -43,13 +43,22 @@ public final class BenchSuite {
         return sections;
     }
 
+    /** {@return the chart files the sections may write into {@code charts/}, in order, without repeats} */
+    public List<String> charts() {
+        java.util.LinkedHashSet<String> names = new java.util.LinkedHashSet<>();
+        for (Section s : sections) {
+            names.addAll(s.charts());
+        }
+        return List.copyOf(names);
+    }
+
     /**
      * Runs every section, then writes tables.md, results.json and charts into {@code out}.
      *
      * @return the report (sections that threw are listed in {@link Report#failures()})
      */
     public Report run(Mode mode, Path out, PrintStream progress) throws IOException {
-        Report report = new Report(out, mode);
+        Report report = new Report(out, mode, charts());
         long start = System.nanoTime();
         for (int i = 0; i < sections.size(); i++) {
             Section s = sections.get(i);

@@ -1,7 +1,7 @@
 package org.jecosys.bench;
 
 import java.io.IOException;
-import java.nio.file.Path;
+import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.BitmapEncoder;
@@ -11,7 +11,7 @@ import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
 
-/** PNG charts of the report (XChart; no display needed). Any thread; allocates. */
+/** PNG charts of the report (XChart; no display needed), drawn into a stream. Any thread; allocates. */
 public final class Charts {
     private static final int WIDTH = 900;
     private static final int HEIGHT = 520;
@@ -23,7 +23,7 @@ public final class Charts {
      * A grouped bar chart of a table: one group per row (labelled by column {@code labelColumn}),
      * one bar series per column named in {@code valueColumns}; non-numeric cells count as 0.
      */
-    public static void bars(Table table, int labelColumn, List<String> valueColumns, String yTitle, Path png)
+    public static void bars(Table table, int labelColumn, List<String> valueColumns, String yTitle, OutputStream png)
             throws IOException {
         CategoryChart chart = new CategoryChartBuilder().width(WIDTH).height(HEIGHT).title(table.title())
                 .xAxisTitle(table.headers().get(labelColumn)).yAxisTitle(yTitle).build();
@@ -45,12 +45,12 @@ public final class Charts {
             }
             chart.addSeries(col, labels, values);
         }
-        BitmapEncoder.saveBitmap(chart, png.toString(), BitmapEncoder.BitmapFormat.PNG);
+        BitmapEncoder.saveBitmap(chart, png, BitmapEncoder.BitmapFormat.PNG);
     }
 
     /** A line chart with logarithmic axes when asked, one series per name. */
     public static void lines(String title, String xTitle, String yTitle, List<String> names, List<double[]> xs,
-                             List<double[]> ys, boolean logX, boolean logY, Path png) throws IOException {
+                             List<double[]> ys, boolean logX, boolean logY, OutputStream png) throws IOException {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title).xAxisTitle(xTitle)
                 .yAxisTitle(yTitle).build();
         style(chart.getStyler());
@@ -60,7 +60,7 @@ public final class Charts {
         for (int i = 0; i < names.size(); i++) {
             chart.addSeries(names.get(i), xs.get(i), ys.get(i));
         }
-        BitmapEncoder.saveBitmap(chart, png.toString(), BitmapEncoder.BitmapFormat.PNG);
+        BitmapEncoder.saveBitmap(chart, png, BitmapEncoder.BitmapFormat.PNG);
     }
 
     private static void style(Styler s) {

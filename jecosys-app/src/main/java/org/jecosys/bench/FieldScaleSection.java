@@ -28,6 +28,11 @@ final class FieldScaleSection implements Section {
         return "force-field update against plant count";
     }
 
+    @Override
+    public List<String> charts() {
+        return List.of("field-scale.png");
+    }
+
     static WindField wind() {
         return WindField.of(List.of(FlowDef.uniform("breeze", 2, 0.3),
                 new FlowDef("gust", FlowKind.GUST, true, 0, 0, 3, 0.5, 0.5, Double.POSITIVE_INFINITY,

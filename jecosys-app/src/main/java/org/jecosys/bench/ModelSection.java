@@ -17,6 +17,11 @@ final class ModelSection implements Section {
     }
 
     @Override
+    public List<String> charts() {
+        return List.of("table1.png", "table2.png");
+    }
+
+    @Override
     public void run(Mode mode, Report report) throws Exception {
         ModelTables m = new ModelTables(scenes);
         Table t1 = m.table1();

@@ -44,6 +44,11 @@ final class PaperScenesSection implements Section {
         return "Tables 5-7 (frame rates while walking C1-C3)";
     }
 
+    @Override
+    public List<String> charts() {
+        return List.of("table7.png");
+    }
+
     /** The four runs of one scene in one variant (simulation only, or rendered). */
     record Runs(FrameRun s1, FrameRun s2, FrameRun s3, FrameRun fieldOff) {
     }

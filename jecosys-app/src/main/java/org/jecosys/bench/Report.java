@@ -1,17 +1,24 @@
 package org.jecosys.bench;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import org.jecosys.scene.OutputFiles;
 
 /**
  * The benchmark report being built: tables (Markdown and JSON), raw series, charts and failures,
- * written as {@code tables.md}, {@code results.json} and {@code charts/*.png} in one folder.
+ * written as {@code tables.md}, {@code results.json} and {@code charts/*.png} in one folder, each
+ * through {@link OutputFiles} (atomic; never through a link, never onto a pipe or device; the
+ * {@code charts} folder may not be a link either). Folders are made when the first file is written.
  * Used by one thread.
  */
 public final class Report {
@@ -22,16 +29,47 @@ public final class Report {
     private final List<String> charts = new ArrayList<>();
     private final List<String> skippedCharts = new ArrayList<>();
     private final List<String> failures = new ArrayList<>();
+    private final Set<String> declaredCharts;
+    private final OutputFiles files = new OutputFiles();
     private String glRenderer;
 
+    /**
+     * A report into {@code dir} that may draw any chart. Allocates.
+     *
+     * @param dir  the folder of tables.md, results.json and charts/ (made when first written)
+     * @param mode the run's length, for the report's text
+     */
     public Report(Path dir, Mode mode) {
-        this.dir = dir;
-        this.mode = mode;
+        this(dir, mode, null);
     }
 
-    /** The folder charts go into (created on demand). */
+    /**
+     * A report into {@code dir} that draws only the charts declared (the sections' {@link Section#charts}),
+     * the files the command line checked before the run. Allocates.
+     *
+     * @param dir    the folder of tables.md, results.json and charts/ (made when first written)
+     * @param mode   the run's length, for the report's text
+     * @param charts the chart file names allowed; null for any
+     */
+    public Report(Path dir, Mode mode, Collection<String> charts) {
+        this.dir = dir;
+        this.mode = mode;
+        this.declaredCharts = charts == null ? null : Set.copyOf(charts);
+    }
+
+    /**
+     * The folder charts go into, made if missing.
+     *
+     * @return {@code DIR/charts}
+     * @throws IOException when it is a symbolic link (files are never written through a link) or cannot be made
+     */
     public Path chartDir() throws IOException {
-        return Files.createDirectories(dir.resolve("charts"));
+        Path charts = dir.resolve("charts");
+        if (Files.isSymbolicLink(charts)) {
+            throw new IOException("cannot write charts into " + charts + ": it is a symbolic link; files are never "
+                    + "written through a link");
+        }
+        return Files.createDirectories(charts);
     }
 
     public void add(Table t) {
@@ -52,12 +90,12 @@ public final class Report {
     @FunctionalInterface
     public interface ChartWriter {
         /**
-         * Draws the chart into {@code png}.
+         * Draws the chart as PNG into {@code png}.
          *
-         * @param png the file to write
+         * @param png the stream to write (held in memory, then written to the chart's file); do not close it
          * @throws IOException when it cannot be written
          */
-        void write(Path png) throws IOException;
+        void write(OutputStream png) throws IOException;
     }
 
     /**
@@ -70,10 +108,13 @@ public final class Report {
      * @throws IOException when the file cannot be written for another reason
      */
     public void saveChart(String name, ChartWriter writer) throws IOException {
-        Path png = chartDir().resolve(name);
+        if (declaredCharts != null && !declaredCharts.contains(name)) {
+            throw new IllegalArgumentException("chart " + name + " is not among the charts its section declares "
+                    + declaredCharts + " (Section.charts): declare it so that its path is checked before the run");
+        }
+        ByteArrayOutputStream png = new ByteArrayOutputStream(1 << 16);
         try {
             writer.write(png);
-            charts.add(name);
         } catch (RuntimeException | Error e) {
             if (!isFontProblem(e)) {
                 throw e;
@@ -82,7 +123,10 @@ public final class Report {
                 System.err.println("bench: charts skipped: " + NO_FONTS);
             }
             skippedCharts.add(name);
+            return;
         }
+        files.write(chartDir().resolve(name), png::writeTo);
+        charts.add(name);
     }
 
     /** What a machine without fonts lacks, and where to get it. */
@@ -134,9 +178,13 @@ public final class Report {
         return failures;
     }
 
-    /** Writes tables.md and results.json. */
+    /**
+     * Writes tables.md and results.json (see the class comment).
+     *
+     * @param seconds the run's length, for the report's text
+     * @throws IOException naming the file that could not be written (it is then left as it was)
+     */
     public void write(double seconds) throws IOException {
-        Files.createDirectories(dir);
         MachineInfo machine = MachineInfo.current(glRenderer);
         StringBuilder md = new StringBuilder("# JEcoSys benchmark report\n\n");
         md.append("Paper: Endo, Morimoto, Fabris, CGI 2005, section 5.2 (Pentium III 900 MHz, Java 3D). ")
@@ -163,7 +211,8 @@ public final class Report {
                 md.append("- ").append(f).append('\n');
             }
         }
-        Files.writeString(dir.resolve("tables.md"), md.toString(), StandardCharsets.UTF_8);
+        byte[] tablesMd = md.toString().getBytes(StandardCharsets.UTF_8);
+        files.write(dir.resolve("tables.md"), o -> o.write(tablesMd));
         Map<String, Object> json = new LinkedHashMap<>();
         json.put("mode", mode.name().toLowerCase(java.util.Locale.ROOT));
         json.put("seconds", seconds);
@@ -176,6 +225,7 @@ public final class Report {
         json.put("raw", raw);
         json.put("charts", charts);
         json.put("failures", failures);
-        Files.writeString(dir.resolve("results.json"), Json.write(json), StandardCharsets.UTF_8);
+        byte[] results = Json.write(json).getBytes(StandardCharsets.UTF_8);
+        files.write(dir.resolve("results.json"), o -> o.write(results));
     }
 }

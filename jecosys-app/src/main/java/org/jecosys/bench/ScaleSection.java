@@ -43,6 +43,11 @@ final class ScaleSection implements Section {
         return "scale curve (components 1k to 4M, 1 and 2 workers; ns per component update)";
     }
 
+    @Override
+    public List<String> charts() {
+        return List.of("scale-updates.png", "scale-step.png");
+    }
+
     static SimulationDef world(SceneDef base, int components) {
         return world(base, base.flows(), components);
     }

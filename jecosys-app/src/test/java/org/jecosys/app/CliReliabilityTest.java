@@ -18,6 +18,7 @@ import java.util.stream.Stream;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.AtomicFiles;
+import org.jecosys.scene.OutputFiles;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.scene.Scenes;
@@ -28,7 +29,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Reliability, third pass, at the command line: {@code simulate --dump} streams (its memory does not
- * grow with the output) and a write killed midway leaves no file under the final name; {@code check}
+ * grow with the output) and a write killed midway leaves no file under the final name (scene saves'
+ * writer and the output writer of every CLI and bench file, see {@link CliOutputsTest}); {@code check}
  * refuses, with a location, every scene {@code simulate} refuses (a scene without species, a pipe, an
  * image outside the scene's folder), and the two agree on the fuzz corpus and its mutants.
  */
@@ -81,29 +83,39 @@ class CliReliabilityTest {
     @Test
     void aWriteKilledMidwayLeavesNoFileUnderTheFinalNameAndTheOldOneWhole() throws Exception {
         Path target = dir.resolve("dump.csv");
-        for (String before : new String[] {null, "old content\n"}) {
+        // the scene save's writer, and the output writer of every CLI and bench file, streamed (--dump,
+        // --json, --gif, tables.md, results.json, charts) and by path (frames, maps)
+        String[][] runs = {{"atomic", null}, {"atomic", "old content\n"}, {"output", "old content\n"},
+            {"output-file", null}};
+        for (String[] run : runs) {
+            String writer = run[0];
+            String before = run[1];
             if (before != null) {
                 Files.writeString(target, before);
             }
             Path java = Path.of(System.getProperty("java.home"), "bin", "java");
             Process p = new ProcessBuilder(java.toString(), "-cp", System.getProperty("java.class.path"),
-                    KilledWriteMain.class.getName(), target.toString()).redirectErrorStream(true).start();
+                    KilledWriteMain.class.getName(), target.toString(), writer).redirectErrorStream(true).start();
             try (BufferedReader in = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
-                assertEquals("writing", in.readLine());
+                assertEquals("writing", in.readLine(), writer);
                 p.destroyForcibly(); // SIGKILL in the middle of the write
                 assertTrue(p.waitFor(30, TimeUnit.SECONDS));
             }
             if (before == null) {
-                assertFalse(Files.exists(target), "no file under the final name");
+                assertFalse(Files.exists(target), writer + ": no file under the final name");
             } else {
-                assertEquals(before, Files.readString(target), "the old file is whole");
+                assertEquals(before, Files.readString(target), writer + ": the old file is whole");
             }
             List<Path> temporaries = temporaries();
-            assertEquals(1, temporaries.size(), "the killed write's temporary file: " + temporaries);
+            assertEquals(1, temporaries.size(), writer + ": the killed write's temporary file: " + temporaries);
             // the next write succeeds and removes what the killed one left
-            AtomicFiles.write(target, "write", o -> o.write("new\n".getBytes(StandardCharsets.UTF_8)));
+            if (writer.equals("atomic")) {
+                AtomicFiles.write(target, "write", o -> o.write("new\n".getBytes(StandardCharsets.UTF_8)));
+            } else {
+                new OutputFiles().write(target, o -> o.write("new\n".getBytes(StandardCharsets.UTF_8)));
+            }
             assertEquals("new\n", Files.readString(target));
-            assertEquals(List.of(), temporaries());
+            assertEquals(List.of(), temporaries(), writer);
             Files.delete(target);
         }
     }

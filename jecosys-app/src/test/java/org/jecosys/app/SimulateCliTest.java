@@ -74,8 +74,8 @@ class SimulateCliTest {
         Path bad = aFile.resolve("no/such/folder/x.csv");
         CliTest.Result r = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--dump", bad.toString());
         assertEquals(2, r.code());
-        assertTrue(r.err().contains("--dump " + bad.getParent() + ": cannot create it: " + aFile + " is a file"),
-                r.err());
+        assertTrue(r.err().contains("--dump " + bad + ": is in " + bad.getParent() + ", which cannot be made: " + aFile
+                + " is a file, not a folder"), r.err());
         assertFalse(r.err().contains("\tat "), r.err());
         assertFalse(r.out().contains("state hash"), "nothing ran: " + r.out());
         CliTest.Result v = CliTest.run("simulate", "scenes/c1.xml", "--steps", "5", "--json", dir.toString(),

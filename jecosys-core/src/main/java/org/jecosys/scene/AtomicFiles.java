@@ -13,6 +13,8 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermission;
 import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Set;
 import org.jecosys.math.Require;
 
@@ -23,9 +25,11 @@ import org.jecosys.math.Require;
  * previous content (or stays absent) and only the temporary file can remain; temporaries of this
  * target left by processes that are gone are removed by the next write. An existing target keeps its
  * permissions (POSIX mode); a symbolic link is followed, so the file it points to is replaced and the
- * link stays; a target that exists but is not a regular file (a folder, a device such as
- * {@code /dev/null}, a pipe) is refused. Scene saves and the command line's outputs ({@code --dump},
- * {@code --json}) are written this way. Any thread; allocates (file time, not frame time).
+ * link stays (a scene edited through a link updates the file the link names); a target that exists
+ * but is not a regular file (a folder, a device such as {@code /dev/null}, a pipe) is refused. Scene
+ * saves are written this way; a program's outputs (frames, reports, dumps) go through
+ * {@link OutputFiles}, which writes the same way but never through a link. Any thread; allocates
+ * (file time, not frame time).
  */
 public final class AtomicFiles {
     /** Most symbolic links followed from a target. */
@@ -68,10 +72,50 @@ public final class AtomicFiles {
                     + "); choose a file name");
         }
         Path dir = abs.getParent();
-        removeStaleTemporaries(dir, abs.getFileName().toString());
+        String name = abs.getFileName().toString();
+        removeStaleTemporaries(temporariesIn(dir), name);
+        replace(target, abs, verb, streamed(content), () -> null);
+    }
+
+    /** Writes the content of a temporary file, given by its path. */
+    @FunctionalInterface
+    interface TemporaryWriter {
+        void writeTo(Path temporary) throws IOException;
+    }
+
+    /** A last check made just before the move: a reason to refuse the target, or null. */
+    @FunctionalInterface
+    interface LastCheck {
+        String problem();
+    }
+
+    /** {@code content} written into the temporary file through one channel. */
+    static TemporaryWriter streamed(Content content) {
+        return tmp -> {
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
+                OutputStream out = Channels.newOutputStream(ch);
+                content.writeTo(out);
+                out.flush();
+            }
+        };
+    }
+
+    /**
+     * The shared core: writes a temporary file beside {@code abs} with {@code writer}, forces it to
+     * disk, gives it the mode of the file it replaces, asks {@code last} once more, and moves it over
+     * {@code abs}; on any failure the temporary file is removed and the target left as it was.
+     *
+     * @param shown  the target as the caller named it, for messages
+     * @param abs    the absolute path that is replaced (links already resolved or refused)
+     * @param verb   for messages: "cannot VERB SHOWN: why"
+     * @param writer writes the temporary file
+     * @param last   refuses the target just before the move (it may have changed since the first check)
+     */
+    static void replace(Path shown, Path abs, String verb, TemporaryWriter writer, LastCheck last) throws IOException {
+        Path dir = abs.getParent();
         Set<PosixFilePermission> mode = null;
         try {
-            if (Files.exists(abs)) {
+            if (Files.isRegularFile(abs)) {
                 mode = Files.getPosixFilePermissions(abs);
             }
         } catch (UnsupportedOperationException | IOException e) {
@@ -81,28 +125,30 @@ public final class AtomicFiles {
         try {
             tmp = createTemporary(dir, abs.getFileName().toString());
         } catch (IOException e) {
-            throw new IOException("cannot " + verb + " " + target + ": cannot create a file in " + dir + " (" + e + ")", e);
+            throw new IOException("cannot " + verb + " " + shown + ": cannot create a file in " + dir + " (" + e + ")", e);
         }
         boolean moved = false;
         try {
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
-                OutputStream out = Channels.newOutputStream(ch);
-                content.writeTo(out);
-                out.flush();
+            writer.writeTo(tmp);
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
                 ch.force(true);
             }
             if (mode != null) {
                 Files.setPosixFilePermissions(tmp, mode);
             }
+            String refused = last.problem();
+            if (refused != null) {
+                throw new IOException(refused);
+            }
             try {
                 Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
-                throw new IOException("cannot " + verb + " " + target + ": the file system cannot replace files atomically", e);
+                throw new IOException("the file system cannot replace files atomically", e);
             }
             moved = true;
             forceDirectory(dir);
         } catch (IOException | RuntimeException e) {
-            throw new IOException("cannot " + verb + " " + target + ": " + reason(e), e);
+            throw new IOException("cannot " + verb + " " + shown + ": " + reason(e), e);
         } finally {
             if (!moved) {
                 Files.deleteIfExists(tmp);
@@ -111,7 +157,7 @@ public final class AtomicFiles {
     }
 
     /** A short reason for an I/O failure: the file system's own words where it gives them. */
-    private static String reason(Exception e) {
+    static String reason(Exception e) {
         if (e instanceof java.nio.file.NoSuchFileException) {
             return "no such folder";
         }
@@ -154,41 +200,60 @@ public final class AtomicFiles {
     }
 
     /**
-     * Deletes temporary files of earlier writes of {@code name} in {@code dir} ({@code .NAME.DIGITS.*tmp})
-     * whose process no longer runs or that are older than {@link #STALE_TEMPORARY_MILLIS}; errors are
-     * ignored (another write may be removing them too).
+     * The files in {@code dir} that may be temporaries of earlier writes ({@code .*.tmp}, not
+     * followed); empty when the folder cannot be listed (the write itself will report what is wrong).
      */
-    private static void removeStaleTemporaries(Path dir, String name) {
-        String prefix = "." + name + ".";
+    static List<Path> temporariesIn(Path dir) {
+        List<Path> found = new ArrayList<>();
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, p -> {
             String f = p.getFileName().toString();
-            return f.startsWith(prefix) && f.endsWith(".tmp") && f.length() > prefix.length() + 4;
+            return f.startsWith(".") && f.endsWith(".tmp");
         })) {
-            long now = System.currentTimeMillis();
             for (Path p : files) {
-                String rest = p.getFileName().toString().substring(prefix.length());
-                int dot = rest.indexOf('.');
-                String digits = rest.substring(0, Math.max(dot, 0));
-                if (digits.isEmpty() || !digits.chars().allMatch(Character::isDigit) || digits.length() > 20) {
-                    continue;
-                }
-                // before 0.1.0 the number was random (File.createTempFile), not a process id: such a
-                // file names no live process and is removed too
-                long pid = new java.math.BigInteger(digits).bitLength() > 62 ? -1 : Long.parseLong(digits);
-                boolean gone = pid < 0 || ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true);
-                try {
-                    if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
-                        continue;
-                    }
-                    if (gone || now - Files.getLastModifiedTime(p).toMillis() > STALE_TEMPORARY_MILLIS) {
-                        Files.deleteIfExists(p);
-                    }
-                } catch (IOException ignored) {
-                    // removed by someone else, or not ours to remove
-                }
+                found.add(p);
             }
         } catch (IOException | RuntimeException ignored) {
-            // the folder cannot be listed: the write itself will report what is wrong
+            found.clear(); // the folder cannot be listed: the write itself will report what is wrong
+        }
+        return found;
+    }
+
+    /**
+     * Deletes, among {@code candidates}, the temporary files of earlier writes of {@code name}
+     * ({@code .NAME.DIGITS.*tmp}) whose process no longer runs or that are older than
+     * {@link #STALE_TEMPORARY_MILLIS}, and drops them from the list; errors are ignored (another write
+     * may be removing them too).
+     */
+    static void removeStaleTemporaries(List<Path> candidates, String name) {
+        String prefix = "." + name + ".";
+        long now = System.currentTimeMillis();
+        for (java.util.Iterator<Path> it = candidates.iterator(); it.hasNext(); ) {
+            Path p = it.next();
+            String f = p.getFileName().toString();
+            if (!f.startsWith(prefix) || !f.endsWith(".tmp") || f.length() <= prefix.length() + 4) {
+                continue;
+            }
+            String rest = f.substring(prefix.length());
+            int dot = rest.indexOf('.');
+            String digits = rest.substring(0, Math.max(dot, 0));
+            if (digits.isEmpty() || !digits.chars().allMatch(Character::isDigit) || digits.length() > 20) {
+                continue;
+            }
+            // before 0.1.0 the number was random (File.createTempFile), not a process id: such a
+            // file names no live process and is removed too
+            long pid = new java.math.BigInteger(digits).bitLength() > 62 ? -1 : Long.parseLong(digits);
+            boolean gone = pid < 0 || ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true);
+            try {
+                if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
+                    continue;
+                }
+                if (gone || now - Files.getLastModifiedTime(p).toMillis() > STALE_TEMPORARY_MILLIS) {
+                    Files.deleteIfExists(p);
+                    it.remove();
+                }
+            } catch (IOException ignored) {
+                // removed by someone else, or not ours to remove
+            }
         }
     }
 
