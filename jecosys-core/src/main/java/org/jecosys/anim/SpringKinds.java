@@ -41,7 +41,7 @@ import org.joml.Vector3f;
  *
  * <h2>Bounded bend: the spring stiffens toward maxBend</h2>
  * A component of length l cannot move its tip further than {@code dMax = l sin(maxBend)} (its last
- * pose, with the length kept: see "Bend" in {@link AnimationState}). The spring's rest point is
+ * pose, with the length kept: see "Bend" in {@link BendGeometry}). The spring's rest point is
  * therefore the linear target {@code T = gain |u| u} passed through a smooth saturation: with
  * {@code x = |T| / dMax} and the knee {@link #KNEE},
  * <pre>
