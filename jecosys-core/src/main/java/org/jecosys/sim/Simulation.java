@@ -248,9 +248,6 @@ public final class Simulation implements AutoCloseable {
         loop.stepFixed(camera);
     }
 
-    /** The message of every call refused after {@link #close()}. */
-    static final String CLOSED = "the simulation is closed";
-
     /**
      * Registers a further view the steps animate for, besides the camera given to each step: a second
      * player's camera, a minimap, a shadow map's light. Plants any registered view sees are animated
@@ -698,4 +695,7 @@ public final class Simulation implements AutoCloseable {
 
     /** How long {@link #close()} waits for a running step to reach its end, milliseconds. */
     static final long CLOSE_WAIT_MILLIS = 1000;
+
+    /** The message of every call refused after {@link #close()}. */
+    static final String CLOSED = "the simulation is closed";
 }
