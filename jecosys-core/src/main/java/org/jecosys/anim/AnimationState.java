@@ -5,35 +5,15 @@ import org.jecosys.math.Require;
 /**
  * The animated state of every plant component in flat arrays indexed by component (paper §4.2;
  * structure of arrays, no object per component or plant), and its updater. Per component:
- * deviation D and velocity v (2D, ground plane,
- * x = X, z = Z); its outputs, the continuous pose coordinate and the bend azimuth, are a pure
- * function of D and the component's constants ({@link BendGeometry}), computed on demand. Per plant:
- * the force input
- * of the last update, the level of detail, its response variant and compliance (the seeded
- * variation of response time and stiffness between plants, {@link SpringKinds}), and whether its
- * state follows the wind (see "Start"). Sized at construction; nothing grows.
+ * deviation D and velocity v (2D, ground plane, x = X, z = Z); its outputs, the continuous pose
+ * coordinate and the bend azimuth, are a pure function of D and the component's constants
+ * ({@link BendGeometry}), computed on demand. Per plant: the force input of the last update, the
+ * level of detail, its response variant and compliance (the seeded variation of response time and
+ * stiffness between plants, {@link SpringKinds}), and whether its state follows the wind (see
+ * "Start"). Sized at construction; nothing grows.
  *
  * <h2>Bend</h2>
- * A component's rest shape (pose 0) leans toward its rest heading h (plant rest azimuth + slot
- * azimuth) by its rest lean {@code l} (the horizontal tip offset of pose 0): the lean vector is
- * {@code L = l (cos h, sin h)} in (X, Z), the heading convention of {@code Frame}: the pose table's
- * local +X goes to world {@code (cos a, 0, sin a)}, i.e. angles turn from +X toward +Z. The deviation
- * moves the tip's horizontal position to {@code T = L + D}:
- * <ul>
- * <li>azimuth = direction of T ({@code atan2(Tz, Tx)}): at D = 0 it is the rest heading, so a
- * component at rest keeps its heading and never flips at zero wind;</li>
- * <li>the extra tip offset is {@code e = max(0, |T| - l)} metres, computed as
- * {@code (2 L.D + |D|^2) / (|T| + l)} (exactly 0 at D = 0); the component keeps its length, so the
- * extra bend is the angle whose sine is {@code e / length}, mapped to the pose coordinate as
- * {@code PoseMapping.poseCoordinate} does: {@code min(K - 1, asin(e / length) (K - 1) / maxBend)}.
- * The spring keeps |D| below {@code length sin(maxBend)} ({@link SpringKinds#bendLimit}), so the last
- * pose is approached, not clamped. A wind against the lean first turns the component (azimuth) and
- * then bends it the other way: its tip follows D to first order.</li>
- * </ul>
- * Arc tangents use a polynomial with error below 5e-7 rad, in the branch-free forms of
- * {@code Trig.poseAngle} and {@code Trig.azimuth} (the extra bend is taken as
- * {@code atan2(num, sqrt(d^2 - num^2))} with {@code num = max(0, 2 L.D + |D|^2)} and
- * {@code d = (|T| + l) length}, one division).
+ * How D turns a component's rest shape into its pose coordinate and azimuth: see {@link BendGeometry}.
  *
  * <h2>Start</h2>
  * A plant's state follows the wind once it has been animated and as long as it stays visible. A
@@ -442,21 +422,12 @@ public final class AnimationState implements AnimationView {
     }
 
     /**
-     * Pose coordinate and azimuth of components {@code c0 .. c1-1} from their deviations (see the
-     * class comment) into {@code pose} and {@code azimuth} (indexed by component):
-     * {@link BendGeometry#outputs}, the same arithmetic as {@link #poseCoordinate} and {@link #azimuth}.
-     */
-    private void outputs(int c0, int c1, float[] pose, float[] azimuth) {
-        geometry.outputs(c0, c1, dev, pose, azimuth);
-    }
-
-    /**
      * Writes the pose coordinates and azimuths of components {@code first .. end-1}, computed from
      * their current deviations, into the dest arrays (same indices). Any thread that owns the range
      * (as {@link #animate}). No allocation.
      */
     public void copyOutputs(int first, int end, float[] poseDest, float[] azimuthDest) {
-        outputs(first, end, poseDest, azimuthDest);
+        geometry.outputs(first, end, dev, poseDest, azimuthDest); // the arithmetic of poseCoordinate, azimuth
     }
 
     /** Copies the levels of plants {@code first .. end-1} into dest (same indices). */

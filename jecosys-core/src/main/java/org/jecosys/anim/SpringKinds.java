@@ -41,7 +41,7 @@ import org.joml.Vector3f;
  *
  * <h2>Bounded bend: the spring stiffens toward maxBend</h2>
  * A component of length l cannot move its tip further than {@code dMax = l sin(maxBend)} (its last
- * pose, with the length kept: see "Bend" in {@link AnimationState}). The spring's rest point is
+ * pose, with the length kept: see "Bend" in {@link BendGeometry}). The spring's rest point is
  * therefore the linear target {@code T = gain |u| u} passed through a smooth saturation: with
  * {@code x = |T| / dMax} and the knee {@link #KNEE},
  * <pre>
@@ -200,189 +200,93 @@ public final class SpringKinds implements KindsView {
         return new SpringKinds(b, base, variants);
     }
 
-    /**
-     * {@return the kind of a species' component type in a shape variant (for kinds made by {@link #of})}
-     *
-     * @param species   species index, in the list given to {@link #of}
-     * @param component component type index within the species
-     * @param variant   shape variant, in [0, the species' variants)
-     */
+    // the accessors of KindsView, documented there (units, ranges, the coefficients' order)
+
     @Override
     public int kindOf(int species, int component, int variant) {
         return speciesBase[species] + component * speciesVariants[species] + variant;
     }
 
-    /** {@return the number of kinds} */
     @Override
     public int count() {
         return count;
     }
 
-    /**
-     * {@return the spring constant PC of kind k, N/m}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double stiffness(int k) {
         return stiffness[k];
     }
 
-    /**
-     * {@return the response time tau of kind k, seconds}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double responseTime(int k) {
         return responseTime[k];
     }
 
-    /**
-     * {@return the mass of kind k, kg (does not enter the motion; see the class comment)}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double mass(int k) {
         return mass[k];
     }
 
-    /**
-     * {@return the drag coefficient times area of kind k, m^2}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double dragArea(int k) {
         return dragArea[k];
     }
 
-    /**
-     * {@return the equilibrium deviation per unit {@code |u| u}: {@code 0.5 rho dragArea / PC}, m per (m/s)^2}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double gain(int k) {
         return gain[k];
     }
 
-    /**
-     * {@return the rest lean of kind k: horizontal tip offset of the rest pose, metres (at least 1e-4 length)}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public float restLean(int k) {
         return leanMag[k];
     }
 
-    /**
-     * {@return the skeleton length of kind k, metres}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public float length(int k) {
         return length[k];
     }
 
-    /**
-     * {@return the bend of the last pose of kind k, radians}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public float maxBend(int k) {
         return maxBend[k];
     }
 
-    /**
-     * {@return the last pose coordinate (K - 1) of kind k}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public float poseMax(int k) {
         return poseMax[k];
     }
 
-    /**
-     * The spring class of kind k: the first kind with the same response time, gain and response-time
-     * variation (the constants the step coefficients and the per-run rest point depend on), so kinds
-     * of one class always have bit-identical coefficients. The shape variants of one component type
-     * share their class.
-     *
-     * @param k kind, in [0, count())
-     * @return the class's first kind, in [0, k]
-     */
     @Override
     public int springClass(int k) {
         return springClass[k];
     }
 
-    /**
-     * {@return a mask with bit l set when kind k is drawn (lodSegments &gt; 0) at level of detail l}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public int lodMask(int k) {
         return lodMask[k];
     }
 
-    /**
-     * {@return the bend limit of kind k: {@code length sin(maxBend)}, metres, the tip offset of its last
-     * pose with the length kept; the rest point of the spring stays below it (see the class comment)}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public float bendLimit(int k) {
         return dMax[k];
     }
 
-    /**
-     * {@return the relative response-time variation of kind k's species (0 for none)}
-     *
-     * @param k kind, in [0, count())
-     */
     @Override
     public double responseVariation(int k) {
         return responseVariation[k];
     }
 
-    /**
-     * {@return the response time of kind k in response variant v, seconds:
-     * {@code tau (1 + f (v - NOMINAL_VARIANT) / NOMINAL_VARIANT)} with f its {@link #responseVariation}}
-     *
-     * @param k kind, in [0, count())
-     * @param v response variant, in [0, RESPONSE_VARIANTS)
-     */
     @Override
     public double responseTime(int k, int v) {
         return responseTime[k] * (1 + responseVariation[k] * (v - NOMINAL_VARIANT) / NOMINAL_VARIANT);
     }
 
-    /** {@return the step length the coefficients were last prepared for, seconds (NaN before the first)} */
     @Override
     public double preparedStep() {
         return preparedStep;
     }
 
-    /**
-     * Copies the cached coefficients of kind k in its nominal response variant, {@link #STRIDE} of
-     * them in the order aDD, aDv, bD, cD, aVD, aVv, bV, cV (see the class comment; bD, cD, bV and cV
-     * weigh rest points in metres), into {@code dest} from {@code offset}. Any thread while no
-     * {@link #prepare} runs; no allocation.
-     *
-     * @param k      kind, in [0, count())
-     * @param dest   where to write, at least {@code offset + STRIDE} long
-     * @param offset first index written
-     * @return {@code dest}
-     * @throws IllegalArgumentException when k is out of range or dest is too short
-     */
     @Override
     public float[] coefficients(int k, float[] dest, int offset) {
         Require.range("k", k, 0, count - 1);
@@ -395,27 +299,11 @@ public final class SpringKinds implements KindsView {
         return dest;
     }
 
-    /**
-     * One cached coefficient of kind k (see {@link #coefficients(int, float[], int)}). No allocation.
-     *
-     * @param k kind, in [0, count())
-     * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
-     * @return the coefficient (NaN-free after {@link #prepare}; 0 before)
-     */
     @Override
     public float coefficient(int k, int i) {
         return coefficient(k, NOMINAL_VARIANT, i);
     }
 
-    /**
-     * One cached coefficient of kind k in response variant v (see {@link #coefficients(int, float[], int)}).
-     * No allocation.
-     *
-     * @param k kind, in [0, count())
-     * @param v response variant, in [0, RESPONSE_VARIANTS)
-     * @param i which, in [0, STRIDE): aDD, aDv, bD, cD, aVD, aVv, bV, cV
-     * @return the coefficient (0 before {@link #prepare})
-     */
     @Override
     public float coefficient(int k, int v, int i) {
         Require.range("k", k, 0, count - 1);

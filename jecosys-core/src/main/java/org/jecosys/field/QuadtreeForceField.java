@@ -6,8 +6,6 @@ import org.jecosys.math.ViewLod;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Noise;
 import org.jecosys.wind.WindField;
-import org.joml.FrustumIntersection;
-import org.joml.Matrix4f;
 import org.joml.Vector2d;
 
 /**
@@ -61,9 +59,8 @@ public final class QuadtreeForceField implements ForceField {
     private final ForceFieldDef def;
     private final Quadtree tree;
     private final WindField wind;
-    private final float minY;
-    private final float maxY;
-    private final double[] lod2;
+    /** The views of the last update and their frustum and LOD tests of node boxes. */
+    private final FieldViews views;
 
     private int[] stamp;
     private int[] rep;
@@ -90,19 +87,7 @@ public final class QuadtreeForceField implements ForceField {
 
     private final FieldCounters counters = new FieldCounters();
     private final FieldDebugView debug;
-    private final Matrix4f viewProj = new Matrix4f();
     private final Vector2d tmp = new Vector2d();
-    /** The views of the last update: the camera first, then the others given (at most {@link #MAX_VIEWS}). */
-    private final FrustumIntersection[] frustum = new FrustumIntersection[MAX_VIEWS];
-    private final float[] eyeX = new float[MAX_VIEWS];
-    private final float[] eyeY = new float[MAX_VIEWS];
-    private final float[] eyeZ = new float[MAX_VIEWS];
-    /** Per view its level-of-detail metric ({@link ViewLod}): scale^2 on squared distances, or a fixed one. */
-    private final double[] scale2 = new double[MAX_VIEWS];
-    private final double[] fixed2 = new double[MAX_VIEWS];
-    private final double[] metric = new double[2];
-    private final double reference;
-    private int views;
     /** Most views one update takes: the camera and {@code MAX_VIEWS - 1} others. */
     public static final int MAX_VIEWS = 9;
 
@@ -128,20 +113,10 @@ public final class QuadtreeForceField implements ForceField {
         if (maxY < minY) {
             throw new IllegalArgumentException("maxY must be >= minY, got minY=" + minY + " maxY=" + maxY);
         }
-        this.minY = (float) minY;
-        this.maxY = (float) maxY;
         this.tree = new Quadtree(minX, minZ, maxX, maxZ, def.maxObjectsPerNode(), def.maxDepth(), plantCapacity);
-        lod2 = new double[def.lodDistances().size()];
-        for (int i = 0; i < lod2.length; i++) {
-            double d = def.lodDistances().get(i);
-            lod2[i] = d * d;
-        }
+        views = new FieldViews(def, (float) minY, (float) maxY);
         allocNodeState(tree.nodeCapacity());
         debug = new FieldDebugView(this);
-        reference = ViewLod.referenceScale(def.lodFovY());
-        for (int v = 0; v < MAX_VIEWS; v++) {
-            frustum[v] = new FrustumIntersection();
-        }
     }
 
     /**
@@ -267,17 +242,7 @@ public final class QuadtreeForceField implements ForceField {
             current = 0;
         }
         current++;
-        views = 1 + count;
-        for (int v = 0; v < views; v++) {
-            Camera c = v == 0 ? camera : Require.nonNull("view", others[v - 1]);
-            frustum[v].set(c.viewProjection(viewProj), false);
-            eyeX[v] = (float) c.x();
-            eyeY[v] = (float) c.y();
-            eyeZ[v] = (float) c.z();
-            ViewLod.metric(c, reference, viewProj, metric);
-            scale2[v] = metric[0];
-            fixed2[v] = metric[1];
-        }
+        views.set(camera, others, count);
         FieldCounters c = counters;
         c.nodes = tree.nodeCount();
         c.leaves = tree.leafCount();
@@ -302,17 +267,8 @@ public final class QuadtreeForceField implements ForceField {
     private void visit(int n, int inside, int r) {
         Quadtree t = tree;
         if (inside == 0) {
-            boolean seen = false;
-            for (int v = 0; v < views; v++) {
-                int res = frustum[v].intersectAab(t.minX[n], minY, t.minZ[n], t.maxX[n], maxY, t.maxZ[n]);
-                if (res == FrustumIntersection.INSIDE) {
-                    inside |= 1 << v;
-                    seen = true;
-                } else if (res == FrustumIntersection.INTERSECT || holdsEye(n, v)) {
-                    seen = true;
-                }
-            }
-            if (!seen) {
+            inside = views.cover(t, n);
+            if (inside < 0) {
                 return;
             }
         }
@@ -322,7 +278,7 @@ public final class QuadtreeForceField implements ForceField {
             neighbours.visited(n);
         }
         int fc = t.firstChild[n];
-        if (r < 0 && (fc < 0 || (lod2.length > 0 && t.height[n] <= lodLevel(n)))) {
+        if (r < 0 && (fc < 0 || views.collapses(t, n))) {
             r = n;
             counters.effectiveNodes++;
             effective[effectiveCount++] = n;
@@ -337,31 +293,6 @@ public final class QuadtreeForceField implements ForceField {
         visit(fc + 1, inside, r);
         visit(fc + 2, inside, r);
         visit(fc + 3, inside, r);
-    }
-
-    private boolean holdsEye(int n, int v) {
-        Quadtree t = tree;
-        return eyeX[v] >= t.minX[n] && eyeX[v] <= t.maxX[n] && eyeZ[v] >= t.minZ[n] && eyeZ[v] <= t.maxZ[n];
-    }
-
-    /**
-     * Levels that may collapse at node n: how many LOD distances lie below the eye-to-box distance,
-     * as projected size measures it ({@link ViewLod}), for the view that needs the most detail.
-     */
-    private int lodLevel(int n) {
-        Quadtree t = tree;
-        double nearest = Double.POSITIVE_INFINITY;
-        for (int v = 0; v < views; v++) {
-            double dx = Math.max(Math.max(t.minX[n] - eyeX[v], eyeX[v] - t.maxX[n]), 0);
-            double dy = Math.max(Math.max(minY - eyeY[v], eyeY[v] - maxY), 0);
-            double dz = Math.max(Math.max(t.minZ[n] - eyeZ[v], eyeZ[v] - t.maxZ[n]), 0);
-            nearest = Math.min(nearest, ViewLod.equivalent2(dx * dx + dy * dy + dz * dz, scale2[v], fixed2[v]));
-        }
-        int l = 0;
-        while (l < lod2.length && nearest > lod2[l]) {
-            l++;
-        }
-        return l;
     }
 
     private void evaluate(int n) {

@@ -4,23 +4,32 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jecosys.math.Require;
+import org.jecosys.math.Waypoint;
+import org.jecosys.wind.ActivationDef;
+import org.jecosys.wind.FlowDef;
+import org.jecosys.wind.FlowKind;
+import org.jecosys.wind.MotionDef;
 import org.jecosys.wind.WindField;
 import org.jecosys.wind.WindSource;
 
 /**
  * The command side of a {@link Simulation}: the bounded queue of commands that producers on any
  * thread fill and the stepping thread drains at the start of each fixed step, the reservation of
- * flow ids (unique, at most {@link Simulation#MAX_FLOWS} held or queued), and the blasts that are
- * tracked until they expire so their ids are freed again.
+ * flow ids (unique, at most {@link Simulation#MAX_FLOWS} held or queued), the blasts that are
+ * tracked until they expire so their ids are freed again, and the flow and agent commands
+ * ({@link #addFlow}, {@link #removeFlow}, {@link #attachAgent}, {@link #moveAgent}, {@link #blast},
+ * {@link #setFlowEnabled}), each checked by the call as the Simulation method of that name says.
  *
- * <p>Threads: {@link #enqueue}, {@link #enqueueReserved}, {@link #reserveFlow}, {@link #releaseFlow},
- * {@link #pending()} and {@link #flowCount()} are called from any thread (lock-free: a concurrent
- * queue, atomic counters and a concurrent map); {@link #drain()}, {@link #trackBlast} and
- * {@link #releaseExpiredBlasts} only by the stepping thread. Allocation: enqueueing and reserving
- * allocate (queue node, map entry); draining and releasing expired blasts allocate nothing, except
- * that the blast list doubles when more blasts live at once than ever before.
+ * <p>Threads: the commands, {@link #enqueue}, {@link #enqueueReserved}, {@link #reserveFlow},
+ * {@link #releaseFlow}, {@link #pending()} and {@link #flowCount()} are called from any thread
+ * (lock-free: a concurrent queue, atomic counters and a concurrent map); {@link #drain()},
+ * {@link #trackBlast} and {@link #releaseExpiredBlasts} only by the stepping thread. Allocation:
+ * commands, enqueueing and reserving allocate (the command, queue node, map entry); draining and
+ * releasing expired blasts allocate nothing, except that the blast list doubles when more blasts
+ * live at once than ever before.
  */
 final class Commands {
+    private final WindField wind;
     private final ConcurrentLinkedQueue<Runnable> queue = new ConcurrentLinkedQueue<>();
     /** Commands queued and not yet taken by a step; at most {@link Simulation#MAX_PENDING_COMMANDS}. */
     private final AtomicInteger pendingCommands = new AtomicInteger();
@@ -38,9 +47,10 @@ final class Commands {
     /**
      * Reserves the ids of the flows a simulation starts with. Build time; allocates.
      *
-     * @param wind the simulation's flows, at most {@link Simulation#MAX_FLOWS}
+     * @param wind the simulation's flows, at most {@link Simulation#MAX_FLOWS}; the flow commands change them
      */
     Commands(WindField wind) {
+        this.wind = wind;
         for (int i = 0; i < wind.size(); i++) {
             flowIds.put(wind.get(i).id(), wind.get(i));
         }
@@ -167,5 +177,57 @@ final class Commands {
         }
         blasts[blastCount] = b;
         blastTokens[blastCount++] = token;
+    }
+
+    /** Queues a new flow ({@link Simulation#addFlow(WindSource)}); returns {@code source}. */
+    WindSource addFlow(WindSource source) {
+        Require.nonNull("source", source);
+        String id = source.id();
+        reserveFlow(id, source);
+        enqueueReserved(id, source, () -> wind.add(source));
+        return source;
+    }
+
+    /** Queues the removal of a flow or agent ({@link Simulation#removeFlow}); frees its id now. */
+    void removeFlow(WindSource source) {
+        Require.nonNull("source", source);
+        enqueue(() -> wind.remove(source));
+        releaseFlow(source.id(), source);
+    }
+
+    /** Queues an agent, a flow of FIXED motion ({@link Simulation#attachAgent}); returns its handle. */
+    WindSource attachAgent(FlowDef def) {
+        Require.nonNull("def", def);
+        if (def.motion().kind() != MotionDef.Kind.FIXED) {
+            throw new IllegalArgumentException("an agent's motion must be FIXED (the game moves it), got "
+                    + def.motion().kind());
+        }
+        return addFlow(WindSource.of(def));
+    }
+
+    /** Queues moving a flow's centre to (x, z), metres ({@link Simulation#moveAgent}). */
+    void moveAgent(WindSource agent, double x, double z) {
+        Require.nonNull("agent", agent);
+        Require.range("x", x, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
+        Require.range("z", z, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
+        enqueue(() -> agent.setCentre(x, z));
+    }
+
+    /** Queues a blast, its id reserved until it is over ({@link Simulation#blast}). */
+    void blast(String id, double x, double z, double strength, double duration) {
+        Require.positive("strength", strength);
+        // a blast is removed when it ends: it must end (the step would refuse +Infinity)
+        Require.above("duration", duration, 0, ActivationDef.MAX_TIME);
+        FlowDef.builder(id, FlowKind.BLAST).centre(x, z).strength(strength).duration(duration)
+                .build(); // checks every value with the scene schema's ranges
+        Object token = new Object();
+        reserveFlow(id, token);
+        enqueueReserved(id, token, () -> trackBlast(wind.blast(id, x, z, strength, duration), token));
+    }
+
+    /** Queues switching a flow on or off ({@link Simulation#setFlowEnabled}). */
+    void setFlowEnabled(WindSource source, boolean enabled) {
+        Require.nonNull("source", source);
+        enqueue(() -> source.setEnabled(enabled));
     }
 }

@@ -2,12 +2,10 @@ package org.jecosys.sim;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.concurrent.locks.ReentrantLock;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.anim.AnimationState;
 import org.jecosys.anim.AnimationView;
-import org.jecosys.anim.SpringKinds;
 import org.jecosys.field.FieldCounters;
 import org.jecosys.field.ForceField;
 import org.jecosys.field.ForceFieldFactory;
@@ -96,99 +94,18 @@ public final class Simulation implements AutoCloseable {
     public static final int MAX_FLOWS = 1024;
     /** Most views a step follows: its camera and {@code MAX_VIEWS - 1} registered with {@link #addView}. */
     public static final int MAX_VIEWS = org.jecosys.field.QuadtreeForceField.MAX_VIEWS;
-    private static final Camera[] NO_VIEWS = {};
 
     private final World world;
     private final SimulationDef def;
-    private final WindField wind;
-    private final ForceField field;
-    private final SpringKinds kinds;
-    private final AnimationState state;
-    private final FrameExchange exchange;
-    private final WorkerPool pool;
-    private final ChunkAnimator chunkAnimator;
-    /** Double-buffered field samples (wind, visibility, eye, frustum, flow switches). */
-    private final FieldSampler sampler;
-    private final DrawDecision draw;
-    /** The command queue and the flow-id reservations. */
-    private final Commands commands;
-    private final double fixedStep;
-    private final int maxSubSteps;
-    private final int subIntervals;
-
-    private AnimationMode mode;
-    private boolean fieldEnabled;
-    private double accumulator;
-    private boolean primed;
-    /** Whether the constructor put the plants at the equilibrium of the wind at t = 0. */
-    private boolean settledAtBuild;
-    private int current;
-    private long steps;
-    private double time;
-    private long droppedSteps;
-    private volatile long steppingThread = -1;
-    /** Set first by {@link #close()}: steps and commands are refused from then on. */
-    private volatile boolean closed;
-    /**
-     * Held by a step for its whole run and by {@link #close()} while it stops the workers, so close
-     * waits for a running step instead of pulling its workers away (no allocation uncontended).
-     */
-    private final ReentrantLock stepLock = new ReentrantLock();
-    /** Views registered with {@link #addView}; replaced whole (copy on write), read once per step. */
-    private volatile Camera[] views = NO_VIEWS;
-    boolean stampFrames;
+    /** The running parts and the fixed-step loop (package tests set its {@code stampFrames}). */
+    final StepLoop loop;
+    private final DetailCommands detail;
 
     private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
         this.world = world;
         this.def = def;
-        AnimationDef ad = def.animation();
-        fixedStep = ad.fixedStep();
-        maxSubSteps = ad.maxSubSteps();
-        subIntervals = ad.subIntervals();
-        mode = ad.mode();
-        fieldEnabled = def.field().enabled();
-        wind = WindField.of(def.flows());
-        if (wind.size() > MAX_FLOWS) {
-            throw new IllegalArgumentException("a simulation holds at most " + MAX_FLOWS + " flows, the def has "
-                    + wind.size());
-        }
-        commands = new Commands(wind);
-        int plants = world.plantCount();
-        float[][] positions = SimulationBuild.positions(world);
-        float[] xs = positions[0];
-        float[] ys = positions[1];
-        float[] zs = positions[2];
-        field = SimulationBuild.field(world, def, fields, wind, xs, zs);
-        kinds = SpringKinds.of(world.plants().species());
-        int comps = world.componentCount();
-        int[] first = SimulationBuild.firstComponents(world);
-        state = AnimationStates.of(world, kinds, first, xs, ys, zs, def.seed());
-        boolean[] trailPlants = AnimationStates.trailPlants(world);
-        sampler = new FieldSampler(wind, field, commands, plants, fixedStep, subIntervals, def.field().lodFovY(),
-                trailPlants == null ? null : new FlatteningPushes(wind, state, xs, zs, trailPlants));
-        settledAtBuild = SimulationBuild.settleEverywhere(mode, fieldEnabled, field, wind, state, xs, zs);
-        exchange = new FrameExchange(plants, state.geometry());
-        for (int i = 0; i < 3; i++) {
-            state.copyDeviations(0, comps, exchange.frame(i).renderStateLongs);
-        }
-        int[] speciesLevels = new int[world.plants().species().size()];
-        for (int sp = 0; sp < speciesLevels.length; sp++) {
-            speciesLevels[sp] = world.plants().species().get(sp).levels();
-        }
-        draw = new DrawDecision(world, new DrawDecision.Edges() {
-            @Override
-            public int levels(int sp) {
-                return speciesLevels[sp]; // per plant in the workers: an array, not the species list
-            }
-
-            @Override
-            public double edge(int sp, int l) {
-                return state.lodEdge(sp, l);
-            }
-        });
-        draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
-        chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
-        pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
+        loop = new StepLoop(world, def, threads, chunkComponents, fields);
+        detail = new DetailCommands(world, loop.commands, loop.state, loop.draw);
     }
 
     /**
@@ -317,35 +234,7 @@ public final class Simulation implements AutoCloseable {
     public int step(double dt, Camera camera) {
         Require.nonNegative("dt", dt);
         Require.nonNull("camera", camera);
-        stepLock.lock();
-        try {
-            return stepLocked(dt, camera);
-        } finally {
-            stepLock.unlock();
-        }
-    }
-
-    private int stepLocked(double dt, Camera camera) {
-        checkOpen();
-        accumulator += dt;
-        int n = 0;
-        while (accumulator >= fixedStep && n < maxSubSteps) {
-            if (closed) {
-                return n; // close() waits for this step: stop at a fixed-step boundary
-            }
-            stepFixedLocked(camera);
-            accumulator -= fixedStep;
-            n++;
-        }
-        if (accumulator >= fixedStep) {
-            long drop = (long) (accumulator / fixedStep); // saturates at Long.MAX_VALUE for absurd pauses
-            droppedSteps = droppedSteps > Long.MAX_VALUE - drop ? Long.MAX_VALUE : droppedSteps + drop;
-            accumulator -= drop * fixedStep;
-            if (!(accumulator < fixedStep)) {
-                accumulator = 0; // a pause so long that the remainder lost all precision: drop it too
-            }
-        }
-        return n;
+        return loop.step(dt, camera);
     }
 
     /**
@@ -356,89 +245,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void stepFixed(Camera camera) {
         Require.nonNull("camera", camera);
-        stepLock.lock();
-        try {
-            checkOpen();
-            stepFixedLocked(camera);
-        } finally {
-            stepLock.unlock();
-        }
-    }
-
-    private void checkOpen() {
-        if (closed) {
-            throw new IllegalStateException(CLOSED);
-        }
-    }
-
-    /** The message of every call refused after {@link #close()}. */
-    static final String CLOSED = "the simulation is closed";
-
-    private void stepFixedLocked(Camera camera) {
-        steppingThread = Thread.currentThread().getId();
-        commands.drain();
-        checkOpen(); // a command may have closed the simulation (close() from this very thread)
-        Camera[] others = views;
-        sampler.checkViews(camera, others, others.length);
-        if (!primed) {
-            prime(camera);
-            primed = true;
-        }
-        kinds.prepare(fixedStep, subIntervals, sampler.edge[current]);
-        Frame f = exchange.back();
-        exchange.beginWrite();
-        int b = current; // the buffer the workers animate from: the views sampled one step ago
-        chunkAnimator.prepare(mode, b, f, exchange.backIndex(), steps, time + fixedStep,
-                stampFrames);
-        draw.prepare();
-        long t0 = System.nanoTime();
-        pool.start();
-        try {
-            sampler.update(camera, others, others.length, 1 - b, fieldEnabled);
-        } catch (RuntimeException | Error e) {
-            // a game's flow or camera threw beside the workers: let them finish this step's chunks
-            // (every plant advances, whatever the number of workers) so the pool is idle for the next
-            // step, then give the exception to the caller; the frame is not published
-            try {
-                pool.await();
-            } catch (RuntimeException | Error w) {
-                e.addSuppressed(w);
-            }
-            throw e;
-        }
-        long fieldNanos = System.nanoTime() - t0;
-        pool.await();
-        current = 1 - current;
-        steps++;
-        time += fixedStep;
-        f.number = steps;
-        f.time = time;
-        f.componentsAnimated = chunkAnimator.animated();
-        f.fieldNanos = fieldNanos;
-        f.animationNanos = pool.animationNanos(); // the chunks' own span, beside or after the field
-        f.setThinning(draw.thinStart(), draw.thinEnd(), draw.thinMinFraction());
-        f.recordDecision(sampler.viewProjection[b], sampler.eye[b][0], sampler.eye[b][1], sampler.eye[b][2], draw,
-                sampler.reference);
-        exchange.publish();
-    }
-
-    /**
-     * Before the first step: samples the field at t = 0 and, in CONSTRAINT mode, puts the plants
-     * visible then at the equilibrium of that wind (the force each starts its first step from),
-     * unless the constructor already put every plant at the equilibrium of the flows at t = 0 and
-     * the field is still on (the first step then leads from that wind to the field's without a jump);
-     * then advances to the end of the first step. A plant seen later starts at the equilibrium of the wind
-     * when it comes into view ({@link AnimationState}).
-     */
-    private void prime(Camera camera) {
-        int b = 1 - current;
-        Camera[] others = views;
-        sampler.sample(camera, others, others.length, b, fieldEnabled);
-        if (mode == AnimationMode.CONSTRAINT && !(settledAtBuild && fieldEnabled)) {
-            state.settle(0, world.plantCount(),
-                    org.jecosys.anim.AnimationStep.of(mode, sampler.windX[b], sampler.windZ[b], sampler.visible[b]));
-        }
-        sampler.update(camera, others, others.length, current, fieldEnabled);
+        loop.stepFixed(camera);
     }
 
     /**
@@ -457,23 +264,9 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException    when {@link #MAX_VIEWS} - 1 views are registered, or the simulation
      *                                  is closed
      */
-    public synchronized void addView(Camera view) {
+    public void addView(Camera view) {
         Require.nonNull("view", view);
-        checkOpen();
-        Camera.requireFinite("view", view, new org.joml.Matrix4f());
-        Camera[] v = views;
-        for (Camera c : v) {
-            if (c == view) {
-                throw new IllegalArgumentException("this view is already registered");
-            }
-        }
-        if (v.length >= MAX_VIEWS - 1) {
-            throw new IllegalStateException("a simulation follows at most " + MAX_VIEWS + " views (Simulation.MAX_VIEWS):"
-                    + " the step's camera and " + (MAX_VIEWS - 1) + " registered ones");
-        }
-        Camera[] n = java.util.Arrays.copyOf(v, v.length + 1);
-        n[v.length] = view;
-        views = n;
+        loop.addView(view);
     }
 
     /**
@@ -483,29 +276,18 @@ public final class Simulation implements AutoCloseable {
      * @return whether it was registered
      * @throws IllegalStateException when the simulation is closed
      */
-    public synchronized boolean removeView(Camera view) {
-        checkOpen();
-        Camera[] v = views;
-        for (int i = 0; i < v.length; i++) {
-            if (v[i] == view) {
-                Camera[] n = new Camera[v.length - 1];
-                System.arraycopy(v, 0, n, 0, i);
-                System.arraycopy(v, i + 1, n, i, v.length - i - 1);
-                views = n;
-                return true;
-            }
-        }
-        return false;
+    public boolean removeView(Camera view) {
+        return loop.removeView(view);
     }
 
     /** {@return the views registered with {@link #addView}, besides each step's camera} Any thread. */
     public int viewCount() {
-        return views.length;
+        return loop.viewCount();
     }
 
     /** {@return the commands queued and not yet applied, at most {@link #MAX_PENDING_COMMANDS}} Any thread. */
     public int pendingCommands() {
-        return commands.pending();
+        return loop.commands.pending();
     }
 
     /**
@@ -513,7 +295,7 @@ public final class Simulation implements AutoCloseable {
      * {@link #MAX_FLOWS}} Any thread.
      */
     public int flowCount() {
-        return commands.flowCount();
+        return loop.commands.flowCount();
     }
 
     /**
@@ -526,7 +308,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when called from a second thread while the reader thread lives
      */
     public Frame latestFrame() {
-        return exchange.latest();
+        return loop.exchange.latest();
     }
 
     /**
@@ -541,7 +323,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalArgumentException when {@code dest} is null or of other sizes
      */
     public Frame copyLatestFrame(Frame dest) {
-        return exchange.copyLatest(dest);
+        return loop.exchange.copyLatest(dest);
     }
 
     /**
@@ -574,11 +356,7 @@ public final class Simulation implements AutoCloseable {
      *                                  commands are already there
      */
     public WindSource addFlow(WindSource source) {
-        Require.nonNull("source", source);
-        String id = source.id();
-        commands.reserveFlow(id, source);
-        commands.enqueueReserved(id, source, () -> wind.add(source));
-        return source;
+        return loop.commands.addFlow(source);
     }
 
     /**
@@ -589,9 +367,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void removeFlow(WindSource source) {
-        Require.nonNull("source", source);
-        commands.enqueue(() -> wind.remove(source));
-        commands.releaseFlow(source.id(), source);
+        loop.commands.removeFlow(source);
     }
 
     /**
@@ -603,12 +379,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalArgumentException when the motion is not FIXED
      */
     public WindSource attachAgent(FlowDef def) {
-        Require.nonNull("def", def);
-        if (def.motion().kind() != org.jecosys.wind.MotionDef.Kind.FIXED) {
-            throw new IllegalArgumentException("an agent's motion must be FIXED (the game moves it), got "
-                    + def.motion().kind());
-        }
-        return addFlow(def);
+        return loop.commands.attachAgent(def);
     }
 
     /**
@@ -623,10 +394,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException    when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void moveAgent(WindSource agent, double x, double z) {
-        Require.nonNull("agent", agent);
-        Require.range("x", x, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
-        Require.range("z", z, -org.jecosys.math.Waypoint.MAX_COORDINATE, org.jecosys.math.Waypoint.MAX_COORDINATE);
-        commands.enqueue(() -> agent.setCentre(x, z));
+        loop.commands.moveAgent(agent, x, z);
     }
 
     /**
@@ -644,14 +412,7 @@ public final class Simulation implements AutoCloseable {
      *                                  commands are already there
      */
     public void blast(String id, double x, double z, double strength, double duration) {
-        Require.positive("strength", strength);
-        // a blast is removed when it ends: it must end (the step would refuse +Infinity)
-        Require.above("duration", duration, 0, org.jecosys.wind.ActivationDef.MAX_TIME);
-        FlowDef.builder(id, org.jecosys.wind.FlowKind.BLAST).centre(x, z).strength(strength).duration(duration)
-                .build(); // checks every value with the scene schema's ranges
-        Object token = new Object();
-        commands.reserveFlow(id, token);
-        commands.enqueueReserved(id, token, () -> commands.trackBlast(wind.blast(id, x, z, strength, duration), token));
+        loop.commands.blast(id, x, z, strength, duration);
     }
 
     /**
@@ -662,8 +423,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setFlowEnabled(WindSource source, boolean enabled) {
-        Require.nonNull("source", source);
-        commands.enqueue(() -> source.setEnabled(enabled));
+        loop.commands.setFlowEnabled(source, enabled);
     }
 
     /**
@@ -674,7 +434,7 @@ public final class Simulation implements AutoCloseable {
      */
     public void setMode(AnimationMode mode) {
         Require.nonNull("mode", mode);
-        commands.enqueue(() -> this.mode = mode);
+        loop.setMode(mode);
     }
 
     /**
@@ -684,7 +444,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setFieldEnabled(boolean enabled) {
-        commands.enqueue(() -> fieldEnabled = enabled);
+        loop.setFieldEnabled(enabled);
     }
 
     /**
@@ -696,8 +456,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalArgumentException when out of range
      */
     public void setLodTransition(double metres) {
-        Require.range("lodTransition", metres, 0, 10);
-        commands.enqueue(() -> draw.setTransition(metres));
+        detail.setLodTransition(metres);
     }
 
     /**
@@ -714,23 +473,22 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException    when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setThinning(double start, double end, double minFraction) {
-        DrawDecision.checkThinning(start, end, minFraction);
-        commands.enqueue(() -> draw.setThinning(start, end, minFraction));
+        detail.setThinning(start, end, minFraction);
     }
 
     /** {@return where distance thinning starts, metres (see {@link #setThinning})} Any thread. */
     public double thinStart() {
-        return draw.thinStart();
+        return loop.draw.thinStart();
     }
 
     /** {@return where the kept share reaches {@link #thinMinFraction()}, metres} Any thread. */
     public double thinEnd() {
-        return draw.thinEnd();
+        return loop.draw.thinEnd();
     }
 
     /** {@return the share of plants drawn at and beyond {@link #thinEnd()}; 1 when thinning is off} Any thread. */
     public double thinMinFraction() {
-        return draw.thinMinFraction();
+        return loop.draw.thinMinFraction();
     }
 
     /**
@@ -743,20 +501,7 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalArgumentException when the species or the distances are out of range
      */
     public void setLodDistances(int species, double[] maxDistances) {
-        Require.range("species", species, 0, world.plants().species().size() - 1);
-        int levels = world.plants().species().get(species).levels();
-        Require.nonNull("maxDistances", maxDistances);
-        if (maxDistances.length != levels - 1) {
-            throw new IllegalArgumentException("species " + species + " has " + levels + " levels, so "
-                    + (levels - 1) + " distances, got " + maxDistances.length);
-        }
-        double prev = 0;
-        for (int i = 0; i < maxDistances.length; i++) {
-            Require.range("maxDistances[" + i + "]", maxDistances[i], Math.nextUp(prev), 1e6);
-            prev = maxDistances[i];
-        }
-        double[] copy = maxDistances.clone();
-        commands.enqueue(() -> state.setLodDistances(species, copy));
+        detail.setLodDistances(species, maxDistances);
     }
 
     /**
@@ -766,7 +511,7 @@ public final class Simulation implements AutoCloseable {
      * @return the decision the workers apply
      */
     public DrawDecision drawDecision() {
-        return draw;
+        return loop.draw;
     }
 
     /**
@@ -777,18 +522,17 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
      */
     public void setLodScale(double scale) {
-        Require.range("scale", scale, 0.01, 100);
-        commands.enqueue(() -> state.setLodScale(scale));
+        detail.setLodScale(scale);
     }
 
     /** {@return the animation mode of the last step} Stepping thread. */
     public AnimationMode mode() {
-        return mode;
+        return loop.mode();
     }
 
     /** {@return whether the force field was on in the last step} Stepping thread. */
     public boolean fieldEnabled() {
-        return fieldEnabled;
+        return loop.fieldEnabled();
     }
 
     /** {@return the static world} Any thread. */
@@ -817,7 +561,7 @@ public final class Simulation implements AutoCloseable {
      * Any thread; no allocation.
      */
     public org.jecosys.anim.BendGeometry bendGeometry() {
-        return state.geometry();
+        return loop.state.geometry();
     }
 
     /**
@@ -825,32 +569,32 @@ public final class Simulation implements AutoCloseable {
      * helps} Any thread.
      */
     public int workers() {
-        return pool.workers();
+        return loop.pool.workers();
     }
 
     /** {@return the number of fixed chunks of plants} Any thread. */
     public int chunks() {
-        return chunkAnimator.chunks();
+        return loop.chunkAnimator.chunks();
     }
 
     /** {@return the fixed step, seconds} Any thread. */
     public double fixedStep() {
-        return fixedStep;
+        return loop.fixedStep();
     }
 
     /** {@return the number of fixed steps run so far} Stepping thread. */
     public long steps() {
-        return steps;
+        return loop.steps();
     }
 
     /** {@return the simulation time, seconds (fixed steps x fixed step)} Stepping thread. */
     public double time() {
-        return time;
+        return loop.time();
     }
 
     /** {@return the number of fixed steps dropped by the sub-step cap so far} Stepping thread. */
     public long droppedSteps() {
-        return droppedSteps;
+        return loop.droppedSteps();
     }
 
     /**
@@ -860,7 +604,7 @@ public final class Simulation implements AutoCloseable {
      * @return the live view (not a copy: it changes with every step)
      */
     public AnimationView state() {
-        return state;
+        return loop.state;
     }
 
     /**
@@ -871,12 +615,12 @@ public final class Simulation implements AutoCloseable {
      * @return the field
      */
     public ForceField forceField() {
-        return field;
+        return loop.field;
     }
 
     /** {@return the counters of the field's last update} Stepping thread. */
     public FieldCounters fieldCounters() {
-        return field.counters();
+        return loop.field.counters();
     }
 
     /**
@@ -885,7 +629,7 @@ public final class Simulation implements AutoCloseable {
      * ids are not known to the duplicate check of the command methods.
      */
     public WindField windField() {
-        return wind;
+        return loop.wind;
     }
 
     /**
@@ -894,7 +638,7 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public float windX(int p) {
-        return sampler.windX[1 - current][p];
+        return loop.sampler.windX[loop.sampled()][p];
     }
 
     /**
@@ -903,7 +647,7 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public float windZ(int p) {
-        return sampler.windZ[1 - current][p];
+        return loop.sampler.windZ[loop.sampled()][p];
     }
 
     /**
@@ -912,17 +656,17 @@ public final class Simulation implements AutoCloseable {
      * @param p world plant index, in [0, plantCount())
      */
     public boolean plantVisible(int p) {
-        return sampler.visible[1 - current][p];
+        return loop.sampler.visible[loop.sampled()][p];
     }
 
     /** {@return the {@link AnimationState#stateHash()} of the current state} Stepping thread, between steps. */
     public long stateHash() {
-        return state.stateHash();
+        return loop.state.stateHash();
     }
 
     /** {@return the ids of the pool's worker threads, {@link #workers()} - 1 of them} Allocates; any thread. */
     public long[] workerThreadIds() {
-        return pool.threadIds();
+        return loop.pool.threadIds();
     }
 
     /**
@@ -933,7 +677,7 @@ public final class Simulation implements AutoCloseable {
      * @return bytes, or -1
      */
     public long allocatedBytes() {
-        return pool.allocatedBytes(steppingThread);
+        return loop.pool.allocatedBytes(loop.steppingThread());
     }
 
     /**
@@ -946,25 +690,12 @@ public final class Simulation implements AutoCloseable {
      */
     @Override
     public void close() {
-        closed = true;
-        commands.close();
-        boolean locked = false;
-        try {
-            locked = stepLock.tryLock(CLOSE_WAIT_MILLIS, java.util.concurrent.TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt(); // stop the workers all the same, without waiting
-        }
-        try {
-            // with the lock: no step runs. Without it a step is stuck in a game's flow or camera: the
-            // workers finish the chunks they hold and end; that step completes alone when it returns
-            pool.close();
-        } finally {
-            if (locked) {
-                stepLock.unlock();
-            }
-        }
+        loop.close();
     }
 
     /** How long {@link #close()} waits for a running step to reach its end, milliseconds. */
     static final long CLOSE_WAIT_MILLIS = 1000;
+
+    /** The message of every call refused after {@link #close()}. */
+    static final String CLOSED = "the simulation is closed";
 }

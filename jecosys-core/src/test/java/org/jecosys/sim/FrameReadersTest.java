@@ -57,7 +57,7 @@ class FrameReadersTest {
     @Test
     void everyReaderThreadSeesOnlyCompleteFramesInOrder() throws Exception {
         try (Simulation sim = SimFixtures.c1(2)) {
-            sim.stampFrames = true;
+            sim.loop.stampFrames = true;
             AtomicBoolean done = new AtomicBoolean();
             AtomicReference<String> problem = new AtomicReference<>();
             AtomicLong checked = new AtomicLong();

@@ -15,7 +15,7 @@ class FramesTest {
     @Test
     void aConcurrentReaderSeesOnlyCompleteFramesInOrder() throws Exception {
         try (Simulation sim = SimFixtures.c1(2)) {
-            sim.stampFrames = true; // every component of frame n carries D = (n, -n)
+            sim.loop.stampFrames = true; // every component of frame n carries D = (n, -n)
             AtomicBoolean done = new AtomicBoolean();
             AtomicReference<String> problem = new AtomicReference<>();
             AtomicLong checked = new AtomicLong();
