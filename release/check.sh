@@ -8,7 +8,7 @@
 #                                   consumer/ and the logs; a temporary one is removed on success
 # Environment: MVN (maven binary), M2_REPO (the local repository copied for third-party artifacts,
 # default ~/.m2/repository; anything missing there comes from Maven Central).
-# Nothing is installed into your own local repository.
+# Nothing is written into your own local repository.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mvn_bin="${MVN:-mvn}"
@@ -48,10 +48,19 @@ run_mvn() { # LOG DIR ARGS...
   fi
 }
 
+# a local repository of the check's own: a copy of yours for third-party artifacts (saves
+# downloading them), less org/jecosys; the deploy and the consumer use it, so nothing is written
+# into yours
+mkdir -p "$m2"
+if [ -d "$m2_src" ]; then
+  cp -a "$m2_src/." "$m2/"
+fi
+rm -rf "$m2/org/jecosys"
+
 # 1. deploy: the release command of docs/release.md, without tests and without installing
 start=$SECONDS
 echo "check: 1/4 deploying to $repo"
-run_mvn "$work/deploy.log" "$root" -DskipTests -Dmaven.install.skip=true deploy \
+run_mvn "$work/deploy.log" "$root" -Dmaven.repo.local="$m2" -DskipTests -Dmaven.install.skip=true deploy \
   -DaltDeploymentRepository="release-check::file://$repo"
 echo "check: deployed in $((SECONDS - start)) s"
 
@@ -81,14 +90,10 @@ for module in jecosys-app jecosys-example-game jecosys-example-gdx jecosys-examp
 done
 echo "check: the folder holds parent, bom, and core, render, gdx, jme with sources and Javadoc jars; no app, no examples"
 
-# 2. the consumer, outside the source tree, with a fresh local repository: a copy of yours for
-# third-party artifacts (saves downloading them), less org/jecosys, and the folder as a repository
+# 2. the consumer, outside the source tree, with the check's local repository emptied of org/jecosys
+# again (the deploy cached the folder's metadata there) and the folder as a repository
 start=$SECONDS
 echo "check: 2/4 building the consumer in $consumer"
-mkdir -p "$m2"
-if [ -d "$m2_src" ]; then
-  cp -a "$m2_src/." "$m2/"
-fi
 rm -rf "$m2/org/jecosys"
 cp -a "$root/release/consumer" "$consumer"
 rm -rf "$consumer"/*/target "$consumer/target"
