@@ -4,7 +4,7 @@
 # repository that resolves org.jecosys only from that folder, and fails when a game depending on
 # jecosys-render gets lwjgl-egl or lwjgl-stb.
 #   release/check.sh [WORKDIR]      WORKDIR (default: a new temporary folder) receives repo/ (the
-#                                   deployed release), m2/ (the consumer's local repository),
+#                                   deployed release), m2/ (the check's own local repository),
 #                                   consumer/ and the logs; a temporary one is removed on success
 # Environment: MVN (maven binary), M2_REPO (the local repository copied for third-party artifacts,
 # default ~/.m2/repository; anything missing there comes from Maven Central).
