@@ -25,7 +25,9 @@ import java.util.Arrays;
  * among small discs looks at the buckets its disc spans, at most all of that class's buckets; a class
  * has at most {@link #BUCKETS_PER_DISC} buckets per disc it is declared to hold (and at most
  * {@link #MAX_BUCKETS_PER_SIDE} per side), so that is bounded by the class's disc count.
- * {@link PlacementWork} turns these bounds into the work estimate the scene check budgets.
+ * {@link PlacementWork} turns these bounds into the work estimate the scene check budgets. Memory: 16
+ * bytes per disc, and per class that holds discs at most 4 bytes x {@link #BUCKETS_PER_DISC} per disc
+ * it may hold and at most 16 MiB ({@link #MAX_BUCKETS_PER_SIDE} squared).
  *
  * <p>One thread. Allocates a class's buckets at its first disc, and its disc arrays as they grow
  * (doubling); no allocation in {@link #free}.
@@ -34,7 +36,7 @@ final class OccupancyGrid {
     /** Most buckets per side of a class's grid. */
     static final int MAX_BUCKETS_PER_SIDE = 2048;
     /** Most buckets of a class's grid per disc it is declared to hold (at least one bucket). */
-    static final int BUCKETS_PER_DISC = 2;
+    static final int BUCKETS_PER_DISC = 16;
 
     private final double minX;
     private final double minZ;

@@ -94,11 +94,11 @@ class OccupancyGridTest {
     }
 
     @Test
-    void aClassHasAtMostTwoBucketsPerDiscItMayHold() {
+    void aClassHasAtMostSixteenBucketsPerDiscItMayHold() {
         OccupancyGrid g = new OccupancyGrid(0, 0, 1000, 1000, new double[] {0.01, 5}, new long[] {10, 3});
         assertEquals(2, g.classCount());
-        assertTrue(g.bucketCount(0) <= 20, "10 discs of 1 cm: " + g.bucketCount(0));
-        assertTrue(g.bucketCount(1) <= 6, "3 discs of 5 m: " + g.bucketCount(1));
+        assertTrue(g.bucketCount(0) <= 10 * OccupancyGrid.BUCKETS_PER_DISC, "10 discs of 1 cm: " + g.bucketCount(0));
+        assertTrue(g.bucketCount(1) <= 3 * OccupancyGrid.BUCKETS_PER_DISC, "3 discs of 5 m: " + g.bucketCount(1));
         OccupancyGrid dense = new OccupancyGrid(0, 0, 100, 100, new double[] {0.0625}, new long[] {1_000_000});
         assertEquals(800 * 800, dense.bucketCount(0), "buckets of twice the radius when the discs are many");
     }
