@@ -1,7 +1,9 @@
 package org.jecosys.terrain;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rng;
@@ -194,17 +196,20 @@ public final class CompetitiveDistributor implements TerrainDistributor {
     }
 
     /**
-     * The footprint slot of a hand placement of {@code species}: the index of the first distribution of
-     * that species, whose footprint and use it takes, or {@code distributions.size()} when it has none
-     * ({@link #PLACEMENT_FOOTPRINT}).
+     * The footprint slot of each hand placement: the index of the first distribution of its species,
+     * whose footprint and use it takes, or {@code distributions.size()} when its species has none
+     * ({@link #PLACEMENT_FOOTPRINT}). Linear in the distributions and placements; allocates.
      */
-    static int placementSlot(String species, List<DistributionDef> distributions) {
+    static int[] placementSlots(List<DistributionDef> distributions, List<PlacementDef> placements) {
+        Map<String, Integer> first = new HashMap<>();
         for (int d = 0; d < distributions.size(); d++) {
-            if (distributions.get(d).species().equals(species)) {
-                return d;
-            }
+            first.putIfAbsent(distributions.get(d).species(), d);
         }
-        return distributions.size();
+        int[] slot = new int[placements.size()];
+        for (int p = 0; p < slot.length; p++) {
+            slot[p] = first.getOrDefault(placements.get(p).species(), distributions.size());
+        }
+        return slot;
     }
 
     /** Footprint radius per slot, metres: each distribution's, then {@link #PLACEMENT_FOOTPRINT}. */
@@ -230,8 +235,8 @@ public final class CompetitiveDistributor implements TerrainDistributor {
         for (int d = 0; d < nd; d++) {
             n[d] = plantsAtMost(sizeX, sizeZ, distributions.get(d));
         }
-        for (PlacementDef p : placements) {
-            n[placementSlot(p.species(), distributions)]++;
+        for (int slot : placementSlots(distributions, placements)) {
+            n[slot]++;
         }
         return n;
     }
@@ -240,6 +245,7 @@ public final class CompetitiveDistributor implements TerrainDistributor {
                                     List<DistributionDef> distributions, long seed, Heightfield hf,
                                     ResourceMap water, ResourceMap nutrients, OccupancyGrid grid,
                                     PlantLayout.Builder out) {
+        int[] slots = placementSlots(distributions, placements);
         for (int p = 0; p < placements.size(); p++) {
             PlacementDef pl = Require.nonNull("placements[" + p + "]", placements.get(p));
             int sp = speciesIndex(speciesIds, pl.species(), "placements[" + p + "]");
@@ -253,7 +259,7 @@ public final class CompetitiveDistributor implements TerrainDistributor {
             double r = PLACEMENT_FOOTPRINT;
             double wUse = PLACEMENT_USE;
             double nUse = PLACEMENT_USE;
-            int slot = placementSlot(pl.species(), distributions);
+            int slot = slots[p];
             if (slot < distributions.size()) {
                 DistributionDef d = distributions.get(slot);
                 r = d.footprint();

@@ -48,15 +48,17 @@ public final class PlacementWork {
     private final long[] candidates;
     private final double[] searchPerCandidate;
     private final double[] costPerCandidate;
+    private final double[] mapCells;
     private final double placements;
 
     private PlacementWork(double total, double[] work, long[] candidates, double[] searchPerCandidate,
-                          double[] costPerCandidate, double placements) {
+                          double[] costPerCandidate, double[] mapCells, double placements) {
         this.total = total;
         this.work = work;
         this.candidates = candidates;
         this.searchPerCandidate = searchPerCandidate;
         this.costPerCandidate = costPerCandidate;
+        this.mapCells = mapCells;
         this.placements = placements;
     }
 
@@ -87,6 +89,7 @@ public final class PlacementWork {
         long[] cand = new long[nd];
         double[] search = new double[nd];
         double[] cost = new double[nd];
+        double[] mapCells = new double[nd];
         double total = 0;
         for (int d = 0; d < nd; d++) {
             DistributionDef def = distributions.get(d);
@@ -108,12 +111,12 @@ public final class PlacementWork {
             cand[d] = c;
             search[d] = s;
             cost[d] = c == 0 ? 0 : draw + s + means / c;
+            mapCells[d] = level;
             work[d] = (double) maskRes * maskRes * MASK_CELL_UNITS + c * (draw + s) + means + consume;
             total += work[d];
         }
         double hand = 0;
-        for (PlacementDef p : placements) {
-            int slot = CompetitiveDistributor.placementSlot(p.species(), distributions);
+        for (int slot : CompetitiveDistributor.placementSlots(distributions, placements)) {
             double r = radii[slot];
             double u = 2 * (cells(r, sx, sz, waterRes) + cells(r, sx, sz, nutrientRes)) * OVERLAP_CELL_UNITS;
             if (slot < nd) { // it takes that distribution's footprint: counted with it
@@ -123,7 +126,7 @@ public final class PlacementWork {
             }
             total += u;
         }
-        return new PlacementWork(total, work, cand, search, cost, hand);
+        return new PlacementWork(total, work, cand, search, cost, mapCells, hand);
     }
 
     /** {@return the whole bound, units} */
@@ -171,6 +174,16 @@ public final class PlacementWork {
      */
     public double costPerCandidate(int d) {
         return costPerCandidate[d];
+    }
+
+    /**
+     * The most water- and nutrient-map cells one footprint mean of distribution d covers (both maps).
+     *
+     * @param d distribution index
+     * @return cells
+     */
+    public double mapCellsPerFootprint(int d) {
+        return mapCells[d];
     }
 
     /** {@return the share of the hand placements whose species has no distribution, units} */
@@ -221,8 +234,8 @@ public final class PlacementWork {
             nz = new int[k];
             java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
             long[] handPerSlot = new long[radii.length];
-            for (PlacementDef p : placements) {
-                handPerSlot[CompetitiveDistributor.placementSlot(p.species(), distributions)]++;
+            for (int slot : CompetitiveDistributor.placementSlots(distributions, placements)) {
+                handPerSlot[slot]++;
             }
             for (int i = 0; i < radii.length; i++) {
                 int c = java.util.Arrays.binarySearch(exps, Math.getExponent((float) radii[i]));
