@@ -100,8 +100,8 @@ final class SceneWorkBudget {
         double reachRatio = (gc.reach() + 1) * (gc.reach() + 1) / ((def.reach() + 1) * (def.reach() + 1));
         String attr = densityRatio >= reachRatio ? "density" : "reach";
         report(gv, attr, "the ground cover draws up to " + SceneBudget.count(blades) + " blades per view in a frame ("
-                + SceneBudget.count(gc.bladesPerTile()) + " per square metre, density, on up to "
-                + SceneBudget.count(blades / Math.max(1, gc.bladesPerTile())) + " square-metre tiles within reach "
+                + SceneBudget.count(gc.bladesPerTile()) + " per square metre on each of up to "
+                + SceneBudget.count(blades / Math.max(1, gc.bladesPerTile())) + " one-metre tiles within its reach of "
                 + num(gc.reach()) + " m), more than the limit of " + SceneBudget.count(RenderDef.GroundCover.MAX_BLADES_PER_VIEW)
                 + " blades per view (RenderDef.GroundCover.MAX_BLADES_PER_VIEW; at density 20000 and reach 50 a frame"
                 + " takes about 28 s on a software renderer): lower the density or the reach");
