@@ -15,7 +15,8 @@ import org.jecosys.terrain.TerrainDef;
  * distribution's working state), compared with the Java heap before anything is built. A scene that
  * cannot fit is refused with a located problem naming the limit, at the attribute that asks for the
  * most. The per-item costs are measured peaks of building and running (World, Simulation, frames,
- * quadtree with one plant per node), rounded up. One instance per load; not thread-safe.
+ * quadtree with one plant per node), rounded up. Time is bounded beside it by {@link SceneWorkBudget}
+ * (placement work, ground-cover blades per frame). One instance per load; not thread-safe.
  */
 final class SceneBudget {
     /** Heap bytes per plant, peak (layout, world, quadtree down to one plant per node, animation). */
@@ -57,9 +58,7 @@ final class SceneBudget {
 
     /** The most plants distribution {@code d} can place on {@code t}: its count or density, capped. */
     static long plantsAtMost(TerrainDef t, DistributionDef d) {
-        double want = d.count() >= 0 ? d.count() : Math.ceil(d.density() * t.sizeX() * t.sizeZ());
-        long n = (long) Math.min(want, DistributionDef.MAX_COUNT);
-        return Math.min(n, CompetitiveDistributor.capacity(t.sizeX(), t.sizeZ(), d.footprint()));
+        return CompetitiveDistributor.plantsAtMost(t.sizeX(), t.sizeZ(), d);
     }
 
     /** Pose-table bytes of a species: every variant of every component type at every pose. */
@@ -71,8 +70,18 @@ final class SceneBudget {
         return points * s.poses() * s.variation().variants() * BYTES_PER_POSE_POINT;
     }
 
-    /** Checks the scene against the heap; reports a problem (and returns false) when it cannot fit. */
+    /**
+     * Checks the scene against the heap, and its work against {@link SceneWorkBudget}'s limits (placement,
+     * ground cover); reports a problem for each that is over (and returns false).
+     */
     boolean check(SceneDef scene, Values root, List<Image> images) {
+        boolean memory = checkMemory(scene, root, images);
+        boolean work = new SceneWorkBudget(out).check(scene, root);
+        return memory && work;
+    }
+
+    /** Checks the scene against the heap; reports a problem (and returns false) when it cannot fit. */
+    private boolean checkMemory(SceneDef scene, Values root, List<Image> images) {
         TerrainDef t = scene.terrain();
         List<Values> distValues = root.children("distribution");
         long plants = scene.placements().size();

@@ -1,7 +1,9 @@
 package org.jecosys.terrain;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rng;
@@ -122,16 +124,18 @@ public final class CompetitiveDistributor implements TerrainDistributor {
         Require.nonNull("progress", progress);
         int nd = distributions.size();
         int[] speciesOf = new int[nd];
-        double maxRadius = PLACEMENT_FOOTPRINT;
         for (int d = 0; d < nd; d++) {
             DistributionDef def = Require.nonNull("distributions[" + d + "]", distributions.get(d));
             speciesOf[d] = speciesIndex(speciesIds, def.species(), "distributions[" + d + "]");
-            maxRadius = Math.max(maxRadius, def.footprint());
+        }
+        for (int p = 0; p < placements.size(); p++) {
+            Require.nonNull("placements[" + p + "]", placements.get(p));
         }
         Heightfield hf = terrain.heightfield();
         ResourceMap water = terrain.water().copy();
         ResourceMap nutrients = terrain.nutrients().copy();
-        OccupancyGrid grid = new OccupancyGrid(hf.minX(), hf.minZ(), hf.sizeX(), hf.sizeZ(), maxRadius);
+        OccupancyGrid grid = new OccupancyGrid(hf.minX(), hf.minZ(), hf.sizeX(), hf.sizeZ(),
+                footprints(distributions), discsAtMost(hf.sizeX(), hf.sizeZ(), distributions, placements));
         PlantLayout.Builder out = new PlantLayout.Builder();
         List<String> warnings = new ArrayList<>();
 
@@ -170,13 +174,78 @@ public final class CompetitiveDistributor implements TerrainDistributor {
                 }
             }
         }
+        out.occupancyVisits(grid.visits());
         return out.build(placed, target, warnings, water, nutrients);
+    }
+
+    /**
+     * The most plants distribution {@code d} can place on a terrain of {@code sizeX} by {@code sizeZ}
+     * metres: its count, or its density over the whole terrain (the suitable part is at most that),
+     * capped at {@link DistributionDef#MAX_COUNT} and at the {@link #capacity} of its footprint. Any
+     * thread; no allocation.
+     *
+     * @param sizeX terrain extent along X, metres, &gt; 0
+     * @param sizeZ terrain extent along Z, metres, &gt; 0
+     * @param d     the distribution
+     * @return plants, in [0, {@link DistributionDef#MAX_COUNT}]
+     */
+    public static long plantsAtMost(double sizeX, double sizeZ, DistributionDef d) {
+        double want = d.count() >= 0 ? d.count() : Math.ceil(d.density() * sizeX * sizeZ);
+        long n = (long) Math.min(want, DistributionDef.MAX_COUNT);
+        return Math.min(n, capacity(sizeX, sizeZ, d.footprint()));
+    }
+
+    /**
+     * The footprint slot of each hand placement: the index of the first distribution of its species,
+     * whose footprint and use it takes, or {@code distributions.size()} when its species has none
+     * ({@link #PLACEMENT_FOOTPRINT}). Linear in the distributions and placements; allocates.
+     */
+    static int[] placementSlots(List<DistributionDef> distributions, List<PlacementDef> placements) {
+        Map<String, Integer> first = new HashMap<>();
+        for (int d = 0; d < distributions.size(); d++) {
+            first.putIfAbsent(distributions.get(d).species(), d);
+        }
+        int[] slot = new int[placements.size()];
+        for (int p = 0; p < slot.length; p++) {
+            slot[p] = first.getOrDefault(placements.get(p).species(), distributions.size());
+        }
+        return slot;
+    }
+
+    /** Footprint radius per slot, metres: each distribution's, then {@link #PLACEMENT_FOOTPRINT}. */
+    static double[] footprints(List<DistributionDef> distributions) {
+        int nd = distributions.size();
+        double[] r = new double[nd + 1];
+        for (int d = 0; d < nd; d++) {
+            r[d] = distributions.get(d).footprint();
+        }
+        r[nd] = PLACEMENT_FOOTPRINT;
+        return r;
+    }
+
+    /**
+     * Most discs per footprint slot ({@link #footprints}): each distribution's {@link #plantsAtMost},
+     * plus the hand placements that take its footprint; the last slot counts the placements whose
+     * species has no distribution.
+     */
+    static long[] discsAtMost(double sizeX, double sizeZ, List<DistributionDef> distributions,
+                              List<PlacementDef> placements) {
+        int nd = distributions.size();
+        long[] n = new long[nd + 1];
+        for (int d = 0; d < nd; d++) {
+            n[d] = plantsAtMost(sizeX, sizeZ, distributions.get(d));
+        }
+        for (int slot : placementSlots(distributions, placements)) {
+            n[slot]++;
+        }
+        return n;
     }
 
     private static void placeByHand(List<PlacementDef> placements, List<String> speciesIds,
                                     List<DistributionDef> distributions, long seed, Heightfield hf,
                                     ResourceMap water, ResourceMap nutrients, OccupancyGrid grid,
                                     PlantLayout.Builder out) {
+        int[] slots = placementSlots(distributions, placements);
         for (int p = 0; p < placements.size(); p++) {
             PlacementDef pl = Require.nonNull("placements[" + p + "]", placements.get(p));
             int sp = speciesIndex(speciesIds, pl.species(), "placements[" + p + "]");
@@ -190,13 +259,12 @@ public final class CompetitiveDistributor implements TerrainDistributor {
             double r = PLACEMENT_FOOTPRINT;
             double wUse = PLACEMENT_USE;
             double nUse = PLACEMENT_USE;
-            for (DistributionDef d : distributions) {
-                if (d.species().equals(pl.species())) {
-                    r = d.footprint();
-                    wUse = d.waterUse();
-                    nUse = d.nutrientUse();
-                    break;
-                }
+            int slot = slots[p];
+            if (slot < distributions.size()) {
+                DistributionDef d = distributions.get(slot);
+                r = d.footprint();
+                wUse = d.waterUse();
+                nUse = d.nutrientUse();
             }
             double w = water.footprintLevel(x, z, r);
             double n = nutrients.footprintLevel(x, z, r);

@@ -30,6 +30,7 @@ public final class PlantLayout {
     private final List<String> warnings;
     private final ResourceMap remainingWater;
     private final ResourceMap remainingNutrients;
+    private final long occupancyVisits;
 
     private PlantLayout(Builder b, int[] placed, int[] target, List<String> warnings,
                         ResourceMap remainingWater, ResourceMap remainingNutrients) {
@@ -49,6 +50,15 @@ public final class PlantLayout {
         this.warnings = List.copyOf(warnings);
         this.remainingWater = remainingWater.copy().freeze();
         this.remainingNutrients = remainingNutrients.copy().freeze();
+        this.occupancyVisits = b.occupancyVisits;
+    }
+
+    /**
+     * {@return the buckets and discs the distributor's footprint search looked at while placing (its
+     * work, for tests of the placement's cost; 0 when the distributor did not say)}
+     */
+    long occupancyVisits() {
+        return occupancyVisits;
     }
 
     /** {@return the number of plants} */
@@ -235,6 +245,7 @@ public final class PlantLayout {
         private int[] species = new int[16];
         private int[] distribution = new int[16];
         private long[] variantSeed = new long[16];
+        private long occupancyVisits;
 
         /** An empty builder. */
         public Builder() {
@@ -284,6 +295,11 @@ public final class PlantLayout {
             distribution[n] = dist;
             variantSeed[n] = seed;
             n++;
+        }
+
+        /** Records the footprint search's work (buckets and discs looked at) for the layout. */
+        void occupancyVisits(long visits) {
+            occupancyVisits = visits;
         }
 
         /**

@@ -49,6 +49,9 @@ import org.lwjgl.system.MemoryUtil;
  * of the tile and its index, so blades stay where they are as the eye moves. Fewer blades are drawn in
  * far tiles (the count falls with the square of the distance beyond a third of the reach; blades
  * beyond the count shrink away smoothly) and all fade into the ground's cover colour at the reach.
+ * A frame never submits more than {@link RenderDef.GroundCover#MAX_BLADES_PER_VIEW} blades: the scene
+ * check refuses a cover that could ask for more, and a cover set at run time that does is thinned
+ * evenly, every tile keeping the same share of its blades (see {@link #bladesPerTile(int, int)}).
  *
  * <p>Wind: once per frame the plants' bends are averaged per tile over the whole terrain (each plant's
  * first component: bend angle over the species' largest, toward its azimuth) into a small two-channel
@@ -56,10 +59,10 @@ import org.lwjgl.system.MemoryUtil;
  * them as it travels. Render thread only; {@link #draw} allocates nothing.
  */
 public final class CoverBlades implements AutoCloseable {
-    /** Side of a tile, metres. */
-    static final float TILE = 1f;
-    /** Most tiles drawn at once. */
-    static final int MAX_TILES = 4096;
+    /** Side of a tile, metres ({@link RenderDef.GroundCover#BLADE_TILE}, which the scene check's bound uses). */
+    static final float TILE = (float) RenderDef.GroundCover.BLADE_TILE;
+    /** Most tiles drawn at once ({@link RenderDef.GroundCover#MAX_BLADE_TILES}). */
+    static final int MAX_TILES = RenderDef.GroundCover.MAX_BLADE_TILES;
     /** Floats per tile instance: origin X, Z, blade count, 0. */
     private static final int INSTANCE_FLOATS = 4;
 
@@ -222,7 +225,7 @@ public final class CoverBlades implements AutoCloseable {
         lastTiles = 0;
         lastBlades = 0;
         double reach = gc.reach();
-        int perTile = (int) Math.min(gc.density() * TILE * TILE, 65536);
+        int perTile = gc.bladesPerTile();
         if (!gc.enabled() || reach <= 0 || perTile <= 0) {
             return;
         }
@@ -244,6 +247,9 @@ public final class CoverBlades implements AutoCloseable {
         float lo = (float) field.minHeight() - 0.1f;
         float hi = (float) (field.minHeight() + heightSpan()) + (float) gc.height() * 2;
         double full = reach / 3;
+        // at most the tiles of the box around the eye are drawn: thinned evenly if they could pass the ceiling
+        long box = (long) Math.max(0, i1 - i0 + 1) * Math.max(0, j1 - j0 + 1);
+        perTile = bladesPerTile(perTile, (int) Math.min(MAX_TILES, box));
         instanceData.clear();
         int tiles = 0;
         for (int j = j0; j <= j1 && tiles < MAX_TILES; j++) {
@@ -290,6 +296,22 @@ public final class CoverBlades implements AutoCloseable {
         glBindVertexArray(0);
         lastTiles = tiles;
         lastBlades = tiles * perTile;
+    }
+
+    /**
+     * Blades per tile for a frame of at most {@code tiles} tiles: the cover's {@code perTile}, thinned
+     * when needed so that the frame submits at most {@link RenderDef.GroundCover#MAX_BLADES_PER_VIEW}
+     * blades (a cover set at run time is not checked as a scene's is). Any thread; no allocation.
+     *
+     * @param perTile the cover's blades per tile, &gt;= 0
+     * @param tiles   the most tiles drawn this frame, &gt;= 0
+     * @return blades per tile, in [0, perTile]
+     */
+    static int bladesPerTile(int perTile, int tiles) {
+        if (tiles <= 0) {
+            return perTile;
+        }
+        return (int) Math.min(perTile, RenderDef.GroundCover.MAX_BLADES_PER_VIEW / tiles);
     }
 
     private double heightSpan() {
