@@ -215,14 +215,14 @@ public final class Simulation implements AutoCloseable {
      * {@link #droppedSteps()} (the meadow slows down rather than spiral or jump). Stepping thread.
      * No allocation after warm-up.
      *
-     * @param dt     elapsed real time, seconds, finite and &gt;= 0
-     * @param camera the viewer, for visibility and level of detail (read, not kept)
-     * @return fixed steps run, in [0, maxSubSteps]
      * <p>When a game's own code throws during a step (its {@link Camera}, an
      * {@link org.jecosys.wind.AbstractWindSource} it added), the exception reaches the caller as it
      * is, after the workers finished the fixed step's chunks: that step's frame is not published, the
      * plants keep its motion, and the next call steps normally.
      *
+     * @param dt     elapsed real time, seconds, finite and &gt;= 0
+     * @param camera the viewer, for visibility and level of detail (read, not kept)
+     * @return fixed steps run, in [0, maxSubSteps]
      * @throws IllegalArgumentException when {@code dt} is negative, NaN or infinite, the camera is
      *                                  null, or the eye or view-projection matrix of the camera or of
      *                                  a registered view is not finite (checked each fixed step,
