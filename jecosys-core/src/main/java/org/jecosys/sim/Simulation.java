@@ -450,7 +450,7 @@ public final class Simulation implements AutoCloseable {
     /**
      * Sets the width of the band before each level of detail's end over which a plant is drawn at
      * both levels, dithered (the scene's {@code <render lodTransition>}); see {@link DrawDecision}.
-     * Any thread; applied at the next fixed step. No allocation.
+     * Any thread; applied at the next fixed step; allocates a command.
      *
      * @param metres band width, in [0, 10]
      * @throws IllegalArgumentException when out of range

@@ -9,7 +9,8 @@ import org.jecosys.scene.SceneDef;
  * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
  * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, overlays,
  * and whether the library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it
- * from a scene's {@code <render>} settings. Colours are linear RGB in [0, 1]. Render thread only; setters do not allocate
+ * from a scene's {@code <render>} settings. Colours are display (sRGB) values in [0, 1], as a colour picker gives them; the renderer
+ * writes them unconverted. Render thread only; setters do not allocate
  * (they keep the {@link Rgb} given).
  *
  * <p>Per-plant colour variation is per species, not here: {@code world.plants().species().get(s).def()

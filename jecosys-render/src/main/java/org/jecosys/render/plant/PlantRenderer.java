@@ -104,7 +104,7 @@ public final class PlantRenderer implements AutoCloseable {
     private final float[] prepared = new float[10];
     /** Whether the target of the last {@link #drawNear} is multisampled (coverage to samples) or not (opaque). */
     private boolean multisampled;
-    /** Benchmark breakdown only (package-private): bit l set = draw level l (lists are still uploaded). */
+    /** For the bench's breakdown only (internal): bit l set = draw level l (lists are still uploaded). */
     public int levelMask = ~0;
     private boolean closed;
 
