@@ -10,7 +10,6 @@ import org.jecosys.field.ForceFieldDef;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.SpeciesDef;
 import org.jecosys.render.RenderSettings;
-import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Simulation;
@@ -322,7 +321,7 @@ final class SceneEditor {
     }
 
     /** Sets the terrain tint (saved in the scene's render settings). */
-    void setTint(TerrainTint tint) {
+    void setTint(RenderDef.Tint tint) {
         if (tint != settings.tint()) {
             settings.tint(tint);
             dirty = true;
@@ -371,7 +370,7 @@ final class SceneEditor {
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
                 l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen(), l.shadows());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
-                RenderDef.Tint.values()[settings.tint().ordinal()], settings.showField(), settings.showWind(), nl,
+                settings.tint(), settings.showField(), settings.showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),

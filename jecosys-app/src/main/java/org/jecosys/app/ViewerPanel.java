@@ -12,7 +12,7 @@ import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.ShadowPath;
-import org.jecosys.render.TerrainTint;
+import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.Simulation;
@@ -212,7 +212,7 @@ final class ViewerPanel {
             }
             tint.set(s.tint().ordinal());
             if (ImGui.combo("terrain tint", tint, TINTS)) {
-                editor.setTint(TerrainTint.values()[tint.get()]);
+                editor.setTint(RenderDef.Tint.values()[tint.get()]);
             }
         }
         ImGui.separator();

@@ -37,7 +37,7 @@ public final class RenderSettings {
     private float patchScale = 12;
     private float patchStrength = 0.3f;
     private int patchSeed = 1;
-    private TerrainTint tint = TerrainTint.NONE;
+    private RenderDef.Tint tint = RenderDef.Tint.NONE;
     private boolean showField;
     private boolean showWind;
     private float fogStart = 20;
@@ -95,11 +95,7 @@ public final class RenderSettings {
      */
     public static RenderSettings of(RenderDef def) {
         Require.nonNull("def", def);
-        TerrainTint tint = switch (def.terrainTint()) {
-            case WATER -> TerrainTint.WATER;
-            case NUTRIENTS -> TerrainTint.NUTRIENTS;
-            default -> TerrainTint.NONE;
-        };
+        RenderDef.Tint tint = def.terrainTint();
         RenderDef.Light l = def.light();
         RenderDef.Patches p = def.patches();
         return new RenderSettings().sky(def.sky()).tint(tint)
@@ -397,7 +393,7 @@ public final class RenderSettings {
 
 
     /** {@return the terrain tint} */
-    public TerrainTint tint() {
+    public RenderDef.Tint tint() {
         return tint;
     }
 
@@ -407,7 +403,7 @@ public final class RenderSettings {
      * @param tint which resource map tints the terrain, not null
      * @return this settings object
      */
-    public RenderSettings tint(TerrainTint tint) {
+    public RenderSettings tint(RenderDef.Tint tint) {
         this.tint = Require.nonNull("tint", tint);
         return this;
     }

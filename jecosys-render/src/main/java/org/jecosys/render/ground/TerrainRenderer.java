@@ -33,7 +33,6 @@ import org.joml.Matrix4f;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.RenderSettings;
-import org.jecosys.render.TerrainTint;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlProgram;
@@ -90,7 +89,7 @@ public final class TerrainRenderer implements AutoCloseable {
     /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
     private float[] shadowParams = new float[8];
     private java.nio.FloatBuffer shadowMatrix;
-    private TerrainTint tint;
+    private RenderDef.Tint tint;
     private boolean closed;
 
     /**
@@ -100,7 +99,7 @@ public final class TerrainRenderer implements AutoCloseable {
      * @param terrain the heightfield and the resource maps the tints read
      * @param tint    the initial tint
      */
-    public TerrainRenderer(GlContext gl, Terrain terrain, TerrainTint tint) {
+    public TerrainRenderer(GlContext gl, Terrain terrain, RenderDef.Tint tint) {
         this(gl, terrain, null, tint);
     }
 
@@ -112,11 +111,11 @@ public final class TerrainRenderer implements AutoCloseable {
      * @param world the terrain, and the plants whose bases darken it
      * @param tint  the initial tint
      */
-    public TerrainRenderer(GlContext gl, World world, TerrainTint tint) {
+    public TerrainRenderer(GlContext gl, World world, RenderDef.Tint tint) {
         this(gl, world.terrain(), world, tint);
     }
 
-    private TerrainRenderer(GlContext gl, Terrain terrain, World world, TerrainTint tint) {
+    private TerrainRenderer(GlContext gl, Terrain terrain, World world, RenderDef.Tint tint) {
         gl.checkThread();
         this.terrain = terrain;
         Heightfield h = terrain.heightfield();
@@ -245,7 +244,7 @@ public final class TerrainRenderer implements AutoCloseable {
         return res * res + rim();
     }
 
-    private void fill(FloatBuffer v, TerrainTint tint) {
+    private void fill(FloatBuffer v, RenderDef.Tint tint) {
         Heightfield h = terrain.heightfield();
         ResourceMap water = terrain.water();
         ResourceMap nutrients = terrain.nutrients();
@@ -286,7 +285,7 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /** The terrain colour at (x, z) for a tint, linear RGB in [0, 1], into {@code dest}. Pure. */
-    public static void colour(TerrainTint tint, ResourceMap water, ResourceMap nutrients, double x, double z, float[] dest) {
+    public static void colour(RenderDef.Tint tint, ResourceMap water, ResourceMap nutrients, double x, double z, float[] dest) {
         switch (tint) {
             case WATER -> lerp(TerrainMaps.WATER_LOW, TerrainMaps.WATER_HIGH, water.sample(x, z), dest);
             case NUTRIENTS -> lerp(TerrainMaps.NUTRIENTS_LOW, TerrainMaps.NUTRIENTS_HIGH, nutrients.sample(x, z), dest);
@@ -311,7 +310,7 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /** {@return the current tint} */
-    public TerrainTint tint() {
+    public RenderDef.Tint tint() {
         return tint;
     }
 
@@ -321,7 +320,7 @@ public final class TerrainRenderer implements AutoCloseable {
      *
      * @param tint the new tint; nothing happens when it is the current one
      */
-    public void setTint(TerrainTint tint) {
+    public void setTint(RenderDef.Tint tint) {
         if (tint == this.tint) {
             return;
         }
