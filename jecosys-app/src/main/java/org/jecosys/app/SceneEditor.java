@@ -310,12 +310,12 @@ final class SceneEditor {
     /**
      * Sets the sun's direction (saved in the scene's render light).
      *
-     * @param azimuthDeg   degrees, in [-360, 360]
-     * @param elevationDeg degrees, in [0, 90]
+     * @param azimuth   radians, in [-2 pi, 2 pi]
+     * @param elevation radians, in [0, pi / 2]
      */
-    void setSun(float azimuthDeg, float elevationDeg) {
-        if (azimuthDeg != settings.sunAzimuth() || elevationDeg != settings.sunElevation()) {
-            settings.sun(azimuthDeg, elevationDeg);
+    void setSun(double azimuth, double elevation) {
+        if (azimuth != settings.sunAzimuth() || elevation != settings.sunElevation()) {
+            settings.sun(azimuth, elevation);
             dirty = true;
         }
     }
@@ -362,11 +362,9 @@ final class SceneEditor {
         }
         RenderDef r = def.render();
         RenderDef.Light l = r.light();
-        // the panel edits the sun; an unmoved slider keeps the scene's exact angles
-        double az = (float) Math.toDegrees(l.sunAzimuth()) == settings.sunAzimuth() ? l.sunAzimuth()
-                : Math.toRadians(settings.sunAzimuth());
-        double el = (float) Math.toDegrees(l.sunElevation()) == settings.sunElevation() ? l.sunElevation()
-                : Math.toRadians(settings.sunElevation());
+        // the panel edits the sun (radians, as the scene's light holds it: an untouched sun saves exactly)
+        double az = settings.sunAzimuth();
+        double el = settings.sunElevation();
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
                 l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen(), l.shadows());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,

@@ -170,13 +170,13 @@ final class ViewerPanel {
             }
         }
         if (ImGui.collapsingHeader("Light")) {
-            edit[0] = s.sunAzimuth();
+            edit[0] = (float) Math.toDegrees(s.sunAzimuth());
             if (ImGui.sliderFloat("sun azimuth (deg)", edit, -180, 360, "%.0f")) {
-                editor.setSun(edit[0], s.sunElevation());
+                editor.setSun(Math.toRadians(edit[0]), s.sunElevation());
             }
-            edit[0] = s.sunElevation();
+            edit[0] = (float) Math.toDegrees(s.sunElevation());
             if (ImGui.sliderFloat("sun elevation (deg)", edit, 0, 90, "%.0f")) {
-                editor.setSun(s.sunAzimuth(), edit[0]);
+                editor.setSun(s.sunAzimuth(), Math.toRadians(edit[0]));
             }
             // a view setting: the scene file keeps its own <light sheen>
             if (ImGui.checkbox("wind sheen on bent grass", s.sheen() > 0)) {

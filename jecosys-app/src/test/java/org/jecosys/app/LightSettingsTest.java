@@ -26,8 +26,8 @@ class LightSettingsTest {
         RenderDef def = new RenderDef(640, 360, new Rgb(0.7f, 0.8f, 0.9f), 1, RenderDef.Tint.NONE, false, false, light,
                 new RenderDef.Patches(25, 0.7, 42), 4);
         RenderSettings s = HeadlessRender.settings(def);
-        assertEquals(-40, s.sunAzimuth(), 1e-4);
-        assertEquals(20, s.sunElevation(), 1e-4);
+        assertEquals(Math.toRadians(-40), s.sunAzimuth(), 1e-12);
+        assertEquals(Math.toRadians(20), s.sunElevation(), 1e-12);
         assertEquals(light.sunColour(), s.sunColour());
         assertEquals(1.25f, s.sunIntensity());
         assertEquals(light.skyZenith(), s.skyZenith());
@@ -50,7 +50,7 @@ class LightSettingsTest {
             assertEquals(def.render(), editor.snapshot().render(), "an untouched sun saves the file's light exactly");
             editor.setSun(settings.sunAzimuth(), settings.sunElevation());
             assertFalse(editor.dirty(), "the same sun is no change");
-            editor.setSun(-60, 25);
+            editor.setSun(Math.toRadians(-60), Math.toRadians(25));
             assertTrue(editor.dirty());
             RenderDef.Light saved = editor.snapshot().render().light();
             assertEquals(Math.toRadians(-60), saved.sunAzimuth(), 1e-9);

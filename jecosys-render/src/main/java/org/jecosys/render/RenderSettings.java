@@ -18,10 +18,10 @@ import org.jecosys.scene.SceneDef;
  * species {@code s}, and {@code world.plantSpecies(p)} the species of plant {@code p}.
  */
 public final class RenderSettings {
-    /** Default sun azimuth, degrees (behind and to the left of a camera looking along -Z). */
-    public static final float DEFAULT_SUN_AZIMUTH = 135;
-    /** Default sun elevation, degrees. */
-    public static final float DEFAULT_SUN_ELEVATION = 50;
+    /** Default sun azimuth, radians: 135 degrees (behind and to the left of a camera looking along -Z). */
+    public static final double DEFAULT_SUN_AZIMUTH = Math.toRadians(135);
+    /** Default sun elevation, radians: 50 degrees. */
+    public static final double DEFAULT_SUN_ELEVATION = Math.toRadians(50);
 
     private Rgb sky = new Rgb(0.62f, 0.76f, 0.92f);
     private Rgb skyZenith = new Rgb(0.30f, 0.50f, 0.85f);
@@ -29,8 +29,8 @@ public final class RenderSettings {
     private float sunIntensity = 0.8f;
     private Rgb ambient = new Rgb(0.42f, 0.46f, 0.52f);
     private float contactShadow = 0.5f;
-    private float sunAzimuth;
-    private float sunElevation;
+    private double sunAzimuth;
+    private double sunElevation;
     private float sunX;
     private float sunY;
     private float sunZ;
@@ -100,7 +100,7 @@ public final class RenderSettings {
         RenderDef.Patches p = def.patches();
         return new RenderSettings().sky(def.sky()).tint(tint)
                 .showField(def.showField()).showWind(def.showWind())
-                .sun((float) Math.toDegrees(l.sunAzimuth()), (float) Math.toDegrees(l.sunElevation()))
+                .sun(l.sunAzimuth(), l.sunElevation())
                 .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
                 .ambient(l.ambient()).contactShadow((float) l.contactShadow())
                 .fog((float) l.fogStart(), (float) l.fogEnd()).sheen((float) l.sheen()).shadows((float) l.shadows())
@@ -209,33 +209,34 @@ public final class RenderSettings {
 
     /**
      * Sets the sun's direction; the unit vector toward the sun is
-     * {@code (cos el cos az, sin el, cos el sin az)}, so azimuth 0 is +X, 90 is +Z, 180 is -X.
+     * {@code (cos el cos az, sin el, cos el sin az)}, so azimuth 0 is +X, pi/2 is +Z, pi is -X (the
+     * scene's {@code <light sunAzimuth sunElevation>}, which the file gives in degrees). No allocation.
      *
-     * @param azimuthDeg   compass angle of the sun, degrees, in [-360, 360]
-     * @param elevationDeg height above the horizon, degrees, in [0, 90]
+     * @param azimuth   compass angle of the sun, radians, in [-2 pi, 2 pi]
+     * @param elevation height above the horizon, radians, in [0, pi / 2]
      * @return this settings object
      * @throws IllegalArgumentException when an angle is out of range or not finite
      */
-    public RenderSettings sun(float azimuthDeg, float elevationDeg) {
-        Require.range("sunAzimuth", azimuthDeg, -360, 360);
-        Require.range("sunElevation", elevationDeg, 0, 90);
-        sunAzimuth = azimuthDeg;
-        sunElevation = elevationDeg;
-        double az = Math.toRadians(azimuthDeg);
-        double el = Math.toRadians(elevationDeg);
+    public RenderSettings sun(double azimuth, double elevation) {
+        Require.range("sunAzimuth", azimuth, -2 * Math.PI, 2 * Math.PI);
+        Require.range("sunElevation", elevation, 0, Math.PI / 2);
+        sunAzimuth = azimuth;
+        sunElevation = elevation;
+        double az = azimuth;
+        double el = elevation;
         sunX = (float) (Math.cos(el) * Math.cos(az));
         sunY = (float) Math.sin(el);
         sunZ = (float) (Math.cos(el) * Math.sin(az));
         return this;
     }
 
-    /** {@return the sun's azimuth, degrees, as last set} */
-    public float sunAzimuth() {
+    /** {@return the sun's azimuth, radians, as last set} */
+    public double sunAzimuth() {
         return sunAzimuth;
     }
 
-    /** {@return the sun's elevation above the horizon, degrees, as last set} */
-    public float sunElevation() {
+    /** {@return the sun's elevation above the horizon, radians, as last set} */
+    public double sunElevation() {
         return sunElevation;
     }
 

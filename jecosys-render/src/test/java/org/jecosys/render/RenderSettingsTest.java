@@ -21,8 +21,8 @@ class RenderSettingsTest {
         RenderSettings s = new RenderSettings();
         RenderDef.Light l = RenderDef.Light.DEFAULT;
         RenderDef.Patches p = RenderDef.Patches.DEFAULT;
-        assertEquals((float) Math.toDegrees(l.sunAzimuth()), s.sunAzimuth(), 1e-4);
-        assertEquals((float) Math.toDegrees(l.sunElevation()), s.sunElevation(), 1e-4);
+        assertEquals(l.sunAzimuth(), s.sunAzimuth(), 1e-12);
+        assertEquals(l.sunElevation(), s.sunElevation(), 1e-12);
         assertEquals(l.sunColour(), s.sunColour());
         assertEquals(l.sunIntensity(), s.sunIntensity(), 1e-6);
         assertEquals(l.skyZenith(), s.skyZenith());
@@ -44,9 +44,9 @@ class RenderSettingsTest {
         float[][] cases = {{0, 0, 1, 0, 0}, {90, 0, 0, 0, 1}, {180, 0, -1, 0, 0}, {-90, 0, 0, 0, -1},
             {0, 90, 0, 1, 0}, {30, 40, 0, 0, 0}};
         for (float[] c : cases) {
-            assertSame(s, s.sun(c[0], c[1]));
-            assertEquals(c[0], s.sunAzimuth());
-            assertEquals(c[1], s.sunElevation());
+            assertSame(s, s.sun(Math.toRadians(c[0]), Math.toRadians(c[1])));
+            assertEquals(Math.toRadians(c[0]), s.sunAzimuth());
+            assertEquals(Math.toRadians(c[1]), s.sunElevation());
             double az = Math.toRadians(c[0]);
             double el = Math.toRadians(c[1]);
             assertEquals(Math.cos(el) * Math.cos(az), s.sunX(), 1e-6);
@@ -58,11 +58,11 @@ class RenderSettingsTest {
 
     @Test
     void settersCheckTheirRanges() {
-        RenderSettings s = new RenderSettings().sun(10, 20).contactShadow(0.3f).patches(5, 0.5f, 9);
-        assertThrows(IllegalArgumentException.class, () -> s.sun(0, 91));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(0, -1));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(361, 10));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(Float.NaN, 10));
+        RenderSettings s = new RenderSettings().sun(Math.toRadians(10), Math.toRadians(20)).contactShadow(0.3f).patches(5, 0.5f, 9);
+        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(0), Math.toRadians(91)));
+        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(0), Math.toRadians(-1)));
+        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(361), Math.toRadians(10)));
+        assertThrows(IllegalArgumentException.class, () -> s.sun(Double.NaN, 0.1));
         assertThrows(IllegalArgumentException.class, () -> s.contactShadow(1.1f));
         assertThrows(IllegalArgumentException.class, () -> s.sunIntensity(5));
         assertThrows(IllegalArgumentException.class, () -> s.patches(0.1f, 0.5f, 1));
@@ -70,8 +70,8 @@ class RenderSettingsTest {
         assertThrows(IllegalArgumentException.class, () -> s.sunColour(null));
         assertThrows(IllegalArgumentException.class, () -> s.skyZenith(null));
         assertThrows(IllegalArgumentException.class, () -> s.ambient(null));
-        assertEquals(10, s.sunAzimuth(), "a refused value leaves the setting as it was");
-        assertEquals(20, s.sunElevation());
+        assertEquals(Math.toRadians(10), s.sunAzimuth(), "a refused value leaves the setting as it was");
+        assertEquals(Math.toRadians(20), s.sunElevation());
         assertEquals(0.3f, s.contactShadow());
         assertEquals(5, s.patchScale());
         assertEquals(0.5f, s.patchStrength());
