@@ -24,7 +24,6 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.plant.ComponentLooks;
 import org.jecosys.render.plant.PlantBatches;
 import org.jecosys.render.plant.PlantRenderer;
-import org.jecosys.render.plant.ResolvePath;
 
 /**
  * The per-frame component pass, which runs on the GPU ({@code plant_resolve.glsl}) on one of the two
