@@ -34,7 +34,7 @@ import org.junit.jupiter.api.Test;
  * internal packages: {@code render.gl}, {@code render.plant}, {@code render.ground},
  * {@code render.overlay} and any package with an {@code internal} segment), its supertypes, return,
  * parameter, field and exception types with their type arguments, names no type of an internal
- * package.
+ * package. And {@link Frame} is read-only to users: no public mutator.
  */
 class ApiSurfaceTest {
     /** The renderer's internal packages, and any {@code .internal} package of either module. */
@@ -69,6 +69,22 @@ class ApiSurfaceTest {
     @SuppressWarnings("unused")
     private static final class Probe {
         java.util.List<java.util.Map<String, org.jecosys.render.gl.GlTracker[]>> probe;
+    }
+
+    @Test
+    void frameAndTheDrawDecisionAreReadOnlyToUsers() {
+        List<String> mutators = new ArrayList<>();
+        for (Class<?> c : List.of(Frame.class, org.jecosys.sim.DrawDecision.class, org.jecosys.sim.ViewDecision.class)) {
+            for (Method m : c.getMethods()) {
+                if (m.getDeclaringClass() == c && m.getName().startsWith("set")) {
+                    mutators.add(c.getSimpleName() + "." + m.getName());
+                }
+            }
+        }
+        assertEquals(List.of(), mutators, "public mutators of the frame and the draw decision");
+        for (Field f : Frame.class.getFields()) {
+            assertTrue(Modifier.isFinal(f.getModifiers()), "Frame." + f.getName() + " is final");
+        }
     }
 
     private static boolean isInternal(Class<?> c) {
