@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.ByteBuffer;
@@ -100,7 +101,7 @@ final class Gallery {
         double aspect = width / (double) height;
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, RenderDef.DEFAULT_ANTIALIASING)) {
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, RenderDef.DEFAULT_ANTIALIASING)) {
             for (String name : SCENES) {
                 Scene loaded = SceneArgs.load(scenes.resolve(name), ImageSource.folder(scenes), err);
                 if (loaded == null) {

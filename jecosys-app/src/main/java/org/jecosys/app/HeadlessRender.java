@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.ByteBuffer;
@@ -105,7 +106,7 @@ final class HeadlessRender {
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
         try (GlContext gl = GlContext.headless(false)) {
             log.println("OpenGL: " + gl.describe());
-            try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height, def.render().antialiasing());
+            try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
                 renderer.setField(sim.forceField().debugView());
                 for (int i = 1; i <= frames; i++) {

@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.lwjgl.glfw.GLFW.glfwGetCursorPos;
 import static org.lwjgl.glfw.GLFW.glfwGetFramebufferSize;
 import static org.lwjgl.glfw.GLFW.glfwGetTime;
@@ -108,7 +109,7 @@ final class Viewer {
             // the scene goes through an offscreen multisampled framebuffer and its resolve filter,
             // whatever the window offers, so the viewer shows what headless rendering writes
             try (GlfwInput callbacks = new GlfwInput(window, input);
-                 GlFramebuffer target = new GlFramebuffer(gl.tracker(), width, height,
+                 GlFramebuffer target = new GlFramebuffer(GlContexts.tracker(gl), width, height,
                          def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings);
                  GizmoRenderer gizmos = new GizmoRenderer(gl, ground);

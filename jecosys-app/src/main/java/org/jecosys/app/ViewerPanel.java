@@ -52,7 +52,7 @@ final class ViewerPanel {
         this.editor = controls.editor();
         this.sim = sim;
         this.renderer = renderer;
-        this.renderPath = "render path: " + renderer.plants().path().description();
+        this.renderPath = "render path: " + renderer.resolvePath().description();
         this.flows = new FlowPanel(controls, sim.world().terrain().heightfield());
         this.saving = new SaveDialogs(controls);
         this.legends = new Legends(sim.world().terrain().heightfield());

@@ -1,5 +1,6 @@
 package org.jecosys.bench;
 
+import org.jecosys.render.gl.GlContexts;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -74,7 +75,7 @@ final class PaperScenesSection implements Section {
         String renderProblem = null;
         try (GlContext gl = GlContext.headless(false)) {
             report.glRenderer(gl.describe());
-            try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), WIDTH, HEIGHT)) {
+            try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), WIDTH, HEIGHT)) {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
                     RenderSettings settings = RenderSettings.standalone().sky(scene.render().sky());

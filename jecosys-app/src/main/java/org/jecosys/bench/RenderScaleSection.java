@@ -1,5 +1,7 @@
 package org.jecosys.bench;
 
+import org.jecosys.render.internal.SceneParts;
+import org.jecosys.render.gl.GlContexts;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.file.Path;
@@ -11,7 +13,7 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.GpuWork;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
-import org.jecosys.render.plant.ResolvePath;
+import org.jecosys.render.ResolvePath;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.ShadowPath;
 import org.jecosys.render.ground.SunShadowMap;
@@ -69,7 +71,7 @@ final class RenderScaleSection implements Section {
         Table stepOnlyTable = null;
         Table looksTable;
         try (GlContext gl = GlContext.headless(false);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), width, height)) {
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height)) {
             report.glRenderer(gl.describe());
             ResolvePath best = ResolvePath.best(gl);
             java.util.List<ResolvePath> paths = new java.util.ArrayList<>(java.util.List.of(best));
@@ -256,7 +258,7 @@ final class RenderScaleSection implements Section {
         ViewDecision second = new ViewDecision(sim.world());
         ViewCamera side = new ViewCamera();
         java.nio.IntBuffer scratch = java.nio.IntBuffer.allocate(
-                2 * Math.max(1, r.plants().batches().maxInstances()));
+                2 * Math.max(1, SceneParts.plants(r).batches().maxInstances()));
         fb.bind();
         for (int i = 0; i < warm + frames; i++) {
             ViewCamera cam = walk.at(i * DT);
@@ -278,21 +280,21 @@ final class RenderScaleSection implements Section {
                 frameMs[k] = (t2 - t0) / 1e6;
                 stepMs[k] = (t1 - t0) / 1e6 / fixedSteps;
                 cpuMs[k] = (c1 - c0) / 1e6;
-                uploaded[k] = r.plants().uploadedBytes() / 1024.0;
-                drawn[k] = r.plants().batches().components();
-                draws[k] = r.plants().drawCalls();
+                uploaded[k] = r.uploadedBytes() / 1024.0;
+                drawn[k] = r.drawnComponents();
+                draws[k] = r.drawCalls();
                 // the library's own per-frame Java work, apart from the driver: lists from the
                 // frame's decision and the instance records (done again here, timed alone)
                 long j0 = threads.getCurrentThreadCpuTime();
-                r.plants().batches().update(f);
-                r.plants().batches().writeInstances(scratch);
+                SceneParts.plants(r).batches().update(f);
+                SceneParts.plants(r).batches().writeInstances(scratch);
                 javaMs[k] = (threads.getCurrentThreadCpuTime() - j0) / 1e6;
                 // a second view (turned a quarter to the side): its own decision, then lists and records
                 side.set(cam).setOrientation(cam.yaw() + Math.PI / 2, cam.pitch());
                 long v0 = threads.getCurrentThreadCpuTime();
                 second.decide(f, side);
-                r.plants().batches().update(f, second.levels(), second.keeps());
-                r.plants().batches().writeInstances(scratch);
+                SceneParts.plants(r).batches().update(f, second.levels(), second.keeps());
+                SceneParts.plants(r).batches().writeInstances(scratch);
                 secondMs[k] = (threads.getCurrentThreadCpuTime() - v0) / 1e6;
                 vertices[k] = work.vertexInvocations();
                 fragments[k] = work.fragmentInvocations();
@@ -304,7 +306,7 @@ final class RenderScaleSection implements Section {
                 Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
                 Stats.median(javaMs), Stats.median(secondMs), Stats.median(uploaded), (long) Stats.median(draws),
                 (long) Stats.median(vertices), (long) Stats.median(fragments), (long) Stats.median(primitives),
-                Stats.median(fragments) / ((double) width * height), r.plants().path().description());
+                Stats.median(fragments) / ((double) width * height), r.resolvePath().description());
         Map<String, Object> series = new LinkedHashMap<>();
         series.put("frameMs", frameMs);
         series.put("stepMs", stepMs);
@@ -317,6 +319,6 @@ final class RenderScaleSection implements Section {
         series.put("vertexInvocations", vertices);
         series.put("fragmentInvocations", fragments);
         series.put("primitives", primitives);
-        raw.put(def.name() + " / " + r.plants().path().name(), series);
+        raw.put(def.name() + " / " + r.resolvePath().name(), series);
     }
 }

@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -83,7 +84,7 @@ class GizmoViewTest {
             }
             assertEquals(EnumSet.allOf(GizmoKind.class), seen, "every kind of gizmo is in the picture");
             try (GlContext gl = GlContext.headless(true);
-                 GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
+                 GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
                  SceneRenderer scene = new SceneRenderer(gl, sim.world(), RenderSettings.standalone());
                  GizmoRenderer gizmos = new GizmoRenderer(gl, sim.world().terrain().heightfield())) {
                 scene.setField(sim.forceField().debugView());
@@ -126,7 +127,7 @@ class GizmoViewTest {
                 Pixels.read(W, H, px);
                 assertTrue(gizmos.triangles() > 3 * 10, "arrows: " + gizmos.triangles() + " triangles");
                 assertTrue(checksum(px) != background, "the wind arrows change the picture");
-                gl.debug().check("the gizmo view test");
+                GlContexts.debug(gl).check("the gizmo view test");
             }
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) px);

@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -32,7 +33,7 @@ class ImGuiLayerTest {
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer other = MemoryUtil.memAlloc(4 * W * H);
         try (GlContext gl = GlContext.headless(true);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H);
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
              SceneRenderer renderer = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();
             renderer.render(TestFrames.rest(world, cam), cam, W, H);
@@ -73,7 +74,7 @@ class ImGuiLayerTest {
                 }
             }
             assertTrue(changed > 5000, "panel pixels: " + changed);
-            gl.debug().check("the ImGui test");
+            GlContexts.debug(gl).check("the ImGui test");
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) px);
             MemoryUtil.memFree((java.nio.Buffer) other);

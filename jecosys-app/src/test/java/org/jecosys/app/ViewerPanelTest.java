@@ -1,5 +1,6 @@
 package org.jecosys.app;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -44,7 +45,7 @@ class ViewerPanelTest {
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE, 1);
              GlContext gl = GlContext.headless(true);
-             GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H)) {
             ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                     .height(def.camera().x(), def.camera().z()), W / (double) H);
             FlyCamera fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());
@@ -99,7 +100,7 @@ class ViewerPanelTest {
                     }
                 }
                 assertTrue(dark > 20_000, "panel pixels: " + dark);
-                gl.debug().check("the viewer frame");
+                GlContexts.debug(gl).check("the viewer frame");
             }
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) px);

@@ -37,7 +37,7 @@ class BenchSmokeTest {
         assertTrue(md.contains("## Machine") && md.contains("- CPU: "));
         // render scale: the meadow on every resolve path the context runs, transform feedback always
         assertTrue(md.contains("### Render scale"), "render scale");
-        assertTrue(md.contains(org.jecosys.render.plant.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
+        assertTrue(md.contains(org.jecosys.render.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
         assertTrue(json.contains("\"renderScale\"") && json.contains("/ TRANSFORM_FEEDBACK\""), "render scale raw");
         // the plants' draw calls: some, and at most two per species and level (plants drawn whole, plants
         // in a transition band)

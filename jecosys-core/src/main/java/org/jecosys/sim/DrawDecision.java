@@ -41,6 +41,20 @@ public final class DrawDecision {
     /** The transition band a decision starts with, metres (the scene schema's default lodTransition). */
     public static final double DEFAULT_TRANSITION = 1.0;
 
+    static {
+        org.jecosys.sim.internal.DecisionWriter.grant(new org.jecosys.sim.internal.DecisionWriter.Access() {
+            @Override
+            public void setTransition(DrawDecision d, double metres) {
+                d.setTransition(metres);
+            }
+
+            @Override
+            public void setThinning(DrawDecision d, double start, double end, double minFraction) {
+                d.setThinning(start, end, minFraction);
+            }
+        });
+    }
+
     /**
      * The width, as a share of the plants, of the rank band over which a plant thinned away fades out
      * (see the class comment).
@@ -154,24 +168,27 @@ public final class DrawDecision {
 
     /**
      * Sets the transition band (the scene's {@code <render lodTransition>}); each species uses at
-     * most the smallest gap between its own distances. Any thread; takes effect at the next decision.
+     * most the smallest gap between its own distances ({@link Simulation#setLodTransition} queues it;
+     * tests reach it through {@code org.jecosys.sim.internal.DecisionWriter}). Any thread; takes effect
+     * at the next decision.
      *
      * @param metres band width, in [0, 10]
      */
-    public void setTransition(double metres) {
+    void setTransition(double metres) {
         transition = Require.range("lodTransition", metres, 0, 10);
     }
 
     /**
      * Sets the distance thinning (the scene's {@code <field thinStart thinEnd thinMinFraction>}; see the
-     * class comment). Any thread; takes effect at the next decision; allocates a small array.
+     * class comment; {@link Simulation#setThinning} queues it; tests reach it through
+     * {@code DecisionWriter}). Any thread; takes effect at the next decision; allocates a small array.
      *
      * @param start       where thinning starts, metres, in [0, 1e6]
      * @param end         where the kept share reaches {@code minFraction}, metres, in [start, 1e6]
      * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]; 1 for no thinning
      * @throws IllegalArgumentException when out of range
      */
-    public void setThinning(double start, double end, double minFraction) {
+    void setThinning(double start, double end, double minFraction) {
         checkThinning(start, end, minFraction);
         thinning = new double[] {start, end, minFraction};
     }

@@ -25,6 +25,30 @@ public final class Frame {
     /** Bytes per component of {@link #renderStates()}: the deviation D, X and Z, two floats. */
     public static final int RENDER_STATE_BYTES = 8;
 
+    static {
+        org.jecosys.sim.internal.FrameWriter.grant(new org.jecosys.sim.internal.FrameWriter.Access() {
+            @Override
+            public void set(Frame f, int c, float poseCoord, float azimuth) {
+                f.set(c, poseCoord, azimuth);
+            }
+
+            @Override
+            public void setDeviation(Frame f, int c, float dx, float dz) {
+                f.setDeviation(c, dx, dz);
+            }
+
+            @Override
+            public void setDraw(Frame f, int p, int level, int keep) {
+                f.setDraw(p, level, keep);
+            }
+
+            @Override
+            public void setThinning(Frame f, double start, double end, double minFraction) {
+                f.setThinning(start, end, minFraction);
+            }
+        });
+    }
+
     private final BendGeometry geometry;
     /** Per component, interleaved little-endian floats (deviation X, Z, metres), for the GPU. */
     final FloatBuffer renderStates;
@@ -187,15 +211,16 @@ public final class Frame {
     /**
      * Poses component c at pose coordinate {@code poseCoord} and bend azimuth {@code azimuth}: sets
      * the deviation that gives them ({@link BendGeometry#deviationFor}; read back, they agree to float
-     * rounding). For tools and tests that build frames without the animation engine (for example a
-     * renderer preview); the simulation writes its frames itself. Only on a frame the caller owns
-     * (never one read through {@link FrameExchange}); one thread. No allocation.
+     * rounding). The simulation writes its frames itself; tools and tests that build frames without
+     * the animation engine reach this through {@code org.jecosys.sim.internal.FrameWriter} (not API).
+     * Only on a frame the caller owns (never one read through {@link FrameExchange}); one thread. No
+     * allocation.
      *
      * @param c          component index
      * @param poseCoord  pose coordinate k + w, in [0, poses - 1] of the component's pose table
      * @param azimuth    world heading of the bending plane, radians
      */
-    public void set(int c, float poseCoord, float azimuth) {
+    void set(int c, float poseCoord, float azimuth) {
         geometry.deviationFor(c, poseCoord, azimuth, posed);
         setDeviation(c, posed[0], posed[1]);
     }
@@ -207,7 +232,7 @@ public final class Frame {
      * @param dx deviation X, metres
      * @param dz deviation Z, metres
      */
-    public void setDeviation(int c, float dx, float dz) {
+    void setDeviation(int c, float dx, float dz) {
         renderStates.put(2 * c, dx).put(2 * c + 1, dz);
     }
 
@@ -253,14 +278,15 @@ public final class Frame {
 
     /**
      * Records the distance thinning the frame's decision used (the simulation does it as it publishes
-     * the frame; {@link DrawDecision#decideAll} too): for tools and tests that build frames themselves.
+     * the frame; {@link DrawDecision#decideAll} too; tools and tests that build frames themselves use
+     * {@code FrameWriter}).
      * Only on a frame the caller owns. No allocation.
      *
      * @param start       where thinning begins, metres
      * @param end         where it reaches its least share, metres
      * @param minFraction the least share, in (0, 1] (1: none)
      */
-    public void setThinning(double start, double end, double minFraction) {
+    void setThinning(double start, double end, double minFraction) {
         thinStart = start;
         thinEnd = end;
         thinMinFraction = minFraction;
@@ -268,7 +294,7 @@ public final class Frame {
 
     /**
      * Sets plant p's drawing decision (see {@link #drawLevel}, {@link #drawKeep}): for tools and
-     * tests that build frames without the animation engine, like {@link #set}. Only on a frame the
+     * tests that build frames without the animation engine ({@code FrameWriter}), like {@link #set}. Only on a frame the
      * caller owns. No allocation.
      *
      * @param p     plant index
@@ -276,7 +302,7 @@ public final class Frame {
      * @param keep  packed dither windows, as {@link #drawKeep} returns them ({@code 255}: level
      *              {@code level} alone, every fragment kept)
      */
-    public void setDraw(int p, int level, int keep) {
+    void setDraw(int p, int level, int keep) {
         drawLevel[p] = (byte) level;
         drawKeep[p] = keep;
     }

@@ -1,5 +1,6 @@
 package org.jecosys.gdx;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -29,7 +30,7 @@ class PlantLayerTest {
     @Test
     void updateAndRenderAllocateNothingAfterWarmUpAndADisposedLayerRefusesThem() throws Exception {
         try (GlContext owner = GlContext.headless(true)) {
-            GlFramebuffer target = new GlFramebuffer(owner.tracker(), 320, 180);
+            GlFramebuffer target = new GlFramebuffer(GlContexts.tracker(owner), 320, 180);
             PlantLayer layer = PlantLayer.load(new Lwjgl3Files().classpath("org/jecosys/gdx/tiny/tiny.xml"));
             try {
                 Heightfield t = layer.simulation().world().terrain().heightfield();
@@ -66,7 +67,7 @@ class PlantLayerTest {
             PerspectiveCamera cam = new PerspectiveCamera();
             assertThrows(IllegalStateException.class, () -> layer.update(0.01f, cam));
             assertThrows(IllegalStateException.class, () -> layer.render(cam));
-            owner.debug().check("the plant layer test");
+            GlContexts.debug(owner).check("the plant layer test");
         }
     }
 }

@@ -235,13 +235,27 @@ public final class GlContext implements AutoCloseable {
         return window;
     }
 
-    /** {@return the live-object counter shared by every GL wrapper made in this context} */
-    public GlTracker tracker() {
+    static {
+        org.jecosys.render.gl.GlContexts.grant(new org.jecosys.render.gl.GlContexts.Access() {
+            @Override
+            public GlTracker tracker(GlContext gl) {
+                return gl.tracker;
+            }
+
+            @Override
+            public GlDebug debug(GlContext gl) {
+                return gl.debug;
+            }
+        });
+    }
+
+    /** The live-object counter shared by every GL wrapper made in this context (internal: {@code GlContexts}). */
+    GlTracker tracker() {
         return tracker;
     }
 
-    /** {@return the debug output, or null when made without debug} */
-    public GlDebug debug() {
+    /** The debug output, or null when made without debug (internal: {@code GlContexts}). */
+    GlDebug debug() {
         return debug;
     }
 

@@ -35,7 +35,7 @@ import org.jecosys.render.ground.CoverBlades;
 import org.jecosys.render.ground.TerrainRenderer;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.plant.PlantRenderer;
-import org.jecosys.render.plant.ResolvePath;
+import org.jecosys.render.ResolvePath;
 
 /**
  * Renders a whole frame of a {@link World}: sky (gradient and sun), plants, lit terrain and the
@@ -91,7 +91,7 @@ public final class SceneRenderer implements AutoCloseable {
 
     /**
      * As {@link #SceneRenderer(GlContext, World, RenderSettings)}, with the plants' per-component
-     * pass on the path named (see {@link PlantRenderer#PlantRenderer(GlContext, World, ResolvePath)}).
+     * pass on the path named ({@link ResolvePath}).
      * Render thread; allocates.
      *
      * @param gl       the render context, current on this thread
@@ -162,24 +162,73 @@ public final class SceneRenderer implements AutoCloseable {
         this.field = view;
     }
 
-    /** {@return the plant renderer (its batches hold the per-frame counters)} */
-    public PlantRenderer plants() {
+    static {
+        org.jecosys.render.internal.SceneParts.grant(new org.jecosys.render.internal.SceneParts.Access() {
+            @Override
+            public PlantRenderer plants(SceneRenderer r) {
+                return r.plants;
+            }
+
+            @Override
+            public TerrainRenderer terrain(SceneRenderer r) {
+                return r.terrain;
+            }
+
+            @Override
+            public CoverBlades cover(SceneRenderer r) {
+                return r.cover;
+            }
+
+            @Override
+            public FieldOverlay overlay(SceneRenderer r) {
+                return r.overlay;
+            }
+        });
+    }
+
+    /** The plant renderer (internal: {@code SceneParts}; its batches hold the per-frame counters). */
+    PlantRenderer plants() {
         return plants;
     }
 
-    /** {@return the terrain renderer} */
-    public TerrainRenderer terrain() {
+    /** The terrain renderer (internal: {@code SceneParts}). */
+    TerrainRenderer terrain() {
         return terrain;
     }
 
-    /** {@return the near ground-cover renderer (its counters: tiles and blades of the last frame)} */
-    public CoverBlades cover() {
+    /** The near ground-cover renderer (internal: {@code SceneParts}). */
+    CoverBlades cover() {
         return cover;
     }
 
-    /** {@return the overlay renderer} */
-    public FieldOverlay overlay() {
+    /** The overlay renderer (internal: {@code SceneParts}). */
+    FieldOverlay overlay() {
         return overlay;
+    }
+
+    /** {@return the path the plants' per-component pass takes on this renderer} */
+    public ResolvePath resolvePath() {
+        return plants.path();
+    }
+
+    /** {@return the plant components drawn by the last {@link #render}} */
+    public int drawnComponents() {
+        return plants.batches().components();
+    }
+
+    /** {@return the plant draw calls of the last {@link #render}} */
+    public int drawCalls() {
+        return plants.drawCalls();
+    }
+
+    /** {@return the bytes the last {@link #render} uploaded for the plants: instance records and component render states} */
+    public long uploadedBytes() {
+        return plants.uploadedBytes();
+    }
+
+    /** {@return the near ground-cover blades drawn by the last {@link #render}} */
+    public int coverBlades() {
+        return cover.blades();
     }
 
     /**

@@ -7,7 +7,6 @@ import java.nio.FloatBuffer;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.plant.PlantRenderer;
-import org.jecosys.render.plant.ResolvePath;
 import org.junit.jupiter.api.Tag;
 
 /**

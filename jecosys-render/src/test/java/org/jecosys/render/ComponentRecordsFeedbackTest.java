@@ -1,6 +1,5 @@
 package org.jecosys.render;
 
-import org.jecosys.render.plant.ResolvePath;
 import org.junit.jupiter.api.Tag;
 
 /** {@link ComponentRecordsTest} on the OpenGL 3.3 path: the records captured by transform feedback. */

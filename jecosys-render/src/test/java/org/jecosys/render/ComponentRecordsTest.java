@@ -1,5 +1,7 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.FrameWriter;
+import org.jecosys.sim.internal.DecisionWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -24,7 +26,6 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.plant.ComponentLooks;
 import org.jecosys.render.plant.PlantBatches;
 import org.jecosys.render.plant.PlantRenderer;
-import org.jecosys.render.plant.ResolvePath;
 
 /**
  * The per-frame component pass, which runs on the GPU ({@code plant_resolve.glsl}) on one of the two
@@ -61,7 +62,7 @@ abstract class ComponentRecordsTest {
         SplittableRandom rnd = new SplittableRandom(7);
         for (int c = 0; c < world.componentCount(); c++) {
             float coord = (float) rnd.nextDouble(-1, 17); // C1's tables have 16 poses
-            frame.set(c, coord, (float) rnd.nextDouble(-Math.PI, Math.PI));
+            FrameWriter.set(frame, c, coord, (float) rnd.nextDouble(-Math.PI, Math.PI));
         }
         cam = new ViewCamera();
         cam.setPosition(0, 6, 16);
@@ -380,7 +381,7 @@ abstract class ComponentRecordsTest {
         double transition = decision.transition();
         try {
             // a wide band: plants in it are listed at two levels, and go through the dithered draws
-            decision.setTransition(3.0);
+            DecisionWriter.setTransition(decision, 3.0);
             decision.decideAll(cam, frame);
             draw();
             long listed = 0;
@@ -398,7 +399,7 @@ abstract class ComponentRecordsTest {
             assertEquals(listed, renderer.instancesDrawn(), "every listed plant drawn once per list");
             assertEquals(calls, renderer.drawCalls(), "one draw for the whole plants, one for those in a band");
         } finally {
-            decision.setTransition(transition);
+            DecisionWriter.setTransition(decision, transition);
             decision.decideAll(cam, frame);
             draw();
             renderer.readRecords(rec);
@@ -411,13 +412,13 @@ abstract class ComponentRecordsTest {
         try {
             checkFarRecords(); // no thinning: no widening
             // thinning from 5 m, down to half the plants at 20 m: the kept far blades are widened by 1 / kept
-            decision.setThinning(5, 20, 0.5);
+            DecisionWriter.setThinning(decision, 5, 20, 0.5);
             decision.decideAll(cam, frame);
             draw();
             renderer.readRecords(rec);
             checkFarRecords();
         } finally {
-            decision.setThinning(thinning[0], thinning[1], thinning[2]);
+            DecisionWriter.setThinning(decision, thinning[0], thinning[1], thinning[2]);
             decision.decideAll(cam, frame);
             draw();
             renderer.readRecords(rec);

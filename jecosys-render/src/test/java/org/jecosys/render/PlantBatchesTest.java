@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.DecisionWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -38,7 +39,7 @@ class PlantBatchesTest {
     /** The batches of a frame decided for {@code cam} with a transition band of {@code band} metres. */
     private void update(PlantBatches b, double band, ViewCamera cam) {
         DrawDecision d = DrawDecision.of(world);
-        d.setTransition(band);
+        DecisionWriter.setTransition(d, band);
         b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
     }
 
@@ -170,7 +171,7 @@ class PlantBatchesTest {
         PlantBatches b = new PlantBatches(world);
         ViewCamera cam = looking(0, 1.7, 14, 0);
         DrawDecision d = DrawDecision.of(world);
-        d.setTransition(2.0);
+        DecisionWriter.setTransition(d, 2.0);
         Frame f = d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry()));
         b.update(f);
         int banded = 0;
@@ -213,7 +214,7 @@ class PlantBatchesTest {
         }
         assertTrue(banded > 4 && whole > 4, "both kinds present: " + whole + " whole, " + banded + " banded");
         // a second frame with no band: every plant whole again, the lists refilled from scratch
-        d.setTransition(0);
+        DecisionWriter.setTransition(d, 0);
         b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
         for (int li = 0; li < b.listCount(); li++) {
             assertEquals(b.count(li), b.whole(li), "no band, list " + li);

@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.DecisionWriter;
 import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
@@ -281,7 +282,7 @@ class RenderBenchmarkTest {
         r.drawTerrain = true;
         // the same view decided with no transition band (rest poses: drawing cost does not depend on them)
         org.jecosys.sim.DrawDecision noBandDecision = org.jecosys.sim.DrawDecision.of(r.world());
-        noBandDecision.setTransition(0);
+        DecisionWriter.setTransition(noBandDecision, 0);
         Frame noBandFrame = noBandDecision.decideAll(cam, TestFrames.rest(r.world()));
         double noBand = ms(r, noBandFrame, cam, W, H);
         return String.format("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %s | %.1f | %.1f |",

@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.FrameWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -99,7 +100,7 @@ class RenderLodLookTest {
     private static void allAt(World world, Frame frame, int level) {
         for (int p = 0; p < world.plantCount(); p++) {
             if (frame.drawLevel(p) >= 0 && world.plants().species().get(world.plantSpecies(p)).levels() == 3) {
-                frame.setDraw(p, level, 255);
+                FrameWriter.setDraw(frame, p, level, 255);
             }
         }
     }

@@ -19,7 +19,6 @@ import org.junit.jupiter.api.TestInstance;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
-import org.jecosys.render.plant.ResolvePath;
 import org.junit.jupiter.api.Tag;
 
 /**

@@ -18,7 +18,6 @@ import org.junit.jupiter.api.TestInstance;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.overlay.FieldOverlay;
-import org.jecosys.render.plant.ResolvePath;
 
 /**
  * Scene C1, headless: a renderer whose construction fails part way releases the GL objects it had

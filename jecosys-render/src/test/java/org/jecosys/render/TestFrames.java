@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.FrameWriter;
 import java.util.Map;
 import java.util.WeakHashMap;
 import org.jecosys.math.Camera;
@@ -19,7 +20,7 @@ public final class TestFrames {
         for (int p = 0; p < world.plantCount(); p++) {
             SpeciesModel m = world.plants().species().get(world.plantSpecies(p));
             for (int s = 0; s < world.componentsOf(p); s++) {
-                f.set(world.firstComponent(p) + s, 0f, (float) (world.plantRestAzimuth(p) + m.slotAzimuth(s)));
+                FrameWriter.set(f, world.firstComponent(p) + s, 0f, (float) (world.plantRestAzimuth(p) + m.slotAzimuth(s)));
             }
         }
         return f;
@@ -33,7 +34,7 @@ public final class TestFrames {
             double wave = 0.5 + 0.5 * Math.sin(1.7 * t - 0.6 * world.plantX(p) + 0.3 * world.plantZ(p));
             for (int s = 0; s < world.componentsOf(p); s++) {
                 int poses = m.slotPoseTable(s, world.plantVariant(p)).poses();
-                f.set(world.firstComponent(p) + s, (float) (wave * (poses - 1) * 0.8), 0f);
+                FrameWriter.set(f, world.firstComponent(p) + s, (float) (wave * (poses - 1) * 0.8), 0f);
             }
         }
         return f;

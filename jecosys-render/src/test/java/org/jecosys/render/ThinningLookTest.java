@@ -1,5 +1,7 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.FrameWriter;
+import org.jecosys.sim.internal.DecisionWriter;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.jecosys.math.ViewCamera;
@@ -33,10 +35,10 @@ class ThinningLookTest {
         try (Shots s = new Shots(world, bare, W, H)) {
             Frame full = decision.decideAll(cam, TestFrames.rest(world));
             double all = farCover(s, full, cam);
-            decision.setThinning(4, 16, 0.15);
+            DecisionWriter.setThinning(decision, 4, 16, 0.15);
             Frame thinned = decision.decideAll(cam, TestFrames.rest(world));
             double widened = farCover(s, thinned, cam);
-            thinned.setThinning(4, 16, 1); // the same plants, drawn at their own width
+            FrameWriter.setThinning(thinned, 4, 16, 1); // the same plants, drawn at their own width
             double plain = farCover(s, thinned, cam);
             System.out.printf("[look] meadow far coverage: all plants %.3f, thinned and widened %.3f, thinned %.3f%n",
                     all, widened, plain);

@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.gl.GlContexts;
 import static org.lwjgl.opengl.GL11C.GL_FLOAT;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
@@ -115,7 +116,7 @@ public final class CoverBlades implements AutoCloseable {
         gl.checkThread();
         this.world = world;
         this.field = world.terrain().heightfield();
-        GlTracker t = gl.tracker();
+        GlTracker t = GlContexts.tracker(gl);
         int res = field.resolution();
         bendWidth = (int) Math.ceil((res - 1) * field.cellX() / TILE) + 1;
         bendHeight = (int) Math.ceil((res - 1) * field.cellZ() / TILE) + 1;

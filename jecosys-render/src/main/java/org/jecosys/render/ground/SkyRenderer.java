@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
 import static org.lwjgl.opengl.GL11C.glDrawArrays;
@@ -43,10 +44,10 @@ public final class SkyRenderer implements AutoCloseable {
      */
     public SkyRenderer(GlContext gl) {
         gl.checkThread();
-        GlProgram p = new GlProgram(gl.tracker(), "sky.vert", "sky.frag");
+        GlProgram p = new GlProgram(GlContexts.tracker(gl), "sky.vert", "sky.frag");
         GlVertexArray v;
         try {
-            v = new GlVertexArray(gl.tracker());
+            v = new GlVertexArray(GlContexts.tracker(gl));
         } catch (RuntimeException e) {
             p.close();
             throw e;

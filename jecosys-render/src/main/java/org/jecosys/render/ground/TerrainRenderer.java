@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_FLOAT;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
@@ -122,7 +123,7 @@ public final class TerrainRenderer implements AutoCloseable {
         res = h.resolution();
         heights = h.copyHeights(new float[res * res]);
         normals = h.copyNormals(new float[3 * res * res]);
-        GlTracker t = gl.tracker();
+        GlTracker t = GlContexts.tracker(gl);
         GlProgram prog = null;
         GlVertexArray va = null;
         GlBuffer vb = null;

@@ -1,5 +1,6 @@
 package org.jecosys.render.overlay;
 
+import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_FLOAT;
@@ -63,7 +64,7 @@ public final class FieldOverlay implements AutoCloseable {
      * @param terrain gives the map's extent (metres) and the marker size
      */
     public FieldOverlay(GlContext gl, Heightfield terrain) {
-        this.tracker = gl.tracker();
+        this.tracker = GlContexts.tracker(gl);
         this.terrain = terrain;
         program = new GlProgram(tracker, "overlay.vert", "overlay.frag");
         uRect = program.uniform("uRect");

@@ -1,5 +1,6 @@
 package org.jecosys.render.overlay;
 
+import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
@@ -85,7 +86,7 @@ public final class GizmoRenderer implements AutoCloseable {
     public GizmoRenderer(GlContext gl, Heightfield ground) {
         gl.checkThread();
         Require.nonNull("ground", ground);
-        this.tracker = gl.tracker();
+        this.tracker = GlContexts.tracker(gl);
         GizmoMesh m = null;
         GlProgram p = null;
         GlVertexArray va = null;

@@ -1,5 +1,6 @@
 package org.jecosys.render.plant;
 
+import org.jecosys.render.ResolvePath;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_POINTS;
 import static org.lwjgl.opengl.GL11C.glDisable;

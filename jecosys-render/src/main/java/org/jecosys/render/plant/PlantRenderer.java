@@ -1,5 +1,7 @@
 package org.jecosys.render.plant;
 
+import org.jecosys.render.gl.GlContexts;
+import org.jecosys.render.ResolvePath;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_ONE;
@@ -139,7 +141,7 @@ public final class PlantRenderer implements AutoCloseable {
     public PlantRenderer(GlContext gl, World world, ResolvePath path) {
         gl.checkThread();
         this.world = world;
-        this.tracker = gl.tracker();
+        this.tracker = GlContexts.tracker(gl);
         this.batches = new PlantBatches(world);
         this.view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
@@ -174,12 +176,12 @@ public final class PlantRenderer implements AutoCloseable {
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
             for (int k = 0; k < programs.length; k++) {
-                programs[k] = own(PlantPasses.compile(gl.tracker(), k));
+                programs[k] = own(PlantPasses.compile(GlContexts.tracker(gl), k));
             }
-            poseBuffer = own(PlantMeshes.uploadPoses(gl.tracker(), models, texels));
-            poseTexture = own(new GlBufferTexture(gl.tracker(), poseBuffer, GL_RGBA32F));
+            poseBuffer = own(PlantMeshes.uploadPoses(GlContexts.tracker(gl), models, texels));
+            poseTexture = own(new GlBufferTexture(GlContexts.tracker(gl), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
-            resolver = own(new ComponentResolver(gl.tracker(), world, batches, poseTexture, poseTexel, components,
+            resolver = own(new ComponentResolver(GlContexts.tracker(gl), world, batches, poseTexture, poseTexel, components,
                     maxComponents, PlantMeshes.slotLooks(models), resolvePath));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
@@ -189,7 +191,7 @@ public final class PlantRenderer implements AutoCloseable {
                 for (int l = 0; l < m.levels(); l++) {
                     int li = batches.list(s, l);
                     indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = PlantMeshes.uploadMesh(gl.tracker(), m, m.mesh(l), owned);
+                    vaos[li] = PlantMeshes.uploadMesh(GlContexts.tracker(gl), m, m.mesh(l), owned);
                 }
             }
         } catch (RuntimeException | Error e) {

@@ -1,10 +1,9 @@
-package org.jecosys.render.plant;
+package org.jecosys.render;
 
 import org.lwjgl.opengl.GLCapabilities;
-import org.jecosys.render.GlContext;
 
 /**
- * How {@link PlantRenderer} runs its per-component pass, the step between the animation workers'
+ * How the plants of a {@link SceneRenderer} run their per-component pass, the step between the animation workers'
  * 8 bytes per component and the instanced draws (paper §4.1-4.2: each drawn component's base, bend
  * azimuth, pose pair and weight, and colour). Both paths run the same shader code
  * ({@code plant_resolve.glsl}) and give the same records; they differ in how the GPU is asked.
