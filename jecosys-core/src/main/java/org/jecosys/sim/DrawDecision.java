@@ -34,7 +34,7 @@ import org.joml.Matrix4f;
  * renderer may widen far blades by {@code 1 / sqrt(k(d))} to keep the covered area.
  *
  * <p>In a simulation the animation workers make this decision for their own chunks of plants as they
- * animate them; {@link #decideAll} makes it for a whole frame on one thread, for tools and tests that
+ * animate them; {@code decideAll} makes it for a whole frame on one thread, for tools and tests that
  * build frames without the animation engine. Distances in metres.
  */
 public final class DrawDecision {
@@ -51,6 +51,11 @@ public final class DrawDecision {
             @Override
             public void setThinning(DrawDecision d, double start, double end, double minFraction) {
                 d.setThinning(start, end, minFraction);
+            }
+
+            @Override
+            public Frame decideAll(DrawDecision d, Camera camera, Frame frame) {
+                return d.decideAll(camera, frame);
             }
         });
     }
@@ -75,7 +80,7 @@ public final class DrawDecision {
     private final float[] radius;
     /** The bands of the step's decision: filled by {@link #prepare} on the stepping thread, read by the workers. */
     private final LevelBands stepBands;
-    /** The bands of {@link #decideAll}, its caller's own. */
+    /** The bands of {@code decideAll}, its caller's own. */
     private final LevelBands allBands;
     private volatile double transition = DEFAULT_TRANSITION;
     /** start, end, min fraction: one array, swapped whole, so a decision never sees a mix. */
@@ -411,7 +416,7 @@ public final class DrawDecision {
      * @param frame  a frame of this decision's world
      * @return {@code frame}
      */
-    public Frame decideAll(Camera camera, Frame frame) {
+    Frame decideAll(Camera camera, Frame frame) {
         Require.nonNull("camera", camera);
         if (frame.plantCount() != world.plantCount()) {
             throw new IllegalArgumentException("frame has " + frame.plantCount() + " plants, the world "

@@ -278,7 +278,7 @@ public final class Frame {
 
     /**
      * Records the distance thinning the frame's decision used (the simulation does it as it publishes
-     * the frame; {@link DrawDecision#decideAll} too; tools and tests that build frames themselves use
+     * the frame; {@code DrawDecision.decideAll} too; tools and tests that build frames themselves use
      * {@code FrameWriter}).
      * Only on a frame the caller owns. No allocation.
      *

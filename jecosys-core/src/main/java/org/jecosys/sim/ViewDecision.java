@@ -93,7 +93,7 @@ public final class ViewDecision {
      * {@link #keeps()}. No allocation.
      *
      * @param frame  a frame of this world, published by a simulation (or decided by
-     *               {@link DrawDecision#decideAll})
+     *               {@code DrawDecision.decideAll})
      * @param camera the view
      * @throws IllegalArgumentException when the frame is of another world's size
      */

@@ -76,7 +76,7 @@ class ApiSurfaceTest {
         List<String> mutators = new ArrayList<>();
         for (Class<?> c : List.of(Frame.class, org.jecosys.sim.DrawDecision.class, org.jecosys.sim.ViewDecision.class)) {
             for (Method m : c.getMethods()) {
-                if (m.getDeclaringClass() == c && m.getName().startsWith("set")) {
+                if (m.getDeclaringClass() == c && (m.getName().startsWith("set") || m.getName().equals("decideAll"))) {
                     mutators.add(c.getSimpleName() + "." + m.getName());
                 }
             }

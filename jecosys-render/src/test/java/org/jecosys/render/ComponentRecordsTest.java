@@ -75,7 +75,7 @@ abstract class ComponentRecordsTest {
         renderer = new PlantRenderer(gl, world, path());
         assertEquals(path(), renderer.path());
         decision = DrawDecision.of(world);
-        decision.decideAll(cam, frame);
+        DecisionWriter.decideAll(decision, cam, frame);
         draw();
         batches = renderer.batches();
         rec = org.lwjgl.system.MemoryUtil.memAllocFloat(F * batches.components());
@@ -382,7 +382,7 @@ abstract class ComponentRecordsTest {
         try {
             // a wide band: plants in it are listed at two levels, and go through the dithered draws
             DecisionWriter.setTransition(decision, 3.0);
-            decision.decideAll(cam, frame);
+            DecisionWriter.decideAll(decision, cam, frame);
             draw();
             long listed = 0;
             int calls = 0;
@@ -400,7 +400,7 @@ abstract class ComponentRecordsTest {
             assertEquals(calls, renderer.drawCalls(), "one draw for the whole plants, one for those in a band");
         } finally {
             DecisionWriter.setTransition(decision, transition);
-            decision.decideAll(cam, frame);
+            DecisionWriter.decideAll(decision, cam, frame);
             draw();
             renderer.readRecords(rec);
         }
@@ -413,13 +413,13 @@ abstract class ComponentRecordsTest {
             checkFarRecords(); // no thinning: no widening
             // thinning from 5 m, down to half the plants at 20 m: the kept far blades are widened by 1 / kept
             DecisionWriter.setThinning(decision, 5, 20, 0.5);
-            decision.decideAll(cam, frame);
+            DecisionWriter.decideAll(decision, cam, frame);
             draw();
             renderer.readRecords(rec);
             checkFarRecords();
         } finally {
             DecisionWriter.setThinning(decision, thinning[0], thinning[1], thinning[2]);
-            decision.decideAll(cam, frame);
+            DecisionWriter.decideAll(decision, cam, frame);
             draw();
             renderer.readRecords(rec);
         }

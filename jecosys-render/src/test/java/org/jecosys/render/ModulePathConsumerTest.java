@@ -66,7 +66,7 @@ class ModulePathConsumerTest {
 
     @Test
     void aNamedModuleRequiringTheRendererStepsASimulation(@TempDir Path dir) throws Exception {
-        List<String> modulePath = modulePath();
+        List<String> modulePath = modulePath(dir);
         String mp = String.join(File.pathSeparator, modulePath);
         Path src = dir.resolve("src");
         Files.createDirectories(src.resolve("consumer"));
@@ -107,20 +107,21 @@ class ModulePathConsumerTest {
                 StandardCharsets.UTF_8);
         java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
         int rc = ToolProvider.getSystemJavaCompiler().run(null, err, err, "--release", "17", "--module-path",
-                String.join(File.pathSeparator, modulePath()), "-d", dir.resolve("out").toString(),
+                String.join(File.pathSeparator, modulePath(dir)), "-d", dir.resolve("out").toString(),
                 src.resolve("module-info.java").toString(), src.resolve("consumer/Peek.java").toString());
         assertTrue(rc != 0 && err.toString().contains("org.jecosys.sim.internal"),
                 "an unexported package does not compile: " + err);
     }
 
     /**
-     * jecosys-core and jecosys-render (their classes as built) and, from the test's class path, the
-     * jars they need: JOML, Jackson with its XML parser, LWJGL's Java jars.
+     * jecosys-core and jecosys-render (their jars, or their classes as built, put in a multi-release
+     * jar as the build does: the descriptor is in META-INF/versions/17) and, from the test's class
+     * path, the jars they need: JOML, Jackson with its XML parser, LWJGL's Java jars.
      */
-    private static List<String> modulePath() throws Exception {
+    private static List<String> modulePath(Path dir) throws Exception {
         List<String> out = new ArrayList<>();
-        out.add(Path.of(SceneRenderer.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
-        out.add(Path.of(Frame.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
+        out.add(jar(Path.of(SceneRenderer.class.getProtectionDomain().getCodeSource().getLocation().toURI()), dir));
+        out.add(jar(Path.of(Frame.class.getProtectionDomain().getCodeSource().getLocation().toURI()), dir));
         for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
             String name = Path.of(e).getFileName().toString();
             boolean lwjgl = name.startsWith("lwjgl") && !name.contains("natives");
@@ -132,5 +133,31 @@ class ModulePathConsumerTest {
         assertTrue(out.stream().anyMatch(s -> s.contains("joml")) && out.stream().anyMatch(s -> s.contains("lwjgl-opengl")),
                 "the dependencies are found on the class path: " + out);
         return out;
+    }
+
+    /** {@code classes} itself when a jar, else a multi-release jar of the directory in {@code dir}. */
+    private static String jar(Path classes, Path dir) throws Exception {
+        if (!Files.isDirectory(classes)) {
+            return classes.toString();
+        }
+        assertTrue(Files.isRegularFile(classes.resolve("META-INF/versions/17/module-info.class")),
+                "the module descriptor is built: " + classes);
+        Path jar = Files.createTempFile(dir, "module", ".jar");
+        java.util.jar.Manifest manifest = new java.util.jar.Manifest();
+        manifest.getMainAttributes().put(java.util.jar.Attributes.Name.MANIFEST_VERSION, "1.0");
+        manifest.getMainAttributes().put(java.util.jar.Attributes.Name.MULTI_RELEASE, "true");
+        try (java.util.jar.JarOutputStream out = new java.util.jar.JarOutputStream(Files.newOutputStream(jar), manifest);
+                java.util.stream.Stream<Path> files = Files.walk(classes)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                String name = classes.relativize(f).toString().replace('\\', '/');
+                if (name.equals("META-INF/MANIFEST.MF")) {
+                    continue;
+                }
+                out.putNextEntry(new java.util.jar.JarEntry(name));
+                Files.copy(f, out);
+                out.closeEntry();
+            }
+        }
+        return jar.toString();
     }
 }

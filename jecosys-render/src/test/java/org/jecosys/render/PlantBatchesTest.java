@@ -40,7 +40,7 @@ class PlantBatchesTest {
     private void update(PlantBatches b, double band, ViewCamera cam) {
         DrawDecision d = DrawDecision.of(world);
         DecisionWriter.setTransition(d, band);
-        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
+        b.update(DecisionWriter.decideAll(d, cam, new Frame(world.plantCount(), world.bendGeometry())));
     }
 
     private static int levelsHolding(PlantBatches b, int s, int plant, boolean[] at) {
@@ -172,7 +172,7 @@ class PlantBatchesTest {
         ViewCamera cam = looking(0, 1.7, 14, 0);
         DrawDecision d = DrawDecision.of(world);
         DecisionWriter.setTransition(d, 2.0);
-        Frame f = d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry()));
+        Frame f = DecisionWriter.decideAll(d, cam, new Frame(world.plantCount(), world.bendGeometry()));
         b.update(f);
         int banded = 0;
         int whole = 0;
@@ -215,7 +215,7 @@ class PlantBatchesTest {
         assertTrue(banded > 4 && whole > 4, "both kinds present: " + whole + " whole, " + banded + " banded");
         // a second frame with no band: every plant whole again, the lists refilled from scratch
         DecisionWriter.setTransition(d, 0);
-        b.update(d.decideAll(cam, new Frame(world.plantCount(), world.bendGeometry())));
+        b.update(DecisionWriter.decideAll(d, cam, new Frame(world.plantCount(), world.bendGeometry())));
         for (int li = 0; li < b.listCount(); li++) {
             assertEquals(b.count(li), b.whole(li), "no band, list " + li);
         }

@@ -283,7 +283,7 @@ class RenderBenchmarkTest {
         // the same view decided with no transition band (rest poses: drawing cost does not depend on them)
         org.jecosys.sim.DrawDecision noBandDecision = org.jecosys.sim.DrawDecision.of(r.world());
         DecisionWriter.setTransition(noBandDecision, 0);
-        Frame noBandFrame = noBandDecision.decideAll(cam, TestFrames.rest(r.world()));
+        Frame noBandFrame = DecisionWriter.decideAll(noBandDecision, cam, TestFrames.rest(r.world()));
         double noBand = ms(r, noBandFrame, cam, W, H);
         return String.format("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %s | %.1f | %.1f |",
                 name, full, clear, terrain, plants, upload, byLevel, tiny, noBand);

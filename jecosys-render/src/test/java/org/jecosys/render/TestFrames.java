@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.sim.internal.DecisionWriter;
 import org.jecosys.sim.internal.FrameWriter;
 import java.util.Map;
 import java.util.WeakHashMap;
@@ -54,6 +55,6 @@ public final class TestFrames {
 
     /** Makes the frame's visibility and level decision for a camera, with the species' own bands. */
     public static synchronized Frame decide(World world, Frame frame, Camera camera) {
-        return DECISIONS.computeIfAbsent(world, DrawDecision::of).decideAll(camera, frame);
+        return DecisionWriter.decideAll(DECISIONS.computeIfAbsent(world, DrawDecision::of), camera, frame);
     }
 }

@@ -33,10 +33,10 @@ class ThinningLookTest {
         // the plants alone over bare ground: the ground cover would hide what the widening adds
         RenderSettings bare = RenderScenes.settings(def).groundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
         try (Shots s = new Shots(world, bare, W, H)) {
-            Frame full = decision.decideAll(cam, TestFrames.rest(world));
+            Frame full = DecisionWriter.decideAll(decision, cam, TestFrames.rest(world));
             double all = farCover(s, full, cam);
             DecisionWriter.setThinning(decision, 4, 16, 0.15);
-            Frame thinned = decision.decideAll(cam, TestFrames.rest(world));
+            Frame thinned = DecisionWriter.decideAll(decision, cam, TestFrames.rest(world));
             double widened = farCover(s, thinned, cam);
             FrameWriter.setThinning(thinned, 4, 16, 1); // the same plants, drawn at their own width
             double plain = farCover(s, thinned, cam);

@@ -1,10 +1,13 @@
 package org.jecosys.sim.internal;
 
+import org.jecosys.math.Camera;
 import org.jecosys.sim.DrawDecision;
+import org.jecosys.sim.Frame;
 
 /**
  * Internal (not API; not exported by the module): changes a {@link DrawDecision} the caller made
- * itself ({@link DrawDecision#of}), for tests and tools. A game changes the simulation's decision
+ * itself ({@link DrawDecision#of}) and writes its decision into a frame the caller owns, for tests
+ * and tools. A game changes the simulation's decision
  * through the simulation's queued commands ({@code Simulation.setLodTransition},
  * {@code Simulation.setThinning}). {@code DrawDecision} grants the access once, when its class is
  * initialised. Any thread; takes effect at the next decision.
@@ -25,6 +28,14 @@ public final class DecisionWriter {
          * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]
          */
         void setThinning(DrawDecision d, double start, double end, double minFraction);
+
+        /**
+         * @param d      the decision
+         * @param camera the viewer
+         * @param frame  a frame of the decision's world, owned by the caller
+         * @return {@code frame}
+         */
+        Frame decideAll(DrawDecision d, Camera camera, Frame frame);
     }
 
     private static volatile Access access;
@@ -67,6 +78,20 @@ public final class DecisionWriter {
      */
     public static void setThinning(DrawDecision d, double start, double end, double minFraction) {
         access(d).setThinning(d, start, end, minFraction);
+    }
+
+    /**
+     * Decides every plant of {@code frame} for {@code camera}, all taken as visible to the field, and
+     * writes the decision into the frame: for frames built without the animation engine (a renderer
+     * preview, tests). The caller's thread; one call at a time per decision; no allocation.
+     *
+     * @param d      the decision, made by the caller
+     * @param camera the viewer
+     * @param frame  a frame of the decision's world, owned by the caller
+     * @return {@code frame}
+     */
+    public static Frame decideAll(DrawDecision d, Camera camera, Frame frame) {
+        return access(d).decideAll(d, camera, frame);
     }
 
     private static Access access(DrawDecision d) {
