@@ -11,6 +11,7 @@ import org.jecosys.terrain.Heightfield;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Tag;
 
 /**
  * Issue 13, "Done when": grass looking toward the sun is at least as bright as looking away (back-lit
@@ -29,7 +30,10 @@ import org.junit.jupiter.api.Test;
  * <p>The sun direction is read from the renderer: {@code RenderSettings.sunX()/sunY()/sunZ()} when they
  * exist, else SceneRenderer's constants LX, LY, LZ (today's fixed sun), by reflection so this test
  * keeps working when the settings arrive.
+ * Tagged {@code slow} (many frames of the whole meadow on llvmpipe): it runs in
+ * {@code mvn -B verify -Pnightly}, not in the default run.
  */
+@Tag("slow")
 class LightingLooksTest {
     private static final int W = 960;
     private static final int H = 540;

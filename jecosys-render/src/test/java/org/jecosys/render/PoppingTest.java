@@ -9,13 +9,17 @@ import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.CameraWalk;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Tag;
 
 /**
  * Issue 13, "Done when": no popping: on the meadow's camera walk (its scene path, 30 frames per second
  * for one second, wind off: plants at rest, 960x540), the largest frame-to-frame change (mean absolute
  * difference of the whole picture) is at most 1.15x the median one; and a still scene (wind off,
  * camera still) does not change at all between frames.
+ * Tagged {@code slow} (many frames of the whole meadow on llvmpipe): it runs in
+ * {@code mvn -B verify -Pnightly}, not in the default run.
  */
+@Tag("slow")
 class PoppingTest {
     private static final int W = 960;
     private static final int H = 540;

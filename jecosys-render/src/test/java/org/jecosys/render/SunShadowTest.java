@@ -14,7 +14,6 @@ import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.Tag;
 
 /**
  * Issue 26, "Done when" (sun shadows, {@code <light shadows>}), on both paths: the splat of each plant's
@@ -39,7 +38,6 @@ import org.junit.jupiter.api.Tag;
  * other's shadow is its blades', with light between them), at least 5% of its pixels by more than
  * 4/255; on the ground path its pixels do not change (under 0.5/255 and 1%).
  */
-@Tag("lwjgl-compat")
 class SunShadowTest {
     private static final int W = 480;
     private static final int H = 480;
