@@ -3,35 +3,17 @@ package org.jecosys.anim;
 import org.jecosys.math.Require;
 
 /**
- * The constants that turn a component's deviation D into its outputs, and that mapping ("Bend"
- * below): per component its rest lean {@code L = l (cos h, sin h)} (metres, world X and Z), the
- * lean's size l, its length, its pose scale {@code (K - 1) / maxBend} and its last pose coordinate
- * {@code K - 1}. A published {@code Frame} holds only D per component (the GPU's render
- * state) and computes pose coordinate and azimuth through these on demand, with the arithmetic of
- * {@link AnimationState#poseCoordinate} and {@link AnimationState#azimuth}, bit for bit; a renderer
- * uploads them once and does the same per drawn component on the GPU.
+ * The constants that turn a component's deviation D into its outputs, and that mapping: per
+ * component its rest lean {@code L = l (cos h, sin h)} (metres, world X and Z), the lean's size l, its
+ * length, its pose scale {@code (K - 1) / maxBend} and its last pose coordinate {@code K - 1}. The
+ * azimuth is the direction of {@code L + D}; the extra tip offset over the length is the sine of the
+ * extra bend, mapped to a pose coordinate (paper §4.1-4.2; the derivation and the arc tangent
+ * polynomial are in docs/model.md, "From deviation to pose").
  *
- * <h2>Bend</h2>
- * A component's rest shape (pose 0) leans toward its rest heading h (plant rest azimuth + slot
- * azimuth) by its rest lean {@code l} (the horizontal tip offset of pose 0): the lean vector is
- * {@code L = l (cos h, sin h)} in (X, Z), the heading convention of {@code Frame}: the pose table's
- * local +X goes to world {@code (cos a, 0, sin a)}, i.e. angles turn from +X toward +Z. The deviation
- * moves the tip's horizontal position to {@code T = L + D}:
- * <ul>
- * <li>azimuth = direction of T ({@code atan2(Tz, Tx)}): at D = 0 it is the rest heading, so a
- * component at rest keeps its heading and never flips at zero wind;</li>
- * <li>the extra tip offset is {@code e = max(0, |T| - l)} metres, computed as
- * {@code (2 L.D + |D|^2) / (|T| + l)} (exactly 0 at D = 0); the component keeps its length, so the
- * extra bend is the angle whose sine is {@code e / length}, mapped to the pose coordinate as
- * {@code PoseMapping.poseCoordinate} does: {@code min(K - 1, asin(e / length) (K - 1) / maxBend)}.
- * The spring keeps |D| below {@code length sin(maxBend)} ({@link SpringKinds#bendLimit}), so the last
- * pose is approached, not clamped. A wind against the lean first turns the component (azimuth) and
- * then bends it the other way: its tip follows D to first order.</li>
- * </ul>
- * Arc tangents use a polynomial with error below 5e-7 rad, in the branch-free forms of
- * {@code Trig.poseAngle} and {@code Trig.azimuth} (the extra bend is taken as
- * {@code atan2(num, sqrt(d^2 - num^2))} with {@code num = max(0, 2 L.D + |D|^2)} and
- * {@code d = (|T| + l) length}, one division).
+ * <p>A published {@code Frame} holds only D per component and computes pose coordinate and azimuth
+ * through these on demand, with the arithmetic of {@link AnimationState#poseCoordinate} and
+ * {@link AnimationState#azimuth}, bit for bit; a renderer uploads them once and does the same per
+ * drawn component on the GPU.
  *
  * <p>Immutable after construction (which allocates); any thread may read it at once; the accessors
  * allocate nothing.

@@ -12,81 +12,12 @@ import org.joml.Vector3f;
 
 /**
  * The constants of every component <em>kind</em> (species x component type x shape variant) and the
- * cached step coefficients of the dynamic-constraint spring (paper §4.2.1-4.2.2, eq. 5, resolved as
- * "The model" below states; see also docs/ARCHITECTURE.md, "The model").
- *
- * <h2>The model</h2>
- * Each component's deviation D (metres, 2D in the ground plane, the centre of mass's offset from its
- * rest position) obeys Barzel-Barr's constraint dynamics (eq. 1 with no torque) toward the elastic
- * equilibrium of eq. 4:
- * <pre>
- *   D'' + (2/tau) D' + (1/tau^2) (D - F/PC) = 0        i.e.  m D'' = F_c,
- *   F_c = -(2m/tau) v - (m/tau^2) (D - F/PC)            (eq. 3 with the constraint point moved to F/PC)
- * </pre>
- * a critically damped spring of natural frequency {@code omega = 1/tau} whose rest point is the
- * deviation {@code F/PC} at which the elastic force {@code PC D} of eq. 4 balances the external force
- * F. Hence:
- * <ul>
- * <li>{@code PC} (N/m, the component's stiffness) sets the equilibrium: a constant force F settles
- * at exactly {@code F/PC}, whatever the step;</li>
- * <li>{@code tau} (s, the component's response time, a species property, not the frame interval)
- * sets the speed: after release the deviation decays as {@code (1 + t/tau) e^(-t/tau)}, without
- * overshoot, within 2% of its start after 5.8 tau;</li>
- * <li>the mass m scales the constraint force {@code F_c = m D''} but cancels from the motion (as in
- * Barzel-Barr, whose constraint dynamics are mass-normalised); it shapes the rest pose through
- * gravity (§4.1) and is kept here for reports.</li>
- * </ul>
- * The force is the drag law of the field ({@link DragLaw}): {@code F = 0.5 rho dragArea |u| u}, so
- * the linear equilibrium deviation is {@code gain |u| u} with {@code gain = 0.5 rho dragArea / PC}.
- *
- * <h2>Bounded bend: the spring stiffens toward maxBend</h2>
- * A component of length l cannot move its tip further than {@code dMax = l sin(maxBend)} (its last
- * pose, with the length kept: see "Bend" in {@link BendGeometry}). The spring's rest point is
- * therefore the linear target {@code T = gain |u| u} passed through a smooth saturation: with
- * {@code x = |T| / dMax} and the knee {@link #KNEE},
- * <pre>
- *   sigma(x) = x                                          for x &lt;= KNEE  (exactly F/PC)
- *   sigma(x) = KNEE + (1 - KNEE) y / (1 + y),  y = (x - KNEE) / (1 - KNEE)   above it
- * </pre>
- * and the rest point is {@code dMax sigma(x) T / |T|}: equal to F/PC up to half the bend limit,
- * then stiffer and stiffer (sigma is continuous with its slope at the knee), never reaching dMax.
- * As the spring is critically damped and starts at a rest point, |D| stays below dMax, so no bend is
- * clamped, a stronger wind still shows as more bend and a released component comes back within a
- * few tau. The saturation is computed once per spring run of a plant ({@code SpringRuns.spring}),
- * against the bend limit of the run's shortest component (its shape variants differ in length), so
- * no component passes its own limit.
- *
- * <h2>Closed form over the step, exact at every step size</h2>
- * Over a step of length h the target moves linearly from its value T0 at the start of the step (the
- * field at that time) to T1 at the end (the field then). For a target linear in time the spring
- * has an exact solution; with {@code x = h/tau}, {@code E = e^-x} and the lower incomplete gamma
- * functions {@code g2 = 1 - E (1 + x)} and {@code g3 = 2 - E (x^2 + 2x + 2)} (by series for small x):
- * <pre>
- *   D' = aDD D + aDv v + bD T0 + cD T1       aDD = E (1 + x)   aDv = E h   bD = g3 / x    cD = g2 - g3 / x
- *   v' = aVD D + aVv v + bV T0 + cV T1       aVD = -E x / tau  aVv = E (1 - x)
- *                                            bV = (x E - g2 / x) / tau                    cV = g2 / (x tau)
- * </pre>
- * so a constant force settles at exactly its rest point and a force switched at a step boundary
- * gives the closed-form response (1 - (1 + t/tau) e^(-t/tau)) exactly, whatever h. These eight
- * numbers are what eq. 5's cached constants {@code 1/mu} (the force gain, here {@code bD + cD = 1 - aDD})
- * and {@code 2m/(tau mu)} (the velocity gain, here aDv) become when the constraint equation is
- * integrated exactly rather than by the paper's one-step balance, whose equilibrium
- * {@code F/(PC + m/tau^2)} moved with the frame interval. As {@code bD + cD = 1 - aDD} and
- * {@code bV + cV = -aVD}, a component at its rest point stays there (to a few float ulps).
- *
- * <h2>Sub-intervals: switches at their exact time</h2>
- * A step is split into S sub-intervals ({@link AnimationDef#subIntervals()}, §4.2.1). When a flow is
- * switched within the step (its activation window opens or closes without a ramp, it is added,
- * removed, enabled or disabled: {@code WindField.lastEdge}), the force is T0 up to the first
- * sub-interval boundary at or after that time and T1 from there ({@link #prepare(double, int, int)}'s
- * {@code edge}): the two exact constant-force maps composed. A switch at a step boundary is thus
- * exact, one inside a step is honoured at the next sub-interval boundary.
- *
- * <h2>Per-plant response variants</h2>
- * A species may vary its response time from plant to plant ({@code VariationDef.responseTime}): each
- * kind has {@link #RESPONSE_VARIANTS} coefficient rows, row v for the response time
- * {@code tau (1 + f (v - NOMINAL) / NOMINAL)} with f the species' fraction and
- * NOMINAL = {@link #NOMINAL_VARIANT} (tau itself). A plant uses one row for all its components.
+ * cached coefficients of one step of the dynamic-constraint spring (paper §4.2.1-4.2.2, eq. 5): each
+ * component's deviation D follows a critically damped spring of response time tau toward the rest
+ * point F/PC, stiffened smoothly toward the bend limit, integrated exactly for a force linear over the
+ * step, with a switch inside a step honoured at the next sub-interval boundary, and with
+ * {@link #RESPONSE_VARIANTS} response-time rows per kind. The equations and their derivation are in
+ * docs/model.md, "The dynamic-constraint spring".
  *
  * <p>Build time allocates; {@link #prepare} and every accessor allocate nothing. Not thread-safe:
  * the stepping thread calls {@link #prepare} while the workers are idle; workers then only read.

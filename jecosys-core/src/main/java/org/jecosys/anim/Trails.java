@@ -9,24 +9,11 @@ import org.jecosys.math.Require;
  * species with a recovery time take part ({@code org.jecosys.plant.TrailDef}); a plant of another
  * species never touches this state and moves exactly as without it.
  *
- * <h2>The model</h2>
- * Per plant a flattening vector L (X, Z), in fractions of the bend limit of each spring run
- * ({@code l sin(maxBend)} of its shortest component), |L| &lt; 1. The push is the force
- * {@code P = |q| q} of the flows that flatten at the plant (q: the wind of the point flows, what an
- * agent, a blast or a whirl blows, {@code WindField.flattens}; the ambient wind and its gusts never
- * flatten), evaluated exactly at the plant at the end of a step. When its equilibrium bend
- * {@code a = sigma(|gain P| / dMax)}, measured on the plant's first run (the stiffened rest point of
- * {@link SpringKinds}, "Bounded bend"), reaches the species' {@code flattenAt} and exceeds |L| now,
- * the plant is flattened to {@code A = a P / |P|} at that time t0. From there {@code L(t) = A (1 + s) e^-s} with {@code s = (t - t0) / recovery}: the release of a
- * critically damped spring of time constant {@code recovery}, 74% left after one recovery time and 4%
- * after five; past {@link #END} recovery times it is 0. The decision reads only the force, never the
- * deviation, so a flattened plant cannot keep itself down.
- *
- * <p>A flattened run's spring rest point for force P is {@code L dMax + (1 - |L|) R(P)} with R(P) the
- * elastic rest point: the flattening plus the wind's bend of what is left of the elastic range, below
- * dMax like R. Over a step the spring moves from the rest point of (P0, L0) to that of (P1, L1), L0
- * being the flattening at the plant's previous update, so the plant follows its recovery with its own
- * response time on top.
+ * <p>Per plant a flattening vector L, in fractions of the bend limit: a push of the point flows whose
+ * equilibrium bend reaches the species' {@code flattenAt} flattens the plant, which then recovers as
+ * {@code (1 + s) e^-s} with {@code s} the time since, in recovery times, and each spring run's rest
+ * point becomes {@code L dMax + (1 - |L|) R(P)}. The model is in docs/model.md, "Trails: flattening
+ * and recovery".
  *
  * <h2>Threads and determinism</h2>
  * Everything is per plant, computed from the plant's own force and the step's time ({@link StrictMath}

@@ -9,48 +9,16 @@ import org.jecosys.wind.WindField;
 import org.joml.Vector2d;
 
 /**
- * The LOD quadtree force field (paper §3.1) driven by a {@link WindField} (§3.2).
- *
- * <p><b>Update</b> ({@link #update}), one depth-first pass over the visible part of the tree:
- * <ol>
- * <li>Frustum: each node's box [minX, maxX] x [minY, maxY] x [minZ, maxZ] (terrain height range)
- * is tested against the camera frustum (JOML's plane test, conservative: a box reported outside
- * is outside; a few boxes near frustum corners may be kept). An invisible node's subtree is skipped;
- * a node fully inside passes its descendants without further tests. A node whose XZ rectangle
- * contains the eye is always visible (the plants at the viewer's feet).</li>
- * <li>Distance LOD: for a visible node not yet represented, with d the distance from the eye to the
- * node's box and L = the number of {@code lodDistances} smaller than d ("beyond the i-th distance,
- * i levels collapse"), the node becomes <i>effective</i> when it is a leaf or when its whole
- * subtree is at most L levels deep ({@code height <= L}); its descendants are then represented by
- * it (no leaf is represented by an ancestor more than L levels up). A collapsed full subtree of
- * height h spares 4^h - 1 evaluations.</li>
- * <li>Wind: each effective node holding plants evaluates the sum of all active flows once, at the
- * centre of gravity of the plants of its subtree (§3.2), and stores the velocity (m/s), NaN as 0 and
- * each component within +-{@link #MAX_WIND}. A field whose def is disabled evaluates nothing and
- * stores zero wind.</li>
- * <li>Gradient: each effective node holding plants fits the wind's gradient to the winds of its
- * (up to four) edge neighbours among the effective nodes, by least squares over their centres of
- * gravity through its own wind, with no further flow evaluation. The fit is then weighed by how well
- * it predicts: leaving each neighbour out in turn, the gradient fitted to the others predicts that
- * neighbour's wind; with E the summed distance of those predictions to the neighbours' winds and
- * E0 the summed distance of the node's own wind to them, the gradient keeps the share
- * {@code max(0, 1 - (E / E0)^2)}. A wind linear in space keeps its whole gradient (exact); where the
- * neighbours show that a straight line does not fit (across depths and distances, near a source or
- * a vortex core) the gradient fades toward none, so a plant's wind stays no further from the flows
- * than its node's own wind (over three flow mixes, {@code GradientAccuracyTest}). It is also scaled
- * down where it would change the wind inside the node by more than twice the largest difference to
- * a neighbour.</li>
- * </ol>
- * A plant's wind ({@link #wind}, {@link #gather}) is its effective node's wind plus the gradient
- * times the plant's offset from the node's centre of gravity: it varies smoothly inside a node (and
- * is exact for a wind linear in space) instead of being one value for every plant in it. To that
- * the field adds the small eddies that the flows declare ({@link WindField#eddySpeed}: a gust's
- * turbulence) and that nodes a few metres wide cannot resolve, as a per-plant flutter: seeded value
- * noise in time ({@link Noise#value1}, {@value #EDDY_FREQUENCY} Hz, one pattern per plant and wind
- * component) of amplitude {@value #EDDY_GAIN} x the eddy speed. Without turbulence there is no
- * flutter, and a plant's wind is the interpolated field's exactly.
- * Visibility is stamped per node with the update number, so invisible subtrees cost nothing:
- * the update's cost follows the visible nodes, not the size of the world.
+ * The LOD quadtree force field (paper §3.1) driven by a {@link WindField} (§3.2). One
+ * {@link #update} is a depth-first pass over the visible part of the tree: nodes outside the camera
+ * frustum are skipped, distant subtrees collapse into one <i>effective</i> node (beyond the i-th
+ * {@code lodDistances} entry, i levels), each effective node holding plants evaluates the flows once
+ * at its plants' centre of gravity and fits a wind gradient to its neighbours' winds. A plant's wind
+ * ({@link #wind}, {@link #gather}) is its node's wind plus the gradient times its offset, plus a
+ * per-plant flutter of {@value #EDDY_GAIN} x the flows' eddy speed at {@value #EDDY_FREQUENCY} Hz.
+ * Winds are in m/s, each component within +-{@link #MAX_WIND}. The update's steps and the gradient's
+ * fit are in docs/model.md, "The LOD quadtree update". Visibility is stamped per node with the
+ * update number, so an update costs what the visible nodes cost, not what the world's size would.
  *
  * <p>Threads: see {@link ForceField}. {@code update} and all queries allocate nothing; adding
  * plants allocates only when arrays grow.

@@ -3,33 +3,13 @@ package org.jecosys.plant;
 import org.jecosys.math.Require;
 
 /**
- * The rest shape of a component bent by gravity (paper §4.1: "a physically based model defines the
- * appearance of the models by bending their components, simulating the action of gravity over
- * them; stalk width and mass define the deformation").
- *
- * <h2>Model</h2>
- * The skeleton ({@link Skeleton}) is a chain of rigid segments joined by rotational springs. Joint
- * {@code j} sits at the base of segment {@code j} (joint 0 is the root, clamped to the ground or
- * to the parent's tip) and resists a change of its relative angle
- * {@code alpha_j = theta_j - theta_(j-1)} from its rest value with the flexural constant
- * <pre>
- *   k_j = E I_j / l      (N m / rad),  l = length / segments,
- *   I_j = w_j t^3 / 12   for flat parts (leaf, petal, head)  — a ribbon of width w_j, thickness t,
- *   I_j = pi w_j^4 / 64  for a stalk                          — a round section of diameter w_j,
- * </pre>
- * with {@code w_j} the width at the joint (linear profile baseWidth to tipWidth), Young's modulus
- * {@link #MODULUS} and effective thickness {@link #THICKNESS}. Stiffness therefore grows with width.
- * The component's mass is spread evenly over its segments (each segment's weight acts at its
- * middle); a {@code tipMass} (the components attached at its tip, e.g. a flower on a stalk) hangs at
- * the last point. Joint {@code j} is loaded by the moment of every weight beyond it,
- * {@code tau_j = g sum_(i >= j) m_i (x_i - x_j)}. The equilibrium minimises the potential
- * <pre>  V(theta) = 1/2 sum k_j (alpha_j - alpha_j_rest)^2 + g sum m_i y_i </pre>
- * subject to every angle staying in [-pi/2, pi/2] (nothing bends below its base). It is found from
- * the rest shape by the preconditioned descent {@code alpha_j <- alpha_j_rest + tau_j / k_j}
- * (the Newton step of the elastic part) with a backtracking line search on V, so it converges for
- * stiff and for very soft chains alike. With {@code gravity = 0} (or a negligible mass) the result
- * is the rest shape: straight plus the component's own curvature. A perfectly vertical straight
- * chain is an (unstable) equilibrium and stays vertical.
+ * The rest shape of a component bent by gravity (paper §4.1: "stalk width and mass define the
+ * deformation"): the skeleton is a chain of rigid segments joined by rotational springs of flexural
+ * constant {@code E I / l} (a ribbon's or a round stalk's second moment of area, from the width at the
+ * joint, Young's modulus {@link #MODULUS} and thickness {@link #THICKNESS}), loaded by the weight of
+ * its segments and its tip mass; the equilibrium minimises the elastic plus gravitational potential
+ * with every angle in [-pi/2, pi/2]. The model and the solver are in docs/model.md, "Rest shapes bent
+ * by gravity".
  *
  * <p>Build time only; allocates small scratch arrays per call; any thread.
  */

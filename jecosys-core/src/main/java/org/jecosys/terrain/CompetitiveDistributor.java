@@ -13,47 +13,18 @@ import org.jecosys.math.Rng;
  * plant distributions. One plant can occupy the area that other one could be occupying, removing the
  * nutrient or water needed for the development of other distribution."
  *
- * <h2>Algorithm</h2>
- * <ol>
- * <li>Hand placements first, in order: each stands at its (x, z), takes its footprint and consumes.
- * Its footprint and resource use are those of the first distribution of its species, or
- * {@link #PLACEMENT_FOOTPRINT} and {@link #PLACEMENT_USE} when the species has none.</li>
- * <li>Per distribution, a {@link SuitabilityMask} over the terrain: candidates are drawn only where
- * the species could ever grow; the suitable area times the density gives the target when
- * {@code count == -1}; otherwise the target is {@code count}. A distribution with no suitable ground
- * gets no plants and a warning "matches nowhere".</li>
- * <li>Rounds, until every distribution has its target or has spent its attempt budget
- * ({@link #ATTEMPTS_BASE} + {@link #ATTEMPTS_PER_PLANT} x target candidates). In a round each
- * unfinished distribution gets a batch of random candidates sized from its remaining need and its
- * acceptance rate so far. Candidates are generated in fixed chunks of {@link #CHUNK} (each chunk
- * from its own {@link Rng#forStream} stream, in parallel over the worker threads), which also
- * evaluates the static conditions: altitude and slope at the exact point. With a
- * {@link DistributionDef#clumpStrength()} s &gt; 0, a drawn point is kept with chance
- * {@code 1 - s + s g(x, z)}, where g in [0, 1] is a smooth step of seeded value noise (seed from the
- * scene seed and the distribution's index) whose lattice cells are twice
- * {@link DistributionDef#clumpSize()}: g is 1 inside the patches (about 40% of the ground) and 0 between
- * them; otherwise it is drawn again, at most {@link #CLUMP_TRIES} times (the last draw is kept). So
- * plants gather into patches of about clumpSize radius, denser by up to 1 / (share of ground in
- * clumps); at s = 0 no extra numbers are drawn and the layout is the uniform one, bit for bit.
- * With a {@link DistributionDef#tuftCount()} t &gt; 1 (not in the paper), such a draw is the centre
- * of a <em>tuft</em> shared by t consecutive candidates of the chunk (a Thomas cluster process): each
- * is the centre plus a normal offset of standard deviation {@link DistributionDef#tuftSize()} along X
- * and Z (clamped to the terrain), so plants grow in small groups, tussocks of several tufts within a
- * few decimetres, inside the larger patches: clusters of clusters, as in real grassland, whose
- * Clark&ndash;Evans ratio is below 1, where the footprints alone would space the plants more evenly than
- * random. The centre itself is no candidate, and a member off the suitable ground is simply refused
- * at acceptance. At t = 1 no offsets are drawn and the layout is the untufted one, bit for bit.</li>
- * <li>Acceptance runs on the calling thread in one fixed order that interleaves the batches in
- * proportion to their size (candidate i of a batch of b comes at (i + 0.5) / b; ties by
- * distribution index), so the species compete for the same ground at the same time and none simply
- * takes everything first. A candidate grows when its footprint is free (no disc of another plant
- * overlaps it) and the <em>remaining</em> footprint-mean water and nutrient levels lie in its
- * species' ranges; it then takes the ground and consumes {@code waterUse} / {@code nutrientUse}
- * in its footprint ({@link ResourceMap#consume}), which can make the ground unsuitable for others.</li>
- * </ol>
- * Counts are exact when achievable: a distribution places exactly its target unless it runs out of
- * attempts (the terrain has no free, suitable ground left); it then keeps what it placed and the
- * layout carries a warning with the shortfall. Nothing here is an error except bad arguments.
+ * <p>Hand placements first, then rounds of random candidates per distribution (drawn in parallel
+ * chunks where its {@link SuitabilityMask} allows, optionally gathered into clumps and tufts),
+ * accepted in one fixed interleaved order when the footprint is free and the remaining water and
+ * nutrients suit the species, which then consumes them ({@link ResourceMap#consume}). A hand placement
+ * uses the footprint and resource use of its species' first distribution, or
+ * {@link #PLACEMENT_FOOTPRINT} and {@link #PLACEMENT_USE}. A distribution's attempts are bounded by
+ * {@link #ATTEMPTS_BASE} + {@link #ATTEMPTS_PER_PLANT} x its target. The algorithm step by step is in
+ * docs/model.md, "Competitive distribution".
+ *
+ * <p>Counts are exact when achievable: a distribution places exactly its target unless it runs out of
+ * attempts; it then keeps what it placed and the layout carries a warning with the shortfall. Nothing
+ * here is an error except bad arguments.
  *
  * <p>Deterministic for a seed whatever {@code threads}: randomness comes only from per-chunk streams
  * keyed by (round, distribution, chunk), batch sizes depend only on earlier rounds, and conflicts
