@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -113,6 +114,23 @@ class ReleasePomTest {
             assertTrue(plugin(pom, "maven-source-plugin") != null, module + " builds its sources jar");
             assertTrue(plugin(pom, "maven-javadoc-plugin") != null, module + " builds its Javadoc jar");
             assertFalse(deploySkipped(pom), module + " is published");
+        }
+    }
+
+    @Test
+    void everyLibraryHasAStableModuleName() throws Exception {
+        for (String module : LIBRARIES) {
+            Path descriptor = Path.of(module, "src/main/module/module-info.java");
+            Element jar = plugin(pom(module), "maven-jar-plugin");
+            String automatic = jar == null ? "" : text(jar, "configuration/archive/manifestEntries/Automatic-Module-Name");
+            String expected = "org.jecosys." + module.substring("jecosys-".length());
+            if (Files.exists(descriptor)) {
+                assertTrue(Files.readString(descriptor).contains("module " + expected + " {"),
+                        descriptor + " declares module " + expected);
+                assertEquals("", automatic, module + " has a descriptor, so no Automatic-Module-Name");
+            } else {
+                assertEquals(expected, automatic, module + ": a module descriptor or an Automatic-Module-Name");
+            }
         }
     }
 
