@@ -44,7 +44,7 @@ import java.nio.file.Path;
 import org.jecosys.math.MatrixCamera;
 import org.jecosys.math.Progress;
 import org.jecosys.render.GlContext;
-import org.jecosys.render.gl.Pixels;
+import org.jecosys.render.Screenshot;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.SceneLoadException;
@@ -240,7 +240,7 @@ public final class MeadowGame implements AutoCloseable {
      * @param dest at least {@code 4 * width * height} bytes
      */
     public void read(ByteBuffer dest) {
-        Pixels.read(width, height, dest);
+        Screenshot.read(width, height, dest);
     }
 
     /** Shows the back buffer. */
@@ -280,7 +280,7 @@ public final class MeadowGame implements AutoCloseable {
                 ByteBuffer px = MemoryUtil.memAlloc(4 * o.width() * o.height());
                 try {
                     game.read(px);
-                    Pixels.writePng(Path.of(args[2]), px, o.width(), o.height());
+                    Screenshot.writePng(Path.of(args[2]), px, o.width(), o.height());
                 } finally {
                     MemoryUtil.memFree((java.nio.Buffer) px);
                 }
