@@ -11,6 +11,7 @@ import java.util.Locale;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
@@ -104,7 +105,7 @@ final class HeadlessRender {
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
         ViewCamera camera = ViewCamera.of(def.camera(), ground, width / (double) height);
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
-        try (GlContext gl = GlContext.headless(false)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF)) {
             log.println("OpenGL: " + gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {

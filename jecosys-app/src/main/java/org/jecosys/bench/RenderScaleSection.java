@@ -10,6 +10,7 @@ import java.util.Map;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.GpuWork;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
@@ -70,7 +71,7 @@ final class RenderScaleSection implements Section {
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         Table stepOnlyTable = null;
         Table looksTable;
-        try (GlContext gl = GlContext.headless(false);
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height)) {
             report.glRenderer(gl.describe());
             ResolvePath best = ResolvePath.best(gl);

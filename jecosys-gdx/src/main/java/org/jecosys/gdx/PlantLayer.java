@@ -6,6 +6,7 @@ import java.io.IOException;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.Scene;
@@ -61,7 +62,7 @@ public final class PlantLayer implements Disposable {
         Require.nonNull("settings", settings);
         GlContext g = null;
         try {
-            g = GlContext.current(false);
+            g = GlContext.current(DebugOutput.OFF);
             renderer = new SceneRenderer(g, simulation.world(), settings);
         } catch (RuntimeException e) {
             if (g != null) {

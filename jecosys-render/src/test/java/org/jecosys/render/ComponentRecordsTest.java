@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.sim.internal.FrameWriter;
 import org.jecosys.sim.internal.DecisionWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -68,7 +69,7 @@ abstract class ComponentRecordsTest {
         cam.setPosition(0, 6, 16);
         cam.setOrientation(0, -Math.atan2(6, 16));
         cam.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), 320, 180);
         fb.bind();
         assumeTrue(path().supported(gl.capabilities()), path() + " needs a newer GL than " + gl.describe());

@@ -3,6 +3,7 @@ package org.jecosys.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -45,8 +46,8 @@ class GoodGuestTest {
 
     @BeforeAll
     void setUp() {
-        owner = GlContext.headless(true);
-        gl = GlContext.current(false);
+        owner = GlContext.headless(DebugOutput.ON);
+        gl = GlContext.current(DebugOutput.OFF);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         px = MemoryUtil.memAlloc(4 * W * H);
         ref = MemoryUtil.memAlloc(4 * W * H);

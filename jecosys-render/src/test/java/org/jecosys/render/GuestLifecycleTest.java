@@ -19,6 +19,7 @@ import static org.lwjgl.opengl.GL30C.glDeleteVertexArrays;
 import static org.lwjgl.opengl.GL30C.glGenVertexArrays;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.util.Map;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
@@ -38,8 +39,8 @@ class GuestLifecycleTest {
     @Test
     void constructingAndClosingPutBackTheHostsBindings() {
         World world = RenderScenes.build(RenderScenes.load("c1.xml"));
-        try (GlContext owner = GlContext.headless(true)) {
-            GlContext gl = GlContext.current(false);
+        try (GlContext owner = GlContext.headless(DebugOutput.ON)) {
+            GlContext gl = GlContext.current(DebugOutput.OFF);
             GlProgram hostProgram = new GlProgram(new GlTracker(), "overlay.vert", "overlay.frag");
             int vao = glGenVertexArrays();
             int vbo = glGenBuffers();

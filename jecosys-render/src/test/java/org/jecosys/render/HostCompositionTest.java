@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -91,8 +92,8 @@ class HostCompositionTest {
 
     @BeforeAll
     void setUp() {
-        owner = GlContext.headless(true);
-        gl = GlContext.current(false);
+        owner = GlContext.headless(DebugOutput.ON);
+        gl = GlContext.current(DebugOutput.OFF);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         px = MemoryUtil.memAlloc(4 * W * H);
@@ -378,7 +379,7 @@ class HostCompositionTest {
 
     @Test
     void theWrappedContextLeavesTheHostsContextAliveAndRefusesAThreadWithoutOne() throws Exception {
-        GlContext second = GlContext.current(false);
+        GlContext second = GlContext.current(DebugOutput.OFF);
         assertFalse(second.ownsContext());
         assertEquals(0, second.window());
         second.close();
@@ -393,7 +394,7 @@ class HostCompositionTest {
         AtomicReference<Throwable> thrown = new AtomicReference<>();
         Thread t = new Thread(() -> {
             try {
-                GlContext.current(false);
+                GlContext.current(DebugOutput.OFF);
             } catch (Throwable e) {
                 thrown.set(e);
             }

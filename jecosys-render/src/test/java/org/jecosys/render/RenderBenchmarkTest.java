@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.sim.internal.DecisionWriter;
 import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -123,7 +124,7 @@ class RenderBenchmarkTest {
     void renderBenchmark() throws Exception {
         StringBuilder md = new StringBuilder("# Rendering benchmark\n\n");
         StringBuilder parts = new StringBuilder();
-        try (GlContext gl = GlContext.headless(false); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
             md.append("GL: ").append(gl.describe()).append(", ").append(W).append('x').append(H).append(", ")
                     .append(Runtime.getRuntime().availableProcessors()).append(" CPUs. ").append(ROUNDS)
                     .append(" rounds (meadow: ").append(rounds(true)).append("); per round and configuration one block of warm-up and timed frames (C1-C3: ")

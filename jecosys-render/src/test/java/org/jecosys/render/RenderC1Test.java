@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.util.List;
@@ -56,7 +57,7 @@ class RenderC1Test {
     void setUp() {
         def = RenderScenes.load("c1.xml");
         world = RenderScenes.build(def);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         // a flat sky (zenith = horizon, no sun glow), so that every sky pixel has one known colour
         renderer = new SceneRenderer(gl, world, RenderSettings.standalone().sky(SKY).skyZenith(SKY).sunIntensity(0));

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import com.sun.management.ThreadMXBean;
 import java.lang.management.ManagementFactory;
 import org.jecosys.math.ViewCamera;
@@ -41,7 +42,7 @@ class RenderResourcesTest {
         SceneDef def = RenderScenes.load("c1.xml");
         world = RenderScenes.build(def);
         camera = RenderScenes.camera(def, world, W, H);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
     }
 

@@ -2,6 +2,7 @@ package org.jecosys.render;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -42,7 +43,7 @@ class SkyAndGroundTest {
 
     @BeforeAll
     void setUp() throws Exception {
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         String rose = Files.readString(Path.of("scenes", "rose.xml"), StandardCharsets.UTF_8);
         StringBuilder plants = new StringBuilder();
