@@ -128,7 +128,7 @@ final class Gallery {
                                 sim.stepFixed(v.camera());
                             }
                             Frame frame = sim.latestFrame();
-                            renderer.settings().shadowPath(v.shadows());
+                            renderer.settings().setShadowPath(v.shadows());
                             fb.bind();
                             renderer.render(frame, v.camera(), width, height);
                             fb.resolve();

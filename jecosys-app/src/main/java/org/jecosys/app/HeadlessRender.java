@@ -66,7 +66,10 @@ final class HeadlessRender {
 
     /** The render settings a scene asks for, with the library's sky and terrain (the whole picture). */
     static RenderSettings settings(RenderDef def) {
-        return RenderSettings.of(def).clear(true).terrain(true);
+        RenderSettings s = RenderSettings.of(def);
+        s.setClear(true);
+        s.setTerrain(true);
+        return s;
     }
 
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,

@@ -79,7 +79,8 @@ final class PaperScenesSection implements Section {
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), WIDTH, HEIGHT)) {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
-                    RenderSettings settings = RenderSettings.standalone().sky(scene.render().sky());
+                    RenderSettings settings = RenderSettings.standalone();
+                    settings.setSky(scene.render().sky());
                     try (SceneRenderer renderer = new SceneRenderer(gl, worlds.get(s), settings)) {
                         fb.bind();
                         int frames = s == 3 ? Math.max(2, renderFrames / 4) : renderFrames;

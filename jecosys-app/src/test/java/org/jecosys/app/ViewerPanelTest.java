@@ -50,7 +50,9 @@ class ViewerPanelTest {
             ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                     .height(def.camera().x(), def.camera().z()), W / (double) H);
             FlyCamera fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());
-            RenderSettings settings = HeadlessRender.settings(def.render()).showField(true).showWind(true);
+            RenderSettings settings = HeadlessRender.settings(def.render());
+            settings.overlays().setShowField(true);
+            settings.overlays().setShowWind(true);
             SceneEditor editor = new SceneEditor(def, sim, settings);
             ViewerControls controls = new ViewerControls(def, sim, editor, new SceneSaver(file, scenes), fly,
                     new ViewerInput());

@@ -53,7 +53,7 @@ public final class PlantLayer implements Disposable {
      * @param simulation the plants; the layer owns it from now on and closes it in {@link #dispose()}
      *                   (also when this constructor fails)
      * @param settings   the look ({@link RenderSettings#of(org.jecosys.scene.SceneDef)} for the
-     *                   scene's own light; {@code .terrain(true)} adds the library's terrain mesh); read
+     *                   scene's own light; {@code setTerrain(true)} adds the library's terrain mesh); read
      *                   every frame, so the game may change it between frames
      * @throws IllegalStateException when no OpenGL 3.3 context is current on this thread
      */

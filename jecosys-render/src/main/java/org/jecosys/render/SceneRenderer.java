@@ -365,8 +365,9 @@ public final class SceneRenderer implements AutoCloseable {
             plants.drawFar();
         }
         glDisable(GL_DEPTH_TEST);
-        if (field != null && (settings.showField() || settings.showWind())) {
-            overlay.draw(field, camera, settings.showField(), settings.showWind(), vx, vy, width, height);
+        OverlaySettings shown = settings.overlays();
+        if (field != null && (shown.showField() || shown.showWind())) {
+            overlay.draw(field, camera, shown, vx, vy, width, height);
         }
     }
 

@@ -346,7 +346,8 @@ abstract class ComponentRecordsTest {
         try {
             applyLook(12f, 0.2f, 4f, 0.8f, 7);
             // the same function, by an independent path: the public patch noise at each root's base
-            RenderSettings patches = RenderSettings.standalone().patches(4f, 0.8f, 7);
+            RenderSettings patches = RenderSettings.standalone();
+            patches.setPatches(4f, 0.8f, 7);
             int[] checked = new int[1];
             forEachRecord((li, i, slot, r) -> {
                 if (batches.lines(li)) {

@@ -256,14 +256,16 @@ class HostCompositionTest {
 
     @Test
     void everyGlStateTheRendererTouchesIsTheSameAfterRender() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY).showField(true).showWind(true);
+        RenderSettings settings = standalone();
+        settings.overlays().setShowField(true);
+        settings.overlays().setShowWind(true);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             try (HostState host = new HostState()) {
                 Map<String, String> before = census();
                 assertEquals("40,30,200,120", before.get("viewport"), "the host's state is in place");
                 for (boolean clear : new boolean[] {true, false}) {
-                    settings.clear(clear);
+                    settings.setClear(clear);
                     renderer.render(TestFrames.wind(world, 0.4, camera(200, 120)), camera(200, 120));
                     assertEquals(before, census(), "render(frame, camera), clear " + clear);
                     renderer.render(TestFrames.wind(world, 0.4, camera(W, H)), camera(W, H), W, H);
@@ -276,7 +278,9 @@ class HostCompositionTest {
 
     @Test
     void drawsOnlyInTheBoundViewportAndOverTheHostsBackgroundWhenNotClearing() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY).clear(false).terrain(false);
+        RenderSettings settings = standalone();
+        settings.setClear(false);
+        settings.setTerrain(false);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             // the host's own background: magenta, depth 1
@@ -316,7 +320,7 @@ class HostCompositionTest {
 
     @Test
     void aCameraFromTheHostsMatricesDrawsWhatTheEquivalentViewCameraDraws() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY);
+        RenderSettings settings = standalone();
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             ViewCamera vc = camera(W, H);
             fb.bind();
@@ -427,5 +431,12 @@ class HostCompositionTest {
         closed.clear();
         assertThrows(IllegalStateException.class, () -> Closing.closeReverse(List.of(ok1, bad1, ok2)));
         assertEquals(List.of("d", "b", "a"), closed);
+    }
+
+    /** The library's whole picture with the test's sky. */
+    private static RenderSettings standalone() {
+        RenderSettings s = RenderSettings.standalone();
+        s.setSky(SKY);
+        return s;
     }
 }
