@@ -407,7 +407,7 @@ public final class SceneRenderer implements AutoCloseable {
             glEnable(GL_SCISSOR_TEST);
         }
         glViewport(vx, vy, width, height);
-        shadowMap.map().bind(GlStateGuard.UNIT_SHADOW);
+        shadowMap.map().bind(org.jecosys.render.gl.TextureUnits.SUN_SHADOW);
         shadowParams[0] = 1f;
         shadowParams[1] = 1f / shadowMap.map().size();
         shadowParams[2] = (float) shadowMap.placement().bias();

@@ -24,7 +24,7 @@ import java.util.Map;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.render.gl.GlTracker;
 import org.junit.jupiter.api.Tag;
 
@@ -50,7 +50,7 @@ class GuestLifecycleTest {
                 glBindBuffer(GL_ARRAY_BUFFER, vbo);
                 glBufferData(GL_ARRAY_BUFFER, 64, GL_STATIC_DRAW);
                 hostProgram.use();
-                glActiveTexture(GL_TEXTURE0 + GlStateGuard.UNIT_2D);
+                glActiveTexture(GL_TEXTURE0 + TextureUnits.GROUND_MAPS);
                 glBindTexture(GL_TEXTURE_2D, textures[0]);
                 glActiveTexture(GL_TEXTURE0);
                 glBindTexture(GL_TEXTURE_BUFFER, textures[1]);

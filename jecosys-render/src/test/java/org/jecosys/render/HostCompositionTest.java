@@ -172,7 +172,7 @@ class HostCompositionTest {
         }
         s.put("rasterizer discard", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD)));
         s.put("alpha to coverage", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE)));
-        for (int u = 0; u < 8; u++) {
+        for (int u = 0; u < org.jecosys.render.gl.TextureUnits.COUNT; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             s.put("unit " + u + " buffer texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_BUFFER)));
             s.put("unit " + u + " 2D texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_2D)));

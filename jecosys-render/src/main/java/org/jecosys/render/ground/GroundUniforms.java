@@ -9,7 +9,7 @@ import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import org.jecosys.math.Rgb;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.scene.RenderDef;
 
 /**
@@ -55,9 +55,9 @@ final class GroundUniforms {
         shadowEye = program.uniform("uShadowEye");
     }
 
-    /** Points the program's shadow-map sampler at {@link GlStateGuard#UNIT_SHADOW}; the program is in use. */
+    /** Points the program's shadow-map sampler at {@link TextureUnits#SUN_SHADOW}; the program is in use. */
     static void bindShadowSampler(GlProgram program) {
-        glUniform1i(program.uniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
+        glUniform1i(program.uniform("uShadowMap"), TextureUnits.SUN_SHADOW);
     }
 
     /**

@@ -37,7 +37,7 @@ import org.jecosys.render.RenderSettings;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.render.gl.GlTexture2D;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
@@ -192,10 +192,10 @@ public final class TerrainRenderer implements AutoCloseable {
         ground = new GroundUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
-        glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        glUniform1i(program.uniform("uOcclusion"), TextureUnits.GROUND_MAPS);
         GroundUniforms.bindShadowSampler(program);
-        glUniform1i(program.uniform("uGrain"), GlStateGuard.UNIT_GRAIN);
-        glUniform1i(program.uniform("uBend"), GlStateGuard.UNIT_GRAIN + 1);
+        glUniform1i(program.uniform("uGrain"), TextureUnits.COVER_GRAIN);
+        glUniform1i(program.uniform("uBend"), TextureUnits.TILE_BENDS);
         if (occlusionMap == null) {
             glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
             glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
@@ -353,8 +353,9 @@ public final class TerrainRenderer implements AutoCloseable {
     /**
      * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
      * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
-     * occlusion and cover map to unit {@link GlStateGuard#UNIT_2D} and the cover's grain to
-     * {@link GlStateGuard#UNIT_GRAIN} (the scene renderer's state guard puts them back). Render thread;
+     * occlusion and cover map to {@link TextureUnits#GROUND_MAPS}, the cover's grain to
+     * {@link TextureUnits#COVER_GRAIN} and the bend map to {@link TextureUnits#TILE_BENDS} (the scene
+     * renderer's state guard puts them back). Render thread;
      * no allocation, except when the cover's spread differs from the map's or, with shadows on, the sun has moved
      * since the shadow map was built: those rebuild a map.
      *
@@ -384,10 +385,10 @@ public final class TerrainRenderer implements AutoCloseable {
         float sl = (float) Math.hypot(settings.sunX(), settings.sunZ());
         glUniform2f(uSunXZ, sl > 1e-6f ? settings.sunX() / sl : 0f, sl > 1e-6f ? settings.sunZ() / sl : 0f);
         if (sheen) {
-            bendMap.bind(GlStateGuard.UNIT_GRAIN + 1);
+            bendMap.bind(TextureUnits.TILE_BENDS);
         }
-        grain.bind(GlStateGuard.UNIT_GRAIN);
-        maps.texture().bind(GlStateGuard.UNIT_2D);
+        grain.bind(TextureUnits.COVER_GRAIN);
+        maps.texture().bind(TextureUnits.GROUND_MAPS);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
@@ -458,7 +459,7 @@ public final class TerrainRenderer implements AutoCloseable {
      * Reads the sun's shadow map from these holders at every draw: {@code params} as
      * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
      * the map's reach, metres), {@code matrix} world to map
-     * (16 floats, column-major); the map itself is bound to {@link GlStateGuard#UNIT_SHADOW} by the
+     * (16 floats, column-major); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the
      * caller. Render thread; no allocation.
      *
      * @param params 8 floats, changed by the caller between frames

@@ -40,6 +40,7 @@ import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.ground.ShadowFit;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.gl.GlVertexArray;
+import org.jecosys.render.gl.TextureUnits;
 
 /**
  * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2; see also
@@ -476,14 +477,14 @@ public final class PlantRenderer implements AutoCloseable {
         ShadowFit at = shadow.placement();
         passes.casterFrame(look, at.viewProjection(), (float) at.sunward(0), (float) at.sunward(1),
                 (float) at.sunward(2), preparedFog, (float) at.texelMetres(), preparedFrame);
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
+        poseTexture.bind(TextureUnits.POSES);
+        resolver.bindRecords();
         passes.drawCasters(batches, vaos, indexCount, look, levelMask);
     }
 
     /**
      * Sets the sun's shadow map the triangle levels read from {@link #drawPreparedNear} on
-     * ({@code sun_shadow.glsl}; the map bound to {@code GlStateGuard.UNIT_SHADOW} by the caller): params
+     * ({@code sun_shadow.glsl}; the map bound to {@code TextureUnits.SUN_SHADOW} by the caller): params
      * as its uSunShadow (x = 0: none this frame) then its uShadowEye (the eye and the map's reach),
      * matrix world to map. Render thread; no allocation.
      *
@@ -509,8 +510,8 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         passes.shadow(look);
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
+        poseTexture.bind(TextureUnits.POSES);
+        resolver.bindRecords();
         // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
@@ -529,8 +530,8 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         pending = false;
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
+        poseTexture.bind(TextureUnits.POSES);
+        resolver.bindRecords();
         if (multisampled) {
             // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);

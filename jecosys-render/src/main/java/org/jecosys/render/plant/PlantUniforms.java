@@ -11,12 +11,13 @@ import java.nio.FloatBuffer;
 import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 
 /**
  * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
- * missing one is set at location -1, which GL ignores); the constructor binds the two samplers
- * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
+ * missing one is set at location -1, which GL ignores); the constructor binds the samplers (pose
+ * tables, component records, the sun's shadow map: {@link TextureUnits}) and leaves the program in
+ * use. Render thread.
  */
 public final class PlantUniforms {
     public final GlProgram program;
@@ -66,9 +67,9 @@ public final class PlantUniforms {
         sunShadow = p.optionalUniform("uSunShadow");
         shadowMatrix = p.optionalUniform("uShadowMatrix");
         shadowEye = p.optionalUniform("uShadowEye");
-        glUniform1i(p.optionalUniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
-        glUniform1i(p.optionalUniform("uPoses"), 0);
-        glUniform1i(p.optionalUniform("uComponents"), 1);
+        glUniform1i(p.optionalUniform("uShadowMap"), TextureUnits.SUN_SHADOW);
+        glUniform1i(p.optionalUniform("uPoses"), TextureUnits.POSES);
+        glUniform1i(p.optionalUniform("uComponents"), TextureUnits.RECORDS);
     }
 
     /**
