@@ -90,7 +90,9 @@ abstract class ComponentRecordsTest {
     }
 
     void draw(PlantRenderer r) {
-        r.draw(frame, cam, 0.3f, 0.9f, 0.3f, SKY, 25f, 160f, 180);
+        r.setSunDirection(0.3f, 0.9f, 0.3f);
+        r.setHaze(SKY, 25f, 160f);
+        r.draw(frame, cam, 180);
     }
 
     @AfterAll

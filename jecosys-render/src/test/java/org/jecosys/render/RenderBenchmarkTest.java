@@ -272,14 +272,14 @@ class RenderBenchmarkTest {
         r.drawTerrain = false;
         r.drawPlants = true;
         double plants = ms(r, frame, cam, W, H);
-        r.plants().levelMask = 0;
+        r.plants().setLevelMask(0);
         double upload = ms(r, frame, cam, W, H);
         StringBuilder byLevel = new StringBuilder();
         for (int l = 0; l < 4; l++) {
-            r.plants().levelMask = 1 << l;
+            r.plants().setLevelMask(1 << l);
             byLevel.append(l == 0 ? "" : " / ").append(String.format("%.1f", ms(r, frame, cam, W, H)));
         }
-        r.plants().levelMask = ~0;
+        r.plants().setLevelMask(~0);
         r.drawTerrain = true;
         // the same view decided with no transition band (rest poses: drawing cost does not depend on them)
         org.jecosys.sim.DrawDecision noBandDecision = org.jecosys.sim.DrawDecision.of(r.world());

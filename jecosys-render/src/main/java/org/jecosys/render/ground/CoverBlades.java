@@ -96,9 +96,8 @@ public final class CoverBlades implements AutoCloseable {
     private final int uShadows;
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the terrain. */
     private final GroundUniforms ground;
-    /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
-    private float[] shadowParams = new float[8];
-    private java.nio.FloatBuffer shadowMatrix;
+    /** The frame's sun shadow map, as {@link #useShadowMap} gave it (none until then). */
+    private ShadowParams shadow = new ShadowParams();
     private long bendFrame = Long.MIN_VALUE;
     private Frame bendOf;
     private int lastTiles;
@@ -278,7 +277,7 @@ public final class CoverBlades implements AutoCloseable {
         glUniformMatrix4fv(uViewProj, false, viewProj.get(matrix));
         glUniform3f(uEye, (float) ex, (float) camera.y(), (float) ez);
         ground.set(settings);
-        ground.setShadowMap(shadowParams, shadowMatrix);
+        ground.setShadowMap(shadow);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
         Rgb amb = settings.ambient();
@@ -400,20 +399,15 @@ public final class CoverBlades implements AutoCloseable {
     }
 
     /**
-     * Reads the sun's shadow map from these holders at every draw: {@code params} as
-     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
-     * the map's reach, metres), {@code matrix} world to map
-     * (16 floats, column-major); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the
-     * caller. Render thread; no allocation.
+     * Reads the sun's shadow map from this holder at every draw from now on ({@code sun_shadow.glsl}:
+     * whether a map is drawn this frame, its texel, bias and strength, the eye and the map's reach, the
+     * world-to-map matrix); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the caller,
+     * who fills the holder each frame. Until then no map is read. Render thread; no allocation.
      *
-     * @param params 8 floats, changed by the caller between frames
-     * @param matrix 16 floats, or null for none
+     * @param params the frame's shadow map, kept (not copied)
+     * @throws IllegalArgumentException when params is null
      */
-    public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        if (params.length != 8) {
-            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
-        }
-        shadowParams = params;
-        shadowMatrix = matrix;
+    public void useShadowMap(ShadowParams params) {
+        shadow = org.jecosys.math.Require.nonNull("params", params);
     }
 }

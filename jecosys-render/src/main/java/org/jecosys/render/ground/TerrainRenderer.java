@@ -87,9 +87,8 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uShadows;
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
     private final GroundUniforms ground;
-    /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
-    private float[] shadowParams = new float[8];
-    private java.nio.FloatBuffer shadowMatrix;
+    /** The frame's sun shadow map, as {@link #useShadowMap} gave it (none until then). */
+    private ShadowParams shadow = new ShadowParams();
     private RenderDef.Tint tint;
     private boolean closed;
 
@@ -341,16 +340,6 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the terrain with its ground cover ({@link #draw(Camera, RenderSettings, boolean)}).
-     *
-     * @param camera   the viewer
-     * @param settings the light, haze, patch and cover settings
-     */
-    public void draw(Camera camera, RenderSettings settings) {
-        draw(camera, settings, true);
-    }
-
-    /**
      * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
      * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
      * occlusion and cover map to {@link TextureUnits#GROUND_MAPS}, the cover's grain to
@@ -361,9 +350,24 @@ public final class TerrainRenderer implements AutoCloseable {
      *
      * @param camera   the viewer
      * @param settings the light, haze, patch and cover settings
-     * @param cover    false: bare ground whatever the settings' cover (a picture without the vegetation)
      */
-    public void draw(Camera camera, RenderSettings settings, boolean cover) {
+    public void draw(Camera camera, RenderSettings settings) {
+        draw(camera, settings, true);
+    }
+
+    /**
+     * As {@link #draw(Camera, RenderSettings)}, but bare ground whatever the settings' cover: the
+     * picture without the vegetation (the scene renderer's terrain-only frames). Render thread; no
+     * allocation but as {@link #draw(Camera, RenderSettings)} says.
+     *
+     * @param camera   the viewer
+     * @param settings the light, haze and patch settings
+     */
+    public void drawBare(Camera camera, RenderSettings settings) {
+        draw(camera, settings, false);
+    }
+
+    private void draw(Camera camera, RenderSettings settings, boolean cover) {
         RenderDef.GroundCover gc = settings.groundCover();
         boolean withCover = cover && prepareCover(settings);
         boolean shadows = maps.prepareShadows(settings);
@@ -371,7 +375,7 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
         ground.set(settings);
-        ground.setShadowMap(shadowParams, shadowMatrix);
+        ground.setShadowMap(shadow);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
         Rgb amb = settings.ambient();
@@ -456,20 +460,15 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Reads the sun's shadow map from these holders at every draw: {@code params} as
-     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
-     * the map's reach, metres), {@code matrix} world to map
-     * (16 floats, column-major); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the
-     * caller. Render thread; no allocation.
+     * Reads the sun's shadow map from this holder at every draw from now on ({@code sun_shadow.glsl}:
+     * whether a map is drawn this frame, its texel, bias and strength, the eye and the map's reach, the
+     * world-to-map matrix); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the caller,
+     * who fills the holder each frame. Until then no map is read. Render thread; no allocation.
      *
-     * @param params 8 floats, changed by the caller between frames
-     * @param matrix 16 floats, or null for none
+     * @param params the frame's shadow map, kept (not copied)
+     * @throws IllegalArgumentException when params is null
      */
-    public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        if (params.length != 8) {
-            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
-        }
-        shadowParams = params;
-        shadowMatrix = matrix;
+    public void useShadowMap(ShadowParams params) {
+        shadow = org.jecosys.math.Require.nonNull("params", params);
     }
 }

@@ -31,7 +31,6 @@ import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
-import org.jecosys.math.Rgb;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
@@ -197,12 +196,11 @@ public final class ComponentResolver implements AutoCloseable {
      * are lit and carry what their vertices share) on every resolve program. Render thread; no
      * allocation; leaves a resolve program in use (none on the compute path).
      */
-    public void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
-               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+    void frame(PlantLook look, PassContext context) {
         detach();
         for (Pass p : passes) {
             p.uniforms.program.use();
-            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame, 1f);
+            p.uniforms.frame(look, context, 1f);
         }
         detach();
     }

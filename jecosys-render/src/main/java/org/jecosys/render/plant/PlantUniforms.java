@@ -7,7 +7,6 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
-import java.nio.FloatBuffer;
 import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
@@ -74,34 +73,32 @@ public final class PlantUniforms {
 
     /**
      * Sets the per-frame values on the program in use: view, eye, light, fog, the pixel's size
-     * ({@code pixelX + distance * pixelY} metres), the frame's distance thinning and the least alpha
-     * written (1 when not multisampled, so plants are opaque; 0 for alpha-to-coverage). No allocation.
+     * ({@code pixelX + distance * pixelY} metres) and the frame's distance thinning from the context,
+     * the look's light, and the least alpha written (1 when not multisampled, so plants are opaque; 0
+     * for alpha-to-coverage). No allocation.
      */
-    public void frame(PlantLook r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
-               float end, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame, float alphaFloorValue) {
+    void frame(PlantLook r, PassContext c, float alphaFloorValue) {
         glUniform1f(alphaFloor, alphaFloorValue);
-        glUniform2f(pixelScale, pixelX, pixelY);
+        glUniform2f(pixelScale, c.pixelX, c.pixelY);
+        Frame frame = c.frame;
         glUniform3f(thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
-        glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+        glUniformMatrix4fv(viewProj, false, c.viewProj);
         glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
         glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
         glUniform1f(sheen, r.sheen);
         glUniform1f(minPixels, r.minPixels);
         glUniform1f(headPixels, r.headPixels);
         glUniform1f(flowerTilt, r.flowerTilt);
-        glUniform3f(lightDir, lx, ly, lz);
-        glUniform3f(eye, ex, ey, ez);
+        glUniform3f(lightDir, c.lightX, c.lightY, c.lightZ);
+        glUniform3f(eye, c.eyeX, c.eyeY, c.eyeZ);
+        Rgb fog = c.fog;
         glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(fogStart, start);
-        glUniform1f(fogEnd, end);
+        glUniform1f(fogStart, c.fogStart);
+        glUniform1f(fogEnd, c.fogEnd);
     }
 
     /** Sets the look's sun shadow map on the program in use ({@code sun_shadow.glsl}). No allocation. */
     public void shadow(PlantLook r) {
-        glUniform4f(sunShadow, r.shadow[0], r.shadow[1], r.shadow[2], r.shadow[3]);
-        glUniform4f(shadowEye, r.shadowEye[0], r.shadowEye[1], r.shadowEye[2], r.shadowEye[3]);
-        if (r.shadowMatrix != null) {
-            glUniformMatrix4fv(shadowMatrix, false, r.shadowMatrix);
-        }
+        r.shadow.upload(sunShadow, shadowEye, shadowMatrix);
     }
 }
