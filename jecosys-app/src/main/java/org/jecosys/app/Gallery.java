@@ -13,6 +13,7 @@ import org.jecosys.plant.ComponentType;
 import org.jecosys.plant.PoseTable;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.SceneRenderer;
@@ -100,7 +101,7 @@ final class Gallery {
         OutputFiles files = new OutputFiles(); // makes the folder with the first picture, once a scene was accepted
         double aspect = width / (double) height;
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
-        try (GlContext gl = GlContext.headless(false);
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, RenderDef.DEFAULT_ANTIALIASING)) {
             for (String name : SCENES) {
                 Scene loaded = SceneArgs.load(scenes.resolve(name), ImageSource.folder(scenes), err);
@@ -127,7 +128,7 @@ final class Gallery {
                                 sim.stepFixed(v.camera());
                             }
                             Frame frame = sim.latestFrame();
-                            renderer.settings().shadowPath(v.shadows());
+                            renderer.settings().setShadowPath(v.shadows());
                             fb.bind();
                             renderer.render(frame, v.camera(), width, height);
                             fb.resolve();

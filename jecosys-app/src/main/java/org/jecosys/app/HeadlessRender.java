@@ -11,6 +11,7 @@ import java.util.Locale;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
@@ -65,7 +66,10 @@ final class HeadlessRender {
 
     /** The render settings a scene asks for, with the library's sky and terrain (the whole picture). */
     static RenderSettings settings(RenderDef def) {
-        return RenderSettings.of(def).clear(true).terrain(true);
+        RenderSettings s = RenderSettings.of(def);
+        s.setClear(true);
+        s.setTerrain(true);
+        return s;
     }
 
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
@@ -104,7 +108,7 @@ final class HeadlessRender {
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
         ViewCamera camera = ViewCamera.of(def.camera(), ground, width / (double) height);
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
-        try (GlContext gl = GlContext.headless(false)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF)) {
             log.println("OpenGL: " + gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {

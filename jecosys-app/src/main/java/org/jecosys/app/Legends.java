@@ -4,6 +4,7 @@ import imgui.ImDrawList;
 import imgui.ImGui;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiWindowFlags;
+import org.jecosys.render.OverlaySettings;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.overlay.GizmoRenderer;
 import org.jecosys.render.overlay.Gizmos;
@@ -71,11 +72,12 @@ final class Legends {
      *
      * @param width     framebuffer width, pixels
      * @param height    framebuffer height, pixels
-     * @param showField whether the map shows the quadtree
-     * @param showWind  whether the map shows the wind
+     * @param shown     what the map shows: the quadtree, the wind
      * @param gizmos    the flows' and agents' gizmos, or null
      */
-    void map(int width, int height, boolean showField, boolean showWind, Gizmos gizmos) {
+    void map(int width, int height, OverlaySettings shown, Gizmos gizmos) {
+        boolean showField = shown.showField();
+        boolean showWind = shown.showWind();
         float s = scale();
         float side = FieldOverlay.mapSide(width, height) / s;
         float left = (width - FieldOverlay.MAP_MARGIN) / s - side;

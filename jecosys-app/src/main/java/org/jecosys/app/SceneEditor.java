@@ -293,16 +293,16 @@ final class SceneEditor {
 
     /** Shows or hides the quadtree map (saved in the scene's render settings). */
     void setShowField(boolean on) {
-        if (on != settings.showField()) {
-            settings.showField(on);
+        if (on != settings.overlays().showField()) {
+            settings.overlays().setShowField(on);
             dirty = true;
         }
     }
 
     /** Shows or hides the wind on the map (saved in the scene's render settings). */
     void setShowWind(boolean on) {
-        if (on != settings.showWind()) {
-            settings.showWind(on);
+        if (on != settings.overlays().showWind()) {
+            settings.overlays().setShowWind(on);
             dirty = true;
         }
     }
@@ -315,7 +315,7 @@ final class SceneEditor {
      */
     void setSun(double azimuth, double elevation) {
         if (azimuth != settings.sunAzimuth() || elevation != settings.sunElevation()) {
-            settings.sun(azimuth, elevation);
+            settings.setSun(azimuth, elevation);
             dirty = true;
         }
     }
@@ -323,7 +323,7 @@ final class SceneEditor {
     /** Sets the terrain tint (saved in the scene's render settings). */
     void setTint(RenderDef.Tint tint) {
         if (tint != settings.tint()) {
-            settings.tint(tint);
+            settings.setTint(tint);
             dirty = true;
         }
     }
@@ -368,7 +368,7 @@ final class SceneEditor {
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
                 l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen(), l.shadows());
         RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
-                settings.tint(), settings.showField(), settings.showWind(), nl,
+                settings.tint(), settings.overlays().showField(), settings.overlays().showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),

@@ -22,6 +22,7 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.overlay.GizmoRenderer;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
@@ -95,7 +96,7 @@ final class Viewer {
         FrameTimes times = new FrameTimes();
         ViewerInput input = new ViewerInput();
         RenderSettings settings = HeadlessRender.settings(def.render());
-        try (GlContext gl = GlContext.windowed(title(false), width, height, false)) {
+        try (GlContext gl = GlContext.windowed(title(false), width, height, DebugOutput.OFF)) {
             long window = gl.window();
             if (quality == null && softwareRenderer(gl.describe())) {
                 DrawQuality.LOW.applyTo(sim);

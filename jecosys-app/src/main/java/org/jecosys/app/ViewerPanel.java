@@ -126,8 +126,8 @@ final class ViewerPanel {
      */
     void overlays(int width, int height, Gizmos gizmos, WindLegend wind) {
         RenderSettings s = renderer.settings();
-        if (s.showField() || s.showWind()) {
-            legends.map(width, height, s.showField(), s.showWind(), gizmos);
+        if (s.overlays().showField() || s.overlays().showWind()) {
+            legends.map(width, height, s.overlays(), gizmos);
         }
         if (controls.showWind()) {
             legends.wind(wind.scale(), wind.speed());
@@ -180,11 +180,11 @@ final class ViewerPanel {
             }
             // a view setting: the scene file keeps its own <light sheen>
             if (ImGui.checkbox("wind sheen on bent grass", s.sheen() > 0)) {
-                s.sheen(s.sheen() > 0 ? 0f : (float) Math.max(0.25, editor.sceneSheen()));
+                s.setSheen(s.sheen() > 0 ? 0f : (float) Math.max(0.25, editor.sceneSheen()));
             }
             // likewise: the scene file keeps its own <light shadows>
             if (ImGui.checkbox("sun shadows", s.shadows() > 0)) {
-                s.shadows(s.shadows() > 0 ? 0f : (float) Math.max(0.6, editor.sceneShadows()));
+                s.setShadows(s.shadows() > 0 ? 0f : (float) Math.max(0.6, editor.sceneShadows()));
             }
             if (s.shadows() > 0) {
                 // how they are drawn: a view setting too (auto: the map on a GPU, the splat on llvmpipe)
@@ -192,7 +192,7 @@ final class ViewerPanel {
                 for (ShadowPath p : ShadowPath.values()) {
                     ImGui.sameLine();
                     if (ImGui.radioButton(SHADOW_LABELS[p.ordinal()], s.shadowPath() == p)) {
-                        s.shadowPath(p);
+                        s.setShadowPath(p);
                     }
                 }
             }
@@ -204,11 +204,11 @@ final class ViewerPanel {
             if (ImGui.checkbox("flow and agent gizmos (G)", controls.showGizmos())) {
                 controls.showGizmos(!controls.showGizmos());
             }
-            if (ImGui.checkbox("map: force-field quadtree (Fig. 2)", s.showField())) {
-                editor.setShowField(!s.showField());
+            if (ImGui.checkbox("map: force-field quadtree (Fig. 2)", s.overlays().showField())) {
+                editor.setShowField(!s.overlays().showField());
             }
-            if (ImGui.checkbox("map: wind vectors (Fig. 3)", s.showWind())) {
-                editor.setShowWind(!s.showWind());
+            if (ImGui.checkbox("map: wind vectors (Fig. 3)", s.overlays().showWind())) {
+                editor.setShowWind(!s.overlays().showWind());
             }
             tint.set(s.tint().ordinal());
             if (ImGui.combo("terrain tint", tint, TINTS)) {

@@ -9,6 +9,7 @@ import java.util.Map;
 import org.jecosys.anim.AnimationMode;
 import org.jecosys.math.Progress;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
@@ -73,12 +74,13 @@ final class PaperScenesSection implements Section {
             sim.add(runs(scene, world, simWarm, simFrames, null, null));
         }
         String renderProblem = null;
-        try (GlContext gl = GlContext.headless(false)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF)) {
             report.glRenderer(gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), WIDTH, HEIGHT)) {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
-                    RenderSettings settings = RenderSettings.standalone().sky(scene.render().sky());
+                    RenderSettings settings = RenderSettings.standalone();
+                    settings.setSky(scene.render().sky());
                     try (SceneRenderer renderer = new SceneRenderer(gl, worlds.get(s), settings)) {
                         fb.bind();
                         int frames = s == 3 ? Math.max(2, renderFrames / 4) : renderFrames;

@@ -10,6 +10,7 @@ import java.util.Map;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.GpuWork;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.RenderSettings;
@@ -70,7 +71,7 @@ final class RenderScaleSection implements Section {
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         Table stepOnlyTable = null;
         Table looksTable;
-        try (GlContext gl = GlContext.headless(false);
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height)) {
             report.glRenderer(gl.describe());
             ResolvePath best = ResolvePath.best(gl);
@@ -94,7 +95,9 @@ final class RenderScaleSection implements Section {
                     for (ResolvePath path : paths) {
                         SceneRenderer r;
                         try {
-                            r = new SceneRenderer(gl, sim.world(), RenderSettings.standalone().sky(def.render().sky()), path);
+                            RenderSettings settings = RenderSettings.standalone();
+                            settings.setSky(def.render().sky());
+                            r = new SceneRenderer(gl, sim.world(), settings, path);
                         } catch (IllegalArgumentException e) {
                             // a path the context cannot run for this scene (a storage buffer too small)
                             skipped.append(" ").append(def.name()).append(" not on ").append(path.name())
@@ -186,7 +189,9 @@ final class RenderScaleSection implements Section {
                 sim.stepFixed(cam);
             }
             Frame f = sim.latestFrame();
-            RenderSettings settings = RenderSettings.of(def.render()).clear(true).terrain(true);
+            RenderSettings settings = RenderSettings.of(def.render());
+            settings.setClear(true);
+            settings.setTerrain(true);
             float sheen = settings.sheen();
             float shadows = settings.shadows() > 0 ? settings.shadows() : 0.6f;
             try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings); GpuWork work = new GpuWork(gl)) {
@@ -197,8 +202,9 @@ final class RenderScaleSection implements Section {
                 for (int v = 0; v < paths.length; v++) {
                     boolean on = v < 3;
                     boolean shade = paths[v] != null;
-                    settings.sheen(on ? sheen : 0f).shadows(shade ? shadows : 0f)
-                            .shadowPath(shade ? paths[v] : ShadowPath.AUTO);
+                    settings.setSheen(on ? sheen : 0f);
+                    settings.setShadows(shade ? shadows : 0f);
+                    settings.setShadowPath(shade ? paths[v] : ShadowPath.AUTO);
                     String shadowName = shade ? paths[v] == ShadowPath.MAP ? "map" : "ground" : "off";
                     double[] ms = new double[frames];
                     double[] vs = new double[frames];

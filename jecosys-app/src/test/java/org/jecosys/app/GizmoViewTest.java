@@ -15,6 +15,7 @@ import org.jecosys.render.overlay.GizmoKind;
 import org.jecosys.render.overlay.GizmoRenderer;
 import org.jecosys.render.overlay.Gizmos;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderScenes;
@@ -83,7 +84,7 @@ class GizmoViewTest {
                 seen.add(g.kind(i));
             }
             assertEquals(EnumSet.allOf(GizmoKind.class), seen, "every kind of gizmo is in the picture");
-            try (GlContext gl = GlContext.headless(true);
+            try (GlContext gl = GlContext.headless(DebugOutput.ON);
                  GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
                  SceneRenderer scene = new SceneRenderer(gl, sim.world(), RenderSettings.standalone());
                  GizmoRenderer gizmos = new GizmoRenderer(gl, sim.world().terrain().heightfield())) {

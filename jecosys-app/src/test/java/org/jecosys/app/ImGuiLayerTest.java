@@ -8,6 +8,7 @@ import imgui.ImGui;
 import java.nio.ByteBuffer;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.GlCensus;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
@@ -32,7 +33,7 @@ class ImGuiLayerTest {
         cam.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer other = MemoryUtil.memAlloc(4 * W * H);
-        try (GlContext gl = GlContext.headless(true);
+        try (GlContext gl = GlContext.headless(DebugOutput.ON);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
              SceneRenderer renderer = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();

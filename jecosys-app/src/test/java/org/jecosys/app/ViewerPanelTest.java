@@ -12,6 +12,7 @@ import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.overlay.GizmoRenderer;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.render.RenderSettings;
@@ -44,12 +45,14 @@ class ViewerPanelTest {
         SceneDef def = SceneFiles.load(file);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE, 1);
-             GlContext gl = GlContext.headless(true);
+             GlContext gl = GlContext.headless(DebugOutput.ON);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H)) {
             ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                     .height(def.camera().x(), def.camera().z()), W / (double) H);
             FlyCamera fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());
-            RenderSettings settings = HeadlessRender.settings(def.render()).showField(true).showWind(true);
+            RenderSettings settings = HeadlessRender.settings(def.render());
+            settings.overlays().setShowField(true);
+            settings.overlays().setShowWind(true);
             SceneEditor editor = new SceneEditor(def, sim, settings);
             ViewerControls controls = new ViewerControls(def, sim, editor, new SceneSaver(file, scenes), fly,
                     new ViewerInput());

@@ -41,6 +41,8 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
     private final float[] chunkBox;
     /** Per chunk, one byte per species: the draw decision's scratch ({@link DrawDecision#decide}). */
     private final byte[] chunkLevels;
+    /** Per chunk, the inputs of its draw decision (refilled each step). */
+    private final RangeDecision[] chunkRange;
 
     // read by the workers during a step (published by the pool's volatile generation)
     private AnimationMode stepMode;
@@ -78,6 +80,10 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         chunkStep = new AnimationStep[chunks];
         chunkBox = draw.baseBoxes(chunkFirstPlant);
         chunkLevels = new byte[chunks * draw.species()];
+        chunkRange = new RangeDecision[chunks];
+        for (int c = 0; c < chunks; c++) {
+            chunkRange[c] = draw.range();
+        }
         for (int c = 0; c < chunks; c++) {
             chunkRng[c] = Rng.forStream(seed, c);
             chunkStep[c] = new AnimationStep().bounds(chunkBox, 6 * c);
@@ -177,8 +183,11 @@ final class ChunkAnimator implements WorkerPool.ChunkTask {
         int o = 6 * chunk;
         boolean inside = frustum[b].intersectAab(box[o], box[o + 1], box[o + 2], box[o + 3], box[o + 4], box[o + 5])
                 == FrustumIntersection.INSIDE;
-        draw.decide(p0, p1, visible[b], e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0], frustum[b], !inside, box, o,
-                chunkLevels, chunk * draw.species(), f);
+        RangeDecision range = chunkRange[chunk];
+        range.setVisible(visible[b]);
+        range.setEye(e[0], e[1], e[2], fs.scale2[b][0], fs.fixed2[b][0]);
+        range.setFrustum(frustum[b], !inside);
+        draw.decide(range, p0, p1, box, o, chunkLevels, chunk * draw.species(), f);
     }
 
     /**

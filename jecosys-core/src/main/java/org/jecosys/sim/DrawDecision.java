@@ -80,8 +80,9 @@ public final class DrawDecision {
     private final float[] radius;
     /** The bands of the step's decision: filled by {@link #prepare} on the stepping thread, read by the workers. */
     private final LevelBands stepBands;
-    /** The bands of {@code decideAll}, its caller's own. */
+    /** The bands of {@code decideAll}, its caller's own, and its range decision over them. */
     private final LevelBands allBands;
+    private final RangeDecision all;
     private volatile double transition = DEFAULT_TRANSITION;
     /** start, end, min fraction: one array, swapped whole, so a decision never sees a mix. */
     private volatile double[] thinning = {ForceFieldDef.DEFAULT_THIN_START, ForceFieldDef.DEFAULT_THIN_END,
@@ -101,6 +102,7 @@ public final class DrawDecision {
         stepBands = new LevelBands(radius.length);
         stepBands.fill(edges, transition);
         allBands = new LevelBands(radius.length);
+        all = new RangeDecision(world, allBands, radius);
     }
 
     /**
@@ -232,7 +234,8 @@ public final class DrawDecision {
         return kept(d, t[0], t[1], t[2]);
     }
 
-    private static double kept(double d, double start, double end, double min) {
+    /** The kept share at distance d for a thinning from start to end down to min (see {@link #thinKept}). */
+    static double kept(double d, double start, double end, double min) {
         if (min >= 1 || d <= start) {
             return 1;
         }
@@ -259,29 +262,36 @@ public final class DrawDecision {
     }
 
     /**
-     * Decides plants {@code [p0, p1)} into {@code frame}: {@link Frame#drawLevel} and
-     * {@link Frame#drawKeep}. Worker threads, each on its own range; no allocation.
-     *
-     * @param visible per plant, whether the field found it visible (and it was animated)
-     * @param scale2  the camera's level-of-detail metric ({@link org.jecosys.math.ViewLod})
-     * @param fixed2  likewise, &lt; 0 for a perspective camera
-     * @param frustum the camera's frustum, read only
-     * @param test    whether to test each plant's bounding sphere against the frustum: false when the
-     *                plants' bases all lie inside it ({@link #baseBoxes}), where every sphere passes
-     * @param box     the boxes of {@link #baseBoxes}; the range's is the six floats at {@code box[o]}
-     * @param o       offset of the range's box
-     * @param levels  scratch of the range's own, one byte per species from {@code levels[u]}
-     * @param u       offset of the range's scratch
+     * A range decision over this decision's world with the bands of the step ({@link #prepare}): a
+     * worker's own, for {@link #decide}. Build time; allocates.
      */
-    void decide(int p0, int p1, boolean[] visible, double ex, double ey, double ez, double scale2, double fixed2,
-                FrustumIntersection frustum, boolean test, float[] box, int o, byte[] levels, int u, Frame frame) {
+    RangeDecision range() {
+        return new RangeDecision(world, stepBands, radius);
+    }
+
+    /**
+     * Decides plants {@code [p0, p1)} into {@code frame}: {@link Frame#drawLevel} and
+     * {@link Frame#drawKeep}, with this step's thinning. Worker threads, each on its own range and
+     * {@code range}; no allocation.
+     *
+     * @param range  the range's inputs, from {@link #range()}: the field's visibility, the camera's eye
+     *               and LOD metric ({@link org.jecosys.math.ViewLod}), its frustum and whether to test
+     *               each plant's bounding sphere against it (no test when the plants' bases all lie
+     *               inside it, {@link #baseBoxes}, where every sphere passes)
+     * @param box    the boxes of {@link #baseBoxes}; the range's is the six floats at {@code box[o]}
+     * @param o      offset of the range's box
+     * @param levels scratch of the range's own, one byte per species from {@code levels[u]}
+     * @param u      offset of the range's scratch
+     */
+    void decide(RangeDecision range, int p0, int p1, float[] box, int o, byte[] levels, int u, Frame frame) {
         double[] thin = thinning;
-        byte[] levelOut = frame.drawLevel;
-        int[] keepOut = frame.drawKeep;
-        if (!test && stepBands.plainLevels(box, o, ex, ey, ez, scale2, fixed2,
-                thin[2] < 1 ? LevelBands.below2(thin[0]) : Double.POSITIVE_INFINITY, levels, u)) {
+        range.setThinning(thin[0], thin[1], thin[2]);
+        if (range.plainLevels(box, o, levels, u)) {
             // the whole range in view and, for each species, within one level's plain window: the levels
             // and windows the per-plant arithmetic gives, without a distance per plant
+            boolean[] visible = range.visible();
+            byte[] levelOut = frame.drawLevel;
+            int[] keepOut = frame.drawKeep;
             for (int p = p0; p < p1; p++) {
                 boolean v = visible[p];
                 levelOut[p] = v ? levels[u + world.plantSpecies(p)] : -1;
@@ -289,8 +299,7 @@ public final class DrawDecision {
             }
             return;
         }
-        decide(world, stepBands, radius, p0, p1, visible, test, ex, ey, ez, scale2, fixed2, frustum, thin[0], thin[1],
-                thin[2], levelOut, keepOut);
+        range.decide(p0, p1, frame.drawLevel, frame.drawKeep);
     }
 
     /** {@return the number of species the decision knows} */
@@ -337,77 +346,6 @@ public final class DrawDecision {
     }
 
     /**
-     * The decision of plants {@code [p0, p1)}, written to {@code levelOut} and {@code keepOut}: the core
-     * of {@link #decide} and of {@link ViewDecision}. A plant not {@code visible} (when given) or whose
-     * bounding sphere misses the frustum (when {@code test}) is not drawn (level -1); otherwise its level
-     * is where its equivalent distance ({@link org.jecosys.math.ViewLod}) falls among the edges, with the
-     * next level too in a transition band, and distance thinning by its real distance. No allocation.
-     */
-    static void decide(World world, LevelBands bands, float[] radius, int p0, int p1, boolean[] visible, boolean test,
-                       double ex, double ey, double ez, double scale2, double fixed2, FrustumIntersection frustum,
-                       double thinStart, double thinEnd, double thinMin, byte[] levelOut, int[] keepOut) {
-        boolean thinned = thinMin < 1;
-        // below this squared distance no plant is thinned (the thinning needs the distance itself)
-        double unthinned2 = thinned ? LevelBands.below2(thinStart) : Double.POSITIVE_INFINITY;
-        for (int p = p0; p < p1; p++) {
-            int s = world.plantSpecies(p);
-            float x = world.plantX(p);
-            float y = world.plantY(p);
-            float z = world.plantZ(p);
-            if ((visible != null && !visible[p]) || (test && !frustum.testSphere(x, y, z, radius[s]))) {
-                levelOut[p] = -1;
-                keepOut[p] = 0;
-                continue;
-            }
-            double dx = x - ex;
-            double dy = y - ey;
-            double dz = z - ez;
-            double d2 = dx * dx + dy * dy + dz * dz;
-            double q2 = org.jecosys.math.ViewLod.equivalent2(d2, scale2, fixed2);
-            int levels = bands.levels[s];
-            double[] edge = bands.edges[s];
-            int l = 0;
-            while (l < levels - 1) {
-                double e = edge[l];
-                if (q2 < e * e) {
-                    break;
-                }
-                l++;
-            }
-            double[] plain = bands.plain[s];
-            if (q2 >= plain[2 * l] && q2 <= plain[2 * l + 1] && d2 < unthinned2) {
-                // level l whole and alone, unthinned: what the window's arithmetic below gives there
-                levelOut[p] = (byte) l;
-                keepOut[p] = 255;
-                continue;
-            }
-            double q = Math.sqrt(q2);
-            double b = bands.band[s];
-            int keep = keep(edge, l, levels, q, b);
-            if (l < levels - 1 && b > 0 && q > edge[l] - b) {
-                keep |= keep(edge, l + 1, levels, q, b) << 16;
-            }
-            if (thinned) {
-                double d = q2 == d2 ? q : Math.sqrt(d2);
-                if (d > thinStart) {
-                    double r = (1 + THIN_FADE) * kept(d, thinStart, thinEnd, thinMin);
-                    double a = (r - thinRank(p)) / THIN_FADE;
-                    if (a < 1) {
-                        keep = a * 255 < 0.5 ? 0 : scaleKeep(keep, a);
-                        if (keep == 0) {
-                            levelOut[p] = -1;
-                            keepOut[p] = 0;
-                            continue;
-                        }
-                    }
-                }
-            }
-            levelOut[p] = (byte) l;
-            keepOut[p] = keep;
-        }
-    }
-
-    /**
      * Decides every plant of {@code frame} for {@code camera}, all taken as visible to the field:
      * for frames built without the animation engine (a renderer preview, tests). The caller's thread;
      * uses this object's own matrices, so one call at a time; no allocation.
@@ -425,9 +363,12 @@ public final class DrawDecision {
         frustum.set(camera.viewProjection(viewProjection), true); // normalised planes for testSphere
         java.util.Arrays.fill(frame.plantVisible, true);
         double[] thin = thinning;
-        decide(world, allBands.fill(edges, transition), radius, 0, world.plantCount(), frame.plantVisible, true,
-                camera.x(), camera.y(), camera.z(), 1, -1, frustum, thin[0], thin[1], thin[2], frame.drawLevel,
-                frame.drawKeep);
+        allBands.fill(edges, transition);
+        all.setVisible(frame.plantVisible);
+        all.setEye(camera.x(), camera.y(), camera.z(), 1, -1);
+        all.setFrustum(frustum, true);
+        all.setThinning(thin[0], thin[1], thin[2]);
+        all.decide(0, world.plantCount(), frame.drawLevel, frame.drawKeep);
         frame.setThinning(thinStart(), thinEnd(), thinMinFraction());
         // the distances are taken as meant for this camera's own lens: another camera drawing the
         // frame decides the same way relative to it
@@ -439,7 +380,8 @@ public final class DrawDecision {
     }
 
     /**
-     * The packed dither window of level {@code l} for a plant at distance {@code d}: level l keeps
+     * The packed dither window of level {@code l} for a plant at distance {@code d} (the core of
+     * {@link RangeDecision#decide}): level l keeps
      * the bayer thresholds in {@code [handOver, received)} (both /255), where handOver is the share
      * already given to level l + 1 and received the share taken over from level l - 1; packed as
      * {@code 256 handOver + received}. The windows of neighbouring levels tile [0, 255] at every

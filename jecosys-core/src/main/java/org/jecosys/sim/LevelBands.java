@@ -6,7 +6,7 @@ package org.jecosys.sim;
  * (metres) and the transition band it uses (the decision's, at most the smallest gap between its
  * edges); and per level its plain window, the squared equivalent distances where the level is drawn
  * whole and alone, which let the decision skip a plant's square root and dither arithmetic, or a
- * whole chunk's distances ({@link #plainLevels}). Sized for the world's species; {@link #fill}
+ * whole chunk's distances ({@link RangeDecision#plainLevels}). Sized for the world's species; {@link #fill}
  * allocates only when a species has more levels than before. One thread fills it, then any read it.
  */
 final class LevelBands {
@@ -75,41 +75,5 @@ final class LevelBands {
     /** A square that a squared distance stays below only when the distance is surely below {@code e}; -1 for e &lt;= 0. */
     static double below2(double e) {
         return e > 0 ? e * e * (1 - PLAIN_MARGIN) : -1;
-    }
-
-    /**
-     * Whether every plant whose base lies in the box at {@code box[o]} (min X, Y, Z, max X, Y, Z,
-     * metres) is, for its species, within the plain window of one level and nearer than the thinning
-     * (squared distance below {@code unthinned2}): then writes that level per species into
-     * {@code levels[u + s]}. The box's nearest and farthest squared distances from the eye, widened by
-     * {@link #PLAIN_MARGIN}, bound every base's. No allocation.
-     */
-    boolean plainLevels(float[] box, int o, double ex, double ey, double ez, double scale2, double fixed2,
-                        double unthinned2, byte[] out, int u) {
-        if (!(box[o] <= box[o + 3])) {
-            return false; // no plant
-        }
-        double near2 = org.jecosys.math.Boxes.near2(box, o, ex, ey, ez);
-        double far2 = org.jecosys.math.Boxes.far2(box, o, ex, ey, ez);
-        near2 *= 1 - PLAIN_MARGIN;
-        far2 *= 1 + PLAIN_MARGIN;
-        if (!(far2 < unthinned2)) {
-            return false;
-        }
-        double q2near = org.jecosys.math.ViewLod.equivalent2(near2, scale2, fixed2);
-        double q2far = org.jecosys.math.ViewLod.equivalent2(far2, scale2, fixed2);
-        for (int s = 0; s < levels.length; s++) {
-            double[] edge = edges[s];
-            int l = 0;
-            while (l < levels[s] - 1 && !(q2near < edge[l] * edge[l])) {
-                l++;
-            }
-            double[] w = plain[s];
-            if (!(q2near >= w[2 * l] && q2far <= w[2 * l + 1])) {
-                return false;
-            }
-            out[u + s] = (byte) l;
-        }
-        return true;
     }
 }

@@ -36,6 +36,7 @@ public final class ViewDecision {
     private final double[] metric = new double[2];
     private final FrameEdges edges = new FrameEdges();
     private final LevelBands bands;
+    private final RangeDecision range;
     private int drawn;
 
     /** The edges a frame recorded, read through {@link DrawDecision.Edges}. */
@@ -66,6 +67,7 @@ public final class ViewDecision {
             radius[s] = DrawDecision.boundingRadius(species.get(s));
         }
         bands = new LevelBands(radius.length);
+        range = new RangeDecision(world, bands, radius);
         int plants = world.plantCount();
         level = new byte[plants];
         keep = new int[plants];
@@ -105,9 +107,8 @@ public final class ViewDecision {
         edges.frame = frame;
         frustum.set(camera.viewProjection(viewProjection), true);
         ViewLod.metric(camera, frame.lodReference(), projection, metric);
-        double ex = camera.x();
-        double ey = camera.y();
-        double ez = camera.z();
+        range.setEye(camera.x(), camera.y(), camera.z(), metric[0], metric[1]);
+        range.setThinning(frame.thinStart(), frame.thinEnd(), frame.thinMinFraction());
         bands.fill(edges, frame.lodTransition());
         int plants = world.plantCount();
         int n = 0;
@@ -121,9 +122,8 @@ public final class ViewDecision {
                 Arrays.fill(keep, p0, p1, 0);
                 continue;
             }
-            DrawDecision.decide(world, bands, radius, p0, p1, null, res == FrustumIntersection.INTERSECT, ex, ey, ez,
-                    metric[0], metric[1], frustum, frame.thinStart(), frame.thinEnd(), frame.thinMinFraction(), level,
-                    keep);
+            range.setFrustum(frustum, res == FrustumIntersection.INTERSECT);
+            range.decide(p0, p1, level, keep);
             for (int p = p0; p < p1; p++) {
                 n += level[p] >= 0 ? 1 : 0;
             }

@@ -41,6 +41,8 @@ class PlainWindowTest {
         for (double transition : new double[] {0, 0.4, 1.0}) {
             LevelBands fast = new LevelBands(species).fill(edges, transition);
             LevelBands slow = new LevelBands(species).fill(edges, transition);
+            RangeDecision fastRange = new RangeDecision(world, fast, radius);
+            RangeDecision slowRange = new RangeDecision(world, slow, radius);
             for (double[] w : slow.plain) {
                 for (int i = 0; i < w.length; i += 2) {
                     w[i] = Double.POSITIVE_INFINITY; // no plain window: always the full arithmetic
@@ -63,10 +65,13 @@ class PlainWindowTest {
                 byte[] ls = new byte[plants];
                 int[] kf = new int[plants];
                 int[] ks = new int[plants];
-                DrawDecision.decide(world, fast, radius, 0, plants, null, false, ex, ey, ez, 1, -1, null, thinStart,
-                        thinEnd, thinMin, lf, kf);
-                DrawDecision.decide(world, slow, radius, 0, plants, null, false, ex, ey, ez, 1, -1, null, thinStart,
-                        thinEnd, thinMin, ls, ks);
+                for (RangeDecision d : new RangeDecision[] {fastRange, slowRange}) {
+                    d.setEye(ex, ey, ez, 1, -1);
+                    d.setFrustum(null, false);
+                    d.setThinning(thinStart, thinEnd, thinMin);
+                }
+                fastRange.decide(0, plants, lf, kf);
+                slowRange.decide(0, plants, ls, ks);
                 String where = "transition " + transition + ", eye " + target + " m from plant " + p;
                 assertArrayEquals(ls, lf, where);
                 assertArrayEquals(ks, kf, where);

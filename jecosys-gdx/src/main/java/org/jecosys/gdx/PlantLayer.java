@@ -6,6 +6,7 @@ import java.io.IOException;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.Scene;
@@ -52,7 +53,7 @@ public final class PlantLayer implements Disposable {
      * @param simulation the plants; the layer owns it from now on and closes it in {@link #dispose()}
      *                   (also when this constructor fails)
      * @param settings   the look ({@link RenderSettings#of(org.jecosys.scene.SceneDef)} for the
-     *                   scene's own light; {@code .terrain(true)} adds the library's terrain mesh); read
+     *                   scene's own light; {@code setTerrain(true)} adds the library's terrain mesh); read
      *                   every frame, so the game may change it between frames
      * @throws IllegalStateException when no OpenGL 3.3 context is current on this thread
      */
@@ -61,7 +62,7 @@ public final class PlantLayer implements Disposable {
         Require.nonNull("settings", settings);
         GlContext g = null;
         try {
-            g = GlContext.current(false);
+            g = GlContext.current(DebugOutput.OFF);
             renderer = new SceneRenderer(g, simulation.world(), settings);
         } catch (RuntimeException e) {
             if (g != null) {

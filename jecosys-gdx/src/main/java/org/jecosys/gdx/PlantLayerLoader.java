@@ -122,7 +122,8 @@ public final class PlantLayerLoader extends AsynchronousAssetLoader<PlantLayer, 
         if (p == null || p.simulation == null) {
             throw new GdxRuntimeException(fileName + ": the scene was not built (loadAsync did not finish)");
         }
-        RenderSettings settings = RenderSettings.of(p.scene.def()).terrain(parameter != null && parameter.terrain);
+        RenderSettings settings = RenderSettings.of(p.scene.def());
+        settings.setTerrain(parameter != null && parameter.terrain);
         return new PlantLayer(p.simulation, settings); // closes the simulation if it fails
     }
 

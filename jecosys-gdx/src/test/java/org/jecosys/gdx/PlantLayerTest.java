@@ -10,6 +10,7 @@ import com.badlogic.gdx.graphics.PerspectiveCamera;
 import com.badlogic.gdx.utils.GdxNativesLoader;
 import java.lang.management.ManagementFactory;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.terrain.Heightfield;
 import org.junit.jupiter.api.BeforeAll;
@@ -29,7 +30,7 @@ class PlantLayerTest {
 
     @Test
     void updateAndRenderAllocateNothingAfterWarmUpAndADisposedLayerRefusesThem() throws Exception {
-        try (GlContext owner = GlContext.headless(true)) {
+        try (GlContext owner = GlContext.headless(DebugOutput.ON)) {
             GlFramebuffer target = new GlFramebuffer(GlContexts.tracker(owner), 320, 180);
             PlantLayer layer = PlantLayer.load(new Lwjgl3Files().classpath("org/jecosys/gdx/tiny/tiny.xml"));
             try {

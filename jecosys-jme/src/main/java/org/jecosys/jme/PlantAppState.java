@@ -13,6 +13,7 @@ import java.io.IOException;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.scene.Scene;
@@ -107,7 +108,7 @@ public class PlantAppState extends BaseAppState {
     @Override
     protected void initialize(Application app) {
         try {
-            gl = GlContext.current(false);
+            gl = GlContext.current(DebugOutput.OFF);
             renderer = new SceneRenderer(gl, simulation.world(), settings);
         } catch (RuntimeException e) {
             if (gl != null) {

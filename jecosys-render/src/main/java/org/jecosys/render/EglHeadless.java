@@ -38,7 +38,7 @@ import org.lwjgl.system.MemoryUtil;
  * GLFW): on Mesa (llvmpipe) the surfaceless platform, on GPU drivers without it (NVIDIA) the first
  * EGL device that initialises. The renderers draw into framebuffer objects. Works on LWJGL 3.3.3 and
  * 3.4.x alike (GLFW's null platform with EGL does not initialise on 3.3.3). Package-private: reached
- * through {@link GlContext#headless(boolean)}. Load time; allocates.
+ * through {@link GlContext#headless(GlContext.DebugOutput)}. Load time; allocates.
  */
 final class EglHeadless {
     /** {@code EGL_PLATFORM_SURFACELESS_MESA} (EGL_MESA_platform_surfaceless). */

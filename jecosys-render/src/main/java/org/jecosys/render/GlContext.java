@@ -34,7 +34,7 @@ import org.jecosys.render.gl.GlTracker;
  * it, which becomes the render thread: every GL call of the renderers made with this object must
  * happen on it ({@link #checkThread()}). Three ways to get one:
  * <ul>
- * <li>{@link #current(boolean)} wraps the context the caller (a game) made current on this thread,
+ * <li>{@link #current(DebugOutput)} wraps the context the caller (a game) made current on this thread,
  * with any windowing library: no window is made, no GLFW call is made and no callback is touched;
  * {@link #close()} frees only what the library made (its debug callback, when asked for one) and
  * leaves the context, the window and GLFW to their owner.</li>
@@ -47,8 +47,32 @@ import org.jecosys.render.gl.GlTracker;
  * {@link #close()} (idempotent) destroys the window, frees the error callback and terminates GLFW. A
  * headless context's {@link #close()} destroys its EGL context and display. Close every renderer
  * first (see {@link #tracker()}).
+ *
+ * <p>Each of the three takes a {@link DebugOutput}: whether the library asks for a debug context and
+ * turns the GL's KHR_debug messages into exceptions ({@code GlContext.headless(DebugOutput.ON)} in
+ * tests, {@code GlContext.current(DebugOutput.OFF)} in a game).
  */
 public final class GlContext implements AutoCloseable {
+    /**
+     * Whether a context's GL debug output is on: a debug context where the library makes one, and a
+     * KHR_debug message callback that turns GL errors into exceptions ({@link #debug()}). On costs
+     * time on every GL call on some drivers; tests turn it on, games leave it off.
+     */
+    public enum DebugOutput {
+        /** No debug callback; a context the library makes is an ordinary one. */
+        OFF,
+        /**
+         * A debug context (where the library makes it) and a KHR_debug callback that turns GL errors
+         * into exceptions; for a wrapped context it replaces the host's callback until {@link #close()}.
+         */
+        ON;
+
+        /** {@return whether this is {@link #ON}} */
+        boolean on() {
+            return this == ON;
+        }
+    }
+
     private final long window;
     private final Thread thread;
     private final GlTracker tracker = new GlTracker();
@@ -74,15 +98,18 @@ public final class GlContext implements AutoCloseable {
      * Makes no window and calls no GLFW function; uses the thread's LWJGL capabilities when the host
      * has created them ({@code GL.createCapabilities()}) and creates them otherwise. Allocates.
      *
-     * @param debug whether to install a KHR_debug message callback that turns GL errors into
-     *              exceptions ({@link #debug()}); it replaces the host's debug callback, if any, until
-     *              {@link #close()}, so leave it off unless you want the library's checks
+     * @param debug {@link DebugOutput#ON} to install a KHR_debug message callback that turns GL errors
+     *              into exceptions ({@link #debug()}); it replaces the host's debug callback, if any,
+     *              until {@link #close()}, so leave it {@link DebugOutput#OFF} unless you want the
+     *              library's checks
      * @return a context object that does not own the context: its {@link #close()} leaves the context,
      *         the window and GLFW alone
      * @throws IllegalStateException when no context is current on this thread, or it is older than
      *                               OpenGL 3.3, or LWJGL is older than {@link LwjglVersion#MINIMUM_TEXT}
+     * @throws IllegalArgumentException when {@code debug} is null
      */
-    public static GlContext current(boolean debug) {
+    public static GlContext current(DebugOutput debug) {
+        requireDebug(debug);
         LwjglVersion.require();
         GLCapabilities caps;
         try {
@@ -100,8 +127,14 @@ public final class GlContext implements AutoCloseable {
             throw new IllegalStateException("JEcoSys needs OpenGL 3.3 core; the current context is "
                     + glGetString(GL_VERSION));
         }
-        GlDebug dbg = debug ? new GlDebug(caps) : null;
+        GlDebug dbg = debug.on() ? new GlDebug(caps) : null;
         return new GlContext(0, caps, dbg, null, new String[1]);
+    }
+
+    private static void requireDebug(DebugOutput debug) {
+        if (debug == null) {
+            throw new IllegalArgumentException("debug must be DebugOutput.ON or DebugOutput.OFF, got null");
+        }
     }
 
     /**
@@ -122,15 +155,17 @@ public final class GlContext implements AutoCloseable {
      * any size. OpenGL 4.5, else 4.3, else 3.3, core profile. Calls no GLFW function. Fails with a
      * clear message when no context can be made.
      *
-     * @param debug whether to turn on KHR_debug output ({@link #debug()}); tests do
+     * @param debug whether KHR_debug output is on ({@link #debug()}); tests turn it on
      * @return a context current on this thread, which becomes the render thread; owns the EGL
      *         display and context
      * @throws IllegalStateException when EGL or an OpenGL 3.3 core context cannot be made, or LWJGL is
      *                               older than {@link LwjglVersion#MINIMUM_TEXT}
+     * @throws IllegalArgumentException when {@code debug} is null
      */
-    public static GlContext headless(boolean debug) {
+    public static GlContext headless(DebugOutput debug) {
+        requireDebug(debug);
         LwjglVersion.require();
-        EglHeadless egl = EglHeadless.create(debug);
+        EglHeadless egl = EglHeadless.create(debug.on());
         GLCapabilities caps;
         try {
             caps = GL.createCapabilities();
@@ -142,7 +177,7 @@ public final class GlContext implements AutoCloseable {
             throw e;
         }
         GlDebug dbg = null;
-        if (debug) {
+        if (debug.on()) {
             try {
                 dbg = new GlDebug(caps);
             } catch (RuntimeException e) {
@@ -164,13 +199,15 @@ public final class GlContext implements AutoCloseable {
      * @param title  window title
      * @param width  client width, pixels
      * @param height client height, pixels
-     * @param debug  whether to turn on KHR_debug output ({@link #debug()})
+     * @param debug  whether KHR_debug output is on ({@link #debug()})
      * @return the context; owns the window and GLFW
      * @throws IllegalStateException when GLFW or the context cannot be made (e.g. no display)
+     * @throws IllegalArgumentException when {@code debug} is null
      */
-    public static GlContext windowed(String title, int width, int height, boolean debug) {
+    public static GlContext windowed(String title, int width, int height, DebugOutput debug) {
+        requireDebug(debug);
         LwjglVersion.require();
-        return create(title, width, height, debug);
+        return create(title, width, height, debug.on());
     }
 
     private static GlContext create(String title, int width, int height, boolean debug) {

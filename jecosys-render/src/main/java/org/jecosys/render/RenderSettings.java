@@ -7,10 +7,12 @@ import org.jecosys.scene.SceneDef;
 
 /**
  * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
- * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, overlays,
- * and whether the library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it
- * from a scene's {@code <render>} settings. Colours are display (sRGB) values in [0, 1], as a colour picker gives them; the renderer
- * writes them unconverted. Render thread only; setters do not allocate
+ * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, the
+ * force-field overlays ({@link #overlays()}), and whether the library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it
+ * from a scene's {@code <render>} settings. Colours are display (sRGB) values in [0, 1], as a colour
+ * picker gives them; the renderer writes them unconverted. Each value has a getter {@code x()} and a
+ * setter {@code setX(...)} that checks its arguments and returns nothing. Render thread only (or
+ * whichever thread owns the settings while the renderer does not read them); setters do not allocate
  * (they keep the {@link Rgb} given).
  *
  * <p>Per-plant colour variation is per species, not here: {@code world.plants().species().get(s).def()
@@ -38,8 +40,7 @@ public final class RenderSettings {
     private float patchStrength = 0.3f;
     private int patchSeed = 1;
     private RenderDef.Tint tint = RenderDef.Tint.NONE;
-    private boolean showField;
-    private boolean showWind;
+    private final OverlaySettings overlays = new OverlaySettings();
     private float fogStart = 20;
     private float fogEnd = 150;
     private boolean clear;
@@ -59,7 +60,7 @@ public final class RenderSettings {
      * {@link #standalone()} adds the library's sky and terrain. Allocates.
      */
     public RenderSettings() {
-        sun(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION);
+        setSun(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION);
     }
 
     /**
@@ -70,7 +71,10 @@ public final class RenderSettings {
      * @return new settings with {@link #clear()} and {@link #terrain()} on
      */
     public static RenderSettings standalone() {
-        return new RenderSettings().clear(true).terrain(true);
+        RenderSettings s = new RenderSettings();
+        s.setClear(true);
+        s.setTerrain(true);
+        return s;
     }
 
     /**
@@ -78,7 +82,7 @@ public final class RenderSettings {
      * light, contact shadow, fog, colour patches, ground cover, terrain tint and overlays
      * ({@code RenderDef}, its {@code <light>}, {@code <patches>} and {@code <groundCover>}). Clearing and
      * the terrain stay off, as for any guest; the
-     * viewer adds {@code .clear(true).terrain(true)}. Any thread; allocates.
+     * viewer adds {@code setClear(true)} and {@code setTerrain(true)}. Any thread; allocates.
      *
      * @param scene the scene
      * @return new settings
@@ -98,14 +102,23 @@ public final class RenderSettings {
         RenderDef.Tint tint = def.terrainTint();
         RenderDef.Light l = def.light();
         RenderDef.Patches p = def.patches();
-        return new RenderSettings().sky(def.sky()).tint(tint)
-                .showField(def.showField()).showWind(def.showWind())
-                .sun(l.sunAzimuth(), l.sunElevation())
-                .sunColour(l.sunColour()).sunIntensity((float) l.sunIntensity()).skyZenith(l.skyZenith())
-                .ambient(l.ambient()).contactShadow((float) l.contactShadow())
-                .fog((float) l.fogStart(), (float) l.fogEnd()).sheen((float) l.sheen()).shadows((float) l.shadows())
-                .patches((float) p.scale(), (float) p.strength(), p.seed())
-                .groundCover(def.groundCover());
+        RenderSettings s = new RenderSettings();
+        s.setSky(def.sky());
+        s.setTint(tint);
+        s.overlays.setShowField(def.showField());
+        s.overlays.setShowWind(def.showWind());
+        s.setSun(l.sunAzimuth(), l.sunElevation());
+        s.setSunColour(l.sunColour());
+        s.setSunIntensity((float) l.sunIntensity());
+        s.setSkyZenith(l.skyZenith());
+        s.setAmbient(l.ambient());
+        s.setContactShadow((float) l.contactShadow());
+        s.setFog((float) l.fogStart(), (float) l.fogEnd());
+        s.setSheen((float) l.sheen());
+        s.setShadows((float) l.shadows());
+        s.setPatches((float) p.scale(), (float) p.strength(), p.seed());
+        s.setGroundCover(def.groundCover());
+        return s;
     }
 
     /** {@return the strength of the wind's sheen on bent blades and ground cover, 0 for none} */
@@ -120,12 +133,10 @@ public final class RenderSettings {
      * it. Render thread; no allocation.
      *
      * @param strength in [0, 2]; 0 turns it off, 1 is the default
-     * @return this settings object
      */
-    public RenderSettings sheen(float strength) {
+    public void setSheen(float strength) {
         Require.range("sheen", strength, 0, 2);
         sheen = strength;
-        return this;
     }
 
     /** {@return the strength of the plants' sun shadows on the ground, 0 for none} */
@@ -140,12 +151,10 @@ public final class RenderSettings {
      * (the software path; plants do not shade each other). Render thread; no allocation.
      *
      * @param strength in [0, 1]; 0 (the default) turns them off
-     * @return this settings object
      */
-    public RenderSettings shadows(float strength) {
+    public void setShadows(float strength) {
         Require.range("shadows", strength, 0, 1);
         shadows = strength;
-        return this;
     }
 
     /** {@return how the sun shadows are drawn, {@link ShadowPath#AUTO} by default} */
@@ -160,11 +169,9 @@ public final class RenderSettings {
      * settings; read by the render thread every frame. No allocation.
      *
      * @param path not null
-     * @return this
      */
-    public RenderSettings shadowPath(ShadowPath path) {
+    public void setShadowPath(ShadowPath path) {
         shadowPath = Require.nonNull("shadowPath", path);
-        return this;
     }
 
     /** {@return how far from the eye the shadow map reaches, metres} */
@@ -179,12 +186,10 @@ public final class RenderSettings {
      * allocation.
      *
      * @param metres in [2, 200]
-     * @return this
      */
-    public RenderSettings shadowReach(float metres) {
+    public void setShadowReach(float metres) {
         Require.range("shadowReach", metres, 2, 200);
         shadowReach = metres;
-        return this;
     }
 
     /** {@return the ground cover: the short layer hiding the soil where plants grow ({@code <groundCover>})} */
@@ -200,11 +205,9 @@ public final class RenderSettings {
      * allocation.
      *
      * @param cover the cover, not null
-     * @return this settings object
      */
-    public RenderSettings groundCover(RenderDef.GroundCover cover) {
+    public void setGroundCover(RenderDef.GroundCover cover) {
         groundCover = Require.nonNull("cover", cover);
-        return this;
     }
 
     /**
@@ -214,10 +217,9 @@ public final class RenderSettings {
      *
      * @param azimuth   compass angle of the sun, radians, in [-2 pi, 2 pi]
      * @param elevation height above the horizon, radians, in [0, pi / 2]
-     * @return this settings object
      * @throws IllegalArgumentException when an angle is out of range or not finite
      */
-    public RenderSettings sun(double azimuth, double elevation) {
+    public void setSun(double azimuth, double elevation) {
         Require.range("sunAzimuth", azimuth, -2 * Math.PI, 2 * Math.PI);
         Require.range("sunElevation", elevation, 0, Math.PI / 2);
         sunAzimuth = azimuth;
@@ -227,7 +229,6 @@ public final class RenderSettings {
         sunX = (float) (Math.cos(el) * Math.cos(az));
         sunY = (float) Math.sin(el);
         sunZ = (float) (Math.cos(el) * Math.sin(az));
-        return this;
     }
 
     /** {@return the sun's azimuth, radians, as last set} */
@@ -264,11 +265,9 @@ public final class RenderSettings {
      * Sets the colour of the sunlight.
      *
      * @param colour the sun colour, not null
-     * @return this settings object
      */
-    public RenderSettings sunColour(Rgb colour) {
+    public void setSunColour(Rgb colour) {
         this.sunColour = Require.nonNull("sunColour", colour);
-        return this;
     }
 
     /** {@return the multiplier of the sun colour: the direct light is sunColour x sunIntensity} */
@@ -280,13 +279,11 @@ public final class RenderSettings {
      * Sets the sun's intensity.
      *
      * @param intensity multiplier of {@link #sunColour()}, in [0, 4]
-     * @return this settings object
      * @throws IllegalArgumentException when out of range
      */
-    public RenderSettings sunIntensity(float intensity) {
+    public void setSunIntensity(float intensity) {
         Require.range("sunIntensity", intensity, 0, 4);
         this.sunIntensity = intensity;
-        return this;
     }
 
     /** {@return the sky colour straight up (the gradient runs from {@link #sky()} at the horizon)} */
@@ -298,11 +295,9 @@ public final class RenderSettings {
      * Sets the sky colour straight up.
      *
      * @param zenith the zenith colour, not null
-     * @return this settings object
      */
-    public RenderSettings skyZenith(Rgb zenith) {
+    public void setSkyZenith(Rgb zenith) {
         this.skyZenith = Require.nonNull("skyZenith", zenith);
-        return this;
     }
 
     /** {@return the ambient (sky) light on an upward-facing surface, colour times strength} */
@@ -314,11 +309,9 @@ public final class RenderSettings {
      * Sets the ambient (sky) light.
      *
      * @param ambient colour times strength of the light from the whole sky, not null
-     * @return this settings object
      */
-    public RenderSettings ambient(Rgb ambient) {
+    public void setAmbient(Rgb ambient) {
         this.ambient = Require.nonNull("ambient", ambient);
-        return this;
     }
 
     /**
@@ -333,13 +326,11 @@ public final class RenderSettings {
      * Sets the contact-shadow strength.
      *
      * @param strength darkening of fully occluded ground, in [0, 1]
-     * @return this settings object
      * @throws IllegalArgumentException when out of range
      */
-    public RenderSettings contactShadow(float strength) {
+    public void setContactShadow(float strength) {
         Require.range("contactShadow", strength, 0, 1);
         this.contactShadow = strength;
-        return this;
     }
 
     /** {@return the feature size of the healthy/dry colour patches, metres} */
@@ -364,16 +355,14 @@ public final class RenderSettings {
      * @param scaleMetres feature size of the noise, metres, in [0.5, 1000]
      * @param strength    how far the driest patches go toward dry, in [0, 1]; 0 turns them off
      * @param seed        seed of the noise, any int
-     * @return this settings object
      * @throws IllegalArgumentException when a value is out of range
      */
-    public RenderSettings patches(float scaleMetres, float strength, int seed) {
+    public void setPatches(float scaleMetres, float strength, int seed) {
         Require.range("patchScale", scaleMetres, 0.5, 1000);
         Require.range("patchStrength", strength, 0, 1);
         patchScale = scaleMetres;
         patchStrength = strength;
         patchSeed = seed;
-        return this;
     }
 
     /** {@return the sky colour at the horizon, also the fog (aerial perspective) and clear colour} */
@@ -385,11 +374,9 @@ public final class RenderSettings {
      * Sets the sky colour at the horizon.
      *
      * @param sky the horizon, fog and clear colour, not null
-     * @return this settings object
      */
-    public RenderSettings sky(Rgb sky) {
+    public void setSky(Rgb sky) {
         this.sky = Require.nonNull("sky", sky);
-        return this;
     }
 
 
@@ -402,43 +389,17 @@ public final class RenderSettings {
      * Sets the terrain tint.
      *
      * @param tint which resource map tints the terrain, not null
-     * @return this settings object
      */
-    public RenderSettings tint(RenderDef.Tint tint) {
+    public void setTint(RenderDef.Tint tint) {
         this.tint = Require.nonNull("tint", tint);
-        return this;
-    }
-
-    /** {@return whether the force-field quadtree overlay (paper Figure 2) is drawn} */
-    public boolean showField() {
-        return showField;
     }
 
     /**
-     * Shows or hides the quadtree overlay.
-     *
-     * @param show true to draw it
-     * @return this settings object
+     * {@return the force-field overlays (the quadtree and the wind vectors): this object's own, read
+     * every frame; change them through it}
      */
-    public RenderSettings showField(boolean show) {
-        this.showField = show;
-        return this;
-    }
-
-    /** {@return whether wind vectors per effective node (paper Figure 3) are drawn} */
-    public boolean showWind() {
-        return showWind;
-    }
-
-    /**
-     * Shows or hides the wind vectors.
-     *
-     * @param show true to draw them
-     * @return this settings object
-     */
-    public RenderSettings showWind(boolean show) {
-        this.showWind = show;
-        return this;
+    public OverlaySettings overlays() {
+        return overlays;
     }
 
     /**
@@ -460,17 +421,15 @@ public final class RenderSettings {
      *
      * @param start distance where fog begins, metres, &gt;= 0
      * @param end   distance of full fog, metres, &gt; start
-     * @return this settings object
      * @throws IllegalArgumentException when the range is empty or starts below 0
      */
-    public RenderSettings fog(float start, float end) {
+    public void setFog(float start, float end) {
         Require.nonNegative("fogStart", start);
         if (!(end > start)) {
             throw new IllegalArgumentException("fog end must be > start, got " + start + ".." + end);
         }
         fogStart = start;
         fogEnd = end;
-        return this;
     }
 
     /**
@@ -489,11 +448,9 @@ public final class RenderSettings {
      * Sets whether the renderer clears its viewport before drawing (see {@link #clear()}).
      *
      * @param clear true to clear colour and depth of the viewport first
-     * @return this settings object
      */
-    public RenderSettings clear(boolean clear) {
+    public void setClear(boolean clear) {
         this.clear = clear;
-        return this;
     }
 
     /**
@@ -510,11 +467,9 @@ public final class RenderSettings {
      * Sets whether the library draws the scene's terrain (see {@link #terrain()}).
      *
      * @param terrain true to draw the terrain mesh
-     * @return this settings object
      */
-    public RenderSettings terrain(boolean terrain) {
+    public void setTerrain(boolean terrain) {
         this.terrain = terrain;
-        return this;
     }
 
     /**
@@ -528,50 +483,6 @@ public final class RenderSettings {
      * @return the level, in [0, 1]
      */
     public float patchLevel(float x, float z) {
-        return patchNoise(x / patchScale, z / patchScale, patchSeed);
-    }
-
-    /**
-     * {@link #patchLevel} at a point given in patch units (metres / patch size): two octaves of value
-     * noise made into patches with a smooth step; {@code patches.glsl} computes the same function.
-     * Any thread; no allocation.
-     *
-     * @param px   X in patch units
-     * @param pz   Z in patch units
-     * @param seed the patches' seed
-     * @return the level before strength, in [0, 1]
-     */
-    public static float patchNoise(float px, float pz, int seed) {
-        float n = 0.65f * valueNoise(px, pz, seed) + 0.35f * valueNoise(2.7f * px, 2.7f * pz, seed + 1013);
-        float t = Math.max(0, Math.min(1, (n - 0.35f) / 0.3f));
-        return t * t * (3 - 2 * t);
-    }
-
-    /** Bilinear value noise with smooth interpolation, in [0, 1]; mirrored in terrain.frag. */
-    static float valueNoise(float x, float z, int seed) {
-        float fx = (float) Math.floor(x);
-        float fz = (float) Math.floor(z);
-        int ix = (int) fx;
-        int iz = (int) fz;
-        float tx = x - fx;
-        float tz = z - fz;
-        tx = tx * tx * (3 - 2 * tx);
-        tz = tz * tz * (3 - 2 * tz);
-        float a = hash(ix, iz, seed);
-        float b = hash(ix + 1, iz, seed);
-        float c = hash(ix, iz + 1, seed);
-        float d = hash(ix + 1, iz + 1, seed);
-        return a + (b - a) * tx + (c - a) * tz + (a - b - c + d) * tx * tz;
-    }
-
-    /** An integer hash of a lattice point to [0, 1]; mirrored in terrain.frag (uint arithmetic). */
-    static float hash(int x, int z, int seed) {
-        int h = x * 0x27d4eb2d ^ z * 0x165667b1 ^ seed * 0x6c8e9cf5;
-        h ^= h >>> 15;
-        h *= 0x2c1b3c6d;
-        h ^= h >>> 12;
-        h *= 0x297a2d39;
-        h ^= h >>> 15;
-        return (h >>> 8) * (1f / (1 << 24));
+        return org.jecosys.render.ground.PatchNoise.level(x / patchScale, z / patchScale, patchSeed);
     }
 }

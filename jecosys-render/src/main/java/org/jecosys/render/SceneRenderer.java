@@ -30,6 +30,7 @@ import org.jecosys.render.gl.GlFramebuffer;
 import org.jecosys.render.gl.GlStateGuard;
 import org.jecosys.render.ground.SkyRenderer;
 import org.jecosys.render.ground.SunShadow;
+import org.jecosys.render.ground.ShadowParams;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.ground.CoverBlades;
 import org.jecosys.render.ground.TerrainRenderer;
@@ -62,8 +63,8 @@ public final class SceneRenderer implements AutoCloseable {
     private final ShadowPath autoShadows;
     /** The sun's shadow map, made at the first frame that draws one. */
     private SunShadowMap shadowMap;
-    /** The shadow map's per-frame parameters and matrix as the shaders read them (x = 0: no map). */
-    private final float[] shadowParams = new float[8];
+    /** The shadow map's per-frame values as the shaders read them, shared with the plants, terrain and cover. */
+    private final ShadowParams shadow = new ShadowParams();
     /**
      * How far from the eye plants cast into the map: the nearest distance at which a species with a
      * line level draws lines (lines do not cast), metres; infinite when none has one.
@@ -139,8 +140,9 @@ public final class SceneRenderer implements AutoCloseable {
         state = g;
         autoShadows = ShadowPath.AUTO.on(org.lwjgl.opengl.GL11C.glGetString(org.lwjgl.opengl.GL11C.GL_RENDERER));
         castReach = castReach(world);
-        terrain.useShadowMap(shadowParams, null);
-        cover.useShadowMap(shadowParams, null);
+        terrain.useShadowMap(shadow);
+        cover.useShadowMap(shadow);
+        plants.useShadowMap(shadow);
     }
 
     /** {@return the world this renderer draws} */
@@ -331,7 +333,7 @@ public final class SceneRenderer implements AutoCloseable {
         float lz = settings.sunZ();
         // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
         terrain.prepareShadows(settings);
-        shadowParams[0] = 0f;
+        shadow.clear();
         boolean map = shadowPath() == ShadowPath.MAP && settings.shadows() > 0
                 && ly >= Math.sin(SunShadow.MIN_ELEVATION);
         if (drawPlants || map) {
@@ -339,11 +341,12 @@ public final class SceneRenderer implements AutoCloseable {
             plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.setSheen(settings.sheen());
-            plants.prepareNear(frame, camera, lx, ly, lz, horizon, settings.fogStart(), settings.fogEnd(), height);
+            plants.setSunDirection(lx, ly, lz);
+            plants.setHaze(horizon, settings.fogStart(), settings.fogEnd());
+            plants.prepareNear(frame, camera, height);
             if (map) {
                 drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);
             }
-            plants.setShadowMap(shadowParams, shadowMap == null ? null : shadowMap.placement().shadowMatrix());
         }
         if (drawPlants) {
             plants.drawPreparedNear();
@@ -353,7 +356,11 @@ public final class SceneRenderer implements AutoCloseable {
             }
         }
         if (drawTerrain && settings.terrain()) {
-            terrain.draw(camera, settings, drawPlants);
+            if (drawPlants) {
+                terrain.draw(camera, settings);
+            } else {
+                terrain.drawBare(camera, settings); // the ground as it is without the vegetation
+            }
         }
         if (settings.clear()) {
             // the sky where nothing is (depth still 1), before the blended far level
@@ -365,8 +372,9 @@ public final class SceneRenderer implements AutoCloseable {
             plants.drawFar();
         }
         glDisable(GL_DEPTH_TEST);
-        if (field != null && (settings.showField() || settings.showWind())) {
-            overlay.draw(field, camera, settings.showField(), settings.showWind(), vx, vy, width, height);
+        OverlaySettings shown = settings.overlays();
+        if (field != null && (shown.showField() || shown.showWind())) {
+            overlay.draw(field, camera, shown, vx, vy, width, height);
         }
     }
 
@@ -386,8 +394,7 @@ public final class SceneRenderer implements AutoCloseable {
     private void drawShadowMap(Camera camera, float lx, float ly, float lz, int vx, int vy, int width, int height) {
         if (shadowMap == null) {
             shadowMap = new SunShadowMap(gl.tracker(), SunShadowMap.DEFAULT_SIZE);
-            terrain.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
-            cover.useShadowMap(shadowParams, shadowMap.placement().shadowMatrix());
+            shadow.setMatrix(shadowMap.placement().shadowMatrix());
         }
         double reach = Math.min(settings.shadowReach(), castReach);
         shadowMap.fit(camera, lx, ly, lz, reach);
@@ -406,15 +413,9 @@ public final class SceneRenderer implements AutoCloseable {
             glEnable(GL_SCISSOR_TEST);
         }
         glViewport(vx, vy, width, height);
-        shadowMap.map().bind(GlStateGuard.UNIT_SHADOW);
-        shadowParams[0] = 1f;
-        shadowParams[1] = 1f / shadowMap.map().size();
-        shadowParams[2] = (float) shadowMap.placement().bias();
-        shadowParams[3] = settings.shadows();
-        shadowParams[4] = (float) camera.x();
-        shadowParams[5] = (float) camera.y();
-        shadowParams[6] = (float) camera.z();
-        shadowParams[7] = (float) reach;
+        shadowMap.map().bind(org.jecosys.render.gl.TextureUnits.SUN_SHADOW);
+        shadow.set(1f / shadowMap.map().size(), (float) shadowMap.placement().bias(), settings.shadows(),
+                (float) camera.x(), (float) camera.y(), (float) camera.z(), (float) reach);
     }
 
     /** The nearest distance at which a species with a line level draws lines, metres (infinite: none). */

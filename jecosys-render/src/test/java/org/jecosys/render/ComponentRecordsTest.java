@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.sim.internal.FrameWriter;
 import org.jecosys.sim.internal.DecisionWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -68,7 +69,7 @@ abstract class ComponentRecordsTest {
         cam.setPosition(0, 6, 16);
         cam.setOrientation(0, -Math.atan2(6, 16));
         cam.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), 320, 180);
         fb.bind();
         assumeTrue(path().supported(gl.capabilities()), path() + " needs a newer GL than " + gl.describe());
@@ -89,7 +90,9 @@ abstract class ComponentRecordsTest {
     }
 
     void draw(PlantRenderer r) {
-        r.draw(frame, cam, 0.3f, 0.9f, 0.3f, SKY, 25f, 160f, 180);
+        r.setSunDirection(0.3f, 0.9f, 0.3f);
+        r.setHaze(SKY, 25f, 160f);
+        r.draw(frame, cam, 180);
     }
 
     @AfterAll
@@ -345,7 +348,8 @@ abstract class ComponentRecordsTest {
         try {
             applyLook(12f, 0.2f, 4f, 0.8f, 7);
             // the same function, by an independent path: the public patch noise at each root's base
-            RenderSettings patches = RenderSettings.standalone().patches(4f, 0.8f, 7);
+            RenderSettings patches = RenderSettings.standalone();
+            patches.setPatches(4f, 0.8f, 7);
             int[] checked = new int[1];
             forEachRecord((li, i, slot, r) -> {
                 if (batches.lines(li)) {

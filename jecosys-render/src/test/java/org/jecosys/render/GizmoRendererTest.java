@@ -17,6 +17,7 @@ import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL11C.glViewport;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.util.Map;
 import org.jecosys.math.ViewCamera;
@@ -55,7 +56,7 @@ class GizmoRendererTest {
     @BeforeAll
     void setUp() {
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         px = MemoryUtil.memAlloc(4 * W * H);
     }

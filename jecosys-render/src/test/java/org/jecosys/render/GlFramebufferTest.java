@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.sim.Frame;
@@ -34,7 +35,7 @@ class GlFramebufferTest {
         ByteBuffer single = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer box = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer tent = MemoryUtil.memAlloc(4 * W * H);
-        try (GlContext gl = GlContext.headless(true)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.ON)) {
             GlCensus before = GlCensus.take();
             try (SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
                 try (GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {

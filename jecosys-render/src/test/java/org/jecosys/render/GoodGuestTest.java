@@ -3,6 +3,7 @@ package org.jecosys.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -45,8 +46,8 @@ class GoodGuestTest {
 
     @BeforeAll
     void setUp() {
-        owner = GlContext.headless(true);
-        gl = GlContext.current(false);
+        owner = GlContext.headless(DebugOutput.ON);
+        gl = GlContext.current(DebugOutput.OFF);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         px = MemoryUtil.memAlloc(4 * W * H);
         ref = MemoryUtil.memAlloc(4 * W * H);
@@ -82,13 +83,16 @@ class GoodGuestTest {
                     Map<String, String> before = GuestCensus.take();
                     assertTrue(before.size() >= 80, "entries in the census: " + before.size());
                     // with the sun's shadow map: its own framebuffer is bound and put back within each render
-                    RenderSettings settings = RenderSettings.standalone().sky(SKY).shadows(0.6f)
-                            .shadowPath(ShadowPath.MAP);
+                    RenderSettings settings = RenderSettings.standalone();
+                    settings.setSky(SKY);
+                    settings.setShadows(0.6f);
+                    settings.setShadowPath(ShadowPath.MAP);
                     SceneRenderer renderer = new SceneRenderer(gl, world, settings);
                     assertEquals(before, GuestCensus.take(), "construction, unusual host state " + unusual);
                     Frame frame = TestFrames.wind(world, 0.4, camera());
                     for (boolean clear : new boolean[] {true, false}) {
-                        settings.clear(clear).terrain(clear);
+                        settings.setClear(clear);
+                        settings.setTerrain(clear);
                         renderer.render(frame, camera());
                         assertEquals(before, GuestCensus.take(), "render(frame, camera), clear " + clear + ", unusual "
                                 + unusual);
@@ -141,7 +145,7 @@ class GoodGuestTest {
         GL11C.glClearDepth(1.0);
         GL11C.glClear(GL11C.GL_COLOR_BUFFER_BIT | GL11C.GL_DEPTH_BUFFER_BIT | GL11C.GL_STENCIL_BUFFER_BIT);
         GuestCensus.Hostile host = unusual ? new GuestCensus.Hostile(true) : null;
-        try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings().sky(SKY))) {
+        try (SceneRenderer r = new SceneRenderer(gl, world, guest())) {
             r.render(frame, camera());
         } finally {
             if (host != null) {
@@ -213,7 +217,7 @@ class GoodGuestTest {
                 }
             };
             srgb.accept(srgbWrites); // the host's gamma correction (jMonkeyEngine's default)
-            try (SceneRenderer r = new SceneRenderer(gl, world, new RenderSettings().sky(SKY))) {
+            try (SceneRenderer r = new SceneRenderer(gl, world, guest())) {
                 r.render(frame, camera());
             }
             assertEquals(srgbWrites, GL11C.glIsEnabled(GL30C.GL_FRAMEBUFFER_SRGB), "the host's switch is kept");
@@ -225,5 +229,12 @@ class GoodGuestTest {
             GL11C.glDeleteTextures(colour);
             GL30C.glDeleteRenderbuffers(depth);
         }
+    }
+
+    /** A guest's settings (no clear, no terrain) with the test's sky. */
+    private static RenderSettings guest() {
+        RenderSettings s = new RenderSettings();
+        s.setSky(SKY);
+        return s;
     }
 }

@@ -19,11 +19,12 @@ import static org.lwjgl.opengl.GL30C.glDeleteVertexArrays;
 import static org.lwjgl.opengl.GL30C.glGenVertexArrays;
 import static org.lwjgl.opengl.GL31C.GL_TEXTURE_BUFFER;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.util.Map;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.render.gl.GlTracker;
 import org.junit.jupiter.api.Tag;
 
@@ -38,8 +39,8 @@ class GuestLifecycleTest {
     @Test
     void constructingAndClosingPutBackTheHostsBindings() {
         World world = RenderScenes.build(RenderScenes.load("c1.xml"));
-        try (GlContext owner = GlContext.headless(true)) {
-            GlContext gl = GlContext.current(false);
+        try (GlContext owner = GlContext.headless(DebugOutput.ON)) {
+            GlContext gl = GlContext.current(DebugOutput.OFF);
             GlProgram hostProgram = new GlProgram(new GlTracker(), "overlay.vert", "overlay.frag");
             int vao = glGenVertexArrays();
             int vbo = glGenBuffers();
@@ -49,7 +50,7 @@ class GuestLifecycleTest {
                 glBindBuffer(GL_ARRAY_BUFFER, vbo);
                 glBufferData(GL_ARRAY_BUFFER, 64, GL_STATIC_DRAW);
                 hostProgram.use();
-                glActiveTexture(GL_TEXTURE0 + GlStateGuard.UNIT_2D);
+                glActiveTexture(GL_TEXTURE0 + TextureUnits.GROUND_MAPS);
                 glBindTexture(GL_TEXTURE_2D, textures[0]);
                 glActiveTexture(GL_TEXTURE0);
                 glBindTexture(GL_TEXTURE_BUFFER, textures[1]);

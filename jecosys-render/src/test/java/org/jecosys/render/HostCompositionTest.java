@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -91,8 +92,8 @@ class HostCompositionTest {
 
     @BeforeAll
     void setUp() {
-        owner = GlContext.headless(true);
-        gl = GlContext.current(false);
+        owner = GlContext.headless(DebugOutput.ON);
+        gl = GlContext.current(DebugOutput.OFF);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         px = MemoryUtil.memAlloc(4 * W * H);
@@ -171,7 +172,7 @@ class HostCompositionTest {
         }
         s.put("rasterizer discard", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD)));
         s.put("alpha to coverage", Boolean.toString(glIsEnabled(org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE)));
-        for (int u = 0; u < 8; u++) {
+        for (int u = 0; u < org.jecosys.render.gl.TextureUnits.COUNT; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             s.put("unit " + u + " buffer texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_BUFFER)));
             s.put("unit " + u + " 2D texture", Integer.toString(glGetInteger(GL_TEXTURE_BINDING_2D)));
@@ -255,14 +256,16 @@ class HostCompositionTest {
 
     @Test
     void everyGlStateTheRendererTouchesIsTheSameAfterRender() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY).showField(true).showWind(true);
+        RenderSettings settings = standalone();
+        settings.overlays().setShowField(true);
+        settings.overlays().setShowWind(true);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             try (HostState host = new HostState()) {
                 Map<String, String> before = census();
                 assertEquals("40,30,200,120", before.get("viewport"), "the host's state is in place");
                 for (boolean clear : new boolean[] {true, false}) {
-                    settings.clear(clear);
+                    settings.setClear(clear);
                     renderer.render(TestFrames.wind(world, 0.4, camera(200, 120)), camera(200, 120));
                     assertEquals(before, census(), "render(frame, camera), clear " + clear);
                     renderer.render(TestFrames.wind(world, 0.4, camera(W, H)), camera(W, H), W, H);
@@ -275,7 +278,9 @@ class HostCompositionTest {
 
     @Test
     void drawsOnlyInTheBoundViewportAndOverTheHostsBackgroundWhenNotClearing() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY).clear(false).terrain(false);
+        RenderSettings settings = standalone();
+        settings.setClear(false);
+        settings.setTerrain(false);
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             fb.bind();
             // the host's own background: magenta, depth 1
@@ -315,7 +320,7 @@ class HostCompositionTest {
 
     @Test
     void aCameraFromTheHostsMatricesDrawsWhatTheEquivalentViewCameraDraws() {
-        RenderSettings settings = RenderSettings.standalone().sky(SKY);
+        RenderSettings settings = standalone();
         try (SceneRenderer renderer = new SceneRenderer(gl, world, settings)) {
             ViewCamera vc = camera(W, H);
             fb.bind();
@@ -378,7 +383,7 @@ class HostCompositionTest {
 
     @Test
     void theWrappedContextLeavesTheHostsContextAliveAndRefusesAThreadWithoutOne() throws Exception {
-        GlContext second = GlContext.current(false);
+        GlContext second = GlContext.current(DebugOutput.OFF);
         assertFalse(second.ownsContext());
         assertEquals(0, second.window());
         second.close();
@@ -393,7 +398,7 @@ class HostCompositionTest {
         AtomicReference<Throwable> thrown = new AtomicReference<>();
         Thread t = new Thread(() -> {
             try {
-                GlContext.current(false);
+                GlContext.current(DebugOutput.OFF);
             } catch (Throwable e) {
                 thrown.set(e);
             }
@@ -426,5 +431,12 @@ class HostCompositionTest {
         closed.clear();
         assertThrows(IllegalStateException.class, () -> Closing.closeReverse(List.of(ok1, bad1, ok2)));
         assertEquals(List.of("d", "b", "a"), closed);
+    }
+
+    /** The library's whole picture with the test's sky. */
+    private static RenderSettings standalone() {
+        RenderSettings s = RenderSettings.standalone();
+        s.setSky(SKY);
+        return s;
     }
 }

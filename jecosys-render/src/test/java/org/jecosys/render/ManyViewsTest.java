@@ -3,6 +3,7 @@ package org.jecosys.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import org.jecosys.math.Camera;
 import org.jecosys.math.MatrixCamera;
@@ -44,7 +45,7 @@ class ManyViewsTest {
 
     @BeforeAll
     void setUp() {
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         scene = RenderScenes.load("c1.xml");
         world = RenderScenes.build(scene);

@@ -50,7 +50,8 @@ class PlantColourTest {
         List<Double> valueDev = new ArrayList<>();
         int tested = 0;
         // the plants' own colours: without the ground cover, whose blades would join the plants' blobs
-        RenderSettings bare = RenderScenes.settings(def).groundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
+        RenderSettings bare = RenderScenes.settings(def);
+        bare.setGroundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
         try (Shots s = new Shots(world, bare, W, H)) {
             collect(s, world, def, 0, 0, HEIGHT, colours, cores);
             for (int sp = 1; sp < speciesCount; sp++) {

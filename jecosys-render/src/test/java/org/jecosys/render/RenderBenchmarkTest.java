@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.sim.internal.DecisionWriter;
 import org.jecosys.render.gl.Closing;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -123,7 +124,7 @@ class RenderBenchmarkTest {
     void renderBenchmark() throws Exception {
         StringBuilder md = new StringBuilder("# Rendering benchmark\n\n");
         StringBuilder parts = new StringBuilder();
-        try (GlContext gl = GlContext.headless(false); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H)) {
             md.append("GL: ").append(gl.describe()).append(", ").append(W).append('x').append(H).append(", ")
                     .append(Runtime.getRuntime().availableProcessors()).append(" CPUs. ").append(ROUNDS)
                     .append(" rounds (meadow: ").append(rounds(true)).append("); per round and configuration one block of warm-up and timed frames (C1-C3: ")
@@ -271,14 +272,14 @@ class RenderBenchmarkTest {
         r.drawTerrain = false;
         r.drawPlants = true;
         double plants = ms(r, frame, cam, W, H);
-        r.plants().levelMask = 0;
+        r.plants().setLevelMask(0);
         double upload = ms(r, frame, cam, W, H);
         StringBuilder byLevel = new StringBuilder();
         for (int l = 0; l < 4; l++) {
-            r.plants().levelMask = 1 << l;
+            r.plants().setLevelMask(1 << l);
             byLevel.append(l == 0 ? "" : " / ").append(String.format("%.1f", ms(r, frame, cam, W, H)));
         }
-        r.plants().levelMask = ~0;
+        r.plants().setLevelMask(~0);
         r.drawTerrain = true;
         // the same view decided with no transition band (rest poses: drawing cost does not depend on them)
         org.jecosys.sim.DrawDecision noBandDecision = org.jecosys.sim.DrawDecision.of(r.world());

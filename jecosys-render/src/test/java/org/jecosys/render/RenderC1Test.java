@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.util.List;
@@ -56,10 +57,14 @@ class RenderC1Test {
     void setUp() {
         def = RenderScenes.load("c1.xml");
         world = RenderScenes.build(def);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         // a flat sky (zenith = horizon, no sun glow), so that every sky pixel has one known colour
-        renderer = new SceneRenderer(gl, world, RenderSettings.standalone().sky(SKY).skyZenith(SKY).sunIntensity(0));
+        RenderSettings flat = RenderSettings.standalone();
+        flat.setSky(SKY);
+        flat.setSkyZenith(SKY);
+        flat.setSunIntensity(0);
+        renderer = new SceneRenderer(gl, world, flat);
         px = MemoryUtil.memAlloc(4 * 1024 * 1024);
         other = MemoryUtil.memAlloc(4 * 1024 * 1024);
     }
@@ -247,11 +252,13 @@ class RenderC1Test {
         ViewCamera cam = cameraAt(grassPlant(), 3);
         field.update(cam);
         renderer.setField(field.debugView());
-        renderer.settings().showField(true).showWind(true);
+        renderer.settings().overlays().setShowField(true);
+        renderer.settings().overlays().setShowWind(true);
         try {
             render(TestFrames.rest(world, cam), cam, px);
         } finally {
-            renderer.settings().showField(false).showWind(false);
+            renderer.settings().overlays().setShowField(false);
+            renderer.settings().overlays().setShowWind(false);
             renderer.setField(null);
         }
         Pixels.writePng(Path.of("target/render-test/c1-overlays.png"), px, W, H);

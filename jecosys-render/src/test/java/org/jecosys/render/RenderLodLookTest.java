@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.sim.internal.FrameWriter;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -46,7 +47,7 @@ class RenderLodLookTest {
         ByteBuffer ground = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer near = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer far = MemoryUtil.memAlloc(4 * W * H);
-        try (GlContext gl = GlContext.headless(true); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H, 4);
+        try (GlContext gl = GlContext.headless(DebugOutput.ON); GlFramebuffer fb = new GlFramebuffer(gl.tracker(), W, H, 4);
              SceneRenderer r = new SceneRenderer(gl, world, RenderSettings.standalone())) {
             fb.bind();
             r.drawPlants = false;

@@ -3,6 +3,7 @@ package org.jecosys.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.InputStream;
@@ -52,7 +53,7 @@ class RenderPathEquivalenceTest {
 
     @BeforeAll
     void setUp() {
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         world = RenderScenes.build(RenderScenes.load("c1.xml"));
         renderer = new SceneRenderer(gl, world, RenderSettings.standalone());

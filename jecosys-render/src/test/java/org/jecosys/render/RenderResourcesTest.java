@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import com.sun.management.ThreadMXBean;
 import java.lang.management.ManagementFactory;
 import org.jecosys.math.ViewCamera;
@@ -41,7 +42,7 @@ class RenderResourcesTest {
         SceneDef def = RenderScenes.load("c1.xml");
         world = RenderScenes.build(def);
         camera = RenderScenes.camera(def, world, W, H);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
     }
 
@@ -102,7 +103,9 @@ class RenderResourcesTest {
         int tracked = gl.tracker().live();
         GlCensus during;
         // with the shadow map drawn: its depth texture, framebuffer and programs are tracked too
-        RenderSettings mapped = RenderSettings.standalone().shadows(0.6f).shadowPath(ShadowPath.MAP);
+        RenderSettings mapped = RenderSettings.standalone();
+        mapped.setShadows(0.6f);
+        mapped.setShadowPath(ShadowPath.MAP);
         try (SceneRenderer r = new SceneRenderer(gl, world, mapped, path);
              FieldOverlay overlay = new FieldOverlay(gl, world.terrain().heightfield())) {
             fb.bind();
@@ -127,10 +130,12 @@ class RenderResourcesTest {
         }
         long thread = Thread.currentThread().getId();
         // with ground cover: its blades (tiles, bend map) are drawn every frame too
-        RenderSettings covered = RenderSettings.standalone().groundCover(new org.jecosys.scene.RenderDef.GroundCover(
+        RenderSettings covered = RenderSettings.standalone();
+        covered.setGroundCover(new org.jecosys.scene.RenderDef.GroundCover(
                 1, 0.06, 800, 6, 1.5, new org.jecosys.math.Rgb(0.3f, 0.5f, 0.16f), new org.jecosys.math.Rgb(0.6f, 0.55f, 0.3f)));
         // and the sun's shadow map, drawn every frame
-        covered.shadows(0.6f).shadowPath(ShadowPath.MAP);
+        covered.setShadows(0.6f);
+        covered.setShadowPath(ShadowPath.MAP);
         try (SceneRenderer r = new SceneRenderer(gl, world, covered)) {
             fb.bind();
             for (int i = 0; i < 200; i++) {

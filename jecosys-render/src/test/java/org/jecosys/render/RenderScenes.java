@@ -35,6 +35,9 @@ public final class RenderScenes {
 
     /** The render settings a scene file asks for (the app's HeadlessRender.settings, for the look tests). */
     static RenderSettings settings(SceneDef def) {
-        return RenderSettings.of(def).clear(true).terrain(true);
+        RenderSettings s = RenderSettings.of(def);
+        s.setClear(true);
+        s.setTerrain(true);
+        return s;
     }
 }

@@ -44,7 +44,7 @@ class RenderSettingsTest {
         float[][] cases = {{0, 0, 1, 0, 0}, {90, 0, 0, 0, 1}, {180, 0, -1, 0, 0}, {-90, 0, 0, 0, -1},
             {0, 90, 0, 1, 0}, {30, 40, 0, 0, 0}};
         for (float[] c : cases) {
-            assertSame(s, s.sun(Math.toRadians(c[0]), Math.toRadians(c[1])));
+            s.setSun(Math.toRadians(c[0]), Math.toRadians(c[1]));
             assertEquals(Math.toRadians(c[0]), s.sunAzimuth());
             assertEquals(Math.toRadians(c[1]), s.sunElevation());
             double az = Math.toRadians(c[0]);
@@ -58,18 +58,21 @@ class RenderSettingsTest {
 
     @Test
     void settersCheckTheirRanges() {
-        RenderSettings s = new RenderSettings().sun(Math.toRadians(10), Math.toRadians(20)).contactShadow(0.3f).patches(5, 0.5f, 9);
-        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(0), Math.toRadians(91)));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(0), Math.toRadians(-1)));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(Math.toRadians(361), Math.toRadians(10)));
-        assertThrows(IllegalArgumentException.class, () -> s.sun(Double.NaN, 0.1));
-        assertThrows(IllegalArgumentException.class, () -> s.contactShadow(1.1f));
-        assertThrows(IllegalArgumentException.class, () -> s.sunIntensity(5));
-        assertThrows(IllegalArgumentException.class, () -> s.patches(0.1f, 0.5f, 1));
-        assertThrows(IllegalArgumentException.class, () -> s.patches(10, -0.5f, 1));
-        assertThrows(IllegalArgumentException.class, () -> s.sunColour(null));
-        assertThrows(IllegalArgumentException.class, () -> s.skyZenith(null));
-        assertThrows(IllegalArgumentException.class, () -> s.ambient(null));
+        RenderSettings s = new RenderSettings();
+        s.setSun(Math.toRadians(10), Math.toRadians(20));
+        s.setContactShadow(0.3f);
+        s.setPatches(5, 0.5f, 9);
+        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(0), Math.toRadians(91)));
+        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(0), Math.toRadians(-1)));
+        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(361), Math.toRadians(10)));
+        assertThrows(IllegalArgumentException.class, () -> s.setSun(Double.NaN, 0.1));
+        assertThrows(IllegalArgumentException.class, () -> s.setContactShadow(1.1f));
+        assertThrows(IllegalArgumentException.class, () -> s.setSunIntensity(5));
+        assertThrows(IllegalArgumentException.class, () -> s.setPatches(0.1f, 0.5f, 1));
+        assertThrows(IllegalArgumentException.class, () -> s.setPatches(10, -0.5f, 1));
+        assertThrows(IllegalArgumentException.class, () -> s.setSunColour(null));
+        assertThrows(IllegalArgumentException.class, () -> s.setSkyZenith(null));
+        assertThrows(IllegalArgumentException.class, () -> s.setAmbient(null));
         assertEquals(Math.toRadians(10), s.sunAzimuth(), "a refused value leaves the setting as it was");
         assertEquals(Math.toRadians(20), s.sunElevation());
         assertEquals(0.3f, s.contactShadow());
@@ -77,16 +80,22 @@ class RenderSettingsTest {
         assertEquals(0.5f, s.patchStrength());
         assertEquals(9, s.patchSeed());
         Rgb c = new Rgb(1, 0.5f, 0.25f);
-        assertSame(c, s.sunColour(c).sunColour());
-        assertSame(c, s.skyZenith(c).skyZenith());
-        assertSame(c, s.ambient(c).ambient());
+        s.setSunColour(c);
+        s.setSkyZenith(c);
+        s.setAmbient(c);
+        assertSame(c, s.sunColour());
+        assertSame(c, s.skyZenith());
+        assertSame(c, s.ambient());
     }
 
     @Test
     void patchesAreSeededBoundedAndVaryOverTheirScale() {
-        RenderSettings a = new RenderSettings().patches(10, 1, 3);
-        RenderSettings b = new RenderSettings().patches(10, 1, 3);
-        RenderSettings c = new RenderSettings().patches(10, 1, 4);
+        RenderSettings a = new RenderSettings();
+        RenderSettings b = new RenderSettings();
+        RenderSettings c = new RenderSettings();
+        a.setPatches(10, 1, 3);
+        b.setPatches(10, 1, 3);
+        c.setPatches(10, 1, 4);
         int dry = 0;
         int healthy = 0;
         int differ = 0;
@@ -109,5 +118,62 @@ class RenderSettingsTest {
         assertTrue(dry > 500 && healthy > 500, "both healthy and dry patches: " + healthy + ", " + dry);
         assertTrue(differ > 5000, "another seed, other patches: " + differ);
         assertTrue(smooth < 0.2, "smooth over 10 cm at a 10 m scale: " + smooth);
+    }
+
+    @Test
+    void everySetterReturnsNothingAndItsGetterReadsTheValueBack() throws Exception {
+        for (java.lang.reflect.Method m : RenderSettings.class.getMethods()) {
+            if (m.getDeclaringClass() == RenderSettings.class && m.getName().startsWith("set")) {
+                assertEquals(void.class, m.getReturnType(), m.getName() + " returns nothing: one setter style");
+            }
+        }
+        RenderSettings s = new RenderSettings();
+        s.setSheen(1.5f);
+        s.setShadows(0.4f);
+        s.setShadowPath(ShadowPath.MAP);
+        s.setShadowReach(30);
+        s.setFog(5, 60);
+        s.setClear(true);
+        s.setTerrain(true);
+        s.setTint(RenderDef.Tint.WATER);
+        assertEquals(1.5f, s.sheen());
+        assertEquals(0.4f, s.shadows());
+        assertEquals(ShadowPath.MAP, s.shadowPath());
+        assertEquals(30f, s.shadowReach());
+        assertEquals(5f, s.fogStart());
+        assertEquals(60f, s.fogEnd());
+        assertTrue(s.clear() && s.terrain());
+        assertEquals(RenderDef.Tint.WATER, s.tint());
+        assertThrows(IllegalArgumentException.class, () -> s.setSheen(2.5f));
+        assertThrows(IllegalArgumentException.class, () -> s.setShadows(-0.1f));
+        assertThrows(IllegalArgumentException.class, () -> s.setShadowPath(null));
+        assertThrows(IllegalArgumentException.class, () -> s.setShadowReach(1));
+        assertThrows(IllegalArgumentException.class, () -> s.setFog(10, 10));
+        assertThrows(IllegalArgumentException.class, () -> s.setTint(null));
+        assertThrows(IllegalArgumentException.class, () -> s.setGroundCover(null));
+        assertEquals(1.5f, s.sheen(), "a refused value leaves the setting as it was");
+        assertEquals(5f, s.fogStart());
+    }
+
+    @Test
+    void theOverlaysAreHiddenByDefaultAndASceneCanShowThem() {
+        RenderSettings s = new RenderSettings();
+        assertTrue(!s.overlays().showField() && !s.overlays().showWind(), "hidden by default");
+        s.overlays().setShowWind(true);
+        assertTrue(s.overlays().showWind() && !s.overlays().showField());
+        RenderDef d = RenderDef.defaults();
+        RenderDef shown = new RenderDef(d.width(), d.height(), d.sky(), d.lodTransition(), d.terrainTint(), true, false,
+                d.light(), d.patches(), d.antialiasing(), d.groundCover());
+        RenderSettings of = RenderSettings.of(shown);
+        assertTrue(of.overlays().showField() && !of.overlays().showWind(), "the scene's showField and showWind");
+    }
+
+    @Test
+    void aContextsDebugOutputIsNamedNotAFlag() {
+        // refused before any GL call: no context is needed
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> GlContext.current(null));
+        assertTrue(e.getMessage().contains("DebugOutput"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> GlContext.headless(null));
+        assertThrows(IllegalArgumentException.class, () -> GlContext.windowed("t", 64, 64, null));
     }
 }

@@ -1,5 +1,6 @@
 package org.jecosys.render;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import org.jecosys.math.Camera;
 import org.jecosys.math.ViewCamera;
@@ -38,7 +39,7 @@ final class Shots implements AutoCloseable {
         this.width = width;
         this.height = height;
         px = MemoryUtil.memAlloc(4 * width * height);
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), width, height, SAMPLES);
         depthFb = new GlFramebuffer(gl.tracker(), width, height);
         renderer = new SceneRenderer(gl, world, settings);

@@ -2,6 +2,7 @@ package org.jecosys.render;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jecosys.render.GlContext.DebugOutput;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -42,7 +43,7 @@ class SkyAndGroundTest {
 
     @BeforeAll
     void setUp() throws Exception {
-        gl = GlContext.headless(true);
+        gl = GlContext.headless(DebugOutput.ON);
         fb = new GlFramebuffer(gl.tracker(), W, H);
         String rose = Files.readString(Path.of("scenes", "rose.xml"), StandardCharsets.UTF_8);
         StringBuilder plants = new StringBuilder();
@@ -54,7 +55,8 @@ class SkyAndGroundTest {
                 .replace("<plant species=\"rose\" x=\"0\" z=\"0\"/>", plants.toString());
         SceneDef def = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "contact.xml", Path.of("scenes"));
         world = RenderScenes.build(def);
-        settings = RenderSettings.standalone().patches(10, 0, 1);
+        settings = RenderSettings.standalone();
+        settings.setPatches(10, 0, 1);
         renderer = new SceneRenderer(gl, world, settings);
         px = MemoryUtil.memAlloc(4 * W * H);
     }
@@ -112,7 +114,7 @@ class SkyAndGroundTest {
 
     @Test
     void skyIsAGradientFromHorizonToZenith() {
-        settings.sun(Math.toRadians(135), Math.toRadians(50));
+        settings.setSun(Math.toRadians(135), Math.toRadians(50));
         // looking up 55 degrees, away from the sun: the top row is 85 degrees up
         render(look(yawToward(-45), Math.toRadians(55)), true);
         int[] top = {Pixels.red(px, W, W / 2, H - 3), Pixels.green(px, W, W / 2, H - 3), Pixels.blue(px, W, W / 2, H - 3)};
@@ -132,13 +134,13 @@ class SkyAndGroundTest {
 
     @Test
     void skyIsBrighterTowardTheSun() {
-        settings.sun(Math.toRadians(135), Math.toRadians(30));
+        settings.setSun(Math.toRadians(135), Math.toRadians(30));
         render(look(yawToward(135), Math.toRadians(30)), true);
         double toward = block(W / 2, H / 2);
         double beside = block(W / 2 + 60, H / 2);
         render(look(yawToward(135 + 180), Math.toRadians(30)), true);
         double away = block(W / 2, H / 2);
-        settings.sun(Math.toRadians(135), Math.toRadians(50));
+        settings.setSun(Math.toRadians(135), Math.toRadians(50));
         System.out.printf("sky luma: toward the sun %.1f, 13 degrees beside %.1f, away %.1f%n", toward, beside, away);
         assertTrue(toward >= 250, "the sun's disc is near white: " + toward);
         assertTrue(beside > away + 8, "the glow around the sun: " + beside + " vs " + away);
@@ -209,10 +211,10 @@ class SkyAndGroundTest {
         assertTrue(renderer.terrain().occlusion(0, 0) == 0 && renderer.terrain().occlusion(2, 2) > 0.5,
                 "the occlusion map: open between the plants, high at a base");
 
-        settings.contactShadow(0);
+        settings.setContactShadow(0);
         render(top, false);
         double plain = groundLuma(vp, 2.03, 2) / groundLuma(vp, 0, 0);
-        settings.contactShadow(0.5f);
+        settings.setContactShadow(0.5f);
         assertTrue(Math.abs(plain - 1) < 0.02, "no contact shadow: the same ground everywhere, ratio " + plain);
     }
 
@@ -221,13 +223,13 @@ class SkyAndGroundTest {
         ViewCamera top = new ViewCamera().setPosition(0, 9, 0.001).setOrientation(0, Math.toRadians(-89.9));
         top.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         Matrix4f vp = top.viewProjection(new Matrix4f());
-        settings.sun(Math.toRadians(135), Math.toRadians(80));
+        settings.setSun(Math.toRadians(135), Math.toRadians(80));
         render(top, false);
         double high = groundLuma(vp, 0, 0);
-        settings.sun(Math.toRadians(135), Math.toRadians(10));
+        settings.setSun(Math.toRadians(135), Math.toRadians(10));
         render(top, false);
         double low = groundLuma(vp, 0, 0);
-        settings.sun(Math.toRadians(135), Math.toRadians(50));
+        settings.setSun(Math.toRadians(135), Math.toRadians(50));
         System.out.printf("open ground luma, sun at 80 degrees %.1f, at 10 degrees %.1f%n", high, low);
         assertTrue(high > low * 1.3, "a high sun lights flat ground more than a low one: " + high + " vs " + low);
     }

@@ -71,16 +71,18 @@ class SunShadowTest {
         SceneDef def = SceneFiles.parse(SCENE.getBytes(StandardCharsets.UTF_8), "tuft.xml", Path.of("scenes"));
         World world = RenderScenes.build(def);
         double height = height(world);
-        RenderSettings settings = RenderSettings.standalone().contactShadow(0.5f).shadowPath(path);
+        RenderSettings settings = RenderSettings.standalone();
+        settings.setContactShadow(0.5f);
+        settings.setShadowPath(path);
         try (Shots s = new Shots(world, settings, W, H)) {
             ViewCamera above = new ViewCamera().setPosition(0, 3, 0).setOrientation(0, -Math.PI / 2 + 1e-4)
                     .setLens(Math.toRadians(60), 1, 0.05, 50);
             Frame frame = TestFrames.rest(world, above);
             ViewCamera a = Shots.lookAt(0, 1.5, 1.5, 0, 0, 0, Math.toRadians(50), 1, 0.05, 50);
-            settings.sun(Math.toRadians(0), Math.toRadians(30));
+            settings.setSun(Math.toRadians(0), Math.toRadians(30));
             Img neverOn = s.render(frame, a, true, true);
 
-            settings.sun(Math.toRadians(0), Math.toRadians(30));
+            settings.setSun(Math.toRadians(0), Math.toRadians(30));
             double[] low = moments(s, settings, frame, above);
             double along = -low[1];                       // the sun stands toward +X: its shadow toward -X
             double across = Math.abs(low[2]);
@@ -97,7 +99,7 @@ class SunShadowTest {
             double elongated = path == ShadowPath.MAP ? 1.2 : 1.3;
             assertTrue(elongation >= elongated, String.format("elongated along the sun: %.2f", elongation));
 
-            settings.sun(Math.toRadians(0), Math.toRadians(90));
+            settings.setSun(Math.toRadians(0), Math.toRadians(90));
             double[] noon = moments(s, settings, frame, above);
             double[] under = footprintCentroid(world);
             double off = Math.hypot(noon[1] - under[0], noon[2] - under[1]);
@@ -107,7 +109,7 @@ class SunShadowTest {
             assertTrue(off <= 0.1 * height, String.format("centroid %.3f m from the tuft's own outline's", off));
 
             // half a pixel sideways, seen from 2 m at 45 degrees
-            settings.sun(Math.toRadians(0), Math.toRadians(30));
+            settings.setSun(Math.toRadians(0), Math.toRadians(30));
             double pixel = 2 * Math.hypot(1.5, 1.5) * Math.tan(Math.toRadians(25)) / H;
             ViewCamera b = Shots.lookAt(0.5 * pixel, 1.5, 1.5, 0.5 * pixel, 0, 0, Math.toRadians(50), 1, 0.05, 50);
             double[] da = darkening(s, settings, frame, a);
@@ -127,8 +129,8 @@ class SunShadowTest {
             assertTrue(swim <= 2, String.format("the shadow swims by %.2f/255", swim));
 
             // switched off again: the picture (plants, ground cover, terrain) is exactly as before they were on
-            settings.shadows(0);
-            settings.sun(Math.toRadians(0), Math.toRadians(30));
+            settings.setShadows(0);
+            settings.setSun(Math.toRadians(0), Math.toRadians(30));
             Img offAgain = s.render(frame, a, true, true);
             assertTrue(java.util.Arrays.equals(neverOn.rgb(), offAgain.rgb()), "shadows off gives today's picture");
         }
@@ -152,16 +154,19 @@ class SunShadowTest {
             for (int w = 0; w < 2; w++) {
                 SceneDef def = SceneFiles.parse(scenes[w].getBytes(StandardCharsets.UTF_8), "row.xml", Path.of("scenes"));
                 World world = RenderScenes.build(def);
-                RenderSettings settings = RenderSettings.standalone().shadowPath(paths[k]).sun(Math.toRadians(0), Math.toRadians(20)).sunIntensity(1.6f);
+                RenderSettings settings = RenderSettings.standalone();
+                settings.setShadowPath(paths[k]);
+                settings.setSun(Math.toRadians(0), Math.toRadians(20));
+                settings.setSunIntensity(1.6f);
                 try (Shots s = new Shots(world, settings, W, H)) {
                     Frame frame = TestFrames.rest(world, SIDE);
-                    settings.shadows(0);
+                    settings.setShadows(0);
                     // the plants alone (no terrain: only the plants' own pixels differ from the empty sky)
                     if (w == 0) {
                         bare = s.render(frame, SIDE, false, false);
                     }
                     off[w] = s.render(frame, SIDE, true, false);
-                    settings.shadows(0.8f);
+                    settings.setShadows(0.8f);
                     on[w] = s.render(frame, SIDE, true, false);
                 }
             }
@@ -230,9 +235,9 @@ class SunShadowTest {
 
     /** Per pixel, the terrain's luma without shadows minus with them (strength 0.8), plants left out. */
     private static double[] darkening(Shots s, RenderSettings settings, Frame frame, ViewCamera cam) {
-        settings.shadows(0);
+        settings.setShadows(0);
         Img bare = s.render(frame, cam, false, true);
-        settings.shadows(0.8f);
+        settings.setShadows(0.8f);
         Img shaded = s.render(frame, cam, false, true);
         double[] d = new double[bare.width() * bare.height()];
         for (int i = 0; i < d.length; i++) {

@@ -31,7 +31,8 @@ class ThinningLookTest {
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
         DrawDecision decision = DrawDecision.of(world);
         // the plants alone over bare ground: the ground cover would hide what the widening adds
-        RenderSettings bare = RenderScenes.settings(def).groundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
+        RenderSettings bare = RenderScenes.settings(def);
+        bare.setGroundCover(org.jecosys.scene.RenderDef.GroundCover.NONE);
         try (Shots s = new Shots(world, bare, W, H)) {
             Frame full = DecisionWriter.decideAll(decision, cam, TestFrames.rest(world));
             double all = farCover(s, full, cam);

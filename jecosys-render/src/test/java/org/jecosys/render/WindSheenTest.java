@@ -116,7 +116,8 @@ class WindSheenTest {
     private static Run run(SceneDef def, float sheen, int frames) {
         World world = RenderScenes.build(def);
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        RenderSettings settings = RenderScenes.settings(def).sheen(sheen);
+        RenderSettings settings = RenderScenes.settings(def);
+        settings.setSheen(sheen);
         int bx = W / BLOCK;
         int by = H / BLOCK;
         double[][] series = new double[bx * by][frames];

@@ -44,6 +44,7 @@ import java.nio.file.Path;
 import org.jecosys.math.MatrixCamera;
 import org.jecosys.math.Progress;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.Screenshot;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
@@ -155,7 +156,7 @@ public final class MeadowGame implements AutoCloseable {
             throw new IOException(e.getMessage(), e);
         }
         sim = s;
-        gl = GlContext.current(false);
+        gl = GlContext.current(DebugOutput.OFF);
         plants = new SceneRenderer(gl, sim.world(), new RenderSettings());
         Heightfield terrain = sim.world().terrain().heightfield();
         passes = new GamePasses(terrain, 96);

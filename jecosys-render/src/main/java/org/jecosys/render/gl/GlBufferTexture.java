@@ -31,7 +31,7 @@ public final class GlBufferTexture extends GlResource {
     /**
      * Binds to a texture unit (and makes that unit active).
      *
-     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}
+     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}: one of {@link TextureUnits}
      */
     public void bind(int unit) {
         glActiveTexture(GL_TEXTURE0 + unit);

@@ -74,7 +74,7 @@ public final class GlDepthMap extends GlResource {
         }
         this.size = size;
         int unit = glGetInteger(GL_ACTIVE_TEXTURE);
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TextureUnits.UPLOAD);
         int bound = glGetInteger(GL_TEXTURE_BINDING_2D);
         int draw = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
         int read = glGetInteger(GL_READ_FRAMEBUFFER_BINDING);
@@ -137,7 +137,7 @@ public final class GlDepthMap extends GlResource {
     /**
      * Binds the depth texture to a texture unit's 2D target (and makes that unit active).
      *
-     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}
+     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}: one of {@link TextureUnits}
      */
     public void bind(int unit) {
         glActiveTexture(GL_TEXTURE0 + unit);

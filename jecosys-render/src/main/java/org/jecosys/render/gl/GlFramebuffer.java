@@ -310,8 +310,8 @@ public final class GlFramebuffer extends GlResource {
             vao = v;
             int current = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
             program.use();
-            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), 0);
-            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uDetail"), 1);
+            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), TextureUnits.FILTER_IMAGE);
+            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uDetail"), TextureUnits.FILTER_DETAIL);
             uTexel = program.uniform("uTexel");
             uWeights = program.uniform("uWeights");
             org.lwjgl.opengl.GL20C.glUseProgram(current);
@@ -330,11 +330,11 @@ public final class GlFramebuffer extends GlResource {
             int program0 = query.get(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
             int vao0 = query.get(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
             int unit0 = query.get(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE1);
-            int texture1 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_DETAIL);
+            int detail0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.detailTexture);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
-            int texture0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_IMAGE);
+            int image0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             boolean depth = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
             boolean blend = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_BLEND);
             boolean scissor = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
@@ -355,9 +355,9 @@ public final class GlFramebuffer extends GlResource {
             org.lwjgl.opengl.GL11C.glDrawArrays(org.lwjgl.opengl.GL11C.GL_TRIANGLES, 0, 3);
             org.lwjgl.opengl.GL30C.glBindVertexArray(vao0);
             org.lwjgl.opengl.GL20C.glUseProgram(program0);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture0);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE1);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, texture1);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, image0);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_DETAIL);
+            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, detail0);
             org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
             enable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST, depth);
             enable(org.lwjgl.opengl.GL11C.GL_BLEND, blend);
@@ -408,7 +408,7 @@ public final class GlFramebuffer extends GlResource {
 
         void resize(int width, int height) {
             int unit0 = glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0);
+            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.UPLOAD);
             int bound = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
             int t2 = org.lwjgl.opengl.GL11C.GL_TEXTURE_2D;
             for (int k = 0; k < 2; k++) {

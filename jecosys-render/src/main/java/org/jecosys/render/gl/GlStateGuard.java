@@ -94,7 +94,7 @@ import org.lwjgl.system.MemoryUtil;
  * <ul>
  * <li>bindings: program, vertex array, array buffer, {@code GL_TEXTURE_BUFFER}, pixel-unpack buffer,
  * transform feedback buffer (generic and index 0), on OpenGL 4.3 the shader storage buffer (generic
- * and index 0), the active texture unit and, on units 0 to {@link #UNITS} - 1, the buffer texture,
+ * and index 0), the active texture unit and, on units 0 to {@link TextureUnits#GUARDED} - 1, the buffer texture,
  * the 2D texture and the sampler object;</li>
  * <li>capabilities: depth test, face culling, blending, scissor test, rasteriser discard,
  * alpha-to-coverage and alpha-to-one, stencil test, polygon offset (fill, line, point: Mesa offsets
@@ -109,7 +109,7 @@ import org.lwjgl.system.MemoryUtil;
  * {@link #setGuestState()} then sets what the renderers depend on, whatever the host left: additive
  * blend equations, all colour channels of draw buffer 0 written and none of a host's other draw buffers, no stencil test, polygon offset, logic op, sample mask
  * or coverage, clip distances or depth clamp, filled counter-clockwise front faces, depth cleared to 1,
- * the last vertex provoking, dithering on, texture unit 0 active, no sampler objects
+ * the last vertex provoking, dithering on, the upload unit ({@link TextureUnits#UPLOAD}) active, no sampler objects
  * on the renderer's units, and sRGB conversion off. The plants' colours are display (sRGB-encoded)
  * values: written unconverted into an sRGB framebuffer they read back exactly as in a linear one (and
  * a host with gamma correction, such as jMonkeyEngine's default, sees the same picture as without).
@@ -117,33 +117,12 @@ import org.lwjgl.system.MemoryUtil;
  * its own framebuffer for its pass and binds the host's again right after).
  *
  * <p>Render thread only. {@link #save} and {@link #restore} allocate nothing (the storage is made once
- * in native memory, freed by {@link #close}); together about 120 {@code glGet}/{@code glSet} calls
+ * in native memory, freed by {@link #close}); together about 180 {@code glGet}/{@code glSet} calls
  * a frame, which drivers answer from client-side state.
  */
 public final class GlStateGuard implements AutoCloseable {
-    /**
-     * The texture units whose bindings the renderers change: 0 to 8 (poses, component records or
-     * instances, render states, static data, links, the components' looks, the species slots' looks,
-     * the compute resolve pass's list table, the components' bend geometry; the terrain's occlusion and
-     * cover map is the 2D texture of {@link #UNIT_2D}, the ground cover's grain that of
-     * {@link #UNIT_GRAIN}).
-     */
-    public static final int UNITS = 9;
-
     /** Draw buffers whose colour masks are saved: every one OpenGL 3.3 guarantees. */
     public static final int DRAW_BUFFERS = 8;
-
-    /**
-     * The texture unit whose 2D texture binding the sun's shadow map takes while the plants, the ground
-     * cover and the terrain are drawn (the per-component pass uses the unit's buffer texture before).
-     */
-    public static final int UNIT_SHADOW = 4;
-
-    /** The texture unit whose 2D texture binding the terrain uses: the occlusion map. */
-    public static final int UNIT_2D = 5;
-
-    /** The texture unit whose 2D texture binding the ground cover's grain uses (terrain and near blades). */
-    public static final int UNIT_GRAIN = 6;
 
     /** Capabilities saved and put back; those from {@link #OFF} on are switched off by {@link #setGuestState()}. */
     private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST, GL_RASTERIZER_DISCARD,
@@ -170,9 +149,9 @@ public final class GlStateGuard implements AutoCloseable {
     private final FloatBuffer offset = MemoryUtil.memAllocFloat(2);
     private final boolean[] caps = new boolean[CAPS.length];
     private final int[] unpack = new int[UNPACK.length];
-    private final int[] unitBufferTextures = new int[UNITS];
-    private final int[] unitTextures2d = new int[UNITS];
-    private final int[] unitSamplers = new int[UNITS];
+    private final int[] unitBufferTextures = new int[TextureUnits.GUARDED];
+    private final int[] unitTextures2d = new int[TextureUnits.GUARDED];
+    private final int[] unitSamplers = new int[TextureUnits.GUARDED];
     private int program;
     private int vertexArray;
     private int arrayBuffer;
@@ -224,7 +203,7 @@ public final class GlStateGuard implements AutoCloseable {
             storageSize0 = query.get64(GL43C.GL_SHADER_STORAGE_BUFFER_SIZE, 0);
         }
         activeTexture = query.get(GL_ACTIVE_TEXTURE);
-        for (int u = 0; u < UNITS; u++) {
+        for (int u = 0; u < TextureUnits.GUARDED; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             unitBufferTextures[u] = query.get(GL_TEXTURE_BINDING_BUFFER);
             unitTextures2d[u] = query.get(GL11C.GL_TEXTURE_BINDING_2D);
@@ -283,10 +262,10 @@ public final class GlStateGuard implements AutoCloseable {
         GL11C.glClearDepth(1.0);
         org.lwjgl.opengl.GL32C.glProvokingVertex(org.lwjgl.opengl.GL32C.GL_LAST_VERTEX_CONVENTION);
         glEnable(GL11C.GL_DITHER);
-        for (int u = 0; u < UNITS; u++) {
+        for (int u = 0; u < TextureUnits.GUARDED; u++) {
             glBindSampler(u, 0);
         }
-        glActiveTexture(GL_TEXTURE0); // objects made now are bound on a unit this guard puts back
+        glActiveTexture(GL_TEXTURE0 + TextureUnits.UPLOAD); // objects made now are bound on a unit this guard puts back
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
         for (int i = 0; i < UNPACK.length; i++) {
             glPixelStorei(UNPACK[i], UNPACK_DEFAULTS[i]);
@@ -334,7 +313,7 @@ public final class GlStateGuard implements AutoCloseable {
             }
             glBindBuffer(GL43C.GL_SHADER_STORAGE_BUFFER, storageBuffer);
         }
-        for (int u = 0; u < UNITS; u++) {
+        for (int u = 0; u < TextureUnits.GUARDED; u++) {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_BUFFER, unitBufferTextures[u]);
             glBindTexture(GL11C.GL_TEXTURE_2D, unitTextures2d[u]);

@@ -76,7 +76,7 @@ public final class GlTexture2D extends GlResource {
         this.height = height;
         this.channels = channels;
         int unit = glGetInteger(GL_ACTIVE_TEXTURE);
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TextureUnits.UPLOAD);
         int bound = glGetInteger(GL_TEXTURE_BINDING_2D);
         int align = glGetInteger(GL_UNPACK_ALIGNMENT);
         try {
@@ -114,7 +114,7 @@ public final class GlTexture2D extends GlResource {
             throw new IllegalArgumentException("need " + width * height * channels + " bytes, got " + texels.remaining());
         }
         int unit = glGetInteger(GL_ACTIVE_TEXTURE);
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TextureUnits.UPLOAD);
         int bound = glGetInteger(GL_TEXTURE_BINDING_2D);
         int align = glGetInteger(GL_UNPACK_ALIGNMENT);
         try {
@@ -131,7 +131,7 @@ public final class GlTexture2D extends GlResource {
     /**
      * Binds to a texture unit's 2D target (and makes that unit active).
      *
-     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}
+     * @param unit texture unit index, 0 for {@code GL_TEXTURE0}: one of {@link TextureUnits}
      */
     public void bind(int unit) {
         glActiveTexture(GL_TEXTURE0 + unit);

@@ -29,7 +29,7 @@ import org.jecosys.render.gl.Closing;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlBufferTexture;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.render.gl.GlTexture2D;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
@@ -96,9 +96,8 @@ public final class CoverBlades implements AutoCloseable {
     private final int uShadows;
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the terrain. */
     private final GroundUniforms ground;
-    /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
-    private float[] shadowParams = new float[8];
-    private java.nio.FloatBuffer shadowMatrix;
+    /** The frame's sun shadow map, as {@link #useShadowMap} gave it (none until then). */
+    private ShadowParams shadow = new ShadowParams();
     private long bendFrame = Long.MIN_VALUE;
     private Frame bendOf;
     private int lastTiles;
@@ -184,10 +183,10 @@ public final class CoverBlades implements AutoCloseable {
         ground = new GroundUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
-        glUniform1i(program.uniform("uHeights"), GlStateGuard.UNIT_GRAIN + 1);
+        glUniform1i(program.uniform("uHeights"), TextureUnits.GROUND_HEIGHTS);
         GroundUniforms.bindShadowSampler(program);
-        glUniform1i(program.uniform("uMaps"), GlStateGuard.UNIT_2D);
-        glUniform1i(program.uniform("uBend"), GlStateGuard.UNIT_GRAIN);
+        glUniform1i(program.uniform("uMaps"), TextureUnits.GROUND_MAPS);
+        glUniform1i(program.uniform("uBend"), TextureUnits.TILE_BENDS);
         ContactOcclusion m = terrain.occlusionMap();
         glUniform4f(program.uniform("uMap"), (float) m.minX, (float) m.minZ,
                 (float) (1 / (m.texelX * m.width)), (float) (1 / (m.texelZ * m.height)));
@@ -212,8 +211,9 @@ public final class CoverBlades implements AutoCloseable {
 
     /**
      * Draws the blades for a camera into the bound framebuffer with the current depth state. Binds the
-     * terrain's maps to {@link GlStateGuard#UNIT_2D}, the bend map to {@link GlStateGuard#UNIT_GRAIN}
-     * and the heights to the unit after it (the scene renderer's state guard puts them back). Render
+     * terrain's maps to {@link TextureUnits#GROUND_MAPS}, the bend map to {@link TextureUnits#TILE_BENDS}
+     * and the heights to {@link TextureUnits#GROUND_HEIGHTS} (the scene renderer's state guard puts
+     * them back). Render
      * thread; no allocation.
      *
      * @param frame    the frame whose plant bends the cover follows
@@ -277,7 +277,7 @@ public final class CoverBlades implements AutoCloseable {
         glUniformMatrix4fv(uViewProj, false, viewProj.get(matrix));
         glUniform3f(uEye, (float) ex, (float) camera.y(), (float) ez);
         ground.set(settings);
-        ground.setShadowMap(shadowParams, shadowMatrix);
+        ground.setShadowMap(shadow);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
         Rgb amb = settings.ambient();
@@ -289,9 +289,9 @@ public final class CoverBlades implements AutoCloseable {
         float sunLight = k * Math.max(0f, settings.sunY()) * (0.2126f * sun.r() + 0.7152f * sun.g() + 0.0722f * sun.b());
         float skyLight = 0.2126f * amb.r() + 0.7152f * amb.g() + 0.0722f * amb.b();
         glUniform2f(uShadows, settings.shadows(), sunLight / Math.max(1e-6f, sunLight + skyLight));
-        maps.bind(GlStateGuard.UNIT_2D);
-        bendTexture.bind(GlStateGuard.UNIT_GRAIN);
-        heightTexture.bind(GlStateGuard.UNIT_GRAIN + 1);
+        maps.bind(TextureUnits.GROUND_MAPS);
+        bendTexture.bind(TextureUnits.TILE_BENDS);
+        heightTexture.bind(TextureUnits.GROUND_HEIGHTS);
         vao.bind();
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3 * perTile, tiles);
         glBindVertexArray(0);
@@ -399,20 +399,15 @@ public final class CoverBlades implements AutoCloseable {
     }
 
     /**
-     * Reads the sun's shadow map from these holders at every draw: {@code params} as
-     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
-     * the map's reach, metres), {@code matrix} world to map
-     * (16 floats, column-major); the map itself is bound to {@link GlStateGuard#UNIT_SHADOW} by the
-     * caller. Render thread; no allocation.
+     * Reads the sun's shadow map from this holder at every draw from now on ({@code sun_shadow.glsl}:
+     * whether a map is drawn this frame, its texel, bias and strength, the eye and the map's reach, the
+     * world-to-map matrix); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the caller,
+     * who fills the holder each frame. Until then no map is read. Render thread; no allocation.
      *
-     * @param params 8 floats, changed by the caller between frames
-     * @param matrix 16 floats, or null for none
+     * @param params the frame's shadow map, kept (not copied)
+     * @throws IllegalArgumentException when params is null
      */
-    public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        if (params.length != 8) {
-            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
-        }
-        shadowParams = params;
-        shadowMatrix = matrix;
+    public void useShadowMap(ShadowParams params) {
+        shadow = org.jecosys.math.Require.nonNull("params", params);
     }
 }

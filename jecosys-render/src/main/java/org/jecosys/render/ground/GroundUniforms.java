@@ -3,13 +3,11 @@ package org.jecosys.render.ground;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
-import static org.lwjgl.opengl.GL20C.glUniform4f;
-import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
 import org.jecosys.math.Rgb;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.scene.RenderDef;
 
 /**
@@ -55,22 +53,14 @@ final class GroundUniforms {
         shadowEye = program.uniform("uShadowEye");
     }
 
-    /** Points the program's shadow-map sampler at {@link GlStateGuard#UNIT_SHADOW}; the program is in use. */
+    /** Points the program's shadow-map sampler at {@link TextureUnits#SUN_SHADOW}; the program is in use. */
     static void bindShadowSampler(GlProgram program) {
-        glUniform1i(program.uniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
+        glUniform1i(program.uniform("uShadowMap"), TextureUnits.SUN_SHADOW);
     }
 
-    /**
-     * Sets the sun's shadow map on the program in use ({@code sun_shadow.glsl}): params as
-     * {@code uSunShadow} (x 0: no map this frame) then {@code uShadowEye}, matrix world to map (null:
-     * none). No allocation.
-     */
-    void setShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        glUniform4f(sunShadow, params[0], params[1], params[2], params[3]);
-        glUniform4f(shadowEye, params[4], params[5], params[6], params[7]);
-        if (matrix != null) {
-            glUniformMatrix4fv(shadowMatrix, false, matrix);
-        }
+    /** Sets the sun's shadow map on the program in use ({@code sun_shadow.glsl}). No allocation. */
+    void setShadowMap(ShadowParams params) {
+        params.upload(sunShadow, shadowEye, shadowMatrix);
     }
 
     /** Sets them from the settings on the program in use. No allocation. */

@@ -37,7 +37,7 @@ import org.jecosys.render.RenderSettings;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.render.gl.GlTexture2D;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
@@ -87,9 +87,8 @@ public final class TerrainRenderer implements AutoCloseable {
     private final int uShadows;
     /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
     private final GroundUniforms ground;
-    /** The frame's sun shadow map, as {@link #useShadowMap} gave them (no map: x = 0). */
-    private float[] shadowParams = new float[8];
-    private java.nio.FloatBuffer shadowMatrix;
+    /** The frame's sun shadow map, as {@link #useShadowMap} gave it (none until then). */
+    private ShadowParams shadow = new ShadowParams();
     private RenderDef.Tint tint;
     private boolean closed;
 
@@ -192,10 +191,10 @@ public final class TerrainRenderer implements AutoCloseable {
         ground = new GroundUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
-        glUniform1i(program.uniform("uOcclusion"), GlStateGuard.UNIT_2D);
+        glUniform1i(program.uniform("uOcclusion"), TextureUnits.GROUND_MAPS);
         GroundUniforms.bindShadowSampler(program);
-        glUniform1i(program.uniform("uGrain"), GlStateGuard.UNIT_GRAIN);
-        glUniform1i(program.uniform("uBend"), GlStateGuard.UNIT_GRAIN + 1);
+        glUniform1i(program.uniform("uGrain"), TextureUnits.COVER_GRAIN);
+        glUniform1i(program.uniform("uBend"), TextureUnits.TILE_BENDS);
         if (occlusionMap == null) {
             glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
             glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
@@ -341,7 +340,13 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the terrain with its ground cover ({@link #draw(Camera, RenderSettings, boolean)}).
+     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
+     * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
+     * occlusion and cover map to {@link TextureUnits#GROUND_MAPS}, the cover's grain to
+     * {@link TextureUnits#COVER_GRAIN} and the bend map to {@link TextureUnits#TILE_BENDS} (the scene
+     * renderer's state guard puts them back). Render thread;
+     * no allocation, except when the cover's spread differs from the map's or, with shadows on, the sun has moved
+     * since the shadow map was built: those rebuild a map.
      *
      * @param camera   the viewer
      * @param settings the light, haze, patch and cover settings
@@ -351,18 +356,18 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the terrain into the bound framebuffer with the current depth state: sun direction and
-     * colour, ambient light, contact shadow, patches, ground cover and haze from the settings. Binds the
-     * occlusion and cover map to unit {@link GlStateGuard#UNIT_2D} and the cover's grain to
-     * {@link GlStateGuard#UNIT_GRAIN} (the scene renderer's state guard puts them back). Render thread;
-     * no allocation, except when the cover's spread differs from the map's or, with shadows on, the sun has moved
-     * since the shadow map was built: those rebuild a map.
+     * As {@link #draw(Camera, RenderSettings)}, but bare ground whatever the settings' cover: the
+     * picture without the vegetation (the scene renderer's terrain-only frames). Render thread; no
+     * allocation but as {@link #draw(Camera, RenderSettings)} says.
      *
      * @param camera   the viewer
-     * @param settings the light, haze, patch and cover settings
-     * @param cover    false: bare ground whatever the settings' cover (a picture without the vegetation)
+     * @param settings the light, haze and patch settings
      */
-    public void draw(Camera camera, RenderSettings settings, boolean cover) {
+    public void drawBare(Camera camera, RenderSettings settings) {
+        draw(camera, settings, false);
+    }
+
+    private void draw(Camera camera, RenderSettings settings, boolean cover) {
         RenderDef.GroundCover gc = settings.groundCover();
         boolean withCover = cover && prepareCover(settings);
         boolean shadows = maps.prepareShadows(settings);
@@ -370,7 +375,7 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
         ground.set(settings);
-        ground.setShadowMap(shadowParams, shadowMatrix);
+        ground.setShadowMap(shadow);
         Rgb sun = settings.sunColour();
         float k = settings.sunIntensity();
         Rgb amb = settings.ambient();
@@ -384,10 +389,10 @@ public final class TerrainRenderer implements AutoCloseable {
         float sl = (float) Math.hypot(settings.sunX(), settings.sunZ());
         glUniform2f(uSunXZ, sl > 1e-6f ? settings.sunX() / sl : 0f, sl > 1e-6f ? settings.sunZ() / sl : 0f);
         if (sheen) {
-            bendMap.bind(GlStateGuard.UNIT_GRAIN + 1);
+            bendMap.bind(TextureUnits.TILE_BENDS);
         }
-        grain.bind(GlStateGuard.UNIT_GRAIN);
-        maps.texture().bind(GlStateGuard.UNIT_2D);
+        grain.bind(TextureUnits.COVER_GRAIN);
+        maps.texture().bind(TextureUnits.GROUND_MAPS);
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0L);
         glBindVertexArray(0);
@@ -455,20 +460,15 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     /**
-     * Reads the sun's shadow map from these holders at every draw: {@code params} as
-     * {@code sun_shadow.glsl}'s uSunShadow (x = 0: no map this frame) then its uShadowEye (the eye and
-     * the map's reach, metres), {@code matrix} world to map
-     * (16 floats, column-major); the map itself is bound to {@link GlStateGuard#UNIT_SHADOW} by the
-     * caller. Render thread; no allocation.
+     * Reads the sun's shadow map from this holder at every draw from now on ({@code sun_shadow.glsl}:
+     * whether a map is drawn this frame, its texel, bias and strength, the eye and the map's reach, the
+     * world-to-map matrix); the map itself is bound to {@link TextureUnits#SUN_SHADOW} by the caller,
+     * who fills the holder each frame. Until then no map is read. Render thread; no allocation.
      *
-     * @param params 8 floats, changed by the caller between frames
-     * @param matrix 16 floats, or null for none
+     * @param params the frame's shadow map, kept (not copied)
+     * @throws IllegalArgumentException when params is null
      */
-    public void useShadowMap(float[] params, java.nio.FloatBuffer matrix) {
-        if (params.length != 8) {
-            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
-        }
-        shadowParams = params;
-        shadowMatrix = matrix;
+    public void useShadowMap(ShadowParams params) {
+        shadow = org.jecosys.math.Require.nonNull("params", params);
     }
 }

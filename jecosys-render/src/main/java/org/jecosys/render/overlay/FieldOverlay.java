@@ -25,6 +25,7 @@ import org.jecosys.math.Camera;
 import org.joml.Vector3f;
 import org.jecosys.terrain.Heightfield;
 import org.lwjgl.system.MemoryUtil;
+import org.jecosys.render.OverlaySettings;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlProgram;
@@ -134,15 +135,15 @@ public final class FieldOverlay implements AutoCloseable {
      *
      * @param view      the field's debug view (read on this thread between field updates)
      * @param camera    the viewer, drawn as a marker pointing along its heading
-     * @param showField draw the quadtree cells
-     * @param showWind  draw the wind vectors
+     * @param shown     which overlays: the quadtree cells, the wind vectors (read, not kept)
      * @param x         viewport left, pixels
      * @param y         viewport bottom, pixels
      * @param width     viewport width, pixels
      * @param height    viewport height, pixels
      */
-    public void draw(FieldDebugView view, Camera camera, boolean showField, boolean showWind, int x, int y,
-                     int width, int height) {
+    public void draw(FieldDebugView view, Camera camera, OverlaySettings shown, int x, int y, int width, int height) {
+        boolean showField = shown.showField();
+        boolean showWind = shown.showWind();
         int nodes = view.nodeCount();
         if (nodes > capacityNodes) {
             reserve(Math.max(nodes, 2 * capacityNodes));

@@ -5,6 +5,7 @@ import java.util.List;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.World;
 import org.jecosys.render.RenderSettings;
+import org.jecosys.render.ground.PatchNoise;
 
 /**
  * Each component's colour variation, worked out on the CPU once and again only when the look it
@@ -77,7 +78,7 @@ public final class ComponentLooks {
                     float oz = (float) m.slotBaseZ(r);
                     float x = world.plantX(p) + (ox * rc - oz * rs);
                     float z = world.plantZ(p) + (ox * rs + oz * rc);
-                    dry = strength * RenderSettings.patchNoise(x * inv, z * inv, seed);
+                    dry = strength * PatchNoise.level(x * inv, z * inv, seed);
                 }
                 dest.put(Float.floatToRawIntBits(hue))
                         .put(Math.round(value * 32768f) | Math.round(dry * 65535f) << 16);

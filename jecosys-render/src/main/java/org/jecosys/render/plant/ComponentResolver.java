@@ -31,7 +31,6 @@ import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.util.ArrayList;
 import java.util.List;
-import org.jecosys.math.Rgb;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
@@ -41,6 +40,7 @@ import org.jecosys.render.gl.GlBufferTexture;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
+import org.jecosys.render.gl.TextureUnits;
 
 /**
  * The GPU per-component resolve pass of {@link PlantRenderer} (paper §4.1-4.2; docs/ARCHITECTURE.md,
@@ -89,8 +89,6 @@ public final class ComponentResolver implements AutoCloseable {
     private final int[] slotBase;
     private final GlBuffer slotLookBuffer;
     private final GlBufferTexture slotLookTexture;
-    /** The texture unit of the list table during the compute resolve pass. */
-    public static final int LIST_UNIT = 7;
     /** Per variant, this frame: its first entry in the list table, its entries, its invocations. */
     private final int[] listFirst = new int[2];
     private final int[] listCount = new int[2];
@@ -103,12 +101,6 @@ public final class ComponentResolver implements AutoCloseable {
     private static final int GROUP = 64;
     /** Most invocations in one dispatch: 65535 groups, the least every 4.3 context allows. */
     private static final int MAX_DISPATCH = GROUP * 65535;
-    /** The texture unit of the components' bend geometry during the resolve pass. */
-    public static final int BEND_UNIT = 8;
-    /** The texture unit of the species slots' looks (colour, vertex kind) during the resolve pass. */
-    public static final int SLOT_LOOK_UNIT = 6;
-    /** The texture unit of the components' baked looks during the resolve pass. */
-    public static final int LOOK_UNIT = 5;
     private final ComponentLooks looks;
     private final GlBuffer lookBuffer;
     private final GlBufferTexture lookTexture;
@@ -204,12 +196,11 @@ public final class ComponentResolver implements AutoCloseable {
      * are lit and carry what their vertices share) on every resolve program. Render thread; no
      * allocation; leaves a resolve program in use (none on the compute path).
      */
-    public void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
-               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame) {
+    void frame(PlantLook look, PassContext context) {
         detach();
         for (Pass p : passes) {
             p.uniforms.program.use();
-            p.uniforms.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame, 1f);
+            p.uniforms.frame(look, context, 1f);
         }
         detach();
     }
@@ -245,14 +236,14 @@ public final class ComponentResolver implements AutoCloseable {
 
         Pass(GlProgram p) {
             uniforms = new PlantUniforms(p);
-            glUniform1i(p.uniform("uInstances"), 1);
-            glUniform1i(p.uniform("uDynamic"), 2);
-            glUniform1i(p.uniform("uStatic"), 3);
-            glUniform1i(p.optionalUniform("uLinks"), 4);
-            glUniform1i(p.uniform("uBend"), BEND_UNIT);
-            glUniform1i(p.uniform("uSlotLooks"), SLOT_LOOK_UNIT);
-            glUniform1i(p.uniform("uLooks"), LOOK_UNIT);
-            glUniform1i(p.optionalUniform("uLists"), LIST_UNIT);
+            glUniform1i(p.uniform("uInstances"), TextureUnits.INSTANCES);
+            glUniform1i(p.uniform("uDynamic"), TextureUnits.RENDER_STATES);
+            glUniform1i(p.uniform("uStatic"), TextureUnits.STATIC);
+            glUniform1i(p.optionalUniform("uLinks"), TextureUnits.LINKS);
+            glUniform1i(p.uniform("uBend"), TextureUnits.BEND_GEOMETRY);
+            glUniform1i(p.uniform("uSlotLooks"), TextureUnits.SLOT_LOOKS);
+            glUniform1i(p.uniform("uLooks"), TextureUnits.LOOKS);
+            glUniform1i(p.optionalUniform("uLists"), TextureUnits.LIST_TABLE);
             instanceBase = p.optionalUniform("uInstanceBase");
             slots = p.optionalUniform("uSlots");
             lines = p.optionalUniform("uLines");
@@ -305,14 +296,14 @@ public final class ComponentResolver implements AutoCloseable {
         if (look.version() != lookVersion) {
             bakeLooks(look);
         }
-        poseTexture.bind(0);
-        instanceTexture.bind(1);
-        dynamicTexture.bind(2);
-        staticTexture.bind(3);
-        linkTexture.bind(4);
-        bendTexture.bind(BEND_UNIT);
-        slotLookTexture.bind(SLOT_LOOK_UNIT);
-        lookTexture.bind(LOOK_UNIT);
+        poseTexture.bind(TextureUnits.POSES);
+        instanceTexture.bind(TextureUnits.INSTANCES);
+        dynamicTexture.bind(TextureUnits.RENDER_STATES);
+        staticTexture.bind(TextureUnits.STATIC);
+        linkTexture.bind(TextureUnits.LINKS);
+        bendTexture.bind(TextureUnits.BEND_GEOMETRY);
+        slotLookTexture.bind(TextureUnits.SLOT_LOOKS);
+        lookTexture.bind(TextureUnits.LOOKS);
         detach();
         if (path == ResolvePath.COMPUTE) {
             resolveByCompute(look);
@@ -373,7 +364,7 @@ public final class ComponentResolver implements AutoCloseable {
         listStaging.flip();
         listBuffer.orphan();
         listBuffer.upload(0, listStaging);
-        listTexture.bind(LIST_UNIT);
+        listTexture.bind(TextureUnits.LIST_TABLE);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
         for (int k = 0; k < passes.length; k++) {
             int count = listInvocations[k];
@@ -413,13 +404,11 @@ public final class ComponentResolver implements AutoCloseable {
     }
 
     /**
-     * Binds the component records to a texture unit for the draw programs. Render thread; no
-     * allocation.
-     *
-     * @param unit the texture unit, 0 based
+     * Binds the component records to {@link TextureUnits#RECORDS} for the draw programs. Render
+     * thread; no allocation.
      */
-    public void bindRecords(int unit) {
-        componentTexture.bind(unit);
+    public void bindRecords() {
+        componentTexture.bind(TextureUnits.RECORDS);
     }
 
     /**

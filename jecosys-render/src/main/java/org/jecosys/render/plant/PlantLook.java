@@ -2,6 +2,7 @@ package org.jecosys.render.plant;
 
 import org.jecosys.math.Require;
 import org.jecosys.render.RenderSettings;
+import org.jecosys.render.ground.ShadowParams;
 
 /**
  * The look of the plants, set through {@link PlantRenderer}: the light on them (sun and ambient), how
@@ -28,14 +29,10 @@ public final class PlantLook {
     /** Strength of the wind's sheen on bent blades (plant_light.glsl windSheen), 0: off. */
     public float sheen = 1f;
     /**
-     * The sun's shadow map this frame ({@code sun_shadow.glsl}'s uSunShadow: 1 when drawn else 0, a
-     * texel in map units, the depth bias in map units, the strength) and its world-to-map matrix
-     * (column-major; null while no map is drawn).
+     * The sun's shadow map the triangle levels read ({@code sun_shadow.glsl}): the scene renderer's,
+     * filled each frame ({@link PlantRenderer#useShadowMap}); none drawn until then.
      */
-    public final float[] shadow = new float[4];
-    /** The eye (xyz) and the shadow map's reach (w), metres ({@code sun_shadow.glsl}'s uShadowEye). */
-    public final float[] shadowEye = new float[4];
-    public java.nio.FloatBuffer shadowMatrix;
+    ShadowParams shadow = new ShadowParams();
     private float patchScale = DEFAULT_PATCH_SCALE;
     private float patchStrength;
     private int seed;

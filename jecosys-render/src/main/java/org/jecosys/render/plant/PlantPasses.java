@@ -10,14 +10,12 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
 
-import java.nio.FloatBuffer;
 import java.util.ArrayList;
 import java.util.List;
-import org.jecosys.math.Rgb;
-import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
+import org.jecosys.render.ground.ShadowFit;
 
 /**
  * The instanced draws of {@link PlantRenderer}: eight variants of the two draw programs, triangle
@@ -28,8 +26,8 @@ import org.jecosys.render.gl.GlVertexArray;
  * the plants in a band through one with it ({@link PlantBatches#whole}); species without flower parts
  * take the programs without the flower placement.
  *
- * <p>Render thread. {@link #compile} and the constructor allocate; {@link #frame} and {@link #draw}
- * do not. The programs belong to whoever compiled them.
+ * <p>Render thread. {@link #compile} and the constructor allocate; {@link #frame},
+ * {@link #drawTriangles} and {@link #drawLines} do not. The programs belong to whoever compiled them.
  */
 public final class PlantPasses {
     private static final int DITHER = 1;
@@ -52,6 +50,8 @@ public final class PlantPasses {
     /** Whether the triangle levels read the shadow map this frame ({@link #shadow}). */
     private boolean mapped;
     private final boolean[] flowers;
+    /** What the caster programs draw with this frame: the sun's view ({@link #casterFrame}). */
+    private final PassContext caster = new PassContext();
     private int draws;
     private long instances;
 
@@ -126,15 +126,21 @@ public final class PlantPasses {
 
     /**
      * Sets the caster programs' per-frame values: as {@link #frame} with the sun's view-projection, a
-     * point far toward the sun as the eye, and a pixel of {@code texel} metres at any distance; thin
-     * parts at least one texel wide, flower parts at their real size and untilted, no thinning widening.
-     * No allocation.
+     * point far toward the sun as the eye, and a pixel of one map texel at any distance (the view's
+     * haze colour and frame); thin parts at least one texel wide, flower parts at their real size and
+     * untilted, no thinning widening. No allocation.
      */
-    public void casterFrame(PlantLook look, FloatBuffer sunViewProj, float ex, float ey, float ez, Rgb fog,
-                            float texel, Frame frame) {
+    void casterFrame(PlantLook look, ShadowFit at, PassContext view) {
+        PassContext c = caster;
+        c.viewProj = at.viewProjection();
+        c.setEye((float) at.sunward(0), (float) at.sunward(1), (float) at.sunward(2));
+        c.setFog(view.fog, 0f, 1f);
+        c.setLight(0f, 1f, 0f);
+        c.setPixel((float) at.texelMetres(), 0f);
+        c.frame = view.frame;
         for (PlantUniforms u : casters) {
             u.program.use();
-            u.frame(look, sunViewProj, ex, ey, ez, fog, 0f, 1f, 0f, 1f, 0f, texel, 0f, frame, 1f);
+            u.frame(look, c, 1f);
             glUniform1f(u.minPixels, 1f);
             glUniform1f(u.headPixels, 0f);
             glUniform1f(u.flowerTilt, 0f);
@@ -143,7 +149,7 @@ public final class PlantPasses {
     }
 
     /**
-     * Draws the triangle levels' lists with the caster programs (as {@link #draw}, into the bound shadow
+     * Draws the triangle levels' lists with the caster programs (as {@link #drawTriangles}, into the bound shadow
      * map). Counts no draws. No allocation.
      */
     public void drawCasters(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
@@ -174,19 +180,16 @@ public final class PlantPasses {
      * multisampled (then the triangle levels keep coverage in alpha for alpha-to-coverage; else they
      * write alpha 1). No allocation.
      */
-    public void frame(PlantLook look, FloatBuffer viewProj, float ex, float ey, float ez, Rgb fog, float fogStart,
-               float fogEnd, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame,
-               boolean multisampled) {
+    void frame(PlantLook look, PassContext context) {
+        float alphaFloor = context.multisampled ? 0f : 1f;
         for (PlantUniforms u : passes) {
             u.program.use();
-            u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
-                    multisampled ? 0f : 1f);
+            u.frame(look, context, alphaFloor);
         }
         if (receivers != null) {
             for (PlantUniforms u : receivers) {
                 u.program.use();
-                u.frame(look, viewProj, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, pixelX, pixelY, frame,
-                        multisampled ? 0f : 1f);
+                u.frame(look, context, alphaFloor);
             }
         }
     }
@@ -196,7 +199,7 @@ public final class PlantPasses {
      * triangle levels are drawn by the receiver programs, which read it. No allocation.
      */
     public void shadow(PlantLook look) {
-        mapped = look.shadow[0] > 0 && receivers != null;
+        mapped = look.shadow.drawn() && receivers != null;
         if (mapped) {
             for (PlantUniforms u : receivers) {
                 u.program.use();
@@ -206,10 +209,10 @@ public final class PlantPasses {
     }
 
     /**
-     * Draws the lists of one primitive: per list one instanced draw of its plants drawn whole, then one
-     * of its plants in a transition band; leaves no vertex array bound. No allocation.
+     * Draws the triangle levels' lists (through the receiver programs while a shadow map is read): per
+     * list one instanced draw of its plants drawn whole, then one of its plants in a transition band;
+     * leaves no vertex array bound. No allocation.
      *
-     * @param lines      the line levels, else the triangle levels
      * @param batches    the frame's lists
      * @param vaos       per list: its level's mesh
      * @param indexCount per list: the mesh's index count
@@ -217,9 +220,15 @@ public final class PlantPasses {
      * @param levelMask  bit l set: draw level l
      * @see #draws()
      */
-    public void draw(boolean lines, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
-              int levelMask) {
-        draw(!lines && mapped ? receivers : passes, lines, batches, vaos, indexCount, look, levelMask);
+    public void drawTriangles(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                              int levelMask) {
+        draw(mapped ? receivers : passes, false, batches, vaos, indexCount, look, levelMask);
+    }
+
+    /** As {@link #drawTriangles}, the line levels' lists. No allocation. */
+    public void drawLines(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                          int levelMask) {
+        draw(passes, true, batches, vaos, indexCount, look, levelMask);
     }
 
     private void draw(PlantUniforms[] programs, boolean lines, PlantBatches batches, GlVertexArray[] vaos,

@@ -1,45 +1,35 @@
 package org.jecosys.render.plant;
 
-import org.jecosys.render.gl.GlContexts;
-import org.jecosys.render.ResolvePath;
-import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_ONE;
 import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
-import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
-import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
-import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
-import static org.lwjgl.opengl.GL43C.GL_MAX_SHADER_STORAGE_BLOCK_SIZE;
+import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
 
 import java.nio.FloatBuffer;
-import java.util.ArrayList;
 import java.util.List;
+import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
-import org.jecosys.math.Camera;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.plant.VariationDef;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.ResolvePath;
+import org.jecosys.render.gl.GlInts;
+import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.ground.ShadowParams;
+import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.ViewDecision;
 import org.jecosys.sim.World;
 import org.joml.Matrix4f;
-import org.lwjgl.opengl.GL11C;
 import org.lwjgl.opengl.GL13C;
 import org.lwjgl.system.MemoryUtil;
-import org.jecosys.render.GlContext;
-import org.jecosys.render.RenderSettings;
-import org.jecosys.render.gl.GlBuffer;
-import org.jecosys.render.gl.GlBufferTexture;
-import org.jecosys.render.gl.GlInts;
-import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.ground.ShadowFit;
-import org.jecosys.render.ground.SunShadowMap;
-import org.jecosys.render.gl.GlVertexArray;
 
 /**
  * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2; see also
@@ -63,14 +53,14 @@ import org.jecosys.render.gl.GlVertexArray;
  * leaf's true width covers as opacity: the line levels are drawn last, blended
  * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
- * The per-component uploads and the resolve pass live in {@code ComponentResolver}, which this
- * renderer owns and closes; the draw programs' variants and the draws in {@code PlantPasses}.
+ * The GL objects and their upload layout live in {@code PlantGpu}, the per-component uploads and the
+ * resolve pass in {@code ComponentResolver}, which this renderer owns and closes; the draw programs'
+ * variants and the draws in {@code PlantPasses}; what a frame's passes share in a {@code PassContext}.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
  */
 public final class PlantRenderer implements AutoCloseable {
-    private static final int MAX_LEVELS = 8;
     /** Floats per component record (3 RGBA32F texels), written by the resolve pass. */
     public static final int RECORD_FLOATS = 12;
     /** Largest index a float holds exactly (texels and components passed as floats). */
@@ -84,30 +74,19 @@ public final class PlantRenderer implements AutoCloseable {
 
     private final World world;
     private final PlantBatches batches;
-    private final List<AutoCloseable> owned = new ArrayList<>();
-    private final GlBuffer poseBuffer;
-    private final GlBufferTexture poseTexture;
-    private final ComponentResolver resolver;
-    private final GlVertexArray[] vaos;
-    private final int[] indexCount;
+    private final PlantGpu gpu;
     private final FloatBuffer matrix;
     private final Matrix4f viewProj = new Matrix4f();
     /** The decision for a camera the frame's own decision was not made for (another view, a cut). */
     private final ViewDecision view;
     private final PlantPasses passes;
-    private final GlInts query = new GlInts();
+    private final GlInts query;
     private final PlantLook look;
-    private final org.jecosys.render.gl.GlTracker tracker;
+    /** The last {@link #prepareNear}'s view, light, haze, pixel size and frame, for the passes after it. */
+    private final PassContext context;
     private boolean pending;
-    /** The last {@link #prepareNear}'s view-projection, eye, fog and pixel scale, for {@link #drawPreparedNear}. */
-    private Frame preparedFrame;
-    private Rgb preparedFog;
-    /** ... and its eye (3), fog start and end, light direction (3) and pixel scale (2). */
-    private final float[] prepared = new float[10];
-    /** Whether the target of the last {@link #drawNear} is multisampled (coverage to samples) or not (opaque). */
-    private boolean multisampled;
-    /** For the bench's breakdown only (internal): bit l set = draw level l (lists are still uploaded). */
-    public int levelMask = ~0;
+    /** For the bench's breakdown only: bit l set = draw level l (lists are still uploaded). */
+    private int levelMask = ~0;
     private boolean closed;
 
     /**
@@ -141,69 +120,34 @@ public final class PlantRenderer implements AutoCloseable {
     public PlantRenderer(GlContext gl, World world, ResolvePath path) {
         gl.checkThread();
         this.world = world;
-        this.tracker = GlContexts.tracker(gl);
         this.batches = new PlantBatches(world);
         this.view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
-        for (SpeciesModel m : models) {
-            if (m.levels() > MAX_LEVELS) {
-                throw new IllegalArgumentException("species '" + m.def().id() + "' has " + m.levels()
-                        + " levels; the renderer supports at most " + MAX_LEVELS);
-            }
-            for (int slot = 0; slot < m.slotCount(); slot++) {
-                for (int v = 1; v < m.variants(); v++) {
-                    if (m.slotPoseTable(slot, v).points() != m.slotPoseTable(slot, 0).points()) {
-                        throw new IllegalArgumentException("species '" + m.def().id() + "' slot " + slot
-                                + ": pose tables of different variants differ in point count");
-                    }
-                }
-            }
-        }
+        gpu = new PlantGpu(gl, world, batches, path);
         boolean[] flowers = new boolean[models.size()];
         for (int s = 0; s < flowers.length; s++) {
             flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));
         }
-        int[][][] poseTexel = new int[models.size()][][];
-        long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
-        long maxComponents = Math.max(1, batches.maxComponents());
-        int components = Math.max(1, world.componentCount());
-        ResolvePath resolvePath = choosePath(gl, path, 4L * RECORD_FLOATS * maxComponents);
         FloatBuffer mat = null;
-        GlProgram[] programs = new GlProgram[PlantPasses.COUNT];
+        GlInts q = null;
         try {
-            int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
-            checkTexels("pose tables", texels, Math.min(maxTexels, MAX_EXACT));
-            checkTexels("component records", 3 * maxComponents, maxTexels);
-            checkTexels("components", components, Math.min(maxTexels, MAX_EXACT));
-            for (int k = 0; k < programs.length; k++) {
-                programs[k] = own(PlantPasses.compile(GlContexts.tracker(gl), k));
-            }
-            poseBuffer = own(PlantMeshes.uploadPoses(GlContexts.tracker(gl), models, texels));
-            poseTexture = own(new GlBufferTexture(GlContexts.tracker(gl), poseBuffer, GL_RGBA32F));
             mat = MemoryUtil.memAllocFloat(16);
-            resolver = own(new ComponentResolver(GlContexts.tracker(gl), world, batches, poseTexture, poseTexel, components,
-                    maxComponents, PlantMeshes.slotLooks(models), resolvePath));
-            int lists = batches.listCount();
-            vaos = new GlVertexArray[lists];
-            indexCount = new int[lists];
-            for (int s = 0; s < models.size(); s++) {
-                SpeciesModel m = models.get(s);
-                for (int l = 0; l < m.levels(); l++) {
-                    int li = batches.list(s, l);
-                    indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = PlantMeshes.uploadMesh(GlContexts.tracker(gl), m, m.mesh(l), owned);
-                }
-            }
+            q = new GlInts();
+            // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
+            // use here alive past its deletion
+            passes = new PlantPasses(gpu.programs, flowers);
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree((java.nio.Buffer) mat);
-            query.close();
-            Closing.closeReverse(owned);
+            if (q != null) {
+                q.close();
+            }
+            gpu.close();
             throw e;
         }
         matrix = mat;
-        // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
-        // use here alive past its deletion
-        passes = new PlantPasses(programs, flowers);
+        query = q;
+        context = new PassContext();
+        context.viewProj = matrix;
         look = new PlantLook(models.size());
         for (int s = 0; s < models.size(); s++) {
             VariationDef v = models.get(s).def().variation();
@@ -211,40 +155,9 @@ public final class PlantRenderer implements AutoCloseable {
         }
     }
 
-    private <T extends AutoCloseable> T own(T resource) {
-        owned.add(resource);
-        return resource;
-    }
-
-    private static ResolvePath choosePath(GlContext gl, ResolvePath asked, long recordBytes) {
-        ResolvePath want = asked == null ? ResolvePath.best(gl) : asked;
-        if (want != ResolvePath.COMPUTE) {
-            return want;
-        }
-        boolean supported = ResolvePath.COMPUTE.supported(gl.capabilities());
-        long most = supported ? Integer.toUnsignedLong(GL11C.glGetInteger(GL_MAX_SHADER_STORAGE_BLOCK_SIZE)) : 0;
-        if (supported && recordBytes <= most) {
-            return want;
-        }
-        if (asked == null) {
-            return ResolvePath.TRANSFORM_FEEDBACK;
-        }
-        throw new IllegalArgumentException(supported
-                ? "the compute resolve path needs a shader storage buffer of " + recordBytes
-                        + " bytes for this world's component records; this GL allows " + most
-                : "the compute resolve path needs OpenGL 4.3; this context is " + gl.describe());
-    }
-
     /** {@return the path the per-component pass runs on, for the HUD and reports} */
     public ResolvePath path() {
-        return resolver.path();
-    }
-
-    private static void checkTexels(String what, long texels, int max) {
-        if (texels > max) {
-            throw new IllegalStateException("the scene's " + what + " need " + texels
-                    + " buffer-texture texels; this GL allows " + max);
-        }
+        return gpu.resolver.path();
     }
 
     /**
@@ -259,7 +172,7 @@ public final class PlantRenderer implements AutoCloseable {
 
     /**
      * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
-     * the sky's ambient light (the direction goes in with each draw). {@code SceneRenderer} sets it
+     * the sky's ambient light (the direction: {@link #setSunDirection}). {@code SceneRenderer} sets it
      * from its {@link RenderSettings} every frame. Render thread; no allocation.
      *
      * @param sun       sunlight colour, components in [0, 4]
@@ -280,6 +193,36 @@ public final class PlantRenderer implements AutoCloseable {
         if (!(c.r() >= 0 && c.r() <= 4 && c.g() >= 0 && c.g() <= 4 && c.b() >= 0 && c.b() <= 4)) {
             throw new IllegalArgumentException(name + " components must be in [0, 4], got " + c);
         }
+    }
+
+    /**
+     * Sets the direction toward the sun the next {@link #prepareNear} lights the plants from
+     * ({@link RenderSettings#sunX()} and its siblings). Render thread; no allocation.
+     *
+     * @param x toward the sun, X (a unit vector)
+     * @param y toward the sun, Y (up)
+     * @param z toward the sun, Z
+     * @throws IllegalArgumentException when a component is not finite
+     */
+    public void setSunDirection(float x, float y, float z) {
+        if (!(Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(z))) {
+            throw new IllegalArgumentException("sun direction must be finite, got " + x + ", " + y + ", " + z);
+        }
+        context.setLight(x, y, z);
+    }
+
+    /**
+     * Sets the haze (aerial perspective) the next {@link #prepareNear} draws the plants with: toward
+     * {@code colour} (the sky's horizon) from {@code start} to full at {@code end}. Render thread; no
+     * allocation (the colour is kept).
+     *
+     * @param colour the haze colour, not null
+     * @param start  distance where the haze starts, metres
+     * @param end    distance of full haze, metres
+     * @throws IllegalArgumentException when the colour is null
+     */
+    public void setHaze(Rgb colour, float start, float end) {
+        context.setFog(Require.nonNull("colour", colour), start, end);
     }
 
     /**
@@ -335,6 +278,16 @@ public final class PlantRenderer implements AutoCloseable {
         look.setThinParts(minPixels, headPixels, (float) Math.toRadians(flowerTiltDeg));
     }
 
+    /**
+     * Sets which levels are drawn, for the benchmark's breakdown of the draw time by level (the lists
+     * are still built and uploaded). Render thread; no allocation.
+     *
+     * @param mask bit l set: draw level l; {@code ~0} (the default) draws every level
+     */
+    public void setLevelMask(int mask) {
+        levelMask = mask;
+    }
+
     /** {@return the GL-free lists, LOD choice and counters (read them after {@link #draw})} */
     public PlantBatches batches() {
         return batches;
@@ -352,24 +305,18 @@ public final class PlantRenderer implements AutoCloseable {
 
     /**
      * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws every level:
-     * {@link #drawNear} then {@link #drawFar}. Draw your opaque geometry (terrain) before this, since
-     * the far level is blended without writing depth. Render thread; no allocation.
+     * {@link #drawNear} then {@link #drawFar}, lit from {@link #setSunDirection} and hazed as
+     * {@link #setHaze} says. Draw your opaque geometry (terrain) before this, since the far level is
+     * blended without writing depth. Render thread; no allocation.
      *
      * @param frame          the frame to show (sizes match the world)
      * @param camera         the viewer
-     * @param lx             unit vector toward the sun, X
-     * @param ly             unit vector toward the sun, Y
-     * @param lz             unit vector toward the sun, Z
-     * @param fog            fog colour (the sky)
-     * @param fogStart       distance where fog starts, metres
-     * @param fogEnd         distance of full fog, metres
      * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0 (see {@link #drawNear})
      * @throws IllegalArgumentException when the frame's size does not match the world or the
      *                                  viewport height is out of range
      */
-    public void draw(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
-                     float fogEnd, int viewportHeight) {
-        drawNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
+    public void draw(Frame frame, Camera camera, int viewportHeight) {
+        drawNear(frame, camera, viewportHeight);
         drawFar();
     }
 
@@ -378,24 +325,18 @@ public final class PlantRenderer implements AutoCloseable {
      * (near) levels, opaque, writing depth. For the camera the frame's decision was made for (the one
      * its step followed) it draws that decision as it is; for any other camera it decides first
      * ({@link ViewDecision}: the frustum and levels of that camera, by projected size), so split
-     * screens, minimaps, shadow passes and the first frame after a camera cut are drawn complete. Follow it in the same frame with your opaque geometry and
-     * then {@link #drawFar}. Render thread; no allocation.
+     * screens, minimaps, shadow passes and the first frame after a camera cut are drawn complete.
+     * Follow it in the same frame with your opaque geometry and then {@link #drawFar}. Render thread;
+     * no allocation.
      *
-     * @param frame    the frame to show (sizes match the world)
-     * @param camera   the viewer
-     * @param lx       unit vector toward the sun, X
-     * @param ly       unit vector toward the sun, Y
-     * @param lz       unit vector toward the sun, Z
-     * @param fog      fog colour (the sky)
-     * @param fogStart distance where fog starts, metres
-     * @param fogEnd   distance of full fog, metres
+     * @param frame          the frame to show (sizes match the world)
+     * @param camera         the viewer
      * @param viewportHeight height of the viewport drawn into, pixels, &gt; 0: far away a line is
-     *                 wider than the leaf it stands for, and the line level is drawn with the share of
-     *                 a pixel the leaf covers as its opacity
+     *                       wider than the leaf it stands for, and the line level is drawn with the
+     *                       share of a pixel the leaf covers as its opacity
      */
-    public void drawNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
-                         float fogEnd, int viewportHeight) {
-        prepareNear(frame, camera, lx, ly, lz, fog, fogStart, fogEnd, viewportHeight);
+    public void drawNear(Frame frame, Camera camera, int viewportHeight) {
+        prepareNear(frame, camera, viewportHeight);
         drawPreparedNear();
     }
 
@@ -405,8 +346,7 @@ public final class PlantRenderer implements AutoCloseable {
      * plants can first be drawn into the sun's shadow map ({@link #drawCasters}). Follow it in the same
      * frame with {@link #drawPreparedNear}. Arguments as {@link #drawNear}. Render thread; no allocation.
      */
-    public void prepareNear(Frame frame, Camera camera, float lx, float ly, float lz, Rgb fog, float fogStart,
-                            float fogEnd, int viewportHeight) {
+    public void prepareNear(Frame frame, Camera camera, int viewportHeight) {
         if (frame.componentCount() != world.componentCount()) {
             throw new IllegalArgumentException("frame has " + frame.componentCount() + " components, the world "
                     + world.componentCount());
@@ -420,33 +360,20 @@ public final class PlantRenderer implements AutoCloseable {
         }
         passes.resetCounts();
         pending = batches.instances() > 0;
-        preparedFrame = frame;
-        preparedFog = fog;
+        context.frame = frame;
         if (!pending) {
             return;
         }
-        resolver.upload(frame);
+        gpu.resolver.upload(frame);
         camera.viewProjection(viewProj);
         viewProj.get(matrix);
-        float ex = (float) camera.x();
-        float ey = (float) camera.y();
-        float ez = (float) camera.z();
-        float px = (float) (camera.viewHeightAtEye() / viewportHeight);
-        float py = (float) (camera.viewHeightPerMetre() / viewportHeight);
-        resolver.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame);
-        resolver.resolve(look);
-        multisampled = query.get(GL13C.GL_SAMPLES) > 1;
-        passes.frame(look, matrix, ex, ey, ez, fog, fogStart, fogEnd, lx, ly, lz, px, py, frame, multisampled);
-        prepared[0] = ex;
-        prepared[1] = ey;
-        prepared[2] = ez;
-        prepared[3] = fogStart;
-        prepared[4] = fogEnd;
-        prepared[5] = lx;
-        prepared[6] = ly;
-        prepared[7] = lz;
-        prepared[8] = px;
-        prepared[9] = py;
+        context.setEye((float) camera.x(), (float) camera.y(), (float) camera.z());
+        context.setPixel((float) (camera.viewHeightAtEye() / viewportHeight),
+                (float) (camera.viewHeightPerMetre() / viewportHeight));
+        gpu.resolver.frame(look, context);
+        gpu.resolver.resolve(look);
+        context.multisampled = query.get(GL13C.GL_SAMPLES) > 1;
+        passes.frame(look, context);
     }
 
     /**
@@ -465,39 +392,27 @@ public final class PlantRenderer implements AutoCloseable {
             GlProgram[] casters = new GlProgram[PlantPasses.CASTERS];
             GlProgram[] receivers = new GlProgram[PlantPasses.CASTERS];
             for (int k = 0; k < casters.length; k++) {
-                casters[k] = own(PlantPasses.compileCaster(tracker, k));
-                receivers[k] = own(PlantPasses.compileReceiver(tracker, k));
+                casters[k] = gpu.own(PlantPasses.compileCaster(gpu.tracker, k));
+                receivers[k] = gpu.own(PlantPasses.compileReceiver(gpu.tracker, k));
             }
             passes.useCasters(casters, receivers);
-            float[] a = prepared; // this frame's values onto the new programs
-            passes.frame(look, matrix, a[0], a[1], a[2], preparedFog, a[3], a[4], a[5], a[6], a[7], a[8], a[9],
-                    preparedFrame, multisampled);
+            passes.frame(look, context); // this frame's values onto the new programs
         }
-        ShadowFit at = shadow.placement();
-        passes.casterFrame(look, at.viewProjection(), (float) at.sunward(0), (float) at.sunward(1),
-                (float) at.sunward(2), preparedFog, (float) at.texelMetres(), preparedFrame);
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
-        passes.drawCasters(batches, vaos, indexCount, look, levelMask);
+        passes.casterFrame(look, shadow.placement(), context);
+        gpu.bindForDraws();
+        passes.drawCasters(batches, gpu.vaos, gpu.indexCount, look, levelMask);
     }
 
     /**
-     * Sets the sun's shadow map the triangle levels read from {@link #drawPreparedNear} on
-     * ({@code sun_shadow.glsl}; the map bound to {@code GlStateGuard.UNIT_SHADOW} by the caller): params
-     * as its uSunShadow (x = 0: none this frame) then its uShadowEye (the eye and the map's reach),
-     * matrix world to map. Render thread; no allocation.
+     * Reads the sun's shadow map from this holder at every {@link #drawPreparedNear} from now on
+     * ({@code sun_shadow.glsl}; the map bound to {@code TextureUnits.SUN_SHADOW} by the caller, who
+     * fills the holder each frame). Until then no map is read. Render thread; no allocation.
      *
-     * @param params 8 floats (copied)
-     * @param matrix 16 floats, or null while no map is drawn (kept, not copied)
-     * @throws IllegalArgumentException when params does not hold 8 floats
+     * @param params the frame's shadow map, kept (not copied)
+     * @throws IllegalArgumentException when params is null
      */
-    public void setShadowMap(float[] params, FloatBuffer matrix) {
-        if (params.length != 8) {
-            throw new IllegalArgumentException("params must hold 8 floats, got " + params.length);
-        }
-        System.arraycopy(params, 0, look.shadow, 0, 4);
-        System.arraycopy(params, 4, look.shadowEye, 0, 4);
-        look.shadowMatrix = matrix;
+    public void useShadowMap(ShadowParams params) {
+        look.shadow = Require.nonNull("params", params);
     }
 
     /**
@@ -509,12 +424,11 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         passes.shadow(look);
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
+        gpu.bindForDraws();
         // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque
         glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-        passes.draw(false, batches, vaos, indexCount, look, levelMask);
+        passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
         glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
@@ -529,13 +443,12 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         pending = false;
-        poseTexture.bind(0);
-        resolver.bindRecords(1);
-        if (multisampled) {
+        gpu.bindForDraws();
+        if (context.multisampled) {
             // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-            passes.draw(true, batches, vaos, indexCount, look, levelMask);
+            passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
             glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             return;
@@ -544,23 +457,22 @@ public final class PlantRenderer implements AutoCloseable {
         // colour blended by coverage; alpha composited "over" (a + d (1 - a)): opaque over an opaque target
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(false);
-        passes.draw(true, batches, vaos, indexCount, look, levelMask);
+        passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(true);
         glDisable(GL_BLEND);
     }
-
 
     /**
      * Reads back the component records of the last {@link #drawNear} (tests). Render thread; waits
      * for the GPU.
      */
     public void readRecords(FloatBuffer dest) {
-        resolver.readRecords(dest);
+        gpu.resolver.readRecords(dest);
     }
 
     /** {@return bytes uploaded by the last {@link #drawNear}: instance records and component render states} */
     public long uploadedBytes() {
-        return resolver.uploadedBytes();
+        return gpu.resolver.uploadedBytes();
     }
 
     /** Deletes every GL object and frees the staging memory. Render thread; idempotent. */
@@ -570,7 +482,7 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         closed = true;
-        Closing.closeReverse(owned);
+        gpu.close();
         MemoryUtil.memFree((java.nio.Buffer) matrix);
         query.close();
     }
@@ -579,5 +491,4 @@ public final class PlantRenderer implements AutoCloseable {
     public static long poseTexelLayout(List<SpeciesModel> models, int[][][] first) {
         return PlantMeshes.poseTexelLayout(models, first);
     }
-
 }

@@ -7,16 +7,16 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
-import java.nio.FloatBuffer;
 import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
-import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.gl.TextureUnits;
 
 /**
  * The per-frame uniforms of the triangle, line and resolve programs (each has some of them: a
- * missing one is set at location -1, which GL ignores); the constructor binds the two samplers
- * (pose table to unit 0, component records to unit 1) and leaves the program in use. Render thread.
+ * missing one is set at location -1, which GL ignores); the constructor binds the samplers (pose
+ * tables, component records, the sun's shadow map: {@link TextureUnits}) and leaves the program in
+ * use. Render thread.
  */
 public final class PlantUniforms {
     public final GlProgram program;
@@ -66,41 +66,39 @@ public final class PlantUniforms {
         sunShadow = p.optionalUniform("uSunShadow");
         shadowMatrix = p.optionalUniform("uShadowMatrix");
         shadowEye = p.optionalUniform("uShadowEye");
-        glUniform1i(p.optionalUniform("uShadowMap"), GlStateGuard.UNIT_SHADOW);
-        glUniform1i(p.optionalUniform("uPoses"), 0);
-        glUniform1i(p.optionalUniform("uComponents"), 1);
+        glUniform1i(p.optionalUniform("uShadowMap"), TextureUnits.SUN_SHADOW);
+        glUniform1i(p.optionalUniform("uPoses"), TextureUnits.POSES);
+        glUniform1i(p.optionalUniform("uComponents"), TextureUnits.RECORDS);
     }
 
     /**
      * Sets the per-frame values on the program in use: view, eye, light, fog, the pixel's size
-     * ({@code pixelX + distance * pixelY} metres), the frame's distance thinning and the least alpha
-     * written (1 when not multisampled, so plants are opaque; 0 for alpha-to-coverage). No allocation.
+     * ({@code pixelX + distance * pixelY} metres) and the frame's distance thinning from the context,
+     * the look's light, and the least alpha written (1 when not multisampled, so plants are opaque; 0
+     * for alpha-to-coverage). No allocation.
      */
-    public void frame(PlantLook r, FloatBuffer viewProjMatrix, float ex, float ey, float ez, Rgb fog, float start,
-               float end, float lx, float ly, float lz, float pixelX, float pixelY, Frame frame, float alphaFloorValue) {
+    void frame(PlantLook r, PassContext c, float alphaFloorValue) {
         glUniform1f(alphaFloor, alphaFloorValue);
-        glUniform2f(pixelScale, pixelX, pixelY);
+        glUniform2f(pixelScale, c.pixelX, c.pixelY);
+        Frame frame = c.frame;
         glUniform3f(thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());
-        glUniformMatrix4fv(viewProj, false, viewProjMatrix);
+        glUniformMatrix4fv(viewProj, false, c.viewProj);
         glUniform3f(sunColour, r.sunR, r.sunG, r.sunB);
         glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
         glUniform1f(sheen, r.sheen);
         glUniform1f(minPixels, r.minPixels);
         glUniform1f(headPixels, r.headPixels);
         glUniform1f(flowerTilt, r.flowerTilt);
-        glUniform3f(lightDir, lx, ly, lz);
-        glUniform3f(eye, ex, ey, ez);
+        glUniform3f(lightDir, c.lightX, c.lightY, c.lightZ);
+        glUniform3f(eye, c.eyeX, c.eyeY, c.eyeZ);
+        Rgb fog = c.fog;
         glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(fogStart, start);
-        glUniform1f(fogEnd, end);
+        glUniform1f(fogStart, c.fogStart);
+        glUniform1f(fogEnd, c.fogEnd);
     }
 
     /** Sets the look's sun shadow map on the program in use ({@code sun_shadow.glsl}). No allocation. */
     public void shadow(PlantLook r) {
-        glUniform4f(sunShadow, r.shadow[0], r.shadow[1], r.shadow[2], r.shadow[3]);
-        glUniform4f(shadowEye, r.shadowEye[0], r.shadowEye[1], r.shadowEye[2], r.shadowEye[3]);
-        if (r.shadowMatrix != null) {
-            glUniformMatrix4fv(shadowMatrix, false, r.shadowMatrix);
-        }
+        r.shadow.upload(sunShadow, shadowEye, shadowMatrix);
     }
 }

@@ -3,7 +3,7 @@
 uniform vec3 uPatch;                             // 1 / scale (1/m), strength, enabled (0 or 1)
 uniform int uPatchSeed;
 
-// RenderSettings.hash / valueNoise / patchLevel, bit for bit on the lattice hash
+// ground.PatchNoise.hash / valueNoise / level, bit for bit on the lattice hash
 float hash(int x, int z, int seed) {
     uint h = uint(x) * 0x27d4eb2du ^ uint(z) * 0x165667b1u ^ uint(seed) * 0x6c8e9cf5u;
     h ^= h >> 15u;
