@@ -24,7 +24,7 @@ import org.jecosys.sim.Simulation;
  * JEcoSys plants in a jMonkeyEngine application: steps the {@link Simulation} in {@link #update} and
  * draws the plants in the application's main viewport with its camera.
  * <pre>{@code
- * assetManager.registerLoader(SceneAssetLoader.class, "xml");
+ * assetManager.registerLoader(SceneAssetLoader.class, SceneAssetLoader.EXTENSION);
  * PlantAppState plants = new PlantAppState(assetManager.loadAsset(new SceneKey("Scenes/meadow.xml")));
  * stateManager.attach(plants);
  * WindSource player = plants.simulation().attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 0, 20));

@@ -15,24 +15,31 @@ import org.jecosys.terrain.ImageSource;
 /**
  * Loads JEcoSys scene files through jME's {@link AssetManager}, as {@link Scene}s:
  * <pre>{@code
- * assetManager.registerLoader(SceneAssetLoader.class, "xml");
+ * assetManager.registerLoader(SceneAssetLoader.class, SceneAssetLoader.EXTENSION);
  * Scene scene = assetManager.loadAsset(new SceneKey("Scenes/meadow.xml"));
  * }</pre>
+ * The loader is registered for {@value #EXTENSION}, not for {@code xml}: a {@link SceneKey} reaches it
+ * whatever its file is called, and so does a plain {@code AssetKey} for a file named
+ * {@code NAME.jecosys.xml}; every other {@code .xml} asset of the game (its materials, its UI) keeps its
+ * own loader.
  * The images the scene names (heightmaps, resource maps) are found the same way as the scene, relative
  * to its folder: {@code "Scenes/"} plus the path the scene writes, through
  * {@code assetManager.locateAsset}, so a scene on the classpath or in a {@code FileLocator} folder
  * takes its images from there. Image paths are confined to the scene's folder, as
  * {@link ImageSource#folder} does for files on disk: an absolute path, or {@code ..} that leads out of
- * it, is refused. jME picks a loader by the text after the first dot of the file name, so a file
- * named {@code x.meadow.xml} needs the loader registered for {@code "meadow.xml"}.
+ * it, is refused.
  *
  * <p>A scene that fails throws {@link AssetLoadException} whose message lists its problems as
  * {@code NAME:LINE:COL: message}. No GL: the thread that calls {@code loadAsset} (any); allocates
  * (load time). jME makes one loader per thread through the public no-argument constructor.
  */
 public final class SceneAssetLoader implements AssetLoader {
-    /** The extension of scene files, for {@code registerLoader}. */
-    public static final String EXTENSION = "xml";
+    /**
+     * What to register the loader for: the extension every {@link SceneKey} reports, and jME's
+     * extension of a file named {@code NAME.jecosys.xml} (jME takes the last two parts of a name that
+     * ends in {@code .xml}).
+     */
+    public static final String EXTENSION = "jecosys.xml";
 
     /** What jME calls to make a loader. */
     public SceneAssetLoader() {

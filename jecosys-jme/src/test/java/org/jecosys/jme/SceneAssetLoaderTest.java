@@ -86,4 +86,31 @@ class SceneAssetLoaderTest {
                 () -> assets.loadAsset(new SceneKey("Scenes/bad.xml")));
         assertTrue(bad.getMessage().matches("(?s)Scenes/bad\\.xml:4:\\d+:.*sizeX.*"), bad.getMessage());
     }
+
+    /** A game's own loader for {@code .xml} assets, standing for its materials or UI files. */
+    public static final class GameXmlLoader implements com.jme3.asset.AssetLoader {
+        @Override
+        public Object load(com.jme3.asset.AssetInfo info) throws IOException {
+            try (java.io.InputStream in = info.openStream()) {
+                return "game:" + new String(in.readAllBytes(), StandardCharsets.UTF_8).strip();
+            }
+        }
+    }
+
+    @Test
+    void theSceneLoaderTakesSceneKeysAndJecosysXmlFilesButNoOtherXmlAsset() throws Exception {
+        copyTiny(dir.resolve("Scenes"));
+        Files.copy(dir.resolve("Scenes/tiny.xml"), dir.resolve("Scenes/tiny.jecosys.xml"));
+        Files.writeString(dir.resolve("Scenes/menu.xml"), "<menu/>");
+        DesktopAssetManager assets = new DesktopAssetManager(true);
+        assets.registerLoader(GameXmlLoader.class, "xml");
+        assets.registerLoader(SceneAssetLoader.class, SceneAssetLoader.EXTENSION);
+        assets.registerLocator(dir.toString(), FileLocator.class);
+        assertEquals("game:<menu/>", assets.loadAsset(new com.jme3.asset.AssetKey<>("Scenes/menu.xml")),
+                "the game's own .xml loader still loads its .xml assets");
+        checkTiny(assets.loadAsset(new SceneKey("Scenes/tiny.xml")), "Scenes/tiny.xml");
+        Object byName = assets.loadAsset(new com.jme3.asset.AssetKey<>("Scenes/tiny.jecosys.xml"));
+        assertTrue(byName instanceof Scene, "a NAME.jecosys.xml file reaches the scene loader: " + byName);
+        assertEquals(SceneAssetLoader.EXTENSION, new SceneKey("a/b.XML").getExtension());
+    }
 }

@@ -22,6 +22,6 @@ public final class Adapters {
 
     /** Registers the scene loader with a jME asset manager, as a jME game does at start. */
     public static void register(AssetManager assets) {
-        assets.registerLoader(SceneAssetLoader.class, "xml");
+        assets.registerLoader(SceneAssetLoader.class, SceneAssetLoader.EXTENSION);
     }
 }
