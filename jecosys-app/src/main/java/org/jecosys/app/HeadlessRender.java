@@ -73,7 +73,7 @@ final class HeadlessRender {
         SceneDef def = scene.def();
         log.println("Building '" + def.name() + "' ...");
         log.flush();
-        try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, 0)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), 0, progress)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);

@@ -371,7 +371,7 @@ final class SceneEditor {
                 settings.tint(), settings.showField(), settings.showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
-        AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
+        AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(),
                 a.seed());
         ForceFieldDef f = def.field();
         ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept

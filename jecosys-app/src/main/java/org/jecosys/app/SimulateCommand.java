@@ -100,7 +100,7 @@ final class SimulateCommand implements Callable<Integer> {
         SimulationDef sd = overridden(def);
         Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
         Run run;
-        try (Simulation sim = Simulation.create(sd, loaded.images(), progress, threads == null ? 0 : threads)) {
+        try (Simulation sim = Simulation.create(sd, loaded.images(), threads == null ? 0 : threads, progress)) {
             BuildReport.print(sim.world(), err, err); // stdout stays the results only, for scripts
             CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                     (double) def.render().width() / def.render().height());
@@ -143,7 +143,7 @@ final class SimulateCommand implements Callable<Integer> {
         SimulationDef sd = def.simulationDef();
         AnimationDef a = sd.animation();
         AnimationDef anim = new AnimationDef(mode != null ? mode : a.mode(), dt != null ? dt : a.fixedStep(),
-                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.threads(), a.seed());
+                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.workers(), a.seed());
         ForceFieldDef f = sd.field();
         ForceFieldDef fd = field == null ? f
                 : f.withEnabled(field == OnOff.on);

@@ -73,7 +73,7 @@ final class Viewer {
 
     void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
-        try (Simulation sim = Simulation.create(def.simulationDef(), images, progress, 0)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), images, 0, progress)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);

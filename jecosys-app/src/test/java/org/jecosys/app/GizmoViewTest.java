@@ -58,7 +58,7 @@ class GizmoViewTest {
         ViewCamera cam = new ViewCamera().setPosition(0, 24, 6).setOrientation(0, -1.2);
         cam.setLens(Math.toRadians(55), W / (double) H, 0.05, 300);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
-        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             // the scene's own flows off the picture, then one flow of each kind on a 3 x 3 grid
             for (int i = 0; i < sim.windField().size(); i++) {
                 sim.removeFlow(sim.windField().get(i));

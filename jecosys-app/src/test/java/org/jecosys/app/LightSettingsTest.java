@@ -44,7 +44,7 @@ class LightSettingsTest {
     @Test
     void sunSlidersAreSavedWithTheScene() throws Exception {
         SceneDef def = SceneFiles.load(Path.of("scenes", "c1.xml"));
-        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             RenderSettings settings = HeadlessRender.settings(def.render());
             SceneEditor editor = new SceneEditor(def, sim, settings);
             assertEquals(def.render(), editor.snapshot().render(), "an untouched sun saves the file's light exactly");

@@ -65,7 +65,7 @@ class ViewerControlsTest {
         file = shipped.resolve("c1.xml");
         Files.copy(Path.of("scenes/c1.xml"), file);
         def = SceneFiles.load(file);
-        sim = Simulation.create(def.simulationDef(), shipped, Progress.NONE, 1);
+        sim = Simulation.create(def.simulationDef(), shipped, 1, Progress.NONE);
         ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                 .height(def.camera().x(), def.camera().z()), W / (double) H);
         fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());

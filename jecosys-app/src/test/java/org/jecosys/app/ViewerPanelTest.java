@@ -43,7 +43,7 @@ class ViewerPanelTest {
         Path file = Files.copy(Path.of("scenes/c1.xml"), scenes.resolve("c1.xml"));
         SceneDef def = SceneFiles.load(file);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
-        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE, 1);
+        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, 1, Progress.NONE);
              GlContext gl = GlContext.headless(true);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H)) {
             ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()

@@ -321,7 +321,7 @@ final class SceneSchema {
                         + "switched inside a step acts from the next sub-interval boundary.")
                         .range(1, 64).def(4).get(d -> ((AnimationDef) d).subIntervals()))
                 .attr(integer("threads", "Animation workers; 0 means the available processors.").range(0, 256)
-                        .def(0).get(d -> ((AnimationDef) d).threads()))
+                        .def(0).get(d -> ((AnimationDef) d).workers()))
                 .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
 
         ElementSpec render = RenderSchema.render();

@@ -101,16 +101,17 @@ public final class Simulation implements AutoCloseable {
     final StepLoop loop;
     private final DetailCommands detail;
 
-    private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
+    private Simulation(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields) {
         this.world = world;
         this.def = def;
-        loop = new StepLoop(world, def, threads, chunkComponents, fields);
+        loop = new StepLoop(world, def, workers, chunkComponents, fields);
         detail = new DetailCommands(world, loop.commands, loop.state, loop.draw);
     }
 
     /**
      * Builds the world of {@code def} (terrain, species, distribution) and a simulation of it, with
-     * the def's worker count (0: the available processors). Build time; allocates; any thread.
+     * the def's worker count ({@link AnimationDef#workers()}; 0: the available processors). Build
+     * time; allocates; any thread.
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param baseDir  folder that relative image paths resolve against
@@ -119,44 +120,44 @@ public final class Simulation implements AutoCloseable {
      * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, Progress progress) throws IOException {
-        return create(def, baseDir, progress, 0);
+        return create(def, baseDir, 0, progress);
     }
 
     /**
-     * Like {@link #create(SimulationDef, Path, Progress)} with {@code threads} animation workers, in
+     * Like {@link #create(SimulationDef, Path, Progress)} with {@code workers} animation workers, in
      * [0, 256]; 0 keeps the def's setting (whose 0 means the available processors).
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param baseDir  folder that relative image paths resolve against; images must lie in its tree
      *                 ({@link ImageSource#folder})
+     * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
-    public static Simulation create(SimulationDef def, Path baseDir, Progress progress, int threads)
+    public static Simulation create(SimulationDef def, Path baseDir, int workers, Progress progress)
             throws IOException {
-        return create(def, ImageSource.folder(Require.nonNull("baseDir", baseDir)), progress, threads);
+        return create(def, ImageSource.folder(Require.nonNull("baseDir", baseDir)), workers, progress);
     }
 
     /**
-     * Like {@link #create(SimulationDef, Path, Progress, int)} with the images the def names read
+     * Like {@link #create(SimulationDef, Path, int, Progress)} with the images the def names read
      * from {@code images} (e.g. {@code org.jecosys.scene.Scene#images()}: the bytes checked when the
-     * scene was loaded, or a game's assets).
+     * scene was read, or a game's assets).
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param images   where the heightmap and resource images come from
+     * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read or decoded
      */
-    public static Simulation create(SimulationDef def, ImageSource images, Progress progress, int threads)
+    public static Simulation create(SimulationDef def, ImageSource images, int workers, Progress progress)
             throws IOException {
         Require.nonNull("def", def);
-        int t = workers(def, threads);
-        World world = World.build(def, Require.nonNull("images", images), t, Require.nonNull("progress", progress));
-        return new Simulation(world, def, t, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
+        int w = workers(def, workers);
+        World world = World.build(def, Require.nonNull("images", images), w, Require.nonNull("progress", progress));
+        return new Simulation(world, def, w, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
     }
 
     /**
@@ -165,11 +166,11 @@ public final class Simulation implements AutoCloseable {
      *
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
-     * @param threads animation workers in [0, 256]; 0 keeps the def's setting
+     * @param workers animation workers in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      */
-    public static Simulation of(World world, SimulationDef def, int threads) {
-        return of(world, def, threads, ForceFieldFactory.QUADTREE);
+    public static Simulation of(World world, SimulationDef def, int workers) {
+        return of(world, def, workers, ForceFieldFactory.QUADTREE);
     }
 
     /**
@@ -181,30 +182,30 @@ public final class Simulation implements AutoCloseable {
      *
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
-     * @param threads animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
+     * @param workers animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
      *                available processors)
      * @param fields  builds the force field, called once on this thread
      * @return the simulation at time 0, in the wind of t = 0 (see "Start")
-     * @throws IllegalArgumentException on null arguments, a bad thread count, or a field that does
+     * @throws IllegalArgumentException on null arguments, a bad worker count, or a field that does
      *                                  not hold exactly the world's plants
      */
-    public static Simulation of(World world, SimulationDef def, int threads, ForceFieldFactory fields) {
+    public static Simulation of(World world, SimulationDef def, int workers, ForceFieldFactory fields) {
         Require.nonNull("world", world);
         Require.nonNull("def", def);
         Require.nonNull("fields", fields);
-        return new Simulation(world, def, workers(def, threads), CHUNK_COMPONENTS, fields);
+        return new Simulation(world, def, workers(def, workers), CHUNK_COMPONENTS, fields);
     }
 
     /** Like {@link #of} with another chunk size (components), for tests of the chunking itself. */
-    static Simulation of(World world, SimulationDef def, int threads, int chunkComponents) {
+    static Simulation of(World world, SimulationDef def, int workers, int chunkComponents) {
         Require.range("chunkComponents", chunkComponents, 1, Integer.MAX_VALUE);
-        return new Simulation(world, def, workers(def, threads), chunkComponents, ForceFieldFactory.QUADTREE);
+        return new Simulation(world, def, workers(def, workers), chunkComponents, ForceFieldFactory.QUADTREE);
     }
 
-    private static int workers(SimulationDef def, int threads) {
-        Require.range("threads", threads, 0, 256);
-        int t = threads != 0 ? threads : def.animation().threads();
-        return t != 0 ? t : Runtime.getRuntime().availableProcessors();
+    private static int workers(SimulationDef def, int workers) {
+        Require.range("workers", workers, 0, 256);
+        int w = workers != 0 ? workers : def.animation().workers();
+        return w != 0 ? w : Runtime.getRuntime().availableProcessors();
     }
 
     /**

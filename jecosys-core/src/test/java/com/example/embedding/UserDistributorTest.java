@@ -25,7 +25,7 @@ class UserDistributorTest {
     static final class RowDistributor implements TerrainDistributor {
         @Override
         public PlantLayout distribute(Terrain terrain, List<String> speciesIds, List<DistributionDef> distributions,
-                                      List<PlacementDef> placements, long seed, int threads, Progress progress) {
+                                      List<PlacementDef> placements, long seed, int workers, Progress progress) {
             PlantLayout.Builder b = new PlantLayout.Builder();
             for (PlacementDef p : placements) {
                 add(b, terrain, p.x(), p.z(), speciesIds.indexOf(p.species()), -1, seed + b.size());

@@ -264,7 +264,7 @@ class SceneMutationTest {
 
     /** Builds and runs 5 steps; the first NaN or infinity found, or what was thrown; null when clean. */
     private static String simulate(SceneDef d) {
-        try (Simulation sim = Simulation.create(d.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(d.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             double ground = sim.world().terrain().heightfield().height(d.camera().x(), d.camera().z());
             ViewCamera cam = ViewCamera.of(d.camera(), ground, 16.0 / 9);
             for (int s = 0; s < 5; s++) {

@@ -66,7 +66,7 @@ class MeadowWindTest {
         SimulationDef def = new SimulationDef(d.terrain(), d.species(), quarter, d.placements(), flows,
                 d.field(), d.animation(), d.seed());
         Run r = new Run();
-        try (Simulation sim = Simulation.create(def, Path.of("scenes"), Progress.NONE, 2)) {
+        try (Simulation sim = Simulation.create(def, Path.of("scenes"), 2, Progress.NONE)) {
             World w = sim.world();
             r.world = w;
             ViewCamera cam = ViewCamera.of(scene.camera(), w.terrain().heightfield().height(scene.camera().x(),

@@ -107,7 +107,7 @@ class SchemaExtremesTest {
         double[] steps = {1e-5, 1.0 / 60, 1};
         int[] subs = {64, 4, 1};
         for (int r = 0; r < steps.length; r++) {
-            try (Simulation sim = Simulation.create(def(steps[r], subs[r]), Path.of("."), Progress.NONE, 2)) {
+            try (Simulation sim = Simulation.create(def(steps[r], subs[r]), Path.of("."), 2, Progress.NONE)) {
                 String what = "step " + steps[r] + " s, " + subs[r] + " sub-intervals";
                 assertFinite(sim, what + ", before the first step");
                 ViewCamera cam = new ViewCamera().setPosition(0, 30, 30).setOrientation(0, -0.8);

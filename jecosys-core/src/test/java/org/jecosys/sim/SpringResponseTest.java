@@ -62,7 +62,7 @@ class SpringResponseTest {
     }
 
     static Simulation simulation(SimulationDef def) throws Exception {
-        return Simulation.create(def, Path.of("."), Progress.NONE, 1);
+        return Simulation.create(def, Path.of("."), 1, Progress.NONE);
     }
 
     /** Looking at the plant from 5 m. */

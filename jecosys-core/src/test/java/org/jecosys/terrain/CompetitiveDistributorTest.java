@@ -174,7 +174,7 @@ class CompetitiveDistributorTest {
         assertTrue(e.getMessage().contains("distributions[0]") && e.getMessage().contains("'B'"));
         e = assertThrows(IllegalArgumentException.class,
                 () -> DISTRIBUTOR.distribute(t, SPECIES, List.of(), List.of(), 1, 0, Progress.NONE));
-        assertTrue(e.getMessage().contains("threads"));
+        assertTrue(e.getMessage().contains("workers"));
         e = assertThrows(IllegalArgumentException.class, () -> DISTRIBUTOR.distribute(t, SPECIES, List.of(),
                 List.of(new PlacementDef("A", 30, 0, 0)), 1, 1, Progress.NONE));
         assertTrue(e.getMessage().contains("placements[0]"));
