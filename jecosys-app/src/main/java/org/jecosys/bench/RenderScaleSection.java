@@ -82,7 +82,7 @@ final class RenderScaleSection implements Section {
             }
             StringBuilder skipped = new StringBuilder();
             for (int s = 0; s < count; s++) {
-                SceneDef def = SceneFiles.load(scenes.resolve(FILES[s]));
+                SceneDef def = SceneFiles.parse(scenes.resolve(FILES[s]));
                 try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
                     sim.setLodTransition(def.render().lodTransition());
                     if (quality != null) {
@@ -178,7 +178,7 @@ final class RenderScaleSection implements Section {
         Table t = new Table("render-looks", "The meadow's look switched: " + width + "x" + height + ", start camera",
                 java.util.List.of("sheen", "sun shadows", "frame ms (median)", "VS invocations / frame",
                         "FS invocations / frame", "primitives / frame", "fragments / pixel"));
-        SceneDef def = SceneFiles.load(scenes.resolve(FILES[0]));
+        SceneDef def = SceneFiles.parse(scenes.resolve(FILES[0]));
         try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
             ViewCamera cam = ViewCamera.of(def.camera(), sim.world().terrain().heightfield().height(def.camera().x(),
                     def.camera().z()), width / (double) height);

@@ -73,7 +73,7 @@ final class ScaleSection implements Section {
      */
     private Table perUpdate(SceneDef base, int components, int[] workers, int warm, int steps, Report report)
             throws Exception {
-        SceneDef c1 = SceneFiles.load(scenes.resolve("c1.xml"));
+        SceneDef c1 = SceneFiles.parse(scenes.resolve("c1.xml"));
         SimulationDef def = world(base, c1.flows(), components);
         World world = World.build(def, scenes, 2, Progress.NONE);
         ViewCamera cam = camera(def);
@@ -145,7 +145,7 @@ final class ScaleSection implements Section {
         };
         int warm = mode == Mode.SMOKE ? 3 : mode == Mode.QUICK ? 100 : 300;
         int steps = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 250 : 600;
-        SceneDef base = SceneFiles.load(scenes.resolve("meadow.xml"));
+        SceneDef base = SceneFiles.parse(scenes.resolve("meadow.xml"));
         Table t = new Table("scale", "Scale curve: component updates per second against component count",
                 List.of("components", "plants", "workers", "animated per step", "median step ms", "updates/s",
                         "2 workers / 1"));

@@ -48,7 +48,7 @@ class FlowDefaultsTest {
 
     @Test
     void aDefaultFlowBendsThePlantsWithinItsRadiusAtOnce() throws Exception {
-        SceneDef def = SceneFiles.load(Path.of("scenes/c1.xml"));
+        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
         FlowDefaults d = FlowDefaults.of(Heightfield.of(def.terrain().sizeX(), def.terrain().sizeZ(), 2, new float[4]),
                 def.flows());
         float[] without = bend(def, null);

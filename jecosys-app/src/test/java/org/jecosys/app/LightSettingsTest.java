@@ -43,7 +43,7 @@ class LightSettingsTest {
 
     @Test
     void sunSlidersAreSavedWithTheScene() throws Exception {
-        SceneDef def = SceneFiles.load(Path.of("scenes", "c1.xml"));
+        SceneDef def = SceneFiles.parse(Path.of("scenes", "c1.xml"));
         try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             RenderSettings settings = HeadlessRender.settings(def.render());
             SceneEditor editor = new SceneEditor(def, sim, settings);

@@ -64,7 +64,7 @@ class ViewerControlsTest {
         shipped = Files.createDirectories(dir.resolve("install/scenes"));
         file = shipped.resolve("c1.xml");
         Files.copy(Path.of("scenes/c1.xml"), file);
-        def = SceneFiles.load(file);
+        def = SceneFiles.parse(file);
         sim = Simulation.create(def.simulationDef(), shipped, 1, Progress.NONE);
         ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                 .height(def.camera().x(), def.camera().z()), W / (double) H);
@@ -198,7 +198,7 @@ class ViewerControlsTest {
         controls.save();
         controls.confirmSave();
         assertFalse(editor.dirty(), controls.message());
-        SceneDef saved = SceneFiles.load(file);
+        SceneDef saved = SceneFiles.parse(file);
         assertEquals(def.flows().size() + 1, saved.flows().size(), "the added flow is in the file");
     }
 
@@ -223,7 +223,7 @@ class ViewerControlsTest {
         editor.setLodEdge(0, 0, 7.5f);
         controls.save();
         assertNull(controls.pendingSave());
-        assertEquals(7.5, SceneFiles.load(target).species().get(0).lods().get(0).maxDistance());
+        assertEquals(7.5, SceneFiles.parse(target).species().get(0).lods().get(0).maxDistance());
         Path other = Files.writeString(mine.resolve("other.xml"), "keep me");
         controls.saveAs(other.toString());
         assertNotNull(controls.pendingSave());
@@ -251,7 +251,7 @@ class ViewerControlsTest {
         assertTrue(xml.contains("lodTransition=\"0.35\""), xml);
         assertTrue(xml.contains("strength=\"2.7\""), xml);
         assertTrue(xml.contains("direction=\"33.5\""), xml);
-        SceneDef back = SceneFiles.load(target);
+        SceneDef back = SceneFiles.parse(target);
         assertEquals(43.146, back.species().get(0).lods().get(1).maxDistance());
         assertEquals(0.35, back.render().lodTransition());
         assertEquals(2.7, back.flows().get(0).strength());

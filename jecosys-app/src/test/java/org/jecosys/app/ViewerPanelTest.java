@@ -41,7 +41,7 @@ class ViewerPanelTest {
     void theWholeViewerFrameDrawsWithEveryPanelAndDialogOpen() throws Exception {
         Path scenes = Files.createDirectories(dir.resolve("scenes"));
         Path file = Files.copy(Path.of("scenes/c1.xml"), scenes.resolve("c1.xml"));
-        SceneDef def = SceneFiles.load(file);
+        SceneDef def = SceneFiles.parse(file);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         try (Simulation sim = Simulation.create(def.simulationDef(), scenes, 1, Progress.NONE);
              GlContext gl = GlContext.headless(true);

@@ -103,7 +103,7 @@ class RenderLightTest {
     void shippedScenesSaveAsBefore() throws Exception {
         for (String name : new String[] {"c1.xml", "c2.xml", "c3.xml", "rose.xml", "meadow.xml"}) {
             Path file = SceneFilesTest.SCENES.resolve(name);
-            SceneDef d = SceneFiles.load(file);
+            SceneDef d = SceneFiles.parse(file);
             String saved = SceneFiles.toXml(d);
             if (!Files.readString(file).contains("<light")) {
                 assertFalse(saved.contains("<light") || saved.contains("<patches"), name);

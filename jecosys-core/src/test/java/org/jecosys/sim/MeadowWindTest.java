@@ -41,7 +41,7 @@ class MeadowWindTest {
 
     @BeforeAll
     static void load() throws Exception {
-        scene = SceneFiles.load(Path.of("scenes/meadow.xml"));
+        scene = SceneFiles.parse(Path.of("scenes/meadow.xml"));
     }
 
     /** One run: per-frame bends of the plants always in view, the change per frame, the mean wind. */

@@ -45,7 +45,7 @@ class SimulationReliabilityTest {
     /** 2,000 tufts of 25 leaves: 50,000 components, every one in view. */
     private static synchronized World raceWorld() throws Exception {
         if (raceWorld == null) {
-            raceScene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
+            raceScene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
             raceWorld = World.build(raceScene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         }
         return raceWorld;

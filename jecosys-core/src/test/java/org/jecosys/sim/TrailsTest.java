@@ -68,7 +68,7 @@ class TrailsTest {
         }
         Path file = dir.resolve(name + ".xml");
         Files.writeString(file, text);
-        return SceneFiles.load(file);
+        return SceneFiles.parse(file);
     }
 
     /** Grass tufts of C1 (the walker does not move them) within 0.5 m of the line z = pathZ, |x| < 11. */

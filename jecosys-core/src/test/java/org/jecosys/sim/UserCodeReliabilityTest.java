@@ -46,7 +46,7 @@ class UserCodeReliabilityTest {
     /** 2,000 tufts of 25 leaves: 50,000 components, every one in view (the close-race fixture). */
     private static synchronized World world() throws Exception {
         if (world == null) {
-            scene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
+            scene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
             world = World.build(scene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         }
         return world;
