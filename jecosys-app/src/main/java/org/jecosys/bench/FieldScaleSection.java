@@ -54,8 +54,8 @@ final class FieldScaleSection implements Section {
     static void pose(ViewCamera cam, double size, int k) {
         double a = k * 0.005;
         double r = size * 0.3;
-        cam.setPosition(size / 2 + r * Math.cos(a), 1.7, size / 2 + r * Math.sin(a))
-                .setOrientation(a * 2 + Math.sin(k * 0.01), -0.1);
+        cam.setPosition(size / 2 + r * Math.cos(a), 1.7, size / 2 + r * Math.sin(a));
+        cam.setOrientation(a * 2 + Math.sin(k * 0.01), -0.1);
     }
 
     @Override
@@ -73,7 +73,8 @@ final class FieldScaleSection implements Section {
         double[] xs = new double[sizes.length];
         double[] ys = new double[sizes.length];
         List<Object> raw = new ArrayList<>();
-        ViewCamera cam = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
         for (int s = 0; s < sizes.length; s++) {
             int n = sizes[s];
             ForceFieldDef def = ForceFieldDef.defaults();

@@ -55,7 +55,9 @@ class GizmoViewTest {
     @Test
     void eachGizmoKindIsDrawnInItsColourAtItsFlowsCentre() throws Exception {
         SceneDef def = RenderScenes.load("c1.xml");
-        ViewCamera cam = new ViewCamera().setPosition(0, 24, 6).setOrientation(0, -1.2);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(0, 24, 6);
+        cam.setOrientation(0, -1.2);
         cam.setLens(Math.toRadians(55), W / (double) H, 0.05, 300);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {

@@ -7,7 +7,8 @@
  * <pre>{@code
  * SimulationDef def = ...;                         // in code, or SceneDef.simulationDef(), or
  * try (Simulation sim = Scenes.simulation(Path.of("scenes/c1.xml"), Progress.NONE)) {
- *     ViewCamera camera = new ViewCamera().setPosition(0, 1.7, 14);
+ *     ViewCamera camera = new ViewCamera();
+ *     camera.setPosition(0, 1.7, 14);
  *     WindSource player = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 14, 3));
  *     long last = System.nanoTime();
  *     while (running) {

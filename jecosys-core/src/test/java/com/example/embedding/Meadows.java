@@ -68,7 +68,10 @@ final class Meadows {
 
     /** High above the south edge, looking down over the whole terrain. */
     static ViewCamera overview() {
-        return new ViewCamera().setPosition(0, 30, 38).setOrientation(0, -0.75);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 30, 38);
+        camera.setOrientation(0, -0.75);
+        return camera;
     }
 
     /** The world plant standing nearest (x, z) (the world orders plants spatially, not as placed). */

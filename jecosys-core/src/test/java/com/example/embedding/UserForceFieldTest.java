@@ -186,7 +186,9 @@ class UserForceFieldTest {
         SimulationDef def = calm();
         World world = Meadows.world(def);
         // low, near the south-west corner, looking south (+Z) out of the meadow: most of it is behind
-        ViewCamera camera = new ViewCamera().setPosition(-19, 1.7, 19).setOrientation(Math.PI, 0);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(-19, 1.7, 19);
+        camera.setOrientation(Math.PI, 0);
         FieldBounds[] seen = new FieldBounds[1];
         UniformField[] made = new UniformField[1];
         ForceFieldFactory uniform = (bounds, fieldDef, wind, xs, zs) -> {

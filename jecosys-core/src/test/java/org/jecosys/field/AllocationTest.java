@@ -50,7 +50,8 @@ class AllocationTest {
         for (int i = 0; i < n; i++) {
             f.addPlant(rng.nextDouble(0, 200), rng.nextDouble(0, 200));
         }
-        ViewCamera cam = new ViewCamera().setLens(1.0, 1.7, 0.1, 300);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(1.0, 1.7, 0.1, 300);
         float[] wx = new float[n];
         float[] wz = new float[n];
         boolean[] vis = new boolean[n];
@@ -65,7 +66,8 @@ class AllocationTest {
                 double a = k * 0.01;
                 wind.advance(1.0 / 60);
                 agent.setCentre(100 + 50 * Math.cos(a), 100 + 50 * Math.sin(a));
-                cam.setPosition(100 + 80 * Math.cos(a), 1.7, 100 + 80 * Math.sin(a)).setOrientation(a * 3, -0.05);
+                cam.setPosition(100 + 80 * Math.cos(a), 1.7, 100 + 80 * Math.sin(a));
+                cam.setOrientation(a * 3, -0.05);
                 f.update(cam);
                 f.gather(0, n, wx, wz, vis);
                 f.movePlant(k % n, rng.nextDouble(0, 200), rng.nextDouble(0, 200));

@@ -49,7 +49,10 @@ class FieldInterpolationTest {
     }
 
     static ViewCamera camera() {
-        return new ViewCamera().setPosition(10, 2, 10).setOrientation(Math.PI * 0.75, -0.1);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(10, 2, 10);
+        camera.setOrientation(Math.PI * 0.75, -0.1);
+        return camera;
     }
 
     @Test

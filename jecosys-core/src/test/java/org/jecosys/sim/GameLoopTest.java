@@ -23,7 +23,9 @@ class GameLoopTest {
         long[] workers;
         try (Simulation sim = Scenes.simulation(Path.of("scenes/c1.xml"), Progress.NONE)) {
             workers = sim.workerThreadIds();
-            ViewCamera camera = new ViewCamera().setPosition(0, 2, 14).setOrientation(0, -0.2);
+            ViewCamera camera = new ViewCamera();
+            camera.setPosition(0, 2, 14);
+            camera.setOrientation(0, -0.2);
             WindSource player = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 10, 4));
             long lastFrame = -1;
             int fixedSteps = 0;

@@ -51,7 +51,9 @@ class PlantVariationTest {
     /** Per plant: |D| in the wind (t = 1 s) and its share left one tau after the wind stops. */
     static double[][] run(VariationDef variation) throws Exception {
         try (Simulation sim = Simulation.create(def(variation), Path.of("."), 1, Progress.NONE)) {
-            ViewCamera cam = new ViewCamera().setPosition(0, 20, 12).setOrientation(0, -1.1);
+            ViewCamera cam = new ViewCamera();
+            cam.setPosition(0, 20, 12);
+            cam.setOrientation(0, -1.1);
             int n = sim.plantCount();
             double[][] out = new double[2][n];
             for (int i = 0; i < 60; i++) {

@@ -110,7 +110,9 @@ class SchemaExtremesTest {
             try (Simulation sim = Simulation.create(def(steps[r], subs[r]), Path.of("."), 2, Progress.NONE)) {
                 String what = "step " + steps[r] + " s, " + subs[r] + " sub-intervals";
                 assertFinite(sim, what + ", before the first step");
-                ViewCamera cam = new ViewCamera().setPosition(0, 30, 30).setOrientation(0, -0.8);
+                ViewCamera cam = new ViewCamera();
+                cam.setPosition(0, 30, 30);
+                cam.setOrientation(0, -0.8);
                 for (int i = 0; i < 40; i++) {
                     cam.setOrientation(0.05 * i, -0.8); // plants leave and enter the view
                     sim.stepFixed(cam);

@@ -67,7 +67,10 @@ class SpringResponseTest {
 
     /** Looking at the plant from 5 m. */
     static ViewCamera camera() {
-        return new ViewCamera().setPosition(0, 1.7, 5).setOrientation(0, -0.3);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 1.7, 5);
+        camera.setOrientation(0, -0.3);
+        return camera;
     }
 
     static double deviation(Simulation sim) {
@@ -159,13 +162,17 @@ class SpringResponseTest {
         List<PlacementDef> plants = List.of(new PlacementDef("one", 5, 5, 0), new PlacementDef("one", -15, -15, 0));
         try (Simulation sim = simulation(def(1.0 / 60, List.of(wind(0.5, Double.POSITIVE_INFINITY)), plants))) {
             int p = sim.world().plantX(0) > 0 ? 0 : 1;
-            ViewCamera away = new ViewCamera().setPosition(5, 1.7, -5).setOrientation(0, 0);
+            ViewCamera away = new ViewCamera();
+            away.setPosition(5, 1.7, -5);
+            away.setOrientation(0, 0);
             for (int i = 0; i < 60; i++) {
                 sim.stepFixed(away);
                 assertTrue(!sim.plantVisible(p), "behind the camera");
             }
             assertEquals(0, deviationOf(sim, p), 0, "the plant was last animated in no wind");
-            ViewCamera toward = new ViewCamera().setPosition(5, 1.7, -5).setOrientation(Math.PI, 0);
+            ViewCamera toward = new ViewCamera();
+            toward.setPosition(5, 1.7, -5);
+            toward.setOrientation(Math.PI, 0);
             int seen = -1;
             for (int i = 0; i < 10; i++) {
                 sim.stepFixed(toward);

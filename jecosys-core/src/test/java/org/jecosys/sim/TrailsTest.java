@@ -101,7 +101,11 @@ class TrailsTest {
 
     /** A camera high over the middle that sees the whole path. */
     static ViewCamera overhead() {
-        return new ViewCamera().setPosition(0, 9, 7).setOrientation(0, -0.9).setLens(Math.toRadians(100), 1.6, 0.1, 200);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 9, 7);
+        camera.setOrientation(0, -0.9);
+        camera.setLens(Math.toRadians(100), 1.6, 0.1, 200);
+        return camera;
     }
 
     /**

@@ -38,8 +38,10 @@ public final class Main {
             scene = SceneFiles.read(in, "patch.xml", ImageSource.NONE);
         }
         // the game's camera: 1.5 m up at the patch's edge, looking over it
-        ViewCamera camera = new ViewCamera().setPosition(0, 1.5, -7).setOrientation(Math.PI, -0.2)
-                .setLens(Math.toRadians(50), 16.0 / 9, 0.1, 200);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 1.5, -7);
+        camera.setOrientation(Math.PI, -0.2);
+        camera.setLens(Math.toRadians(50), 16.0 / 9, 0.1, 200);
         try (Simulation sim = Scenes.simulation(scene, 2, Progress.NONE)) {
             long before = sim.stateHash();
             for (int i = 0; i < STEPS; i++) {
