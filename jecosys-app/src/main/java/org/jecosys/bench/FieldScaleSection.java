@@ -36,7 +36,8 @@ final class FieldScaleSection implements Section {
     static WindField wind() {
         return WindField.of(List.of(FlowDef.uniform("breeze", 2, 0.3),
                 new FlowDef("gust", FlowKind.GUST, true, 0, 0, 3, 0.5, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1),
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 FlowDef.point("vortex", FlowKind.VORTEX, 20, 20, 40),
                 FlowDef.point("source", FlowKind.SOURCE, -10, 30, 20)));
     }
@@ -80,8 +81,8 @@ final class FieldScaleSection implements Section {
             ForceFieldDef def = ForceFieldDef.defaults();
             WindField w = wind();
             QuadtreeForceField f = field(def, n, w);
-            QuadtreeForceField full = field(new ForceFieldDef(true, def.maxObjectsPerNode(), def.maxDepth(),
-                    List.of()), n, wind());
+            QuadtreeForceField full = field(ForceFieldDef.builder().maxObjectsPerNode(def.maxObjectsPerNode())
+                    .maxDepth(def.maxDepth()).lodDistances().build(), n, wind());
             double size = Math.sqrt(n / DENSITY);
             double[] ms = new double[frames];
             long lodEvals = 0;

@@ -59,7 +59,8 @@ final class ScaleSection implements Section {
         double side = Math.max(4, Math.sqrt(tufts / 4.0) * 1.2);
         TerrainDef terrain = new TerrainDef(side, side, 33, 0, 0.5, 1, null, ResourceMapDef.UNIFORM_FULL,
                 ResourceMapDef.UNIFORM_FULL);
-        DistributionDef d = new DistributionDef(grass.id(), tufts, 1, 0, 1, 0, 1, Math.PI / 2, -1e5, 1e5, 0.12, 0, 0);
+        DistributionDef d = DistributionDef.builder(grass.id()).count(tufts).footprint(0.12).waterUse(0).nutrientUse(0)
+                .build();
         AnimationDef a = base.animation();
         return new SimulationDef(terrain, List.of(grass), List.of(d), List.of(), flows, ForceFieldDef.defaults(),
                 new AnimationDef(AnimationMode.CONSTRAINT, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), 0,

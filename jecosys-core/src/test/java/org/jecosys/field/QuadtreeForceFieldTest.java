@@ -91,7 +91,7 @@ class QuadtreeForceFieldTest {
 
     @Test
     void withoutLodDistancesEffectiveNodesAreTheVisibleLeaves() {
-        ForceFieldDef def = new ForceFieldDef(true, 8, 10, List.of());
+        ForceFieldDef def = ForceFieldDef.builder().maxDepth(10).lodDistances().build();
         QuadtreeForceField f = randomField(def, someWind(), 30_000, 8);
         ViewCamera cam = new ViewCamera();
         cam.setPosition(100, 2, 190);
@@ -129,7 +129,8 @@ class QuadtreeForceFieldTest {
             xs[i] = (i % g) + 0.5f;
             zs[i] = (i / g) + 0.5f;
         }
-        return QuadtreeForceField.build(new ForceFieldDef(true, 1, 6, lod), 0, 0, g, g, 0, 0, wind, xs, zs);
+        return QuadtreeForceField.build(ForceFieldDef.builder().maxObjectsPerNode(1).maxDepth(6).lodDistances(lod)
+                .build(), 0, 0, g, g, 0, 0, wind, xs, zs);
     }
 
     static ViewCamera above() {
@@ -173,7 +174,8 @@ class QuadtreeForceFieldTest {
 
     @Test
     void countersMatchTheCollapsedSubtreesForAViewerInsideTheScene() {
-        ForceFieldDef def = new ForceFieldDef(true, 4, 10, List.of(10.0, 25.0, 50.0));
+        ForceFieldDef def = ForceFieldDef.builder().maxObjectsPerNode(4).maxDepth(10).lodDistances(10.0, 25.0, 50.0)
+                .build();
         QuadtreeForceField f = randomField(def, someWind(), 50_000, 21);
         ViewCamera camera = new ViewCamera();
         camera.setPosition(60, 1.7, 150);
@@ -210,7 +212,7 @@ class QuadtreeForceFieldTest {
     void plantsGetTheWindOfTheirEffectiveNodeAtItsCentreOfGravityRefinedByItsGradient() {
         WindField wind = someWind();
         wind.advance(0.5);
-        ForceFieldDef def = new ForceFieldDef(true, 6, 10, List.of(20.0, 60.0));
+        ForceFieldDef def = ForceFieldDef.builder().maxObjectsPerNode(6).maxDepth(10).lodDistances(20.0, 60.0).build();
         QuadtreeForceField f = randomField(def, wind, 20_000, 2);
         ViewCamera camera = new ViewCamera();
         camera.setPosition(20, 3, 20);
@@ -288,7 +290,7 @@ class QuadtreeForceFieldTest {
 
     @Test
     void aDisabledFieldEvaluatesNothingAndGivesZeroWind() {
-        ForceFieldDef def = new ForceFieldDef(false, 8, 8, List.of(15.0));
+        ForceFieldDef def = ForceFieldDef.builder().enabled(false).lodDistances(15.0).build();
         QuadtreeForceField f = randomField(def, someWind(), 5000, 4);
         ViewCamera camera = new ViewCamera();
         camera.setPosition(100, 2, 100);

@@ -44,7 +44,8 @@ class PlantVariationTest {
         }
         FlowDef wind = FlowDef.builder("w", FlowKind.UNIFORM).strength(4).duration(1).build();
         return new SimulationDef(TerrainDef.flat(), List.of(s), List.of(), plants, List.of(wind),
-                new ForceFieldDef(true, 4, 6, List.of()), new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4,
+                ForceFieldDef.builder().maxObjectsPerNode(4).maxDepth(6).lodDistances().build(),
+                        new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4,
                 1, 1), 5);
     }
 
@@ -83,14 +84,15 @@ class PlantVariationTest {
 
     @Test
     void stiffnessAndResponseTimeVaryFromPlantToPlantWithinTheirFractions() throws Exception {
-        double[][] same = run(new VariationDef(1, 0, 0, 0, 0));
+        double[][] same = run(VariationDef.builder().variants(1).build());
         assertEquals(min(same[0]), max(same[0]), 0, "no variation: one equilibrium");
         assertEquals(min(same[1]), max(same[1]), 0, "and one release");
         double nominal = same[0][0];
         double left = same[1][0];
         assertEquals(2 * Math.exp(-1), left, 0.005, "(1 + t/tau) e^(-t/tau) at t = tau");
 
-        double[][] varied = run(new VariationDef(1, 0, 0, 0, 0, RESPONSE_VARIATION, STIFFNESS_VARIATION));
+        double[][] varied = run(VariationDef.builder().variants(1).responseTime(RESPONSE_VARIATION)
+                .stiffness(STIFFNESS_VARIATION).build());
         double lo = min(varied[0]) / nominal;
         double hi = max(varied[0]) / nominal;
         assertTrue(lo >= 1 / (1 + STIFFNESS_VARIATION) - 1e-6 && hi <= 1 / (1 - STIFFNESS_VARIATION) + 1e-6,

@@ -45,7 +45,8 @@ class SchemaExtremesTest {
     }
 
     static SimulationDef def(double fixedStep, int subIntervals) {
-        VariationDef most = new VariationDef(4, 0.9, 0.9, 0.9, Math.toRadians(45), 0.9, 0.9);
+        VariationDef most = VariationDef.builder().variants(4).length(0.9).width(0.9).curvature(0.9)
+                .tilt(Math.toRadians(45)).responseTime(0.9).stiffness(0.9).build();
         double minBend = Math.toRadians(SpeciesDef.MIN_MAX_BEND_DEGREES);
         double maxBend = Math.toRadians(SpeciesDef.MAX_MAX_BEND_DEGREES);
         List<SpeciesDef> species = List.of(
@@ -79,7 +80,7 @@ class SchemaExtremesTest {
                 FlowDef.builder("b", FlowKind.BLAST).centre(0, 0).strength(fmax).coreRadius(FlowDef.MIN_CORE_RADIUS)
                         .start(fixedStep).duration(5 * fixedStep).build());
         return new SimulationDef(TerrainDef.flat(), species, List.of(), plants, flows,
-                new ForceFieldDef(true, 1, 8, List.of(5.0)),
+                ForceFieldDef.builder().maxObjectsPerNode(1).lodDistances(5.0).build(),
                 new AnimationDef(AnimationMode.CONSTRAINT, fixedStep, 8, subIntervals, 2, 1), 11);
     }
 

@@ -52,7 +52,9 @@ class SpringResponseTest {
                 .lodSegments(4).build();
         SpeciesDef one = SpeciesDef.builder("one").maxBend(1.2)
                 .lod(new LodDef(Double.POSITIVE_INFINITY, Primitive.TRIANGLES)).component(stalk).build();
-        return new SimulationDef(TerrainDef.flat(), List.of(one), List.of(), plants, flows, new ForceFieldDef(true, 1, 4, List.of()), new AnimationDef(AnimationMode.CONSTRAINT, dt, 8, 4, 1,
+        return new SimulationDef(TerrainDef.flat(), List.of(one), List.of(), plants, flows, ForceFieldDef.builder()
+                .maxObjectsPerNode(1).maxDepth(4).lodDistances().build(), new AnimationDef(AnimationMode.CONSTRAINT,
+                dt, 8, 4, 1,
                 1), 3);
     }
 

@@ -152,8 +152,9 @@ class ThinningTest {
         World w = world();
         ForceFieldDef f = def.field();
         SimulationDef thinDef = new SimulationDef(def.terrain(), def.species(), def.distributions(), def.placements(),
-                def.flows(), new ForceFieldDef(f.enabled(), f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances(),
-                5, 15, 0.3), def.animation(), def.seed());
+                def.flows(), ForceFieldDef.builder().enabled(f.enabled()).maxObjectsPerNode(f.maxObjectsPerNode())
+                        .maxDepth(f.maxDepth()).lodDistances(f.lodDistances()).thinning(5, 15, 0.3).build(),
+                        def.animation(), def.seed());
         Frame[] frames = new Frame[2];
         int[] threads = {1, 3};
         for (int i = 0; i < 2; i++) {
