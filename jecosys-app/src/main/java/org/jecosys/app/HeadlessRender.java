@@ -108,7 +108,7 @@ final class HeadlessRender {
             log.println("OpenGL: " + gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
-                renderer.setField(sim.forceField().debugView());
+                renderer.setField(sim.inspect().forceField().debugView());
                 for (int i = 1; i <= frames; i++) {
                     sim.step(FRAME_DT, camera);
                     Frame frame = sim.latestFrame();

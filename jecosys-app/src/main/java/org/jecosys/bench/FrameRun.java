@@ -81,7 +81,7 @@ final class FrameRun {
     /** One frame of one configuration; recorded at index {@code i} when {@code i >= 0} (else warm-up). */
     private static void frame(Simulation sim, CameraWalk walk, FrameRun r, int i, int frames, GlContext gl,
                               SceneRenderer renderer, int width, int height) {
-        ViewCamera cam = walk.at(sim.time());
+        ViewCamera cam = walk.at(sim.inspect().time());
         long t0 = System.nanoTime();
         sim.stepFixed(cam);
         Frame frame = sim.latestFrame();

@@ -135,7 +135,7 @@ class ViewerControlsTest {
         assertEquals(hit[1], f.z(), 0.006);
         assertEquals(Decimals.round(f.x(), 2), f.x(), 0);
         assertEquals(FlowDefaults.of(sim.world().terrain().heightfield(), def.flows()).radius(), f.influenceRadius());
-        assertTrue(sim.windField().indexOf(id) >= 0, "live after the step");
+        assertTrue(sim.inspect().windField().indexOf(id) >= 0, "live after the step");
         assertTrue(editor.dirty());
     }
 
@@ -166,14 +166,14 @@ class ViewerControlsTest {
         assertEquals(hit[0], after.x(), 0.05, "dropped under the pointer");
         assertEquals(hit[1], after.z(), 0.05);
         assertTrue(Math.hypot(after.x() - before.x(), after.z() - before.z()) > 0.5, "moved");
-        WindSource live = sim.windField().get(sim.windField().indexOf(id));
+        WindSource live = sim.inspect().windField().get(sim.inspect().windField().indexOf(id));
         assertEquals(after.x(), live.centreX(), 1e-9, "the running flow is where the scene says");
         // a click on the ground (not on a gizmo) deselects and pushes plants only while held
         input.mouseButton(GLFW_MOUSE_BUTTON_LEFT, ViewerInput.PRESS, 0);
         input.mouseButton(GLFW_MOUSE_BUTTON_LEFT, ViewerInput.RELEASE, 0);
         frame(W * 0.1, H * 0.95);
         assertNull(controls.selected());
-        assertEquals(-1, sim.windField().indexOf(ViewerControls.DRAG_AGENT));
+        assertEquals(-1, sim.inspect().windField().indexOf(ViewerControls.DRAG_AGENT));
     }
 
     @Test

@@ -91,7 +91,7 @@ final class Meadows {
 
     /** The largest deviation magnitude (metres) of plant p's components. */
     static double deviation(Simulation sim, int p) {
-        AnimationView s = sim.state();
+        AnimationView s = sim.inspect().state();
         double max = 0;
         for (int c = s.firstComponent(p); c < s.firstComponent(p + 1); c++) {
             max = Math.max(max, Math.hypot(s.deviationX(c), s.deviationZ(c)));

@@ -83,8 +83,8 @@ class UserDistributorTest {
             }
             Meadows.run(sim, Meadows.overview(), 1);
             for (int p = 0; p < world.plantCount(); p++) {
-                assertTrue(sim.plantVisible(p));
-                assertEquals(2.5, sim.windX(p), 1e-6);
+                assertTrue(sim.inspect().plantVisible(p));
+                assertEquals(2.5, sim.inspect().windX(p), 1e-6);
                 assertTrue(Meadows.deviation(sim, p) > 1e-3, "plant " + p + " at (" + world.plantX(p) + ", "
                         + world.plantZ(p) + ") bends in the wind");
                 assertEquals(start[p], Meadows.deviation(sim, p), 1e-5 * start[p], "plant " + p + " starts at the "

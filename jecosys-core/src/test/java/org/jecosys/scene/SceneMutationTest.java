@@ -270,7 +270,7 @@ class SceneMutationTest {
             for (int s = 0; s < 5; s++) {
                 sim.stepFixed(cam);
             }
-            AnimationView v = sim.state();
+            AnimationView v = sim.inspect().state();
             Frame f = sim.latestFrame();
             for (int c = 0; c < sim.componentCount(); c++) {
                 double[] values = {v.deviationX(c), v.deviationZ(c), v.velocityX(c), v.velocityZ(c), v.bend(c),
@@ -282,8 +282,8 @@ class SceneMutationTest {
                 }
             }
             for (int p = 0; p < sim.plantCount(); p++) {
-                if (!Float.isFinite(sim.windX(p)) || !Float.isFinite(sim.windZ(p))) {
-                    return "plant " + p + " wind is " + sim.windX(p) + ", " + sim.windZ(p);
+                if (!Float.isFinite(sim.inspect().windX(p)) || !Float.isFinite(sim.inspect().windZ(p))) {
+                    return "plant " + p + " wind is " + sim.inspect().windX(p) + ", " + sim.inspect().windZ(p);
                 }
             }
             return null;

@@ -71,7 +71,7 @@ class MeadowWindTest {
             r.world = w;
             ViewCamera cam = ViewCamera.of(scene.camera(), w.terrain().heightfield().height(scene.camera().x(),
                     scene.camera().z()), 16.0 / 9);
-            AnimationView s = sim.state();
+            AnimationView s = sim.inspect().state();
             int plants = sim.plantCount();
             int steps = (int) Math.round(seconds * HZ);
             float[] px = new float[sim.componentCount()];
@@ -91,7 +91,7 @@ class MeadowWindTest {
                 double sum = 0;
                 int n = 0;
                 for (int p = 0; p < plants; p++) {
-                    if (!sim.plantVisible(p)) {
+                    if (!sim.inspect().plantVisible(p)) {
                         always[p] = false;
                         continue;
                     }
@@ -103,8 +103,8 @@ class MeadowWindTest {
                         px[c] = x;
                         pz[c] = z;
                     }
-                    r.windX += sim.windX(p);
-                    r.windZ += sim.windZ(p);
+                    r.windX += sim.inspect().windX(p);
+                    r.windZ += sim.inspect().windZ(p);
                     winds++;
                 }
                 r.change[k] = sum / n;

@@ -61,7 +61,7 @@ class PlantVariationTest {
                 sim.stepFixed(cam);
             }
             for (int p = 0; p < n; p++) {
-                assertTrue(sim.plantVisible(p));
+                assertTrue(sim.inspect().plantVisible(p));
                 out[0][p] = SpringResponseTest.deviationOf(sim, p);
             }
             for (int i = 0; i < Math.round(TAU * 60); i++) {

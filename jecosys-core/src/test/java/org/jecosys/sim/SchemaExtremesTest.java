@@ -85,9 +85,10 @@ class SchemaExtremesTest {
     }
 
     static void assertFinite(Simulation sim, String what) {
-        AnimationView s = sim.state();
+        AnimationView s = sim.inspect().state();
         for (int p = 0; p < sim.plantCount(); p++) {
-            assertTrue(Float.isFinite(sim.windX(p)) && Float.isFinite(sim.windZ(p)), what + ": wind of plant " + p);
+            assertTrue(Float.isFinite(sim.inspect().windX(p)) && Float.isFinite(sim.inspect().windZ(p)),
+                    what + ": wind of plant " + p);
         }
         for (int c = 0; c < sim.componentCount(); c++) {
             float pose = s.poseCoordinate(c);

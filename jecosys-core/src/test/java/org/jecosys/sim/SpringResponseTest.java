@@ -76,7 +76,7 @@ class SpringResponseTest {
     }
 
     static double deviation(Simulation sim) {
-        return Math.hypot(sim.state().deviationX(0), sim.state().deviationZ(0));
+        return Math.hypot(sim.inspect().state().deviationX(0), sim.inspect().state().deviationZ(0));
     }
 
     /** |D| at times {@code at} (seconds, multiples of every step), stepping at dt. */
@@ -169,7 +169,7 @@ class SpringResponseTest {
             away.setOrientation(0, 0);
             for (int i = 0; i < 60; i++) {
                 sim.stepFixed(away);
-                assertTrue(!sim.plantVisible(p), "behind the camera");
+                assertTrue(!sim.inspect().plantVisible(p), "behind the camera");
             }
             assertEquals(0, deviationOf(sim, p), 0, "the plant was last animated in no wind");
             ViewCamera toward = new ViewCamera();
@@ -178,7 +178,7 @@ class SpringResponseTest {
             int seen = -1;
             for (int i = 0; i < 10; i++) {
                 sim.stepFixed(toward);
-                if (sim.plantVisible(p) && seen < 0) {
+                if (sim.inspect().plantVisible(p) && seen < 0) {
                     seen = i;
                     assertEquals(D_INF, deviationOf(sim, p), TOLERANCE * D_INF, "first step in view: no lean-in");
                 }
@@ -190,7 +190,7 @@ class SpringResponseTest {
 
     static double deviationOf(Simulation sim, int p) {
         int c = sim.world().firstComponent(p);
-        return Math.hypot(sim.state().deviationX(c), sim.state().deviationZ(c));
+        return Math.hypot(sim.inspect().state().deviationX(c), sim.inspect().state().deviationZ(c));
     }
 
     @Test

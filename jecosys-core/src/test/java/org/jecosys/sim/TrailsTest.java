@@ -118,7 +118,7 @@ class TrailsTest {
         try (sim) {
             for (int i = 0; i < STEPS; i++) {
                 sim.stepFixed(cam);
-                AnimationView s = sim.state();
+                AnimationView s = sim.inspect().state();
                 for (int j = 0; j < plants.length; j++) {
                     int c = s.firstComponent(plants[j]);
                     d[i][2 * j] = s.deviationX(c);
@@ -211,7 +211,7 @@ class TrailsTest {
                 sim.stepFixed(cam);
             }
             long self = Thread.currentThread().getId();
-            long[] workers = sim.workerThreadIds();
+            long[] workers = sim.inspect().workerThreadIds();
             SimulationAllocationTest.total(self, workers);
             long[] windows = new long[6];
             int zeroRun = 0;
@@ -225,7 +225,7 @@ class TrailsTest {
                 windows[w] = SimulationAllocationTest.total(self, workers) - before;
                 zeroRun = windows[w] == 0 ? zeroRun + 1 : 0;
                 for (int p = 0; p < sim.plantCount(); p++) {
-                    flat = Math.max(flat, sim.state().flattening(p));
+                    flat = Math.max(flat, sim.inspect().state().flattening(p));
                 }
             }
             assertTrue(flat > 0, "plants were flattened while measuring");
@@ -245,11 +245,11 @@ class TrailsTest {
                 for (int i = 0; i < 900; i++) {
                     sim.stepFixed(cam);
                     for (int p = 0; p < sim.plantCount(); p++) {
-                        flat = Math.max(flat, sim.state().flattening(p));
+                        flat = Math.max(flat, sim.inspect().state().flattening(p));
                     }
                 }
                 assertTrue(flat > 0.5f, "the walker flattened plants, most by " + flat);
-                long h = sim.stateHash();
+                long h = sim.inspect().stateHash();
                 if (w == 1) {
                     first = h;
                 } else {
@@ -273,8 +273,8 @@ class TrailsTest {
                 with.stepFixed(cam);
                 without.stepFixed(cam);
             }
-            AnimationView s = with.state();
-            AnimationView o = without.state();
+            AnimationView s = with.inspect().state();
+            AnimationView o = without.inspect().state();
             for (int k = 0; k < s.componentCount(); k++) {
                 assertEquals(Float.floatToRawIntBits(o.deviationX(k)), Float.floatToRawIntBits(s.deviationX(k)), "D x " + k);
                 assertEquals(Float.floatToRawIntBits(o.deviationZ(k)), Float.floatToRawIntBits(s.deviationZ(k)), "D z " + k);
