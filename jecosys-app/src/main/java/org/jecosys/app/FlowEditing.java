@@ -194,7 +194,7 @@ final class FlowEditing {
         if (w != null) {
             return w;
         }
-        WindField wind = sim.windField();
+        WindField wind = sim.inspect().windField();
         int i = wind.indexOf(id);
         return i < 0 ? null : wind.get(i);
     }
@@ -287,7 +287,7 @@ final class FlowEditing {
     /** Refreshes the gizmos from the flows as they are now (after the step). */
     FlowGizmos gizmos() {
         WindSource sel = selected == null ? null : live(selected);
-        gizmos.fill(sim.windField(), isAgent, sel, hovered);
+        gizmos.fill(sim.inspect().windField(), isAgent, sel, hovered);
         return gizmos;
     }
 

@@ -154,8 +154,8 @@ final class Gallery {
                 views.add(new View("meadow-default.png", ViewCamera.of(def.camera(), ground, aspect)));
                 views.add(new View("meadow-closeup.png", closeUp(def, world, aspect)));
                 double gy = world.terrain().heightfield().height(0, 0);
-                views.add(new View("meadow-above.png", new ViewCamera().setPosition(0, gy + 10, 0)
-                        .setOrientation(0, -Math.PI / 2 + 1e-3).setLens(def.camera().fovY(), aspect, 0.1, 200)));
+                views.add(new View("meadow-above.png", camera(0, gy + 10, 0, 0, -Math.PI / 2 + 1e-3,
+                        def.camera().fovY(), aspect, 0.1, 200)));
                 ViewCamera back = ViewCamera.of(def.camera(), ground, aspect);
                 double az = def.render().light().sunAzimuth(); // toward the sun: (cos az, sin az) on the ground
                 back.setOrientation(Math.atan2(Math.cos(az), -Math.sin(az)), def.camera().pitch());
@@ -172,9 +172,8 @@ final class Gallery {
                     double d = distances[level];
                     double a = Math.toRadians(45);
                     double fov = 2 * Math.atan(0.6 * tip / d);
-                    views.add(new View("rose-level" + level + ".png", new ViewCamera()
-                            .setPosition(world.plantX(0) - d * Math.sin(a), mid, world.plantZ(0) + d * Math.cos(a))
-                            .setOrientation(a, 0).setLens(fov, aspect, 0.02, 500)));
+                    views.add(new View("rose-level" + level + ".png", camera(world.plantX(0) - d * Math.sin(a), mid,
+                            world.plantZ(0) + d * Math.cos(a), a, 0, fov, aspect, 0.02, 500)));
                 }
             }
             default -> views.add(new View(scene.replace(".xml", ".png"), ViewCamera.of(def.camera(), ground, aspect)));
@@ -185,9 +184,9 @@ final class Gallery {
     /** From 4 m over the start camera's ground, looking downwind (the first flow's heading), 15 degrees down. */
     private static View gusts(SceneDef def, double ground, double aspect) {
         double heading = def.simulationDef().flows().isEmpty() ? 0 : def.simulationDef().flows().get(0).direction();
-        ViewCamera c = new ViewCamera().setPosition(def.camera().x(), ground + 4, def.camera().z())
-                .setOrientation(Math.atan2(Math.cos(heading), -Math.sin(heading)), Math.toRadians(-15))
-                .setLens(def.camera().fovY(), aspect, 0.1, 300);
+        ViewCamera c = camera(def.camera().x(), ground + 4, def.camera().z(),
+                Math.atan2(Math.cos(heading), -Math.sin(heading)), Math.toRadians(-15), def.camera().fovY(), aspect,
+                0.1, 300);
         return new View("meadow-gusts.png", c, GUST_STEPS, null, ShadowPath.AUTO);
     }
 
@@ -201,8 +200,7 @@ final class Gallery {
         double z = world.plantZ(best);
         double eye = world.terrain().heightfield().height(x, z + 1.5) + 4;
         double pitch = Math.atan2(world.plantY(best) - eye, 1.5);
-        ViewCamera c = new ViewCamera().setPosition(x, eye, z + 1.5).setOrientation(0, pitch)
-                .setLens(def.camera().fovY(), aspect, 0.05, 300);
+        ViewCamera c = camera(x, eye, z + 1.5, 0, pitch, def.camera().fovY(), aspect, 0.05, 300);
         return new View("meadow-trail.png", c, TRAIL_STEPS, new double[] {x - 4, z, x + 4, z}, ShadowPath.AUTO);
     }
 
@@ -215,8 +213,17 @@ final class Gallery {
         double eye = world.terrain().heightfield().height(x, z) + 0.6;
         double target = world.plantY(best) + stalkTip(world, best);
         double pitch = Math.atan2(target - eye, 1);
-        return new ViewCamera().setPosition(x, eye, z).setOrientation(0, pitch)
-                .setLens(def.camera().fovY(), aspect, 0.02, 500);
+        return camera(x, eye, z, 0, pitch, def.camera().fovY(), aspect, 0.02, 500);
+    }
+
+    /** A camera at (x, y, z) metres looking by yaw and pitch (radians) through the given lens. */
+    private static ViewCamera camera(double x, double y, double z, double yaw, double pitch, double fovY,
+                                     double aspect, double near, double far) {
+        ViewCamera c = new ViewCamera();
+        c.setPosition(x, y, z);
+        c.setOrientation(yaw, pitch);
+        c.setLens(fovY, aspect, near, far);
+        return c;
     }
 
     /** Height of plant p's stalk tip at rest above its base, metres (0.3 when it has no stalk). */

@@ -77,7 +77,7 @@ final class HeadlessRender {
         SceneDef def = scene.def();
         log.println("Building '" + def.name() + "' ...");
         log.flush();
-        try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, 0)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), 0, progress)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);
@@ -112,7 +112,7 @@ final class HeadlessRender {
             log.println("OpenGL: " + gl.describe());
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
-                renderer.setField(sim.forceField().debugView());
+                renderer.setField(sim.inspect().forceField().debugView());
                 for (int i = 1; i <= frames; i++) {
                     sim.step(FRAME_DT, camera);
                     Frame frame = sim.latestFrame();

@@ -54,8 +54,8 @@ final class SceneEditor {
         this.sim = sim;
         this.settings = settings;
         this.lodTransition = def.render().lodTransition();
-        this.mode = sim.mode();
-        this.fieldEnabled = sim.fieldEnabled();
+        this.mode = sim.inspect().mode();
+        this.fieldEnabled = sim.inspect().fieldEnabled();
         lod = new double[def.species().size()][];
         for (int s = 0; s < lod.length; s++) {
             List<LodDef> lods = def.species().get(s).lods();
@@ -64,7 +64,7 @@ final class SceneEditor {
                 lod[s][l] = lods.get(l).maxDistance();
             }
         }
-        WindField wind = sim.windField();
+        WindField wind = sim.inspect().windField();
         for (FlowDef f : def.flows()) {
             order.add(f.id());
             defs.put(f.id(), f);
@@ -114,7 +114,7 @@ final class SceneEditor {
      * @return a free id
      */
     String freeId(String base) {
-        WindField wind = sim.windField();
+        WindField wind = sim.inspect().windField();
         for (int n = 1; ; n++) {
             String id = base + "-" + n;
             if (!defs.containsKey(id) && wind.indexOf(id) < 0 && issued.add(id)) {
@@ -371,7 +371,7 @@ final class SceneEditor {
                 settings.tint(), settings.overlays().showField(), settings.overlays().showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
-        AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(),
+        AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(),
                 a.seed());
         ForceFieldDef f = def.field();
         ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept

@@ -100,7 +100,7 @@ final class SimulateCommand implements Callable<Integer> {
         SimulationDef sd = overridden(def);
         Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
         Run run;
-        try (Simulation sim = Simulation.create(sd, loaded.images(), progress, threads == null ? 0 : threads)) {
+        try (Simulation sim = Simulation.create(sd, loaded.images(), threads == null ? 0 : threads, progress)) {
             BuildReport.print(sim.world(), err, err); // stdout stays the results only, for scripts
             CameraWalk walk = new CameraWalk(def.camera(), sim.world().terrain().heightfield(),
                     (double) def.render().width() / def.render().height());
@@ -110,7 +110,7 @@ final class SimulateCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "plants                %d%n", sim.plantCount());
             out.printf(Locale.ROOT, "steps                 %d (dt %s s, mode %s, field %s, %d workers)%n", steps,
                     sd.animation().fixedStep(), sd.animation().mode().xmlName(), sd.field().enabled() ? "on" : "off",
-                    sim.workers());
+                    sim.inspect().workers());
             out.printf(Locale.ROOT, "median ms per step    %.4f%n", run.medianMs);
             out.printf(Locale.ROOT, "component updates/s   %.4g%n", run.updatesPerSecond);
             out.printf(Locale.ROOT, "allocated bytes/step  %.1f%n", run.allocatedPerStep);
@@ -143,7 +143,7 @@ final class SimulateCommand implements Callable<Integer> {
         SimulationDef sd = def.simulationDef();
         AnimationDef a = sd.animation();
         AnimationDef anim = new AnimationDef(mode != null ? mode : a.mode(), dt != null ? dt : a.fixedStep(),
-                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.threads(), a.seed());
+                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.workers(), a.seed());
         ForceFieldDef f = sd.field();
         ForceFieldDef fd = field == null ? f
                 : f.withEnabled(field == OnOff.on);
@@ -165,12 +165,12 @@ final class SimulateCommand implements Callable<Integer> {
         long alloc0 = 0;
         int warm = Math.max(1, steps / 2); // allocation is measured over the second half (after warm-up)
         // the first call links the native allocation counter, which allocates: keep it out of the window
-        sim.allocatedBytes();
+        sim.inspect().allocatedBytes();
         for (int i = 0; i < steps; i++) {
             if (i == warm) {
-                alloc0 = sim.allocatedBytes();
+                alloc0 = sim.inspect().allocatedBytes();
             }
-            ViewCamera cam = walk.at(sim.time());
+            ViewCamera cam = walk.at(sim.inspect().time());
             long t0 = System.nanoTime();
             sim.stepFixed(cam);
             long t = System.nanoTime() - t0;
@@ -180,23 +180,23 @@ final class SimulateCommand implements Callable<Integer> {
                 samples[n++] = t;
             }
         }
-        long alloc1 = sim.allocatedBytes();
+        long alloc1 = sim.inspect().allocatedBytes();
         double allocPerStep = steps > 1 && alloc0 >= 0 ? (double) (alloc1 - alloc0) / (steps - warm) : 0;
         Arrays.sort(samples, 0, n);
         double median = n % 2 == 1 ? samples[n / 2] : (samples[n / 2 - 1] + samples[n / 2]) / 2.0;
         return new Run(median / 1e6, totalNanos > 0 ? updates / (totalNanos / 1e9) : 0, allocPerStep,
-                sim.stateHash(), updates);
+                sim.inspect().stateHash(), updates);
     }
 
     private String json(Path file, Simulation sim, SimulationDef sd, Run run) {
-        FieldCounters fc = sim.fieldCounters();
+        FieldCounters fc = sim.inspect().fieldCounters();
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("scene", file.toString());
         m.put("components", sim.componentCount());
         m.put("plants", sim.plantCount());
         m.put("steps", steps);
         m.put("dt", sd.animation().fixedStep());
-        m.put("threads", sim.workers());
+        m.put("threads", sim.inspect().workers());
         m.put("mode", sd.animation().mode().xmlName());
         m.put("field", sd.field().enabled());
         m.put("medianMsPerStep", run.medianMs);
@@ -224,8 +224,8 @@ final class SimulateCommand implements Callable<Integer> {
      */
     static void dump(Simulation sim, OutputStream o) throws IOException {
         World w = sim.world();
-        AnimationView s = sim.state();
-        ForceField f = sim.forceField();
+        AnimationView s = sim.inspect().state();
+        ForceField f = sim.inspect().forceField();
         Writer out = new BufferedWriter(new OutputStreamWriter(o, StandardCharsets.UTF_8), 1 << 16);
         out.write(DUMP_HEADER);
         out.write('\n');
@@ -233,7 +233,7 @@ final class SimulateCommand implements Callable<Integer> {
         char[] row = new char[256];
         for (int p = 0; p < w.plantCount(); p++) {
             String species = w.plants().species().get(w.plantSpecies(p)).def().id();
-            int node = sim.fieldEnabled() ? f.effectiveNode(p) : -1;
+            int node = sim.inspect().fieldEnabled() ? f.effectiveNode(p) : -1;
             if (node < 0) {
                 node = f.leafNode(p);
             }
@@ -241,7 +241,7 @@ final class SimulateCommand implements Callable<Integer> {
             for (int c = w.firstComponent(p), e = c + w.componentsOf(p); c < e; c++) {
                 sb.append(p).append(',').append(c).append(',').append(species).append(',')
                         .append(w.plantX(p)).append(',').append(w.plantZ(p)).append(',')
-                        .append(sim.windX(p)).append(',').append(sim.windZ(p)).append(',')
+                        .append(sim.inspect().windX(p)).append(',').append(sim.inspect().windZ(p)).append(',')
                         .append((float) s.forceX(c)).append(',').append((float) s.forceZ(c)).append(',')
                         .append(s.deviationX(c)).append(',').append(s.deviationZ(c)).append(',')
                         .append(s.velocityX(c)).append(',').append(s.velocityZ(c)).append(',')

@@ -74,7 +74,7 @@ final class Viewer {
 
     void run(Progress progress) throws IOException {
         System.out.println("Building '" + def.name() + "' ...");
-        try (Simulation sim = Simulation.create(def.simulationDef(), images, progress, 0)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), images, 0, progress)) {
             sim.setLodTransition(def.render().lodTransition());
             if (quality != null) {
                 quality.applyTo(sim);
@@ -115,7 +115,7 @@ final class Viewer {
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings);
                  GizmoRenderer gizmos = new GizmoRenderer(gl, ground);
                  ImGuiLayer ui = new ImGuiLayer(gl, window)) {
-                renderer.setField(sim.forceField().debugView());
+                renderer.setField(sim.inspect().forceField().debugView());
                 SceneEditor editor = new SceneEditor(def, sim, settings);
                 SceneSaver saver = new SceneSaver(file, SceneSaver.shippedFolder());
                 ViewerControls controls = new ViewerControls(def, sim, editor, saver, fly, input);
@@ -137,7 +137,7 @@ final class Viewer {
         int shots = 0;
         boolean dirty = false;
         WindLegend legend = new WindLegend();
-        FieldDebugView view = sim.forceField().debugView();
+        FieldDebugView view = sim.inspect().forceField().debugView();
         ViewCamera camera = fly.camera();
         while (!controls.quit()) {
             glfwPollEvents();

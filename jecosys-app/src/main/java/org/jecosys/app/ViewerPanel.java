@@ -103,7 +103,7 @@ final class ViewerPanel {
                 + frame.componentsAnimated());
         // Frame.animationNanos is the chunks' own span: it no longer includes the field update, which the
         // stepping thread runs before helping the workers (side by side with several threads)
-        int threads = sim.workers();
+        int threads = sim.inspect().workers();
         ImGui.text(String.format(Locale.ROOT, "field %.2f ms  animation %.2f ms (%d thread%s%s)  render %.2f ms",
                 frame.fieldNanos() / 1e6, frame.animationNanos() / 1e6, threads, threads == 1 ? "" : "s",
                 threads == 1 ? ", one after the other" : ", side by side", renderMs));
@@ -142,7 +142,7 @@ final class ViewerPanel {
                 ImGuiCond.FirstUseEver);
         ImGui.begin("JEcoSys");
         if (ImGui.collapsingHeader("Flows", ImGuiTreeNodeFlags.DefaultOpen)) {
-            flows.draw(sim.windField());
+            flows.draw(sim.inspect().windField());
         }
         if (ImGui.collapsingHeader("Animation")) {
             mode.set(editor.mode().ordinal());

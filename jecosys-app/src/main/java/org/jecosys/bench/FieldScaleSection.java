@@ -36,7 +36,8 @@ final class FieldScaleSection implements Section {
     static WindField wind() {
         return WindField.of(List.of(FlowDef.uniform("breeze", 2, 0.3),
                 new FlowDef("gust", FlowKind.GUST, true, 0, 0, 3, 0.5, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1),
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 FlowDef.point("vortex", FlowKind.VORTEX, 20, 20, 40),
                 FlowDef.point("source", FlowKind.SOURCE, -10, 30, 20)));
     }
@@ -54,8 +55,8 @@ final class FieldScaleSection implements Section {
     static void pose(ViewCamera cam, double size, int k) {
         double a = k * 0.005;
         double r = size * 0.3;
-        cam.setPosition(size / 2 + r * Math.cos(a), 1.7, size / 2 + r * Math.sin(a))
-                .setOrientation(a * 2 + Math.sin(k * 0.01), -0.1);
+        cam.setPosition(size / 2 + r * Math.cos(a), 1.7, size / 2 + r * Math.sin(a));
+        cam.setOrientation(a * 2 + Math.sin(k * 0.01), -0.1);
     }
 
     @Override
@@ -73,14 +74,15 @@ final class FieldScaleSection implements Section {
         double[] xs = new double[sizes.length];
         double[] ys = new double[sizes.length];
         List<Object> raw = new ArrayList<>();
-        ViewCamera cam = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
         for (int s = 0; s < sizes.length; s++) {
             int n = sizes[s];
             ForceFieldDef def = ForceFieldDef.defaults();
             WindField w = wind();
             QuadtreeForceField f = field(def, n, w);
-            QuadtreeForceField full = field(new ForceFieldDef(true, def.maxObjectsPerNode(), def.maxDepth(),
-                    List.of()), n, wind());
+            QuadtreeForceField full = field(ForceFieldDef.builder().maxObjectsPerNode(def.maxObjectsPerNode())
+                    .maxDepth(def.maxDepth()).lodDistances().build(), n, wind());
             double size = Math.sqrt(n / DENSITY);
             double[] ms = new double[frames];
             long lodEvals = 0;

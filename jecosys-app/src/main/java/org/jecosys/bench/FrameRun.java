@@ -38,7 +38,7 @@ final class FrameRun {
         ForceFieldDef f = d.field();
         return new SimulationDef(d.terrain(), d.species(), d.distributions(), d.placements(), d.flows(),
                 f.withEnabled(field),
-                new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.threads(), a.seed()),
+                new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(), a.seed()),
                 d.seed());
     }
 
@@ -81,7 +81,7 @@ final class FrameRun {
     /** One frame of one configuration; recorded at index {@code i} when {@code i >= 0} (else warm-up). */
     private static void frame(Simulation sim, CameraWalk walk, FrameRun r, int i, int frames, GlContext gl,
                               SceneRenderer renderer, int width, int height) {
-        ViewCamera cam = walk.at(sim.time());
+        ViewCamera cam = walk.at(sim.inspect().time());
         long t0 = System.nanoTime();
         sim.stepFixed(cam);
         Frame frame = sim.latestFrame();

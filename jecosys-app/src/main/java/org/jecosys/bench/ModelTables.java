@@ -28,7 +28,7 @@ public final class ModelTables {
     }
 
     private SceneDef load(String name) throws SceneLoadException {
-        return SceneFiles.load(scenes.resolve(name));
+        return SceneFiles.parse(scenes.resolve(name));
     }
 
     /** Primitives of each level of one species, as built from its Def. */

@@ -67,7 +67,7 @@ final class PaperScenesSection implements Section {
         List<SceneDef> defs = new ArrayList<>();
         List<World> worlds = new ArrayList<>();
         for (int s = 0; s < count; s++) {
-            SceneDef scene = SceneFiles.load(scenes.resolve(FILES[s]));
+            SceneDef scene = SceneFiles.parse(scenes.resolve(FILES[s]));
             World world = World.build(scene.simulationDef(), scenes, 2, Progress.NONE);
             defs.add(scene);
             worlds.add(world);

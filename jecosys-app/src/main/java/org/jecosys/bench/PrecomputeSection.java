@@ -35,7 +35,7 @@ final class PrecomputeSection implements Section {
         int runs = mode == Mode.SMOKE ? 2 : mode == Mode.QUICK ? 7 : 15;
         List<SpeciesDef> all = new ArrayList<>();
         for (String f : new String[] {"c1.xml", "rose.xml", "meadow.xml"}) {
-            for (SpeciesDef s : SceneFiles.load(scenes.resolve(f)).species()) {
+            for (SpeciesDef s : SceneFiles.parse(scenes.resolve(f)).species()) {
                 if (all.stream().noneMatch(o -> o.equals(s))) {
                     all.add(s);
                 }
@@ -51,7 +51,7 @@ final class PrecomputeSection implements Section {
         t.row("pose tables, meshes and variants of every species in scenes/", all.size() + " species", 1,
                 Stats.median(poseMs), 200.0);
         String big = mode == Mode.SMOKE ? "c1.xml" : "large.xml";
-        SceneDef scene = SceneFiles.load(scenes.resolve(big));
+        SceneDef scene = SceneFiles.parse(scenes.resolve(big));
         Terrain terrain = Terrain.build(scene.terrain(), scenes, 2, Progress.NONE);
         List<String> ids = new ArrayList<>();
         for (SpeciesDef s : scene.species()) {

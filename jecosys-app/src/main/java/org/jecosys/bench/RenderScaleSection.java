@@ -83,8 +83,8 @@ final class RenderScaleSection implements Section {
             }
             StringBuilder skipped = new StringBuilder();
             for (int s = 0; s < count; s++) {
-                SceneDef def = SceneFiles.load(scenes.resolve(FILES[s]));
-                try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
+                SceneDef def = SceneFiles.parse(scenes.resolve(FILES[s]));
+                try (Simulation sim = Simulation.create(def.simulationDef(), scenes, 0, Progress.NONE)) {
                     sim.setLodTransition(def.render().lodTransition());
                     if (quality != null) {
                         quality.applyTo(sim);
@@ -161,10 +161,11 @@ final class RenderScaleSection implements Section {
         }
         Table t = new Table("render-scale-step", def.name() + ": fixed step along the walk, simulation only",
                 java.util.List.of("workers", "fixed steps", "ms per fixed step (median)", "ms per fixed step (p90)"));
-        t.row(sim.workers(), (long) (frames * Math.round(DT / sim.fixedStep())), Stats.median(ms),
+        t.row(sim.inspect().workers(), (long) (frames * Math.round(DT / sim.inspect().fixedStep())), Stats.median(ms),
                 Stats.percentile(ms, 0.9));
         t.note("The camera walks the first " + n0 + " frames of the render-scale path twice (1/30 s of"
-                + " simulation per frame, in fixed steps of " + sim.fixedStep() + " s), the first time to warm"
+                + " simulation per frame, in fixed steps of " + sim.inspect().fixedStep()
+                + " s), the first time to warm"
                 + " up; nothing is drawn. Target (issue 28): at most 2 ms per fixed step with 2 workers.");
         raw.put("stepOnly / " + def.name(), ms);
         return t;
@@ -181,8 +182,8 @@ final class RenderScaleSection implements Section {
         Table t = new Table("render-looks", "The meadow's look switched: " + width + "x" + height + ", start camera",
                 java.util.List.of("sheen", "sun shadows", "frame ms (median)", "VS invocations / frame",
                         "FS invocations / frame", "primitives / frame", "fragments / pixel"));
-        SceneDef def = SceneFiles.load(scenes.resolve(FILES[0]));
-        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE)) {
+        SceneDef def = SceneFiles.parse(scenes.resolve(FILES[0]));
+        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, 0, Progress.NONE)) {
             ViewCamera cam = ViewCamera.of(def.camera(), sim.world().terrain().heightfield().height(def.camera().x(),
                     def.camera().z()), width / (double) height);
             for (int i = 0; i < 30; i++) {

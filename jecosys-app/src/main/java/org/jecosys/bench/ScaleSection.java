@@ -59,7 +59,8 @@ final class ScaleSection implements Section {
         double side = Math.max(4, Math.sqrt(tufts / 4.0) * 1.2);
         TerrainDef terrain = new TerrainDef(side, side, 33, 0, 0.5, 1, null, ResourceMapDef.UNIFORM_FULL,
                 ResourceMapDef.UNIFORM_FULL);
-        DistributionDef d = new DistributionDef(grass.id(), tufts, 1, 0, 1, 0, 1, Math.PI / 2, -1e5, 1e5, 0.12, 0, 0);
+        DistributionDef d = DistributionDef.builder(grass.id()).count(tufts).footprint(0.12).waterUse(0).nutrientUse(0)
+                .build();
         AnimationDef a = base.animation();
         return new SimulationDef(terrain, List.of(grass), List.of(d), List.of(), flows, ForceFieldDef.defaults(),
                 new AnimationDef(AnimationMode.CONSTRAINT, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), 0,
@@ -73,7 +74,7 @@ final class ScaleSection implements Section {
      */
     private Table perUpdate(SceneDef base, int components, int[] workers, int warm, int steps, Report report)
             throws Exception {
-        SceneDef c1 = SceneFiles.load(scenes.resolve("c1.xml"));
+        SceneDef c1 = SceneFiles.parse(scenes.resolve("c1.xml"));
         SimulationDef def = world(base, c1.flows(), components);
         World world = World.build(def, scenes, 2, Progress.NONE);
         ViewCamera cam = camera(def);
@@ -145,7 +146,7 @@ final class ScaleSection implements Section {
         };
         int warm = mode == Mode.SMOKE ? 3 : mode == Mode.QUICK ? 100 : 300;
         int steps = mode == Mode.SMOKE ? 5 : mode == Mode.QUICK ? 250 : 600;
-        SceneDef base = SceneFiles.load(scenes.resolve("meadow.xml"));
+        SceneDef base = SceneFiles.parse(scenes.resolve("meadow.xml"));
         Table t = new Table("scale", "Scale curve: component updates per second against component count",
                 List.of("components", "plants", "workers", "animated per step", "median step ms", "updates/s",
                         "2 workers / 1"));

@@ -48,7 +48,7 @@ class FlowDefaultsTest {
 
     @Test
     void aDefaultFlowBendsThePlantsWithinItsRadiusAtOnce() throws Exception {
-        SceneDef def = SceneFiles.load(Path.of("scenes/c1.xml"));
+        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
         FlowDefaults d = FlowDefaults.of(Heightfield.of(def.terrain().sizeX(), def.terrain().sizeZ(), 2, new float[4]),
                 def.flows());
         float[] without = bend(def, null);
@@ -80,7 +80,7 @@ class FlowDefaultsTest {
 
     /** Pose coordinates after 1 s with an extra flow; NaN for components of plants farther than 2 m from (0, 2). */
     private static float[] bend(SceneDef def, FlowDef extra) throws Exception {
-        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             if (extra != null) {
                 sim.addFlow(extra);
             }

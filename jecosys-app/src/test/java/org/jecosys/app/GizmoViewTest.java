@@ -56,13 +56,15 @@ class GizmoViewTest {
     @Test
     void eachGizmoKindIsDrawnInItsColourAtItsFlowsCentre() throws Exception {
         SceneDef def = RenderScenes.load("c1.xml");
-        ViewCamera cam = new ViewCamera().setPosition(0, 24, 6).setOrientation(0, -1.2);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(0, 24, 6);
+        cam.setOrientation(0, -1.2);
         cam.setLens(Math.toRadians(55), W / (double) H, 0.05, 300);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
-        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             // the scene's own flows off the picture, then one flow of each kind on a 3 x 3 grid
-            for (int i = 0; i < sim.windField().size(); i++) {
-                sim.removeFlow(sim.windField().get(i));
+            for (int i = 0; i < sim.inspect().windField().size(); i++) {
+                sim.removeFlow(sim.inspect().windField().get(i));
             }
             FlowKind[] kinds = {FlowKind.UNIFORM, FlowKind.GUST, FlowKind.SOURCE, FlowKind.SINK, FlowKind.VORTEX,
                 FlowKind.RAIN};
@@ -76,9 +78,9 @@ class GizmoViewTest {
             sim.addFlow(new Fan(6, 3));
             sim.step(1 / 60.0, cam);
             FlowGizmos flows = new FlowGizmos(sim.world().terrain().heightfield());
-            flows.fill(sim.windField(), w -> w.id().startsWith(ViewerControls.AGENT_PREFIX), null, null);
+            flows.fill(sim.inspect().windField(), w -> w.id().startsWith(ViewerControls.AGENT_PREFIX), null, null);
             Gizmos g = flows.gizmos();
-            assertEquals(sim.windField().size(), g.size(), "a gizmo per flow");
+            assertEquals(sim.inspect().windField().size(), g.size(), "a gizmo per flow");
             Set<GizmoKind> seen = EnumSet.noneOf(GizmoKind.class);
             for (int i = 0; i < g.size(); i++) {
                 seen.add(g.kind(i));
@@ -88,7 +90,7 @@ class GizmoViewTest {
                  GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
                  SceneRenderer scene = new SceneRenderer(gl, sim.world(), RenderSettings.standalone());
                  GizmoRenderer gizmos = new GizmoRenderer(gl, sim.world().terrain().heightfield())) {
-                scene.setField(sim.forceField().debugView());
+                scene.setField(sim.inspect().forceField().debugView());
                 fb.bind();
                 scene.render(sim.latestFrame(), cam, W, H);
                 Pixels.read(W, H, px);
@@ -118,7 +120,7 @@ class GizmoViewTest {
                     assertTrue(picker.gizmo(g, cam, at[0], at[1], W, H) == i, where + ": picking there finds it");
                 }
                 // the wind arrows: the scene's breeze and gusts, one arrow per visible node of the field
-                FieldDebugView view = sim.forceField().debugView();
+                FieldDebugView view = sim.inspect().forceField().debugView();
                 scene.render(sim.latestFrame(), cam, W, H);
                 org.lwjgl.opengl.GL11C.glViewport(0, 0, W, H);
                 gizmos.render(null, null, 5, cam);

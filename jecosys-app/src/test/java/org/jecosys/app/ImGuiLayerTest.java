@@ -29,7 +29,9 @@ class ImGuiLayerTest {
     @Test
     void theImGuiPanelRendersAndClosingReleasesItsGlObjects() {
         World world = RenderScenes.build(RenderScenes.load("c1.xml"));
-        ViewCamera cam = new ViewCamera().setPosition(0, 1.5, 6).setOrientation(0, -0.25);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(0, 1.5, 6);
+        cam.setOrientation(0, -0.25);
         cam.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         ByteBuffer other = MemoryUtil.memAlloc(4 * W * H);

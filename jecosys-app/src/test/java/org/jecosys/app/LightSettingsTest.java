@@ -22,9 +22,9 @@ class LightSettingsTest {
     @Test
     void sceneLightReachesTheRenderSettings() {
         RenderDef.Light light = new RenderDef.Light(Math.toRadians(-40), Math.toRadians(20), new Rgb(1, 0.8f, 0.6f),
-                1.25, new Rgb(0.1f, 0.2f, 0.7f), new Rgb(0.3f, 0.3f, 0.4f), 0.65, 8, 80);
-        RenderDef def = new RenderDef(640, 360, new Rgb(0.7f, 0.8f, 0.9f), 1, RenderDef.Tint.NONE, false, false, light,
-                new RenderDef.Patches(25, 0.7, 42), 4);
+                1.25, new Rgb(0.1f, 0.2f, 0.7f), new Rgb(0.3f, 0.3f, 0.4f), 0.65, 8, 80, 1, 0);
+        RenderDef def = RenderDef.builder().size(640, 360).sky(new Rgb(0.7f, 0.8f, 0.9f)).light(light)
+                .patches(new RenderDef.Patches(25, 0.7, 42)).build();
         RenderSettings s = HeadlessRender.settings(def);
         assertEquals(Math.toRadians(-40), s.sunAzimuth(), 1e-12);
         assertEquals(Math.toRadians(20), s.sunElevation(), 1e-12);
@@ -43,8 +43,8 @@ class LightSettingsTest {
 
     @Test
     void sunSlidersAreSavedWithTheScene() throws Exception {
-        SceneDef def = SceneFiles.load(Path.of("scenes", "c1.xml"));
-        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        SceneDef def = SceneFiles.parse(Path.of("scenes", "c1.xml"));
+        try (Simulation sim = Simulation.create(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             RenderSettings settings = HeadlessRender.settings(def.render());
             SceneEditor editor = new SceneEditor(def, sim, settings);
             assertEquals(def.render(), editor.snapshot().render(), "an untouched sun saves the file's light exactly");

@@ -50,7 +50,7 @@ class SceneSaverTest {
         Files.setLastModifiedTime(mine, FileTime.fromMillis(Files.getLastModifiedTime(mine).toMillis() + 5000));
         assertTrue(own.plan().confirm(), "the open file changed on disk since it was opened");
         assertTrue(own.plan().question().contains("changed on disk"), own.plan().question());
-        SceneDef def = SceneFiles.load(mine);
+        SceneDef def = SceneFiles.parse(mine);
         own.write(own.plan(), def);
         assertFalse(own.plan().confirm(), "after our own save, no question");
     }
@@ -68,7 +68,7 @@ class SceneSaverTest {
 
     @Test
     void saveAsToAnotherFolderKeepsRelativePathsPointingAtTheSameFiles() throws Exception {
-        SceneDef def = SceneFiles.load(Path.of("scenes/c1.xml"));
+        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
         TerrainDef t = def.terrain();
         ResourceMapDef water = new ResourceMapDef(ResourceMapDef.Source.IMAGE, t.water().resolution(), 1, 1,
                 "maps/water.png");

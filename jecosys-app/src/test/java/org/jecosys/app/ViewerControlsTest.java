@@ -64,8 +64,8 @@ class ViewerControlsTest {
         shipped = Files.createDirectories(dir.resolve("install/scenes"));
         file = shipped.resolve("c1.xml");
         Files.copy(Path.of("scenes/c1.xml"), file);
-        def = SceneFiles.load(file);
-        sim = Simulation.create(def.simulationDef(), shipped, Progress.NONE, 1);
+        def = SceneFiles.parse(file);
+        sim = Simulation.create(def.simulationDef(), shipped, 1, Progress.NONE);
         ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
                 .height(def.camera().x(), def.camera().z()), W / (double) H);
         fly = new FlyCamera(camera, def.camera(), sim.world().terrain().heightfield());
@@ -135,7 +135,7 @@ class ViewerControlsTest {
         assertEquals(hit[1], f.z(), 0.006);
         assertEquals(Decimals.round(f.x(), 2), f.x(), 0);
         assertEquals(FlowDefaults.of(sim.world().terrain().heightfield(), def.flows()).radius(), f.influenceRadius());
-        assertTrue(sim.windField().indexOf(id) >= 0, "live after the step");
+        assertTrue(sim.inspect().windField().indexOf(id) >= 0, "live after the step");
         assertTrue(editor.dirty());
     }
 
@@ -166,14 +166,14 @@ class ViewerControlsTest {
         assertEquals(hit[0], after.x(), 0.05, "dropped under the pointer");
         assertEquals(hit[1], after.z(), 0.05);
         assertTrue(Math.hypot(after.x() - before.x(), after.z() - before.z()) > 0.5, "moved");
-        WindSource live = sim.windField().get(sim.windField().indexOf(id));
+        WindSource live = sim.inspect().windField().get(sim.inspect().windField().indexOf(id));
         assertEquals(after.x(), live.centreX(), 1e-9, "the running flow is where the scene says");
         // a click on the ground (not on a gizmo) deselects and pushes plants only while held
         input.mouseButton(GLFW_MOUSE_BUTTON_LEFT, ViewerInput.PRESS, 0);
         input.mouseButton(GLFW_MOUSE_BUTTON_LEFT, ViewerInput.RELEASE, 0);
         frame(W * 0.1, H * 0.95);
         assertNull(controls.selected());
-        assertEquals(-1, sim.windField().indexOf(ViewerControls.DRAG_AGENT));
+        assertEquals(-1, sim.inspect().windField().indexOf(ViewerControls.DRAG_AGENT));
     }
 
     @Test
@@ -198,7 +198,7 @@ class ViewerControlsTest {
         controls.save();
         controls.confirmSave();
         assertFalse(editor.dirty(), controls.message());
-        SceneDef saved = SceneFiles.load(file);
+        SceneDef saved = SceneFiles.parse(file);
         assertEquals(def.flows().size() + 1, saved.flows().size(), "the added flow is in the file");
     }
 
@@ -223,7 +223,7 @@ class ViewerControlsTest {
         editor.setLodEdge(0, 0, 7.5f);
         controls.save();
         assertNull(controls.pendingSave());
-        assertEquals(7.5, SceneFiles.load(target).species().get(0).lods().get(0).maxDistance());
+        assertEquals(7.5, SceneFiles.parse(target).species().get(0).lods().get(0).maxDistance());
         Path other = Files.writeString(mine.resolve("other.xml"), "keep me");
         controls.saveAs(other.toString());
         assertNotNull(controls.pendingSave());
@@ -251,7 +251,7 @@ class ViewerControlsTest {
         assertTrue(xml.contains("lodTransition=\"0.35\""), xml);
         assertTrue(xml.contains("strength=\"2.7\""), xml);
         assertTrue(xml.contains("direction=\"33.5\""), xml);
-        SceneDef back = SceneFiles.load(target);
+        SceneDef back = SceneFiles.parse(target);
         assertEquals(43.146, back.species().get(0).lods().get(1).maxDistance());
         assertEquals(0.35, back.render().lodTransition());
         assertEquals(2.7, back.flows().get(0).strength());

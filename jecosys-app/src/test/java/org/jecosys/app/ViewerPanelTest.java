@@ -42,9 +42,9 @@ class ViewerPanelTest {
     void theWholeViewerFrameDrawsWithEveryPanelAndDialogOpen() throws Exception {
         Path scenes = Files.createDirectories(dir.resolve("scenes"));
         Path file = Files.copy(Path.of("scenes/c1.xml"), scenes.resolve("c1.xml"));
-        SceneDef def = SceneFiles.load(file);
+        SceneDef def = SceneFiles.parse(file);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
-        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, Progress.NONE, 1);
+        try (Simulation sim = Simulation.create(def.simulationDef(), scenes, 1, Progress.NONE);
              GlContext gl = GlContext.headless(DebugOutput.ON);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H)) {
             ViewCamera camera = ViewCamera.of(def.camera(), sim.world().terrain().heightfield()
@@ -59,7 +59,7 @@ class ViewerPanelTest {
             try (SceneRenderer renderer = new SceneRenderer(gl, sim.world(), settings);
                  GizmoRenderer gizmos = new GizmoRenderer(gl, sim.world().terrain().heightfield());
                  ImGuiLayer ui = new ImGuiLayer(gl, 0)) {
-                renderer.setField(sim.forceField().debugView());
+                renderer.setField(sim.inspect().forceField().debugView());
                 ViewerPanel panel = new ViewerPanel(def, controls, sim, renderer);
                 FrameTimes times = new FrameTimes();
                 WindLegend legend = new WindLegend();
@@ -78,11 +78,11 @@ class ViewerPanelTest {
                     controls.frame(1 / 30.0, W / 2.0, H / 2.0, W, H, false, false);
                     sim.step(1 / 30.0, camera);
                     FlowGizmos flows = controls.gizmos();
-                    legend.update(legend.typical(sim.forceField().debugView()), 1 / 30.0);
+                    legend.update(legend.typical(sim.inspect().forceField().debugView()), 1 / 30.0);
                     fb.bind();
                     renderer.render(sim.latestFrame(), camera, W, H);
                     org.lwjgl.opengl.GL11C.glViewport(0, 0, W, H);
-                    gizmos.render(flows.gizmos(), sim.forceField().debugView(), legend.scale(), camera);
+                    gizmos.render(flows.gizmos(), sim.inspect().forceField().debugView(), legend.scale(), camera);
                     times.add(1 / 30.0);
                     ui.begin(W, H, 1 / 30f);
                     panel.hud(times, fly, sim.latestFrame(), 1.5);

@@ -42,7 +42,7 @@ class BenchSmokeTest {
         // the plants' draw calls: some, and at most two per species and level (plants drawn whole, plants
         // in a transition band)
         int lists = 0;
-        for (org.jecosys.plant.SpeciesDef sp : org.jecosys.scene.SceneFiles.load(Path.of("scenes", "meadow.xml"))
+        for (org.jecosys.plant.SpeciesDef sp : org.jecosys.scene.SceneFiles.parse(Path.of("scenes", "meadow.xml"))
                 .simulationDef().species()) {
             lists += sp.lods().size();
         }

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 class FrameRunTest {
     @Test
     void configurationsTakingTurnsEachRunAllTheirFramesOnTheSameWalk() throws Exception {
-        SceneDef scene = SceneFiles.load(Path.of("scenes", "c1.xml"));
+        SceneDef scene = SceneFiles.parse(Path.of("scenes", "c1.xml"));
         World world = World.build(scene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         AnimationMode[] modes = {AnimationMode.CONSTRAINT, AnimationMode.STATIC, AnimationMode.CONSTRAINT};
         boolean[] fields = {true, true, true};

@@ -88,40 +88,6 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
     }
 
     /**
-     * Settings with the default {@link #lodFovY()} ({@link #DEFAULT_LOD_FOV_Y}); checks as the canonical
-     * constructor does.
-     *
-     * @param enabled           whether the field evaluates flows
-     * @param maxObjectsPerNode split threshold, in [1, {@link #MAX_OBJECTS_PER_NODE}]
-     * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
-     * @param lodDistances      strictly ascending distances, metres
-     * @param thinStart         where distance thinning starts, metres
-     * @param thinEnd           where it reaches thinMinFraction, metres
-     * @param thinMinFraction   share of plants kept beyond thinEnd, in [0, 1]
-     * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
-     */
-    public ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances,
-                         double thinStart, double thinEnd, double thinMinFraction) {
-        this(enabled, maxObjectsPerNode, maxDepth, lodDistances, thinStart, thinEnd, thinMinFraction,
-                DEFAULT_LOD_FOV_Y);
-    }
-
-    /**
-     * Settings without distance thinning ({@link #DEFAULT_THIN_START}, {@link #DEFAULT_THIN_END},
-     * {@link #DEFAULT_THIN_MIN_FRACTION}); checks as the canonical constructor does.
-     *
-     * @param enabled           whether the field evaluates flows
-     * @param maxObjectsPerNode split threshold, in [1, {@link #MAX_OBJECTS_PER_NODE}]
-     * @param maxDepth          deepest level, in [0, {@link #MAX_DEPTH}]
-     * @param lodDistances      strictly ascending distances, metres
-     * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
-     */
-    public ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth, List<Double> lodDistances) {
-        this(enabled, maxObjectsPerNode, maxDepth, lodDistances, DEFAULT_THIN_START, DEFAULT_THIN_END,
-                DEFAULT_THIN_MIN_FRACTION);
-    }
-
-    /**
      * {@return these settings with the field switched on or off, every other value kept}
      *
      * @param on whether the field evaluates flows
@@ -131,8 +97,155 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
                 lodFovY);
     }
 
-    /** {@return enabled, 8 plants per node, depth 8, collapse one level beyond 15 m and two beyond 30 m} */
+    /** Default {@link #maxObjectsPerNode()}. */
+    public static final int DEFAULT_MAX_OBJECTS_PER_NODE = 8;
+    /** Default {@link #maxDepth()}. */
+    public static final int DEFAULT_MAX_DEPTH = 8;
+    /** Default {@link #lodDistances()}, metres: collapse one level beyond 15 m and two beyond 30 m. */
+    public static final List<Double> DEFAULT_LOD_DISTANCES = List.of(15.0, 30.0);
+
+    /**
+     * {@return the scene schema's defaults, {@code builder().build()}: enabled, 8 plants per node, depth
+     * 8, collapse one level beyond 15 m and two beyond 30 m, no thinning, a 60 degree lens} Any thread;
+     * allocates.
+     */
     public static ForceFieldDef defaults() {
-        return new ForceFieldDef(true, 8, 8, List.of(15.0, 30.0));
+        return builder().build();
+    }
+
+    /**
+     * A builder with every value at the scene schema's default ({@code DEFAULT_*}): what an empty
+     * {@code <field/>} element loads as. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /**
+     * A builder holding every value of this def, to change a few. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public Builder toBuilder() {
+        return new Builder().enabled(enabled).maxObjectsPerNode(maxObjectsPerNode).maxDepth(maxDepth)
+                .lodDistances(lodDistances).thinning(thinStart, thinEnd, thinMinFraction).lodFovY(lodFovY);
+    }
+
+    /**
+     * Fluent builder of a {@link ForceFieldDef} with the scene schema's defaults (see
+     * {@link ForceFieldDef#builder}); values are checked by {@link #build()}. One thread; allocates.
+     */
+    public static final class Builder {
+        private boolean enabled = true;
+        private int maxObjectsPerNode = DEFAULT_MAX_OBJECTS_PER_NODE;
+        private int maxDepth = DEFAULT_MAX_DEPTH;
+        private List<Double> lodDistances = DEFAULT_LOD_DISTANCES;
+        private double thinStart = DEFAULT_THIN_START;
+        private double thinEnd = DEFAULT_THIN_END;
+        private double thinMinFraction = DEFAULT_THIN_MIN_FRACTION;
+        private double lodFovY = DEFAULT_LOD_FOV_Y;
+
+        private Builder() {
+        }
+
+        /**
+         * Sets whether the field evaluates flows (default true).
+         *
+         * @param enabled false: no flow is evaluated and plants receive no force
+         * @return this builder
+         */
+        public Builder enabled(boolean enabled) {
+            this.enabled = enabled;
+            return this;
+        }
+
+        /**
+         * Sets the split threshold.
+         *
+         * @param maxObjectsPerNode plants a leaf holds before it splits, in [1, {@link #MAX_OBJECTS_PER_NODE}]
+         * @return this builder
+         */
+        public Builder maxObjectsPerNode(int maxObjectsPerNode) {
+            this.maxObjectsPerNode = maxObjectsPerNode;
+            return this;
+        }
+
+        /**
+         * Sets the deepest level.
+         *
+         * @param maxDepth the deepest level a node may have (root is 0), in [0, {@link #MAX_DEPTH}]
+         * @return this builder
+         */
+        public Builder maxDepth(int maxDepth) {
+            this.maxDepth = maxDepth;
+            return this;
+        }
+
+        /**
+         * Sets the level-of-detail distances.
+         *
+         * @param lodDistances strictly ascending distances, metres; empty for no distance LOD
+         * @return this builder
+         */
+        public Builder lodDistances(List<Double> lodDistances) {
+            this.lodDistances = lodDistances;
+            return this;
+        }
+
+        /**
+         * Sets the level-of-detail distances.
+         *
+         * @param lodDistances strictly ascending distances, metres; none for no distance LOD
+         * @return this builder
+         */
+        public Builder lodDistances(double... lodDistances) {
+            Require.nonNull("lodDistances", lodDistances);
+            List<Double> list = new java.util.ArrayList<>(lodDistances.length);
+            for (double d : lodDistances) {
+                list.add(d);
+            }
+            this.lodDistances = list;
+            return this;
+        }
+
+        /**
+         * Sets the distance thinning of the drawing (default none).
+         *
+         * @param start       where thinning starts, metres, in [0, {@link #MAX_LOD_DISTANCE}]
+         * @param end         where the kept share reaches {@code minFraction}, metres, &gt;= start
+         * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]; 1 for none
+         * @return this builder
+         */
+        public Builder thinning(double start, double end, double minFraction) {
+            this.thinStart = start;
+            this.thinEnd = end;
+            this.thinMinFraction = minFraction;
+            return this;
+        }
+
+        /**
+         * Sets the lens the level-of-detail distances are meant for.
+         *
+         * @param lodFovY vertical field of view, radians, in [{@link #MIN_LOD_FOV_DEGREES},
+         *                {@link #MAX_LOD_FOV_DEGREES}] degrees
+         * @return this builder
+         */
+        public Builder lodFovY(double lodFovY) {
+            this.lodFovY = lodFovY;
+            return this;
+        }
+
+        /**
+         * The def. Allocates.
+         *
+         * @return a new def
+         * @throws IllegalArgumentException when a value is out of range or the distances do not ascend
+         */
+        public ForceFieldDef build() {
+            return new ForceFieldDef(enabled, maxObjectsPerNode, maxDepth, lodDistances, thinStart, thinEnd,
+                    thinMinFraction, lodFovY);
+        }
     }
 }

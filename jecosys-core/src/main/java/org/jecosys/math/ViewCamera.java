@@ -71,13 +71,11 @@ public final class ViewCamera implements Camera {
      * @param x eye X, metres (finite)
      * @param y eye Y, metres above Y = 0, not above the terrain (finite)
      * @param z eye Z, metres (finite)
-     * @return this camera
      */
-    public ViewCamera setPosition(double x, double y, double z) {
+    public void setPosition(double x, double y, double z) {
         this.x = Require.finite("x", x);
         this.y = Require.finite("y", y);
         this.z = Require.finite("z", z);
-        return this;
     }
 
     /**
@@ -85,12 +83,10 @@ public final class ViewCamera implements Camera {
      *
      * @param yaw   radians, 0 looks along -Z, positive turns toward +X (any finite value)
      * @param pitch radians in [-pi/2, pi/2], positive looks up
-     * @return this camera
      */
-    public ViewCamera setOrientation(double yaw, double pitch) {
+    public void setOrientation(double yaw, double pitch) {
         this.yaw = Require.finite("yaw", yaw);
         this.pitch = Require.range("pitch", pitch, -Math.PI / 2, Math.PI / 2);
-        return this;
     }
 
     /**
@@ -100,9 +96,8 @@ public final class ViewCamera implements Camera {
      * @param aspect width / height, &gt; 0
      * @param near   near clip distance, metres, &gt; 0
      * @param far    far clip distance, metres, &gt; near
-     * @return this camera
      */
-    public ViewCamera setLens(double fovY, double aspect, double near, double far) {
+    public void setLens(double fovY, double aspect, double near, double far) {
         Require.range("fovY", fovY, 1e-3, Math.PI - 1e-3);
         Require.positive("aspect", aspect);
         Require.positive("near", near);
@@ -114,7 +109,6 @@ public final class ViewCamera implements Camera {
         this.aspect = aspect;
         this.near = near;
         this.far = far;
-        return this;
     }
 
     /** Eye X, metres. */

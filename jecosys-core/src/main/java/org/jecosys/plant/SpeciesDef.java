@@ -94,24 +94,6 @@ public record SpeciesDef(String id, String name, int poses, double maxBend, List
         }
     }
 
-    /**
-     * A species without trails ({@link TrailDef#NONE}); otherwise as the canonical constructor. Any
-     * thread; allocates.
-     *
-     * @param id         unique within the scene, not empty
-     * @param name       human-readable name, not null
-     * @param poses      pose-table size, in [2, {@link #MAX_POSES}]
-     * @param maxBend    bend of the last pose, radians
-     * @param components at least one
-     * @param lods       at least one, maxDistance ascending, only the last one unbounded
-     * @param variation  per-instance variation, not null
-     * @throws IllegalArgumentException when a rule of the canonical constructor is broken
-     */
-    public SpeciesDef(String id, String name, int poses, double maxBend, List<ComponentDef> components,
-                      List<LodDef> lods, VariationDef variation) {
-        this(id, name, poses, maxBend, components, lods, variation, TrailDef.NONE);
-    }
-
     /** {@return the components of one plant: the sum of every component's count} */
     public int componentsPerPlant() {
         int n = 0;

@@ -43,62 +43,110 @@ public final class SpeciesLibrary {
 
     /** {@return grass tuft A: 25 leaves; 250 / 150 triangles, 175 lines (Table 2)} */
     public static SpeciesDef grassTuftA() {
-        ComponentDef leaf = new ComponentDef("leaf", ComponentType.LEAF, ComponentShape.STRIP, 25, null,
-                5, 0.45, 0.006, 0.0015, 0.35, 0.4, 0.3, 4.0e-4, 0.2, 0.3, 0.002,
-                Rgb.parseHex("#4f8a2b"), List.of(5, 3, 3));
-        return new SpeciesDef("grassA", "grass tuft A", POSES, 1.2, List.of(leaf), table3Lods(),
-                new VariationDef(8, 0.2, 0.15, 0.3, 0.15));
+        ComponentDef leaf = ComponentDef.builder("leaf", ComponentType.LEAF)
+                .shape(ComponentShape.STRIP).count(25)
+                .segments(5).length(0.45).baseWidth(0.006).tipWidth(0.0015)
+                .curvature(0.35).twist(0.4).tilt(0.3).mass(4.0e-4)
+                .stiffness(0.2).responseTime(0.3).dragArea(0.002)
+                .colour(Rgb.parseHex("#4f8a2b")).lodSegments(5, 3, 3).build();
+        return SpeciesDef.builder("grassA").name("grass tuft A").poses(POSES).maxBend(1.2)
+                .components(List.of(leaf)).lods(table3Lods())
+                .variation(VariationDef.builder().variants(8).length(0.2).width(0.15).curvature(0.3).tilt(0.15)
+                        .build())
+                .build();
     }
 
     /** {@return yellow flower B: stalk, head, 5 petals; 72 / 52 triangles, 37 lines (Table 2)} */
     public static SpeciesDef yellowFlowerB() {
-        ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
-                6, 0.40, 0.004, 0.003, 0.05, 0, 0.05, 3.0e-3, 0.8, 0.45, 0.004,
-                Rgb.parseHex("#3f7a2a"), List.of(6, 3, 3));
-        ComponentDef head = new ComponentDef("head", ComponentType.HEAD, ComponentShape.FAN, 1, "stalk",
-                10, 0.01, 0.004, 0.025, 0, 0, 0, 2.0e-3, 1.5, 0.25, 6.0e-4,
-                Rgb.parseHex("#c98a12"), List.of(10, 6, 5));
-        ComponentDef petal = new ComponentDef("petal", ComponentType.PETAL, ComponentShape.STRIP, 5, "stalk",
-                5, 0.03, 0.006, 0.008, 0.4, 0.1, 1.25, 2.0e-4, 0.4, 0.2, 2.5e-4,
-                Rgb.parseHex("#f2d21b"), List.of(5, 4, 2));
-        return new SpeciesDef("flowerB", "yellow flower B", POSES, 1.0, List.of(stalk, head, petal),
-                table3Lods(), new VariationDef(6, 0.12, 0.1, 0.25, 0.08));
+        ComponentDef stalk = ComponentDef.builder("stalk", ComponentType.STALK)
+                .shape(ComponentShape.STRIP).count(1)
+                .segments(6).length(0.40).baseWidth(0.004).tipWidth(0.003)
+                .curvature(0.05).twist(0).tilt(0.05).mass(3.0e-3)
+                .stiffness(0.8).responseTime(0.45).dragArea(0.004)
+                .colour(Rgb.parseHex("#3f7a2a")).lodSegments(6, 3, 3).build();
+        ComponentDef head = ComponentDef.builder("head", ComponentType.HEAD)
+                .shape(ComponentShape.FAN).count(1).attachTo("stalk")
+                .segments(10).length(0.01).baseWidth(0.004).tipWidth(0.025)
+                .curvature(0).twist(0).tilt(0).mass(2.0e-3)
+                .stiffness(1.5).responseTime(0.25).dragArea(6.0e-4)
+                .colour(Rgb.parseHex("#c98a12")).lodSegments(10, 6, 5).build();
+        ComponentDef petal = ComponentDef.builder("petal", ComponentType.PETAL)
+                .shape(ComponentShape.STRIP).count(5).attachTo("stalk")
+                .segments(5).length(0.03).baseWidth(0.006).tipWidth(0.008)
+                .curvature(0.4).twist(0.1).tilt(1.25).mass(2.0e-4)
+                .stiffness(0.4).responseTime(0.2).dragArea(2.5e-4)
+                .colour(Rgb.parseHex("#f2d21b")).lodSegments(5, 4, 2).build();
+        return SpeciesDef.builder("flowerB").name("yellow flower B").poses(POSES).maxBend(1.0)
+                .components(List.of(stalk, head, petal)).lods(table3Lods())
+                .variation(VariationDef.builder().variants(6).length(0.12).width(0.1).curvature(0.25).tilt(0.08)
+                        .build())
+                .build();
     }
 
     /** {@return purple flower C: stalk, 2 leaves, 4 petals; 78 / 58 triangles, 39 lines (Table 2)} */
     public static SpeciesDef purpleFlowerC() {
-        ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
-                8, 0.45, 0.004, 0.003, 0.08, 0, 0.05, 3.5e-3, 0.9, 0.45, 0.0045,
-                Rgb.parseHex("#3c6e28"), List.of(8, 4, 3));
-        ComponentDef leaf = new ComponentDef("leaf", ComponentType.LEAF, ComponentShape.STRIP, 2, null,
-                5, 0.18, 0.012, 0.0, 0.5, 0.2, 0.6, 8.0e-4, 0.3, 0.3, 0.002,
-                Rgb.parseHex("#4a8530"), List.of(5, 4, 2));
-        ComponentDef petal = new ComponentDef("petal", ComponentType.PETAL, ComponentShape.STRIP, 4, "stalk",
-                6, 0.035, 0.004, 0.0, 0.3, 0.1, 1.1, 2.5e-4, 0.5, 0.2, 3.0e-4,
-                Rgb.parseHex("#7b3fb0"), List.of(6, 5, 3));
-        return new SpeciesDef("flowerC", "purple flower C", POSES, 1.0, List.of(stalk, leaf, petal),
-                table3Lods(), new VariationDef(6, 0.12, 0.1, 0.25, 0.08));
+        ComponentDef stalk = ComponentDef.builder("stalk", ComponentType.STALK)
+                .shape(ComponentShape.STRIP).count(1)
+                .segments(8).length(0.45).baseWidth(0.004).tipWidth(0.003)
+                .curvature(0.08).twist(0).tilt(0.05).mass(3.5e-3)
+                .stiffness(0.9).responseTime(0.45).dragArea(0.0045)
+                .colour(Rgb.parseHex("#3c6e28")).lodSegments(8, 4, 3).build();
+        ComponentDef leaf = ComponentDef.builder("leaf", ComponentType.LEAF)
+                .shape(ComponentShape.STRIP).count(2)
+                .segments(5).length(0.18).baseWidth(0.012).tipWidth(0.0)
+                .curvature(0.5).twist(0.2).tilt(0.6).mass(8.0e-4)
+                .stiffness(0.3).responseTime(0.3).dragArea(0.002)
+                .colour(Rgb.parseHex("#4a8530")).lodSegments(5, 4, 2).build();
+        ComponentDef petal = ComponentDef.builder("petal", ComponentType.PETAL)
+                .shape(ComponentShape.STRIP).count(4).attachTo("stalk")
+                .segments(6).length(0.035).baseWidth(0.004).tipWidth(0.0)
+                .curvature(0.3).twist(0.1).tilt(1.1).mass(2.5e-4)
+                .stiffness(0.5).responseTime(0.2).dragArea(3.0e-4)
+                .colour(Rgb.parseHex("#7b3fb0")).lodSegments(6, 5, 3).build();
+        return SpeciesDef.builder("flowerC").name("purple flower C").poses(POSES).maxBend(1.0)
+                .components(List.of(stalk, leaf, petal)).lods(table3Lods())
+                .variation(VariationDef.builder().variants(6).length(0.12).width(0.1).curvature(0.25).tilt(0.08)
+                        .build())
+                .build();
     }
 
     /** {@return the rose: stalk, 2 leaves, 5 sepals, 10 petals, head; 177 / 105 triangles, 118 lines (Table 1)} */
     public static SpeciesDef rose() {
-        ComponentDef stalk = new ComponentDef("stalk", ComponentType.STALK, ComponentShape.STRIP, 1, null,
-                12, 0.60, 0.007, 0.005, 0.1, 0, 0.04, 1.2e-2, 1.5, 0.5, 0.006,
-                Rgb.parseHex("#2f5e22"), List.of(12, 6, 4));
-        ComponentDef leaf = new ComponentDef("leaf", ComponentType.LEAF, ComponentShape.STRIP, 2, null,
-                5, 0.12, 0.03, 0.0, 0.4, 0.3, 0.9, 1.2e-3, 0.4, 0.3, 0.003,
-                Rgb.parseHex("#2e6b2a"), List.of(5, 3, 3));
-        ComponentDef sepal = new ComponentDef("sepal", ComponentType.LEAF, ComponentShape.STRIP, 5, "stalk",
-                3, 0.025, 0.006, 0.0, 0.3, 0, 1.4, 1.0e-4, 0.6, 0.2, 1.0e-4,
-                Rgb.parseHex("#35702b"), List.of(3, 2, 2));
-        ComponentDef petal = new ComponentDef("petal", ComponentType.PETAL, ComponentShape.STRIP, 10, "stalk",
-                5, 0.045, 0.012, 0.03, -0.6, 0.3, 0.7, 3.0e-4, 0.5, 0.25, 6.0e-4,
-                Rgb.parseHex("#b01830"), List.of(5, 3, 3));
-        ComponentDef head = new ComponentDef("head", ComponentType.HEAD, ComponentShape.FAN, 1, "stalk",
-                10, 0.015, 0.008, 0.02, 0, 0, 0, 1.5e-3, 1.5, 0.25, 4.0e-4,
-                Rgb.parseHex("#7a0f22"), List.of(10, 8, 7));
-        return new SpeciesDef("rose", "rose", POSES, 0.9, List.of(stalk, leaf, sepal, petal, head),
-                table3Lods(), new VariationDef(4, 0.1, 0.1, 0.2, 0.05));
+        ComponentDef stalk = ComponentDef.builder("stalk", ComponentType.STALK)
+                .shape(ComponentShape.STRIP).count(1)
+                .segments(12).length(0.60).baseWidth(0.007).tipWidth(0.005)
+                .curvature(0.1).twist(0).tilt(0.04).mass(1.2e-2)
+                .stiffness(1.5).responseTime(0.5).dragArea(0.006)
+                .colour(Rgb.parseHex("#2f5e22")).lodSegments(12, 6, 4).build();
+        ComponentDef leaf = ComponentDef.builder("leaf", ComponentType.LEAF)
+                .shape(ComponentShape.STRIP).count(2)
+                .segments(5).length(0.12).baseWidth(0.03).tipWidth(0.0)
+                .curvature(0.4).twist(0.3).tilt(0.9).mass(1.2e-3)
+                .stiffness(0.4).responseTime(0.3).dragArea(0.003)
+                .colour(Rgb.parseHex("#2e6b2a")).lodSegments(5, 3, 3).build();
+        ComponentDef sepal = ComponentDef.builder("sepal", ComponentType.LEAF)
+                .shape(ComponentShape.STRIP).count(5).attachTo("stalk")
+                .segments(3).length(0.025).baseWidth(0.006).tipWidth(0.0)
+                .curvature(0.3).twist(0).tilt(1.4).mass(1.0e-4)
+                .stiffness(0.6).responseTime(0.2).dragArea(1.0e-4)
+                .colour(Rgb.parseHex("#35702b")).lodSegments(3, 2, 2).build();
+        ComponentDef petal = ComponentDef.builder("petal", ComponentType.PETAL)
+                .shape(ComponentShape.STRIP).count(10).attachTo("stalk")
+                .segments(5).length(0.045).baseWidth(0.012).tipWidth(0.03)
+                .curvature(-0.6).twist(0.3).tilt(0.7).mass(3.0e-4)
+                .stiffness(0.5).responseTime(0.25).dragArea(6.0e-4)
+                .colour(Rgb.parseHex("#b01830")).lodSegments(5, 3, 3).build();
+        ComponentDef head = ComponentDef.builder("head", ComponentType.HEAD)
+                .shape(ComponentShape.FAN).count(1).attachTo("stalk")
+                .segments(10).length(0.015).baseWidth(0.008).tipWidth(0.02)
+                .curvature(0).twist(0).tilt(0).mass(1.5e-3)
+                .stiffness(1.5).responseTime(0.25).dragArea(4.0e-4)
+                .colour(Rgb.parseHex("#7a0f22")).lodSegments(10, 8, 7).build();
+        return SpeciesDef.builder("rose").name("rose").poses(POSES).maxBend(0.9)
+                .components(List.of(stalk, leaf, sepal, petal, head)).lods(table3Lods())
+                .variation(VariationDef.builder().variants(4).length(0.1).width(0.1).curvature(0.2).tilt(0.05)
+                        .build())
+                .build();
     }
 
     /** {@return A, B, C and the rose, in that order} */

@@ -85,45 +85,6 @@ public record VariationDef(int variants, double length, double width, double cur
     }
 
     /**
-     * Variation with one size class and the even azimuth spread: every variant at its own lengths,
-     * the paper's layout. Any thread; allocates.
-     *
-     * @param variants  shape variants, in [1, 64]
-     * @param length    relative length variation, in [0, 0.9]
-     * @param width     relative width variation, in [0, 0.9]
-     * @param curvature relative curvature variation, in [0, 0.9]
-     * @param tilt      extra tilt, radians, in [0, pi/4]
-     * @param responseTime relative response-time variation, in [0, 0.9]
-     * @param stiffness relative stiffness variation, in [0, 0.9]
-     * @param hue       s.d. of the per-plant hue shift, degrees, in [0, 60]
-     * @param value     s.d. of the per-plant brightness factor, in [0, 0.5]
-     * @param dryTips   straw colour at the leaf tips, in [0, 1]
-     * @throws IllegalArgumentException when a component is out of range
-     */
-    public VariationDef(int variants, double length, double width, double curvature, double tilt,
-                        double responseTime, double stiffness, double hue, double value, double dryTips) {
-        this(variants, length, width, curvature, tilt, responseTime, stiffness, hue, value, dryTips, DEFAULT_SIZE,
-                DEFAULT_SIZE_CLASSES, DEFAULT_AZIMUTH);
-    }
-
-    /**
-     * Shape and motion variation with no colour variation. Any thread; allocates.
-     *
-     * @param variants  shape variants, in [1, 64]
-     * @param length    relative length variation, in [0, 0.9]
-     * @param width     relative width variation, in [0, 0.9]
-     * @param curvature relative curvature variation, in [0, 0.9]
-     * @param tilt      extra tilt, radians, in [0, pi/4]
-     * @param responseTime relative response-time variation, in [0, 0.9]
-     * @param stiffness relative stiffness variation, in [0, 0.9]
-     * @throws IllegalArgumentException when a component is out of range
-     */
-    public VariationDef(int variants, double length, double width, double curvature, double tilt,
-                        double responseTime, double stiffness) {
-        this(variants, length, width, curvature, tilt, responseTime, stiffness, 0, 0, 0);
-    }
-
-    /**
      * A copy with other colour variation (presentation only; the simulation does not read it). Any
      * thread; allocates.
      *
@@ -200,21 +161,6 @@ public record VariationDef(int variants, double length, double width, double cur
         return (int) (((long) g * variants + sizeClasses - 1) / sizeClasses);
     }
 
-    /**
-     * Shape variation only: no response-time or stiffness variation between plants. Any thread;
-     * allocates.
-     *
-     * @param variants  shape variants, in [1, 64]
-     * @param length    relative length variation, in [0, 0.9]
-     * @param width     relative width variation, in [0, 0.9]
-     * @param curvature relative curvature variation, in [0, 0.9]
-     * @param tilt      extra tilt, radians, in [0, pi/4]
-     * @throws IllegalArgumentException when a component is out of range
-     */
-    public VariationDef(int variants, double length, double width, double curvature, double tilt) {
-        this(variants, length, width, curvature, tilt, 0, 0);
-    }
-
     /** Most shape variants (the scene schema's range and the API's). */
     public static final int MAX_VARIANTS = 64;
     /** Largest relative variation of length, width, curvature, response time and stiffness. */
@@ -236,6 +182,208 @@ public record VariationDef(int variants, double length, double width, double cur
     /** Largest s.d. of the per-plant brightness factor. */
     public static final double MAX_VALUE = 0.5;
 
-    /** No variation: one variant. */
-    public static final VariationDef NONE = new VariationDef(1, 0, 0, 0, 0);
+    /** Default {@link #variants()}: one shape. */
+    public static final int DEFAULT_VARIANTS = 1;
+
+    /** No variation: one variant, {@code builder().build()}, what a species without {@code <variation>} has. */
+    public static final VariationDef NONE = builder().build();
+
+    /**
+     * A builder with every value at the scene schema's default: one variant, no variation, one size
+     * class, the even azimuth spread (what an empty {@code <variation/>} element loads as). Any thread;
+     * allocates.
+     *
+     * @return a new builder
+     */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /**
+     * A builder holding every value of this def, to change a few. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public Builder toBuilder() {
+        return new Builder().variants(variants).length(length).width(width).curvature(curvature).tilt(tilt)
+                .responseTime(responseTime).stiffness(stiffness).hue(hue).value(value).dryTips(dryTips).size(size)
+                .sizeClasses(sizeClasses).azimuth(azimuth);
+    }
+
+    /**
+     * Fluent builder of a {@link VariationDef} with the scene schema's defaults (see
+     * {@link VariationDef#builder}); values are checked by {@link #build()}. One thread; allocates.
+     */
+    public static final class Builder {
+        private int variants = DEFAULT_VARIANTS;
+        private double length = 0;
+        private double width = 0;
+        private double curvature = 0;
+        private double tilt = 0;
+        private double responseTime = 0;
+        private double stiffness = 0;
+        private double hue = 0;
+        private double value = 0;
+        private double dryTips = 0;
+        private double size = DEFAULT_SIZE;
+        private int sizeClasses = DEFAULT_SIZE_CLASSES;
+        private double azimuth = DEFAULT_AZIMUTH;
+
+        private Builder() {
+        }
+
+        /**
+         * Sets the number of shape variants (default 1).
+         *
+         * @param variants shape variants sharing pose tables, in [1, {@link #MAX_VARIANTS}]
+         * @return this builder
+         */
+        public Builder variants(int variants) {
+            this.variants = variants;
+            return this;
+        }
+
+        /**
+         * Sets the relative length variation (default 0).
+         *
+         * @param length in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder length(double length) {
+            this.length = length;
+            return this;
+        }
+
+        /**
+         * Sets the relative width variation (default 0).
+         *
+         * @param width in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder width(double width) {
+            this.width = width;
+            return this;
+        }
+
+        /**
+         * Sets the relative curvature variation (default 0).
+         *
+         * @param curvature in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder curvature(double curvature) {
+            this.curvature = curvature;
+            return this;
+        }
+
+        /**
+         * Sets the extra tilt from vertical (default 0).
+         *
+         * @param tilt radians, in [0, pi/4]
+         * @return this builder
+         */
+        public Builder tilt(double tilt) {
+            this.tilt = tilt;
+            return this;
+        }
+
+        /**
+         * Sets the relative response-time variation from plant to plant (default 0).
+         *
+         * @param responseTime in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder responseTime(double responseTime) {
+            this.responseTime = responseTime;
+            return this;
+        }
+
+        /**
+         * Sets the relative stiffness variation from plant to plant (default 0).
+         *
+         * @param stiffness in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder stiffness(double stiffness) {
+            this.stiffness = stiffness;
+            return this;
+        }
+
+        /**
+         * Sets the s.d. of the per-plant hue shift (default 0; colour only).
+         *
+         * @param hue degrees of hue, in [0, {@link #MAX_HUE_DEGREES}]
+         * @return this builder
+         */
+        public Builder hue(double hue) {
+            this.hue = hue;
+            return this;
+        }
+
+        /**
+         * Sets the s.d. of the per-plant brightness factor (default 0; colour only).
+         *
+         * @param value in [0, {@link #MAX_VALUE}]
+         * @return this builder
+         */
+        public Builder value(double value) {
+            this.value = value;
+            return this;
+        }
+
+        /**
+         * Sets how far the leaf tips turn straw-coloured (default 0; colour only).
+         *
+         * @param dryTips in [0, 1]
+         * @return this builder
+         */
+        public Builder dryTips(double dryTips) {
+            this.dryTips = dryTips;
+            return this;
+        }
+
+        /**
+         * Sets the relative size spread of the size classes (default {@link #DEFAULT_SIZE}).
+         *
+         * @param size in [0, {@link #MAX_FRACTION}]
+         * @return this builder
+         */
+        public Builder size(double size) {
+            this.size = size;
+            return this;
+        }
+
+        /**
+         * Sets the number of size classes (default {@link #DEFAULT_SIZE_CLASSES}).
+         *
+         * @param sizeClasses in [1, variants]
+         * @return this builder
+         */
+        public Builder sizeClasses(int sizeClasses) {
+            this.sizeClasses = sizeClasses;
+            return this;
+        }
+
+        /**
+         * Sets the largest azimuth offset of a ground instance (default {@link #DEFAULT_AZIMUTH}).
+         *
+         * @param azimuth radians, in [0, pi]
+         * @return this builder
+         */
+        public Builder azimuth(double azimuth) {
+            this.azimuth = azimuth;
+            return this;
+        }
+
+        /**
+         * The def. Allocates.
+         *
+         * @return a new def
+         * @throws IllegalArgumentException when a value is out of range
+         */
+        public VariationDef build() {
+            return new VariationDef(variants, length, width, curvature, tilt, responseTime, stiffness, hue, value, dryTips, size,
+                    sizeClasses, azimuth);
+        }
+    }
 }

@@ -60,7 +60,7 @@ final class PlantSchema {
         ElementSpec variation = new ElementSpec("variation", "Per-instance variation (paper section 4.1); "
                 + "fractions are relative.")
                 .attr(integer("variants", "Pre-computed shape variants sharing pose tables.")
-                        .range(1, VariationDef.MAX_VARIANTS).def(1)
+                        .range(1, VariationDef.MAX_VARIANTS).def(VariationDef.DEFAULT_VARIANTS)
                         .get(d -> ((VariationDef) d).variants()))
                 .attr(num("length", "", "Relative length variation.").range(0, VariationDef.MAX_FRACTION).def(0.0)
                         .get(d -> ((VariationDef) d).length()))

@@ -61,47 +61,6 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         public static final double MAX_SHEEN = 2;
 
         /**
-         * The light with the default sheen (1).
-         *
-         * @param sunAzimuth    radians, in [-2 pi, 2 pi]
-         * @param sunElevation  radians, in [0, pi/2]
-         * @param sunColour     not null
-         * @param sunIntensity  in [0, 4]
-         * @param skyZenith     not null
-         * @param ambient       not null
-         * @param contactShadow in [0, 1]
-         * @param fogStart      metres, in [0, 100000]
-         * @param fogEnd        metres, in (fogStart, 100000]
-         * @throws IllegalArgumentException when a component is null or out of range
-         */
-        public Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
-                     Rgb ambient, double contactShadow, double fogStart, double fogEnd) {
-            this(sunAzimuth, sunElevation, sunColour, sunIntensity, skyZenith, ambient, contactShadow, fogStart, fogEnd,
-                    1, 0);
-        }
-
-        /**
-         * The light without sun shadows (0).
-         *
-         * @param sunAzimuth    radians, in [-2 pi, 2 pi]
-         * @param sunElevation  radians, in [0, pi/2]
-         * @param sunColour     not null
-         * @param sunIntensity  in [0, 4]
-         * @param skyZenith     not null
-         * @param ambient       not null
-         * @param contactShadow in [0, 1]
-         * @param fogStart      metres, in [0, 100000]
-         * @param fogEnd        metres, in (fogStart, 100000]
-         * @param sheen         in [0, 2]
-         * @throws IllegalArgumentException when a component is null or out of range
-         */
-        public Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
-                     Rgb ambient, double contactShadow, double fogStart, double fogEnd, double sheen) {
-            this(sunAzimuth, sunElevation, sunColour, sunIntensity, skyZenith, ambient, contactShadow, fogStart, fogEnd,
-                    sheen, 0);
-        }
-
-        /**
          * Checks the components.
          *
          * @param sunAzimuth    radians, in [-2 pi, 2 pi]
@@ -142,7 +101,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          */
         public static final Light DEFAULT = new Light(Math.toRadians(135), Math.toRadians(50),
                 new Rgb(1f, 0.95f, 0.85f), 0.8, new Rgb(0.30f, 0.50f, 0.85f), new Rgb(0.42f, 0.46f, 0.52f), 0.5,
-                20, 150);
+                20, 150, 1, 0);
     }
 
     /**
@@ -335,46 +294,6 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
     }
 
     /**
-     * The settings with the default light and patches ({@link Light#DEFAULT}, {@link Patches#DEFAULT})
-     * and {@link #DEFAULT_ANTIALIASING}. Any thread; allocates.
-     *
-     * @param width         default width, pixels, in [16, 8192]
-     * @param height        default height, pixels, in [16, 8192]
-     * @param sky           horizon and fog colour, not null
-     * @param lodTransition dithering band width, metres, in [0, 10]
-     * @param terrainTint   terrain tint, not null
-     * @param showField     whether the quadtree overlay starts visible
-     * @param showWind      whether the wind-vector overlay starts visible
-     * @throws IllegalArgumentException when a component is null or out of range
-     */
-    public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
-                     boolean showWind) {
-        this(width, height, sky, lodTransition, terrainTint, showField, showWind, Light.DEFAULT, Patches.DEFAULT,
-                DEFAULT_ANTIALIASING, GroundCover.NONE);
-    }
-
-    /**
-     * The settings without ground cover ({@link GroundCover#NONE}). Any thread; allocates.
-     *
-     * @param width         default width, pixels, in [16, 8192]
-     * @param height        default height, pixels, in [16, 8192]
-     * @param sky           horizon and fog colour, not null
-     * @param lodTransition dithering band width, metres, in [0, 10]
-     * @param terrainTint   terrain tint, not null
-     * @param showField     whether the quadtree overlay starts visible
-     * @param showWind      whether the wind-vector overlay starts visible
-     * @param light         sun, sky and atmosphere, not null
-     * @param patches       colour patches, not null
-     * @param antialiasing  samples per pixel: 1, 2, 4 or 8
-     * @throws IllegalArgumentException when a component is null or out of range
-     */
-    public RenderDef(int width, int height, Rgb sky, double lodTransition, Tint terrainTint, boolean showField,
-                     boolean showWind, Light light, Patches patches, int antialiasing) {
-        this(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches, antialiasing,
-                GroundCover.NONE);
-    }
-
-    /**
      * A copy with other light settings. Any thread; allocates.
      *
      * @param light the new light, not null
@@ -397,10 +316,176 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
     }
 
     /**
-     * {@return 1280x720, light blue horizon, a 1 m transition band, no tint, overlays hidden, the default
-     * light and patches, 4x anti-aliasing}
+     * {@return the scene schema's defaults, {@code builder().build()}: 1280x720, light blue horizon, a 1 m
+     * transition band, no tint, overlays hidden, the default light and patches, 4x anti-aliasing, no
+     * ground cover} Any thread; allocates.
      */
     public static RenderDef defaults() {
-        return new RenderDef(1280, 720, new Rgb(0.62f, 0.76f, 0.92f), 1, Tint.NONE, false, false);
+        return builder().build();
+    }
+
+    /**
+     * A builder with every value at the scene schema's default (see {@link #defaults()}): what an empty
+     * {@code <render/>} element loads as. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /**
+     * A builder holding every value of this def, to change a few. Any thread; allocates.
+     *
+     * @return a new builder
+     */
+    public Builder toBuilder() {
+        return new Builder().size(width, height).sky(sky).lodTransition(lodTransition).terrainTint(terrainTint)
+                .showField(showField).showWind(showWind).light(light).patches(patches).antialiasing(antialiasing)
+                .groundCover(groundCover);
+    }
+
+    /**
+     * Fluent builder of a {@link RenderDef} with the scene schema's defaults (see
+     * {@link RenderDef#builder}); values are checked by {@link #build()}. One thread; allocates.
+     */
+    public static final class Builder {
+        private int width = 1280;
+        private int height = 720;
+        private Rgb sky = new Rgb(0.62f, 0.76f, 0.92f);
+        private double lodTransition = 1;
+        private Tint terrainTint = Tint.NONE;
+        private boolean showField = false;
+        private boolean showWind = false;
+        private Light light = Light.DEFAULT;
+        private Patches patches = Patches.DEFAULT;
+        private int antialiasing = DEFAULT_ANTIALIASING;
+        private GroundCover groundCover = GroundCover.NONE;
+
+        private Builder() {
+        }
+
+        /**
+         * Sets the default window or image size (default 1280 x 720).
+         *
+         * @param width  pixels, in [16, 8192]
+         * @param height pixels, in [16, 8192]
+         * @return this builder
+         */
+        public Builder size(int width, int height) {
+            this.width = width;
+            this.height = height;
+            return this;
+        }
+
+        /**
+         * Sets the horizon and fog colour (default light blue).
+         *
+         * @param sky not null
+         * @return this builder
+         */
+        public Builder sky(Rgb sky) {
+            this.sky = sky;
+            return this;
+        }
+
+        /**
+         * Sets the width of the band over which two levels of detail are dithered (default 1 m).
+         *
+         * @param lodTransition metres, in [0, 10]
+         * @return this builder
+         */
+        public Builder lodTransition(double lodTransition) {
+            this.lodTransition = lodTransition;
+            return this;
+        }
+
+        /**
+         * Sets which resource map tints the terrain (default none).
+         *
+         * @param terrainTint not null
+         * @return this builder
+         */
+        public Builder terrainTint(Tint terrainTint) {
+            this.terrainTint = terrainTint;
+            return this;
+        }
+
+        /**
+         * Sets whether the force-field overlay starts visible (default false).
+         *
+         * @param showField whether it starts visible
+         * @return this builder
+         */
+        public Builder showField(boolean showField) {
+            this.showField = showField;
+            return this;
+        }
+
+        /**
+         * Sets whether the wind-vector overlay starts visible (default false).
+         *
+         * @param showWind whether it starts visible
+         * @return this builder
+         */
+        public Builder showWind(boolean showWind) {
+            this.showWind = showWind;
+            return this;
+        }
+
+        /**
+         * Sets the sun, sky and atmosphere (default {@link Light#DEFAULT}).
+         *
+         * @param light not null
+         * @return this builder
+         */
+        public Builder light(Light light) {
+            this.light = light;
+            return this;
+        }
+
+        /**
+         * Sets the colour patches (default {@link Patches#DEFAULT}).
+         *
+         * @param patches not null
+         * @return this builder
+         */
+        public Builder patches(Patches patches) {
+            this.patches = patches;
+            return this;
+        }
+
+        /**
+         * Sets the samples per pixel (default {@link #DEFAULT_ANTIALIASING}).
+         *
+         * @param antialiasing 1, 2, 4 or 8
+         * @return this builder
+         */
+        public Builder antialiasing(int antialiasing) {
+            this.antialiasing = antialiasing;
+            return this;
+        }
+
+        /**
+         * Sets the ground cover (default {@link GroundCover#NONE}).
+         *
+         * @param groundCover not null
+         * @return this builder
+         */
+        public Builder groundCover(GroundCover groundCover) {
+            this.groundCover = groundCover;
+            return this;
+        }
+
+        /**
+         * The def. Allocates.
+         *
+         * @return a new def
+         * @throws IllegalArgumentException when a value is null or out of range
+         */
+        public RenderDef build() {
+            return new RenderDef(width, height, sky, lodTransition, terrainTint, showField, showWind, light, patches,
+                    antialiasing, groundCover);
+        }
     }
 }

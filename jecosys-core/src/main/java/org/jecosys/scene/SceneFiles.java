@@ -19,10 +19,13 @@ import org.jecosys.math.Require;
 import org.jecosys.terrain.ImageSource;
 
 /**
- * Loads, validates and saves scene files ({@code <scene version="1">}, documented by
- * {@code scenes/jecosys-scene.xsd}). Loading either returns a complete, valid {@link SceneDef} or
- * throws {@link SceneLoadException} listing every problem as {@code FILE:LINE:COL: message}; it
- * never returns a half-loaded scene. Files are read through Jackson XML's hardened parser: no DTDs,
+ * Reads, validates and saves scene files ({@code <scene version="1">}, documented by
+ * {@code scenes/jecosys-scene.xsd}). One verb per result: {@code parse} turns text into a
+ * {@link SceneDef}, the definition alone (to edit, save or build from code); {@code read} gives a
+ * {@link Scene} ready to simulate, the definition with the image bytes it was checked with
+ * ({@link Scenes#simulation(Scene, int, org.jecosys.math.Progress)}). Either returns a complete,
+ * valid result or throws {@link SceneLoadException} listing every problem as
+ * {@code FILE:LINE:COL: message}; neither returns a half-loaded scene. Files are read through Jackson XML's hardened parser: no DTDs,
  * no entities, no external access of any kind. Saving is atomic ({@link AtomicFiles}): a temporary
  * file in the same folder, forced to disk, then moved over the target, so a failure leaves the
  * original untouched.
@@ -47,29 +50,32 @@ public final class SceneFiles {
     }
 
     /**
-     * Loads and validates a scene file; relative paths inside it (heightmaps, images) are resolved
-     * against its folder, must exist and must lie in its folder tree ({@link ImageSource#folder}).
+     * Parses and validates a scene file into its definition; relative paths inside it (heightmaps,
+     * images) are resolved against its folder, must exist and must lie in its folder tree
+     * ({@link ImageSource#folder}). The images are checked as {@link #read(Path)} checks them, but not
+     * kept: for a scene to simulate, {@link #read(Path)} is the one that keeps the bytes it checked.
      *
      * @param file the scene file; its name as given appears in every problem
-     * @return the complete scene
+     * @return the complete definition
      * @throws SceneLoadException if the file cannot be read, is not a valid scene, has more than
      *                            {@link #MAX_ELEMENTS} elements or {@link #MAX_ATTRIBUTES} attributes,
      *                            names an image that is missing, outside its folder, too large
      *                            ({@link org.jecosys.terrain.ImageFiles#MAX_SIDE}) or corrupt, or needs
      *                            more memory to read or to build than this JVM's heap allows
      */
-    public static SceneDef load(Path file) throws SceneLoadException {
+    public static SceneDef parse(Path file) throws SceneLoadException {
         return read(file).def();
     }
 
     /**
-     * Loads and validates a scene file like {@link #load}, keeping the bytes of the images it names
-     * as they were checked ({@link Scene#images()}), so that building it reads no file again.
-     * Images must lie in the file's folder tree.
+     * Reads a scene file into a {@link Scene} ready to simulate: parsed and validated like
+     * {@link #parse(Path)}, with the bytes of the images it names kept as they were checked
+     * ({@link Scene#images()}), so that building it reads no file again. Images must lie in the
+     * file's folder tree.
      *
      * @param file the scene file; its name as given appears in every problem
      * @return the scene and its checked images
-     * @throws SceneLoadException as {@link #load}
+     * @throws SceneLoadException as {@link #parse(Path)}
      */
     public static Scene read(Path file) throws SceneLoadException {
         Require.nonNull("file", file);
@@ -77,14 +83,14 @@ public final class SceneFiles {
     }
 
     /**
-     * Loads and validates a scene file whose images come from {@code images}: for example
+     * Reads a scene file like {@link #read(Path)}, with its images from {@code images}: for example
      * {@link ImageSource#anywhere} for a scene the user trusts to name images outside its folder.
      * Paths that are not regular files (folders, pipes, devices) are refused before they are opened.
      *
      * @param file   the scene file; its name as given appears in every problem
      * @param images where the images it names are read from, once each
      * @return the scene and its checked images
-     * @throws SceneLoadException as {@link #load}
+     * @throws SceneLoadException as {@link #parse(Path)}
      */
     public static Scene read(Path file, ImageSource images) throws SceneLoadException {
         Require.nonNull("file", file);
@@ -116,11 +122,11 @@ public final class SceneFiles {
         } catch (IOException e) {
             throw fail(name, "cannot read: " + e.getMessage());
         }
-        return parse(bytes, name, images);
+        return bind(bytes, name, images);
     }
 
     /**
-     * Loads and validates a scene from a stream (an engine's asset, a classpath resource, a network
+     * Reads a scene ready to simulate from a stream (an engine's asset, a classpath resource, a network
      * download), with the images it names read from {@code images} (a game's resolver over its own
      * assets, {@link ImageSource#folder}, or {@link ImageSource#NONE} for a scene that names none).
      * Reads at most {@link #MAX_FILE_BYTES} + 1 bytes; does not close the stream.
@@ -143,27 +149,27 @@ public final class SceneFiles {
         } catch (IOException e) {
             throw fail(name, "cannot read: " + e.getMessage());
         }
-        return parse(bytes, name, images);
+        return bind(bytes, name, images);
     }
 
     /**
-     * Parses and validates scene XML held in memory.
+     * Parses and validates scene XML held in memory into its definition.
      *
      * @param bytes    the file's bytes, UTF-8
      * @param fileName the name used in problems
      * @param baseDir  folder that relative paths resolve against and whose tree the images must lie
      *                 in, or null to skip the image checks
-     * @return the complete scene
+     * @return the complete definition
      * @throws SceneLoadException if the bytes are not a valid scene, or the scene needs more memory
      *                            than this JVM's heap allows (plants, components, pose tables, grids
      *                            and, with a baseDir, images, estimated before anything is built)
      */
     public static SceneDef parse(byte[] bytes, String fileName, Path baseDir) throws SceneLoadException {
-        return parse(bytes, fileName, baseDir == null ? null : ImageSource.folder(baseDir)).def();
+        return bind(bytes, fileName, baseDir == null ? null : ImageSource.folder(baseDir)).def();
     }
 
-    /** Parses, validates and budgets; {@code images} null skips the image checks. */
-    private static Scene parse(byte[] bytes, String fileName, ImageSource images) throws SceneLoadException {
+    /** Parses, validates, budgets and binds the checked images; {@code images} null skips the image checks. */
+    private static Scene bind(byte[] bytes, String fileName, ImageSource images) throws SceneLoadException {
         if (bytes.length > MAX_FILE_BYTES) {
             throw fail(fileName, "file is " + bytes.length + " bytes; scene files are limited to " + MAX_FILE_BYTES
                     + " bytes (8 MiB)");
@@ -196,7 +202,7 @@ public final class SceneFiles {
      * The scene as XML text, exactly as {@link #save} writes it.
      *
      * @param scene the scene
-     * @return a {@code <scene version="1">} document; {@link #load} reads it back to an equal scene
+     * @return a {@code <scene version="1">} document; {@link #parse(Path)} reads it back to an equal scene
      */
     public static String toXml(SceneDef scene) {
         return SceneWriter.toXml(scene);

@@ -262,14 +262,15 @@ final class SceneSchema {
                 .attr(bool("enabled", "When false no flow is evaluated and plants get no force.").def(true)
                         .get(d -> ((ForceFieldDef) d).enabled()))
                 .attr(integer("maxObjectsPerNode", "A leaf splits into four when it would hold more plants.")
-                        .range(1, ForceFieldDef.MAX_OBJECTS_PER_NODE).def(8)
+                        .range(1, ForceFieldDef.MAX_OBJECTS_PER_NODE).def(ForceFieldDef.DEFAULT_MAX_OBJECTS_PER_NODE)
                         .get(d -> ((ForceFieldDef) d).maxObjectsPerNode()))
-                .attr(integer("maxDepth", "Deepest node level (root is 0).").range(0, ForceFieldDef.MAX_DEPTH).def(8)
+                .attr(integer("maxDepth", "Deepest node level (root is 0).").range(0, ForceFieldDef.MAX_DEPTH)
+                        .def(ForceFieldDef.DEFAULT_MAX_DEPTH)
                         .get(d -> ((ForceFieldDef) d).maxDepth()))
                 .attr(AttrSpec.of("lodDistances", DOUBLE_LIST, "metres", "Ascending distances: beyond the i-th, "
                         + "i levels collapse into their ancestor; empty for no distance LOD.")
                         .rangeAbove(0, ForceFieldDef.MAX_LOD_DISTANCE).items(0, ForceFieldDef.MAX_LOD_DISTANCES)
-                        .def(List.of(15.0, 30.0))
+                        .def(ForceFieldDef.DEFAULT_LOD_DISTANCES)
                         .get(d -> ((ForceFieldDef) d).lodDistances()))
                 .attr(num("thinStart", "metres", "Distance thinning of the drawing (for slow GPUs): beyond this "
                         + "distance fewer plants are drawn, the same ones every frame.")
@@ -321,7 +322,7 @@ final class SceneSchema {
                         + "switched inside a step acts from the next sub-interval boundary.")
                         .range(1, 64).def(4).get(d -> ((AnimationDef) d).subIntervals()))
                 .attr(integer("threads", "Animation workers; 0 means the available processors.").range(0, 256)
-                        .def(0).get(d -> ((AnimationDef) d).threads()))
+                        .def(0).get(d -> ((AnimationDef) d).workers()))
                 .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
 
         ElementSpec render = RenderSchema.render();

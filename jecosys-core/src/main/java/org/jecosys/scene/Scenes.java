@@ -42,7 +42,7 @@ public final class Scenes {
     public static Simulation simulation(Scene scene, int workers, Progress progress) throws IOException {
         Require.nonNull("scene", scene);
         SceneDef def = scene.def();
-        Simulation sim = Simulation.create(def.simulationDef(), scene.images(), progress, workers);
+        Simulation sim = Simulation.create(def.simulationDef(), scene.images(), workers, progress);
         sim.setLodTransition(def.render().lodTransition());
         return sim;
     }

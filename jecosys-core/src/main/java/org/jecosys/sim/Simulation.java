@@ -4,10 +4,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
-import org.jecosys.anim.AnimationState;
-import org.jecosys.anim.AnimationView;
-import org.jecosys.field.FieldCounters;
-import org.jecosys.field.ForceField;
 import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
@@ -54,13 +50,13 @@ import org.jecosys.wind.WindSource;
  * <h2>Determinism</h2>
  * Chunks are fixed by the world (about {@value #CHUNK_COMPONENTS} components each), random mode uses
  * one random stream per chunk, and nothing sums floating-point values across chunks, so the state
- * (see {@link #stateHash()}) is bit-identical for any number of workers.
+ * (see {@link Inspection#stateHash()}) is bit-identical for any number of workers.
  *
  * <h2>Threads</h2>
  * <ul>
- * <li>{@link #step}, {@link #stepFixed}, {@link #stateHash}, {@link #state}, {@link #forceField},
- * {@link #windX}/{@link #windZ} and the other inspection methods: one <em>stepping thread</em> at a
- * time (the game loop), never concurrently with a step.</li>
+ * <li>{@link #step}, {@link #stepFixed} and the stepping-thread methods of {@link #inspect()} (the state
+ * hash, the animated state, the force field, the wind a plant felt, the clock): one <em>stepping
+ * thread</em> at a time (the game loop), never concurrently with a step.</li>
  * <li>{@link #latestFrame()}: one reader thread (the renderer, the first thread that calls it),
  * concurrently with steps; it never blocks and never sees a frame being written. Another thread that
  * calls it while the reader lives gets an IllegalStateException. {@link #copyLatestFrame(Frame)}:
@@ -100,63 +96,53 @@ public final class Simulation implements AutoCloseable {
     /** The running parts and the fixed-step loop (package tests set its {@code stampFrames}). */
     final StepLoop loop;
     private final DetailCommands detail;
+    private final Inspection inspection;
 
-    private Simulation(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
+    private Simulation(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields) {
         this.world = world;
         this.def = def;
-        loop = new StepLoop(world, def, threads, chunkComponents, fields);
+        loop = new StepLoop(world, def, workers, chunkComponents, fields);
         detail = new DetailCommands(world, loop.commands, loop.state, loop.draw);
+        inspection = new Inspection(loop);
     }
 
     /**
-     * Builds the world of {@code def} (terrain, species, distribution) and a simulation of it, with
-     * the def's worker count (0: the available processors). Build time; allocates; any thread.
-     *
-     * @param def      terrain, species, distributions, flows, field and animation settings
-     * @param baseDir  folder that relative image paths resolve against
-     * @param progress receives the long generation steps
-     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
-     * @throws IOException when an image of the def cannot be read
-     */
-    public static Simulation create(SimulationDef def, Path baseDir, Progress progress) throws IOException {
-        return create(def, baseDir, progress, 0);
-    }
-
-    /**
-     * Like {@link #create(SimulationDef, Path, Progress)} with {@code threads} animation workers, in
-     * [0, 256]; 0 keeps the def's setting (whose 0 means the available processors).
+     * Builds the world of {@code def} (terrain, species, distribution) and a simulation of it with
+     * {@code workers} animation workers, in [0, 256]; 0 keeps the def's setting
+     * ({@link AnimationDef#workers()}, whose 0 means the available processors). Build time; allocates;
+     * any thread.
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param baseDir  folder that relative image paths resolve against; images must lie in its tree
      *                 ({@link ImageSource#folder})
+     * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
-    public static Simulation create(SimulationDef def, Path baseDir, Progress progress, int threads)
+    public static Simulation create(SimulationDef def, Path baseDir, int workers, Progress progress)
             throws IOException {
-        return create(def, ImageSource.folder(Require.nonNull("baseDir", baseDir)), progress, threads);
+        return create(def, ImageSource.folder(Require.nonNull("baseDir", baseDir)), workers, progress);
     }
 
     /**
-     * Like {@link #create(SimulationDef, Path, Progress, int)} with the images the def names read
+     * Like {@link #create(SimulationDef, Path, int, Progress)} with the images the def names read
      * from {@code images} (e.g. {@code org.jecosys.scene.Scene#images()}: the bytes checked when the
-     * scene was loaded, or a game's assets).
+     * scene was read, or a game's assets).
      *
      * @param def      terrain, species, distributions, flows, field and animation settings
      * @param images   where the heightmap and resource images come from
+     * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @param threads  animation workers, in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read or decoded
      */
-    public static Simulation create(SimulationDef def, ImageSource images, Progress progress, int threads)
+    public static Simulation create(SimulationDef def, ImageSource images, int workers, Progress progress)
             throws IOException {
         Require.nonNull("def", def);
-        int t = workers(def, threads);
-        World world = World.build(def, Require.nonNull("images", images), t, Require.nonNull("progress", progress));
-        return new Simulation(world, def, t, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
+        int w = workerCount(def, workers);
+        World world = World.build(def, Require.nonNull("images", images), w, Require.nonNull("progress", progress));
+        return new Simulation(world, def, w, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
     }
 
     /**
@@ -165,46 +151,46 @@ public final class Simulation implements AutoCloseable {
      *
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
-     * @param threads animation workers in [0, 256]; 0 keeps the def's setting
+     * @param workers animation workers in [0, 256]; 0 keeps the def's setting
      * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
      */
-    public static Simulation of(World world, SimulationDef def, int threads) {
-        return of(world, def, threads, ForceFieldFactory.QUADTREE);
+    public static Simulation of(World world, SimulationDef def, int workers) {
+        return of(world, def, workers, ForceFieldFactory.QUADTREE);
     }
 
     /**
      * A simulation of an already built world (which must come from {@code def}) whose force field
      * is built by {@code fields} instead of the paper's quadtree (paper §3, §5.1; see
      * {@link ForceFieldFactory} for the contract). The field gets the terrain's box (the tallest
-     * plant included), {@code def.field()}, this simulation's {@link #windField()} and the plant
+     * plant included), {@code def.field()}, this simulation's wind field ({@link Inspection#windField()}) and the plant
      * positions in the world's plant order. Build time; allocates; any thread.
      *
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
-     * @param threads animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
+     * @param workers animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
      *                available processors)
      * @param fields  builds the force field, called once on this thread
      * @return the simulation at time 0, in the wind of t = 0 (see "Start")
-     * @throws IllegalArgumentException on null arguments, a bad thread count, or a field that does
+     * @throws IllegalArgumentException on null arguments, a bad worker count, or a field that does
      *                                  not hold exactly the world's plants
      */
-    public static Simulation of(World world, SimulationDef def, int threads, ForceFieldFactory fields) {
+    public static Simulation of(World world, SimulationDef def, int workers, ForceFieldFactory fields) {
         Require.nonNull("world", world);
         Require.nonNull("def", def);
         Require.nonNull("fields", fields);
-        return new Simulation(world, def, workers(def, threads), CHUNK_COMPONENTS, fields);
+        return new Simulation(world, def, workerCount(def, workers), CHUNK_COMPONENTS, fields);
     }
 
     /** Like {@link #of} with another chunk size (components), for tests of the chunking itself. */
-    static Simulation of(World world, SimulationDef def, int threads, int chunkComponents) {
+    static Simulation of(World world, SimulationDef def, int workers, int chunkComponents) {
         Require.range("chunkComponents", chunkComponents, 1, Integer.MAX_VALUE);
-        return new Simulation(world, def, workers(def, threads), chunkComponents, ForceFieldFactory.QUADTREE);
+        return new Simulation(world, def, workerCount(def, workers), chunkComponents, ForceFieldFactory.QUADTREE);
     }
 
-    private static int workers(SimulationDef def, int threads) {
-        Require.range("threads", threads, 0, 256);
-        int t = threads != 0 ? threads : def.animation().threads();
-        return t != 0 ? t : Runtime.getRuntime().availableProcessors();
+    private static int workerCount(SimulationDef def, int workers) {
+        Require.range("workers", workers, 0, 256);
+        int w = workers != 0 ? workers : def.animation().workers();
+        return w != 0 ? w : Runtime.getRuntime().availableProcessors();
     }
 
     /**
@@ -212,7 +198,7 @@ public final class Simulation implements AutoCloseable {
      * {@code maxSubSteps}; publishes a frame after each. Any finite {@code dt} is fine: after a long
      * pause (a breakpoint, a suspended game, a slow level load) the simulation runs
      * {@code maxSubSteps} steps, drops the rest of the backlog and counts it in
-     * {@link #droppedSteps()} (the meadow slows down rather than spiral or jump). Stepping thread.
+     * {@link Inspection#droppedSteps()} (the meadow slows down rather than spiral or jump). Stepping thread.
      * No allocation after warm-up.
      *
      * <p>When a game's own code throws during a step (its {@link Camera}, an
@@ -278,24 +264,6 @@ public final class Simulation implements AutoCloseable {
      */
     public boolean removeView(Camera view) {
         return loop.removeView(view);
-    }
-
-    /** {@return the views registered with {@link #addView}, besides each step's camera} Any thread. */
-    public int viewCount() {
-        return loop.viewCount();
-    }
-
-    /** {@return the commands queued and not yet applied, at most {@link #MAX_PENDING_COMMANDS}} Any thread. */
-    public int pendingCommands() {
-        return loop.commands.pending();
-    }
-
-    /**
-     * {@return the flows held or queued: the scene's, agents, blasts and user flows, at most
-     * {@link #MAX_FLOWS}} Any thread.
-     */
-    public int flowCount() {
-        return loop.commands.flowCount();
     }
 
     /**
@@ -476,21 +444,6 @@ public final class Simulation implements AutoCloseable {
         detail.setThinning(start, end, minFraction);
     }
 
-    /** {@return where distance thinning starts, metres (see {@link #setThinning})} Any thread. */
-    public double thinStart() {
-        return loop.draw.thinStart();
-    }
-
-    /** {@return where the kept share reaches {@link #thinMinFraction()}, metres} Any thread. */
-    public double thinEnd() {
-        return loop.draw.thinEnd();
-    }
-
-    /** {@return the share of plants drawn at and beyond {@link #thinEnd()}; 1 when thinning is off} Any thread. */
-    public double thinMinFraction() {
-        return loop.draw.thinMinFraction();
-    }
-
     /**
      * Replaces the level-of-detail distances of one species, for the animation and the drawing alike
      * (one set of bands). Any thread; applied at the next fixed step. Allocates a copy.
@@ -525,16 +478,6 @@ public final class Simulation implements AutoCloseable {
         detail.setLodScale(scale);
     }
 
-    /** {@return the animation mode of the last step} Stepping thread. */
-    public AnimationMode mode() {
-        return loop.mode();
-    }
-
-    /** {@return whether the force field was on in the last step} Stepping thread. */
-    public boolean fieldEnabled() {
-        return loop.fieldEnabled();
-    }
-
     /** {@return the static world} Any thread. */
     public World world() {
         return world;
@@ -556,6 +499,18 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
+     * The read-only inspection of this simulation: its clock and counters, mode, animated state,
+     * force field, wind per plant, state hash and workers (for tools, tests and debug views). Any
+     * thread (each of its methods says which thread may call it); no allocation: always the same
+     * object.
+     *
+     * @return the inspection, live
+     */
+    public Inspection inspect() {
+        return inspection;
+    }
+
+    /**
      * {@return the bend geometry of the components (immutable): what maps the deviations a frame holds
      * to pose coordinates and azimuths}, for {@link Frame#Frame(int, org.jecosys.anim.BendGeometry)}.
      * Any thread; no allocation.
@@ -565,128 +520,13 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * {@return the number of threads that animate: the pool's threads and the stepping thread, which
-     * helps} Any thread.
-     */
-    public int workers() {
-        return loop.pool.workers();
-    }
-
-    /** {@return the number of fixed chunks of plants} Any thread. */
-    public int chunks() {
-        return loop.chunkAnimator.chunks();
-    }
-
-    /** {@return the fixed step, seconds} Any thread. */
-    public double fixedStep() {
-        return loop.fixedStep();
-    }
-
-    /** {@return the number of fixed steps run so far} Stepping thread. */
-    public long steps() {
-        return loop.steps();
-    }
-
-    /** {@return the simulation time, seconds (fixed steps x fixed step)} Stepping thread. */
-    public double time() {
-        return loop.time();
-    }
-
-    /** {@return the number of fixed steps dropped by the sub-step cap so far} Stepping thread. */
-    public long droppedSteps() {
-        return loop.droppedSteps();
-    }
-
-    /**
-     * A read-only view of the animated state (deviations, velocities, outputs, levels), for reading
-     * between steps. Stepping thread; the view allocates nothing.
-     *
-     * @return the live view (not a copy: it changes with every step)
-     */
-    public AnimationView state() {
-        return loop.state;
-    }
-
-    /**
-     * The force field: the paper's quadtree ({@code org.jecosys.field.QuadtreeForceField}) unless
-     * the simulation was built with another {@link ForceFieldFactory}. Its debug view and counters
-     * reflect the update for the next step. Stepping thread; read it, do not add or move plants.
-     *
-     * @return the field
-     */
-    public ForceField forceField() {
-        return loop.field;
-    }
-
-    /** {@return the counters of the field's last update} Stepping thread. */
-    public FieldCounters fieldCounters() {
-        return loop.field.counters();
-    }
-
-    /**
-     * {@return the wind flows} Stepping thread. Add and remove flows through {@link #addFlow} and
-     * {@link #removeFlow}: flows added here directly are not counted in {@link #MAX_FLOWS}, and their
-     * ids are not known to the duplicate check of the command methods.
-     */
-    public WindField windField() {
-        return loop.wind;
-    }
-
-    /**
-     * {@return the wind X (m/s) at plant p's node that the last step used} Stepping thread.
-     *
-     * @param p world plant index, in [0, plantCount())
-     */
-    public float windX(int p) {
-        return loop.sampler.windX[loop.sampled()][p];
-    }
-
-    /**
-     * {@return the wind Z (m/s) at plant p's node that the last step used} Stepping thread.
-     *
-     * @param p world plant index, in [0, plantCount())
-     */
-    public float windZ(int p) {
-        return loop.sampler.windZ[loop.sampled()][p];
-    }
-
-    /**
-     * {@return whether plant p was visible in the last step} Stepping thread.
-     *
-     * @param p world plant index, in [0, plantCount())
-     */
-    public boolean plantVisible(int p) {
-        return loop.sampler.visible[loop.sampled()][p];
-    }
-
-    /** {@return the {@link AnimationState#stateHash()} of the current state} Stepping thread, between steps. */
-    public long stateHash() {
-        return loop.state.stateHash();
-    }
-
-    /** {@return the ids of the pool's worker threads, {@link #workers()} - 1 of them} Allocates; any thread. */
-    public long[] workerThreadIds() {
-        return loop.pool.threadIds();
-    }
-
-    /**
-     * Bytes allocated so far by every worker thread and by the last stepping thread
-     * ({@code com.sun.management.ThreadMXBean#getThreadAllocatedBytes}); -1 when the JVM cannot tell.
-     * Any thread; allocates nothing itself.
-     *
-     * @return bytes, or -1
-     */
-    public long allocatedBytes() {
-        return loop.pool.allocatedBytes(loop.steppingThread());
-    }
-
-    /**
      * Closes the simulation: from now on every step and every command call throws
      * {@code IllegalStateException("the simulation is closed")}; then waits for a step running on
      * another thread to finish the fixed step it is in (that step returns normally), at most
      * {@value #CLOSE_WAIT_MILLIS} ms (a step stuck in a game's own flow or camera completes alone
-     * when that code returns), and stops the workers. Safe from any thread at any time, also from the stepping thread and during a step;
-     * idempotent. Commands still queued are dropped. Allocates nothing unless it has to wait.
+     * when that code returns), and stops the workers. Safe from any thread at any time, also from the
+     * stepping thread and during a step; idempotent. Commands still queued are dropped. Allocates
+     * nothing unless it has to wait.
      */
     @Override
     public void close() {

@@ -69,7 +69,7 @@ final class StepLoop {
      * in the wind of t = 0 where "Start" says so), frames, draw decision and workers. Build time;
      * allocates.
      */
-    StepLoop(World world, SimulationDef def, int threads, int chunkComponents, ForceFieldFactory fields) {
+    StepLoop(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields) {
         AnimationDef ad = def.animation();
         fixedStep = ad.fixedStep();
         maxSubSteps = ad.maxSubSteps();
@@ -117,7 +117,7 @@ final class StepLoop {
         });
         draw.setThinning(def.field().thinStart(), def.field().thinEnd(), def.field().thinMinFraction());
         chunkAnimator = new ChunkAnimator(state, first, plants, chunkComponents, sampler, ad.seed(), draw);
-        pool = new WorkerPool("jecosys-anim", threads, chunkAnimator.chunks(), chunkAnimator);
+        pool = new WorkerPool("jecosys-anim", workers, chunkAnimator.chunks(), chunkAnimator);
     }
 
     /** {@link Simulation#step}: adds {@code dt} to the accumulator and runs the fixed steps it completes. */

@@ -98,18 +98,18 @@ public final class World {
 
     /**
      * Builds the terrain, pre-computes every species and distributes the plants with the
-     * competitive distributor (paper §4.3). Deterministic for the def's seed whatever {@code threads}.
+     * competitive distributor (paper §4.3). Deterministic for the def's seed whatever {@code workers}.
      *
      * @param def      what to build
      * @param baseDir  folder that relative image paths in the def resolve against; images must lie
      *                 in its tree ({@link ImageSource#folder})
-     * @param threads  worker threads for generation, &gt;= 1
+     * @param workers  worker threads for generation, &gt;= 1
      * @param progress receives progress of the long steps
      * @return the world
      * @throws IOException when a heightmap or resource image cannot be read
      */
-    public static World build(SimulationDef def, Path baseDir, int threads, Progress progress) throws IOException {
-        return build(def, baseDir, threads, progress, new CompetitiveDistributor());
+    public static World build(SimulationDef def, Path baseDir, int workers, Progress progress) throws IOException {
+        return build(def, baseDir, workers, progress, new CompetitiveDistributor());
     }
 
     /**
@@ -117,15 +117,15 @@ public final class World {
      *
      * @param def         what to build
      * @param baseDir     folder that relative image paths in the def resolve against
-     * @param threads     worker threads for generation, &gt;= 1
+     * @param workers     worker threads for generation, &gt;= 1
      * @param progress    receives progress of the long steps
      * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
      * @return the world
      * @throws IOException when a heightmap or resource image cannot be read
      */
-    public static World build(SimulationDef def, Path baseDir, int threads, Progress progress,
+    public static World build(SimulationDef def, Path baseDir, int workers, Progress progress,
                               TerrainDistributor distributor) throws IOException {
-        return build(def, baseDir, threads, progress, distributor, ComponentFactories.NONE);
+        return build(def, baseDir, workers, progress, distributor, ComponentFactories.NONE);
     }
 
     /**
@@ -134,25 +134,25 @@ public final class World {
      * {@link org.jecosys.plant.ComponentFactory} instead of the built-in model (extension points,
      * see docs/ARCHITECTURE.md, "Extension points"; paper §4.1, §4.3, §5.1). The way to give a
      * species built in code a component of the
-     * game's own; then {@code Simulation.of(world, def, threads)}. Build time; allocates; calls the
+     * game's own; then {@code Simulation.of(world, def, workers)}. Build time; allocates; calls the
      * distributor and the factories on this thread.
      *
      * @param def         what to build
      * @param baseDir     folder that relative image paths in the def resolve against
-     * @param threads     worker threads for generation, &gt;= 1
+     * @param workers     worker threads for generation, &gt;= 1
      * @param progress    receives progress of the long steps
      * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
      * @param components  user components ({@link ComponentFactories#NONE} for none)
      * @return the world
      * @throws IOException              when a heightmap or resource image cannot be read
-     * @throws IllegalArgumentException on a null argument, fewer than 1 thread, or a factory that
+     * @throws IllegalArgumentException on a null argument, fewer than 1 worker, or a factory that
      *                                  names an unknown species or component or returns a component
      *                                  that does not match its species
      */
-    public static World build(SimulationDef def, Path baseDir, int threads, Progress progress,
+    public static World build(SimulationDef def, Path baseDir, int workers, Progress progress,
                               TerrainDistributor distributor, ComponentFactories components) throws IOException {
         Require.nonNull("baseDir", baseDir);
-        return build(def, ImageSource.folder(baseDir), threads, progress, distributor, components);
+        return build(def, ImageSource.folder(baseDir), workers, progress, distributor, components);
     }
 
     /**
@@ -162,13 +162,13 @@ public final class World {
      *
      * @param def      what to build
      * @param images   where the heightmap and resource images the def names come from
-     * @param threads  worker threads for generation, &gt;= 1
+     * @param workers  worker threads for generation, &gt;= 1
      * @param progress receives progress of the long steps
      * @return the world
      * @throws IOException when a heightmap or resource image cannot be read or decoded
      */
-    public static World build(SimulationDef def, ImageSource images, int threads, Progress progress) throws IOException {
-        return build(def, images, threads, progress, new CompetitiveDistributor(), ComponentFactories.NONE);
+    public static World build(SimulationDef def, ImageSource images, int workers, Progress progress) throws IOException {
+        return build(def, images, workers, progress, new CompetitiveDistributor(), ComponentFactories.NONE);
     }
 
     /**
@@ -177,28 +177,28 @@ public final class World {
      *
      * @param def         what to build
      * @param images      where the heightmap and resource images the def names come from
-     * @param threads     worker threads for generation, &gt;= 1
+     * @param workers     worker threads for generation, &gt;= 1
      * @param progress    receives progress of the long steps
      * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
      * @param components  user components ({@link ComponentFactories#NONE} for none)
      * @return the world
      * @throws IOException              when a heightmap or resource image cannot be read or decoded
-     * @throws IllegalArgumentException on a null argument, fewer than 1 thread, no species, or a
+     * @throws IllegalArgumentException on a null argument, fewer than 1 worker, no species, or a
      *                                  factory that names an unknown species or component or returns a
      *                                  component that does not match its species
      */
-    public static World build(SimulationDef def, ImageSource images, int threads, Progress progress,
+    public static World build(SimulationDef def, ImageSource images, int workers, Progress progress,
                               TerrainDistributor distributor, ComponentFactories components) throws IOException {
         Require.nonNull("def", def);
         Require.nonNull("images", images);
         Require.nonNull("progress", progress);
         Require.nonNull("distributor", distributor);
         Require.nonNull("components", components);
-        if (threads < 1) {
-            throw new IllegalArgumentException("threads must be >= 1, got " + threads);
+        if (workers < 1) {
+            throw new IllegalArgumentException("workers must be >= 1, got " + workers);
         }
         long t0 = System.nanoTime();
-        Terrain terrain = Terrain.build(def.terrain(), images, threads, progress);
+        Terrain terrain = Terrain.build(def.terrain(), images, workers, progress);
         long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
                 progress, components);
@@ -208,7 +208,7 @@ public final class World {
         }
         long t2 = System.nanoTime();
         PlantLayout layout = distributor.distribute(terrain, ids, def.distributions(), def.placements(), def.seed(),
-                threads, progress);
+                workers, progress);
         long t3 = System.nanoTime();
         World w = new World(terrain, plants, layout);
         w.terrainNanos = t1 - t0;

@@ -26,7 +26,7 @@ import org.jecosys.math.Rng;
  * attempts; it then keeps what it placed and the layout carries a warning with the shortfall. Nothing
  * here is an error except bad arguments.
  *
- * <p>Deterministic for a seed whatever {@code threads}: randomness comes only from per-chunk streams
+ * <p>Deterministic for a seed whatever {@code workers}: randomness comes only from per-chunk streams
  * keyed by (round, distribution, chunk), batch sizes depend only on earlier rounds, and conflicts
  * are resolved in the fixed acceptance order. Stateless: one instance may serve several threads.
  * Allocates its working state per call.
@@ -86,12 +86,12 @@ public final class CompetitiveDistributor implements TerrainDistributor {
 
     @Override
     public PlantLayout distribute(Terrain terrain, List<String> speciesIds, List<DistributionDef> distributions,
-                                  List<PlacementDef> placements, long seed, int threads, Progress progress) {
+                                  List<PlacementDef> placements, long seed, int workers, Progress progress) {
         Require.nonNull("terrain", terrain);
         Require.nonNull("speciesIds", speciesIds);
         Require.nonNull("distributions", distributions);
         Require.nonNull("placements", placements);
-        Require.range("threads", threads, 1, 1024);
+        Require.range("workers", workers, 1, 1024);
         Require.nonNull("progress", progress);
         int nd = distributions.size();
         int[] speciesOf = new int[nd];
@@ -114,13 +114,13 @@ public final class CompetitiveDistributor implements TerrainDistributor {
 
         int[] target = new int[nd];
         int[] placed = new int[nd];
-        try (Workers workers = new Workers(threads)) {
+        try (Workers pool = new Workers(workers)) {
             SuitabilityMask[] masks = new SuitabilityMask[nd];
             int maskRes = Math.max(MASK_MIN_RESOLUTION, Math.min(MASK_MAX_RESOLUTION,
                     Math.max(hf.resolution() - 1, Math.max(water.resolution(), nutrients.resolution()))));
             for (int d = 0; d < nd; d++) {
                 DistributionDef def = distributions.get(d);
-                masks[d] = SuitabilityMask.build(def, hf, water, nutrients, maskRes, workers);
+                masks[d] = SuitabilityMask.build(def, hf, water, nutrients, maskRes, pool);
                 long want = def.count() >= 0 ? def.count() : Math.round(def.density() * masks[d].suitableArea());
                 if (want > DistributionDef.MAX_COUNT) {
                     warnings.add("species '" + def.species() + "' (distribution " + d + "): density gives " + want
@@ -134,7 +134,7 @@ public final class CompetitiveDistributor implements TerrainDistributor {
                 }
             }
             Rounds rounds = new Rounds(distributions, speciesOf, masks, target, seed, hf, water, nutrients, grid, out);
-            rounds.run(workers, progress);
+            rounds.run(pool, progress);
             for (int d = 0; d < nd; d++) {
                 placed[d] = rounds.placed(d);
                 if (placed[d] < target[d] && masks[d].suitable > 0) {

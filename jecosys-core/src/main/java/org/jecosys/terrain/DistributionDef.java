@@ -105,62 +105,6 @@ public record DistributionDef(String species, int count, double density, double 
         Require.range("tuftCount", tuftCount, 1, MAX_TUFT_COUNT);
     }
 
-    /**
-     * A distribution without tufts ({@link #DEFAULT_TUFT_SIZE}, {@link #DEFAULT_TUFT_COUNT}): every
-     * candidate drawn on its own. Checks as the canonical constructor does.
-     *
-     * @param species       species id, not null
-     * @param count         exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
-     * @param density       plants per square metre, in [0, {@link #MAX_DENSITY}]
-     * @param minWater      lowest water level, in [0, 1]
-     * @param maxWater      highest water level, in [minWater, 1]
-     * @param minNutrients  lowest nutrient level, in [0, 1]
-     * @param maxNutrients  highest nutrient level, in [minNutrients, 1]
-     * @param maxSlope      steepest ground, radians
-     * @param minAltitude   lowest terrain height, metres
-     * @param maxAltitude   highest terrain height, metres
-     * @param footprint     radius of ground a plant takes, metres
-     * @param waterUse      water level a plant consumes, in [0, 1]
-     * @param nutrientUse   nutrient level a plant consumes, in [0, 1]
-     * @param clumpSize     clump radius, metres, in [{@link #MIN_CLUMP_SIZE}, {@link #MAX_CLUMP_SIZE}]
-     * @param clumpStrength clumping, in [0, 1]
-     * @throws IllegalArgumentException when a component is out of range or species is null
-     */
-    public DistributionDef(String species, int count, double density, double minWater, double maxWater,
-                           double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
-                           double maxAltitude, double footprint, double waterUse, double nutrientUse,
-                           double clumpSize, double clumpStrength) {
-        this(species, count, density, minWater, maxWater, minNutrients, maxNutrients, maxSlope, minAltitude,
-                maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength, DEFAULT_TUFT_SIZE,
-                DEFAULT_TUFT_COUNT);
-    }
-
-    /**
-     * A distribution without clumping ({@link #DEFAULT_CLUMP_SIZE}, {@link #DEFAULT_CLUMP_STRENGTH}) or
-     * tufts: the paper's uniform candidates. Checks as the canonical constructor does.
-     *
-     * @param species      species id, not null
-     * @param count        exact number of plants, in [-1, {@link #MAX_COUNT}]; -1 uses density
-     * @param density      plants per square metre, in [0, {@link #MAX_DENSITY}]
-     * @param minWater     lowest water level, in [0, 1]
-     * @param maxWater     highest water level, in [minWater, 1]
-     * @param minNutrients lowest nutrient level, in [0, 1]
-     * @param maxNutrients highest nutrient level, in [minNutrients, 1]
-     * @param maxSlope     steepest ground, radians
-     * @param minAltitude  lowest terrain height, metres
-     * @param maxAltitude  highest terrain height, metres
-     * @param footprint    radius of ground a plant takes, metres
-     * @param waterUse     water level a plant consumes, in [0, 1]
-     * @param nutrientUse  nutrient level a plant consumes, in [0, 1]
-     * @throws IllegalArgumentException when a component is out of range or species is null
-     */
-    public DistributionDef(String species, int count, double density, double minWater, double maxWater,
-                           double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
-                           double maxAltitude, double footprint, double waterUse, double nutrientUse) {
-        this(species, count, density, minWater, maxWater, minNutrients, maxNutrients, maxSlope, minAltitude,
-                maxAltitude, footprint, waterUse, nutrientUse, DEFAULT_CLUMP_SIZE, DEFAULT_CLUMP_STRENGTH);
-    }
-
     /** Default {@link #count()}: -1, place by {@link #density()}. */
     public static final int DEFAULT_COUNT = -1;
     /** Default {@link #density()}, plants per square metre. */

@@ -72,14 +72,14 @@ public final class Heightfield {
      * {@code heightScale} m. The same def gives the same heights for any thread count.
      *
      * @param def      size, resolution, seed, relief height and roughness
-     * @param threads  worker threads, at least 1
+     * @param workers  worker threads, at least 1
      * @param progress told "terrain" progress in rows; called on the calling thread
      * @return a new heightfield (allocates its height and normal arrays)
      * @throws IllegalArgumentException naming a null def/progress or a bad thread count
      */
-    public static Heightfield generate(TerrainDef def, int threads, Progress progress) {
+    public static Heightfield generate(TerrainDef def, int workers, Progress progress) {
         Require.nonNull("def", def);
-        Require.range("threads", threads, 1, 1024);
+        Require.range("workers", workers, 1, 1024);
         Require.nonNull("progress", progress);
         int res = def.resolution();
         double sx = def.sizeX();
@@ -93,12 +93,12 @@ public final class Heightfield {
         float[] raw = new float[res * res];
         int rowsPerBand = (res + ROW_BANDS - 1) / ROW_BANDS;
         int bands = (res + rowsPerBand - 1) / rowsPerBand;
-        try (Workers workers = new Workers(threads)) {
+        try (Workers pool = new Workers(workers)) {
             int bandsPerReport = Math.max(1, bands / 8);
             for (int b0 = 0; b0 < bands; b0 += bandsPerReport) {
                 int first = b0;
                 int count = Math.min(bandsPerReport, bands - b0);
-                workers.run(count, c -> {
+                pool.run(count, c -> {
                     int j0 = (first + c) * rowsPerBand;
                     int j1 = Math.min(res, j0 + rowsPerBand);
                     for (int j = j0; j < j1; j++) {

@@ -46,14 +46,14 @@ public final class Terrain {
      * @param def      the terrain's size, relief and resource maps
      * @param baseDir  directory relative image paths are resolved against (the scene file's folder);
      *                 may be null when the def names no image
-     * @param threads  worker threads, at least 1
+     * @param workers  worker threads, at least 1
      * @param progress told "terrain" progress (in thousandths), on the calling thread
      * @return a new terrain
      * @throws IOException              when an image cannot be read
      * @throws IllegalArgumentException on null arguments or an unreadable image
      */
-    public static Terrain build(TerrainDef def, Path baseDir, int threads, Progress progress) throws IOException {
-        return build(def, baseDir == null ? ImageSource.NONE : ImageSource.folder(baseDir), threads, progress);
+    public static Terrain build(TerrainDef def, Path baseDir, int workers, Progress progress) throws IOException {
+        return build(def, baseDir == null ? ImageSource.NONE : ImageSource.folder(baseDir), workers, progress);
     }
 
     /**
@@ -65,21 +65,21 @@ public final class Terrain {
      *
      * @param def      the terrain's size, relief and resource maps
      * @param images   where the images the def names come from ({@link ImageSource#NONE} when none)
-     * @param threads  worker threads, at least 1
+     * @param workers  worker threads, at least 1
      * @param progress told "terrain" progress (in thousandths), on the calling thread
      * @return a new terrain
      * @throws IOException              when an image cannot be read, or decoding it would not fit
      *                                  in the heap
      * @throws IllegalArgumentException on null arguments or a file that is not an image
      */
-    public static Terrain build(TerrainDef def, ImageSource images, int threads, Progress progress) throws IOException {
+    public static Terrain build(TerrainDef def, ImageSource images, int workers, Progress progress) throws IOException {
         Require.nonNull("def", def);
         Require.nonNull("images", images);
         Require.nonNull("progress", progress);
         // one "terrain" bar: the heightfield is the first 80 %, each map 10 %
         Progress relief = (step, done, total) -> progress.report("terrain", done * 800 / total, 1000);
         Heightfield hf = def.heightmap() == null
-                ? Heightfield.generate(def, threads, relief)
+                ? Heightfield.generate(def, workers, relief)
                 : Heightfield.fromImage(def, images, relief);
         ResourceMap w = ResourceMap.build(def.water(), hf, Rng.mix(def.seed() ^ WATER_SALT), images);
         progress.report("terrain", 900, 1000);

@@ -78,34 +78,6 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         Require.range("turbulence", turbulence, 0, MAX_TURBULENCE);
     }
 
-    /**
-     * A def with the default gust strength and no turbulence ({@link #DEFAULT_GUST_STRENGTH},
-     * {@link #DEFAULT_TURBULENCE}): the components before those two, as the canonical constructor
-     * checks them. Any thread; allocates.
-     *
-     * @param id              not empty
-     * @param kind            not null
-     * @param enabled         whether it starts enabled
-     * @param x               centre X, metres
-     * @param z               centre Z, metres
-     * @param strength        m/s or m^2/s (see {@link FlowKind})
-     * @param direction       radians
-     * @param coreRadius      metres
-     * @param influenceRadius metres, or +Infinity
-     * @param activation      not null
-     * @param motion          not null
-     * @param noiseScale      metres
-     * @param noiseFrequency  Hz or drops per second per m^2
-     * @param seed            any value
-     * @throws IllegalArgumentException when a component is null, empty or out of range
-     */
-    public FlowDef(String id, FlowKind kind, boolean enabled, double x, double z, double strength, double direction,
-                   double coreRadius, double influenceRadius, ActivationDef activation, MotionDef motion,
-                   double noiseScale, double noiseFrequency, long seed) {
-        this(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius, activation, motion, noiseScale,
-                noiseFrequency, seed, DEFAULT_GUST_STRENGTH, DEFAULT_TURBULENCE);
-    }
-
     /** Default {@link #gustStrength()}: gusts vary the speed by up to about half the mean (dimensionless). */
     public static final double DEFAULT_GUST_STRENGTH = 0.5;
     /** Largest {@link #gustStrength()} (dimensionless). */
@@ -156,7 +128,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
     public static FlowDef uniform(String id, double speed, double direction) {
         return new FlowDef(id, FlowKind.UNIFORM, true, 0, 0, speed, direction, DEFAULT_CORE_RADIUS,
                 Double.POSITIVE_INFINITY, ActivationDef.ALWAYS, MotionDef.FIXED, DEFAULT_NOISE_SCALE,
-                DEFAULT_NOISE_FREQUENCY, 0);
+                DEFAULT_NOISE_FREQUENCY, 0, DEFAULT_GUST_STRENGTH, DEFAULT_TURBULENCE);
     }
 
     /**
@@ -172,7 +144,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
     public static FlowDef point(String id, FlowKind kind, double x, double z, double strength) {
         return new FlowDef(id, kind, true, x, z, strength, 0, DEFAULT_CORE_RADIUS,
                 Double.POSITIVE_INFINITY, ActivationDef.ALWAYS, MotionDef.FIXED, DEFAULT_NOISE_SCALE,
-                DEFAULT_NOISE_FREQUENCY, 0);
+                DEFAULT_NOISE_FREQUENCY, 0, DEFAULT_GUST_STRENGTH, DEFAULT_TURBULENCE);
     }
 
     /** Default {@link #enabled()}: the flow starts enabled. */

@@ -210,7 +210,8 @@ public final class WindField {
         ActivationDef act = new ActivationDef(time, Require.positive("duration", duration), 0, 0);
         FlowDef def = new FlowDef(id, FlowKind.BLAST, true, x, z, Require.positive("strength", strength), 0,
                 FlowDef.DEFAULT_CORE_RADIUS, Double.POSITIVE_INFINITY, act, MotionDef.FIXED,
-                FlowDef.DEFAULT_NOISE_SCALE, FlowDef.DEFAULT_NOISE_FREQUENCY, 0);
+                FlowDef.DEFAULT_NOISE_SCALE, FlowDef.DEFAULT_NOISE_FREQUENCY, 0, FlowDef.DEFAULT_GUST_STRENGTH,
+                FlowDef.DEFAULT_TURBULENCE);
         return add(WindSource.of(def), true);
     }
 
@@ -236,7 +237,7 @@ public final class WindField {
         ActivationDef act = new ActivationDef(time, duration, 0, 0);
         FlowDef def = new FlowDef(id, FlowKind.RAIN, true, x, z, Require.positive("strength", strength), 0,
                 FlowDef.DEFAULT_CORE_RADIUS, Require.positive("radius", radius), act, MotionDef.FIXED,
-                spacing, rate, seed);
+                spacing, rate, seed, FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE);
         return add(WindSource.of(def), true);
     }
 

@@ -39,7 +39,8 @@ final class Meadows {
                 .baseWidth(0.006).tipWidth(0.0015).curvature(0.3).tilt(0.25).mass(4e-4).stiffness(0.2)
                 .dragArea(0.002).lodSegments(4, 2, 2).build();
         return SpeciesDef.builder(SPECIES).name("tuft").maxBend(1.2).lods(SpeciesLibrary.table3Lods())
-                .variation(new VariationDef(2, 0.1, 0.1, 0.2, 0.1)).component(leaf).build();
+                .variation(VariationDef.builder().variants(2).length(0.1).width(0.1).curvature(0.2).tilt(0.1).build())
+                        .component(leaf).build();
     }
 
     /**
@@ -49,7 +50,7 @@ final class Meadows {
      */
     static SimulationDef def(List<PlacementDef> placements, List<DistributionDef> distributions, List<FlowDef> flows) {
         return new SimulationDef(TerrainDef.flat(), List.of(tuft()), distributions, placements, flows,
-                new ForceFieldDef(true, 1, 10, List.of()),
+                ForceFieldDef.builder().maxObjectsPerNode(1).maxDepth(10).lodDistances().build(),
                 new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4, 2, 1), 7);
     }
 
@@ -68,7 +69,10 @@ final class Meadows {
 
     /** High above the south edge, looking down over the whole terrain. */
     static ViewCamera overview() {
-        return new ViewCamera().setPosition(0, 30, 38).setOrientation(0, -0.75);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 30, 38);
+        camera.setOrientation(0, -0.75);
+        return camera;
     }
 
     /** The world plant standing nearest (x, z) (the world orders plants spatially, not as placed). */
@@ -87,7 +91,7 @@ final class Meadows {
 
     /** The largest deviation magnitude (metres) of plant p's components. */
     static double deviation(Simulation sim, int p) {
-        AnimationView s = sim.state();
+        AnimationView s = sim.inspect().state();
         double max = 0;
         for (int c = s.firstComponent(p); c < s.firstComponent(p + 1); c++) {
             max = Math.max(max, Math.hypot(s.deviationX(c), s.deviationZ(c)));

@@ -25,7 +25,7 @@ class UserDistributorTest {
     static final class RowDistributor implements TerrainDistributor {
         @Override
         public PlantLayout distribute(Terrain terrain, List<String> speciesIds, List<DistributionDef> distributions,
-                                      List<PlacementDef> placements, long seed, int threads, Progress progress) {
+                                      List<PlacementDef> placements, long seed, int workers, Progress progress) {
             PlantLayout.Builder b = new PlantLayout.Builder();
             for (PlacementDef p : placements) {
                 add(b, terrain, p.x(), p.z(), speciesIds.indexOf(p.species()), -1, seed + b.size());
@@ -83,8 +83,8 @@ class UserDistributorTest {
             }
             Meadows.run(sim, Meadows.overview(), 1);
             for (int p = 0; p < world.plantCount(); p++) {
-                assertTrue(sim.plantVisible(p));
-                assertEquals(2.5, sim.windX(p), 1e-6);
+                assertTrue(sim.inspect().plantVisible(p));
+                assertEquals(2.5, sim.inspect().windX(p), 1e-6);
                 assertTrue(Meadows.deviation(sim, p) > 1e-3, "plant " + p + " at (" + world.plantX(p) + ", "
                         + world.plantZ(p) + ") bends in the wind");
                 assertEquals(start[p], Meadows.deviation(sim, p), 1e-5 * start[p], "plant " + p + " starts at the "

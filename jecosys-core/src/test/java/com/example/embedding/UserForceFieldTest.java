@@ -186,7 +186,9 @@ class UserForceFieldTest {
         SimulationDef def = calm();
         World world = Meadows.world(def);
         // low, near the south-west corner, looking south (+Z) out of the meadow: most of it is behind
-        ViewCamera camera = new ViewCamera().setPosition(-19, 1.7, 19).setOrientation(Math.PI, 0);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(-19, 1.7, 19);
+        camera.setOrientation(Math.PI, 0);
         FieldBounds[] seen = new FieldBounds[1];
         UniformField[] made = new UniformField[1];
         ForceFieldFactory uniform = (bounds, fieldDef, wind, xs, zs) -> {
@@ -196,34 +198,36 @@ class UserForceFieldTest {
         };
         try (Simulation sim = Simulation.of(world, def, 0, uniform);
              Simulation reference = Simulation.of(world, def, 0)) {
-            assertSame(made[0], sim.forceField());
+            assertSame(made[0], sim.inspect().forceField());
             assertEquals(-20, seen[0].minX(), 1e-9);
             assertEquals(20, seen[0].maxZ(), 1e-9);
             assertTrue(seen[0].maxY() > seen[0].minY(), "the box includes the plants' height");
-            long rest = sim.stateHash();
+            long rest = sim.inspect().stateHash();
             Meadows.run(sim, camera, 1);
             Meadows.run(reference, camera, 1);
-            assertEquals(sim.steps() + 2, made[0].updates, "updated at t = 0, then once per step, one step ahead");
-            assertSame(FieldCounters.NONE, sim.fieldCounters());
-            assertEquals(0, sim.forceField().debugView().nodeCount());
-            assertNotEquals(rest, sim.stateHash(), "the field's wind moves the meadow");
+            assertEquals(sim.inspect().steps() + 2, made[0].updates,
+                    "updated at t = 0, then once per step, one step ahead");
+            assertSame(FieldCounters.NONE, sim.inspect().fieldCounters());
+            assertEquals(0, sim.inspect().forceField().debugView().nodeCount());
+            assertNotEquals(rest, sim.inspect().stateHash(), "the field's wind moves the meadow");
             int invisibleInReference = 0;
             for (int p = 0; p < world.plantCount(); p++) {
-                assertTrue(sim.plantVisible(p));
-                assertEquals(3, sim.windX(p), 0);
-                assertEquals(-1, sim.windZ(p), 0);
+                assertTrue(sim.inspect().plantVisible(p));
+                assertEquals(3, sim.inspect().windX(p), 0);
+                assertEquals(-1, sim.inspect().windZ(p), 0);
                 assertTrue(Meadows.deviation(sim, p) > 1e-3, "plant " + p + " bends in the uniform wind");
                 assertEquals(0, Meadows.deviation(reference, p), 0, "no wind in the scene itself");
-                invisibleInReference += reference.plantVisible(p) ? 0 : 1;
+                invisibleInReference += reference.inspect().plantVisible(p) ? 0 : 1;
             }
             assertTrue(invisibleInReference > 0, "the quadtree culls plants behind the camera; this field does not");
             // the plants bend downwind: along (3, -1)
             int p = Meadows.plantAt(world, 10, -10);
             double dx = 0;
             double dz = 0;
-            for (int c = sim.state().firstComponent(p); c < sim.state().firstComponent(p + 1); c++) {
-                dx += sim.state().deviationX(c);
-                dz += sim.state().deviationZ(c);
+            int end = sim.inspect().state().firstComponent(p + 1);
+            for (int c = sim.inspect().state().firstComponent(p); c < end; c++) {
+                dx += sim.inspect().state().deviationX(c);
+                dz += sim.inspect().state().deviationZ(c);
             }
             assertTrue(dx > 0 && dz < 0 && dx > 2 * -dz, "deviation (" + dx + ", " + dz + ") follows the wind");
         }
@@ -238,12 +242,12 @@ class UserForceFieldTest {
                 new DraughtField(ForceFieldFactory.QUADTREE.create(bounds, fieldDef, wind, xs, zs), 2);
         try (Simulation sim = Simulation.of(world, def, 0, draught)) {
             Meadows.run(sim, camera, 1);
-            assertTrue(sim.fieldCounters().nodes() > 1, "the quadtree's counters come through");
-            assertTrue(sim.forceField().debugView().nodeCount() > 1);
+            assertTrue(sim.inspect().fieldCounters().nodes() > 1, "the quadtree's counters come through");
+            assertTrue(sim.inspect().forceField().debugView().nodeCount() > 1);
             for (int p = 0; p < world.plantCount(); p++) {
-                assertTrue(sim.plantVisible(p));
-                assertEquals(0, sim.windX(p), 0);
-                assertEquals(2, sim.windZ(p), 0);
+                assertTrue(sim.inspect().plantVisible(p));
+                assertEquals(0, sim.inspect().windX(p), 0);
+                assertEquals(2, sim.inspect().windZ(p), 0);
                 assertTrue(Meadows.deviation(sim, p) > 1e-4);
             }
         }

@@ -79,7 +79,7 @@ class UserPlantComponentTest {
         assertEquals(plain.plants().species().get(0).component(0).stiffness() / 4, model.component(0).stiffness(), 0);
         ViewCamera camera = Meadows.overview();
         try (Simulation a = Simulation.of(plain, def, 0); Simulation b = Simulation.of(soft, def, 0)) {
-            AnimationView view = b.state();
+            AnimationView view = b.inspect().state();
             assertEquals(model.component(0).stiffness(), view.kinds().stiffness(view.kind(0)), 0,
                     "the animation takes the spring constant from the user component");
             Meadows.run(a, camera, 4);
@@ -108,7 +108,7 @@ class UserPlantComponentTest {
             }
         }
         try (Simulation sim = Simulation.of(w, def, 0)) {
-            AnimationView view = sim.state();
+            AnimationView view = sim.inspect().state();
             for (int c = 0; c < view.componentCount(); c++) {
                 assertEquals(m.component(0).length(0), view.kinds().length(view.kind(c)), 1e-6);
             }

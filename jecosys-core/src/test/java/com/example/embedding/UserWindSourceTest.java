@@ -74,37 +74,37 @@ class UserWindSourceTest {
             int far = Meadows.plantAt(world, 10, 0);
             int far2 = Meadows.plantAt(world, 0, -12);
             for (int p = 0; p < world.plantCount(); p++) {
-                assertTrue(sim.plantVisible(p), "plant " + p + " is in view");
+                assertTrue(sim.inspect().plantVisible(p), "plant " + p + " is in view");
             }
-            assertEquals(6, sim.windX(near), 1e-6);
-            assertEquals(0, sim.windZ(near), 0);
-            assertEquals(6, sim.windX(near2), 1e-6);
-            assertEquals(0, sim.windX(far), 0);
-            assertEquals(0, sim.windX(far2), 0);
+            assertEquals(6, sim.inspect().windX(near), 1e-6);
+            assertEquals(0, sim.inspect().windZ(near), 0);
+            assertEquals(6, sim.inspect().windX(near2), 1e-6);
+            assertEquals(0, sim.inspect().windX(far), 0);
+            assertEquals(0, sim.inspect().windX(far2), 0);
             assertTrue(Meadows.deviation(sim, near) > 1e-3, "near plant bends: " + Meadows.deviation(sim, near));
             assertTrue(Meadows.deviation(sim, near2) > 1e-3);
             assertEquals(0, Meadows.deviation(sim, far), 0, "far plant stays at rest");
             assertEquals(0, Meadows.deviation(sim, far2), 0);
             // once per fixed step; the field runs one step ahead of the animation (Simulation's class comment)
-            assertEquals(sim.steps() + 1, fan.advances, "the field advances user flows once per fixed step");
-            assertEquals(1, sim.windField().activeCount());
+            assertEquals(sim.inspect().steps() + 1, fan.advances, "the field advances user flows once per fixed step");
+            assertEquals(1, sim.inspect().windField().activeCount());
 
             double bent = Meadows.deviation(sim, near);
             sim.setFlowEnabled(fan, false);
             Meadows.run(sim, camera, 3);
-            assertEquals(0, sim.windX(near), 0, "a disabled user flow blows no more");
+            assertEquals(0, sim.inspect().windX(near), 0, "a disabled user flow blows no more");
             assertTrue(Meadows.deviation(sim, near) < 0.01 * bent, "and the plant swings back");
 
             sim.setFlowEnabled(fan, true);
             sim.moveAgent(fan, 10, 0);
             Meadows.run(sim, camera, 2);
-            assertEquals(0, sim.windX(near), 0);
-            assertEquals(6, sim.windX(far), 1e-6, "moved like an agent");
+            assertEquals(0, sim.inspect().windX(near), 0);
+            assertEquals(6, sim.inspect().windX(far), 1e-6, "moved like an agent");
             assertTrue(Meadows.deviation(sim, far) > 1e-3);
 
             sim.removeFlow(fan);
             sim.step(1.0 / 60, camera);
-            assertEquals(-1, sim.windField().indexOf("fan"));
+            assertEquals(-1, sim.inspect().windField().indexOf("fan"));
         }
     }
 
@@ -124,7 +124,7 @@ class UserWindSourceTest {
                 WindSource s = run == 0 ? sim.addFlow(builtIn) : sim.addFlow(new UserSource("src", -9, 0, 30, 5, act));
                 assertEquals(run == 0 ? FlowKind.SOURCE : null, s.kind());
                 Meadows.run(sim, camera, 1.5);
-                hashes[run] = sim.stateHash();
+                hashes[run] = sim.inspect().stateHash();
                 deviation[run] = Meadows.deviation(sim, Meadows.plantAt(world, -10, 0));
             }
         }
@@ -132,7 +132,7 @@ class UserWindSourceTest {
         assertEquals(hashes[0], hashes[1], "bit-identical state: same sums, activation ramp and radius");
         try (Simulation calm = Simulation.of(world, def, 0)) {
             Meadows.run(calm, camera, 1.5);
-            assertNotEquals(hashes[0], calm.stateHash(), "and the source does change the state");
+            assertNotEquals(hashes[0], calm.inspect().stateHash(), "and the source does change the state");
         }
     }
 

@@ -36,21 +36,25 @@ class AllocationTest {
                 new FlowDef("g", FlowKind.GUST, true, 0, 0, 4, 1.0, 0.5, Double.POSITIVE_INFINITY,
                         ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1, 0.6, 0.5),
                 new FlowDef("v", FlowKind.VORTEX, true, 50, 50, 20, 0, 0.5, 40,
-                        new ActivationDef(0.5, 100, 1, 1), path, 8, 0.25, 0),
+                        new ActivationDef(0.5, 100, 1, 1), path, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 new FlowDef("s", FlowKind.SOURCE, true, 30, 70, 10, 0, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, advected, 8, 0.25, 0),
+                        ActivationDef.ALWAYS, advected, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 new FlowDef("r", FlowKind.RAIN, true, 100, 100, 2, 0, 0.2, 30,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 1, 2, 3)));
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 1, 2, 3, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE)));
         wind.blast("boom", 120, 120, 30, 1000);
         var agent = wind.attachAgent(FlowDef.point("agent", FlowKind.SOURCE, 10, 10, 5));
         Rng rng = new Rng(1);
         int n = 20_000;
-        QuadtreeForceField f = new QuadtreeForceField(new ForceFieldDef(true, 8, 10, List.of(15.0, 30.0)),
+        QuadtreeForceField f = new QuadtreeForceField(ForceFieldDef.builder().maxDepth(10).build(),
                 0, 0, 200, 200, 0, 2, wind, n);
         for (int i = 0; i < n; i++) {
             f.addPlant(rng.nextDouble(0, 200), rng.nextDouble(0, 200));
         }
-        ViewCamera cam = new ViewCamera().setLens(1.0, 1.7, 0.1, 300);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(1.0, 1.7, 0.1, 300);
         float[] wx = new float[n];
         float[] wz = new float[n];
         boolean[] vis = new boolean[n];
@@ -65,7 +69,8 @@ class AllocationTest {
                 double a = k * 0.01;
                 wind.advance(1.0 / 60);
                 agent.setCentre(100 + 50 * Math.cos(a), 100 + 50 * Math.sin(a));
-                cam.setPosition(100 + 80 * Math.cos(a), 1.7, 100 + 80 * Math.sin(a)).setOrientation(a * 3, -0.05);
+                cam.setPosition(100 + 80 * Math.cos(a), 1.7, 100 + 80 * Math.sin(a));
+                cam.setOrientation(a * 3, -0.05);
                 f.update(cam);
                 f.gather(0, n, wx, wz, vis);
                 f.movePlant(k % n, rng.nextDouble(0, 200), rng.nextDouble(0, 200));

@@ -44,12 +44,16 @@ class FieldInterpolationTest {
             xs[i] = (float) rng.nextDouble(0, SIZE);
             zs[i] = (float) rng.nextDouble(0, SIZE);
         }
-        return QuadtreeForceField.build(new ForceFieldDef(true, 8, 10, List.of(15.0, 40.0)), 0, 0, SIZE, SIZE, 0, 1,
+        return QuadtreeForceField.build(ForceFieldDef.builder().maxDepth(10).lodDistances(15.0, 40.0).build(), 0, 0,
+                SIZE, SIZE, 0, 1,
                 wind, xs, zs);
     }
 
     static ViewCamera camera() {
-        return new ViewCamera().setPosition(10, 2, 10).setOrientation(Math.PI * 0.75, -0.1);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(10, 2, 10);
+        camera.setOrientation(Math.PI * 0.75, -0.1);
+        return camera;
     }
 
     @Test

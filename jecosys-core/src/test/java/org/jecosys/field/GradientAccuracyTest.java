@@ -46,7 +46,10 @@ class GradientAccuracyTest {
             zs[i] = (float) rng.nextDouble(0, AREA);
         }
         QuadtreeForceField f = QuadtreeForceField.build(ForceFieldDef.defaults(), 0, 0, 100, 100, 0, 1, wind, xs, zs);
-        f.update(new ViewCamera().setPosition(AREA / 2, 3, AREA / 2 + cameraDistance).setOrientation(0, -0.05));
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(AREA / 2, 3, AREA / 2 + cameraDistance);
+        camera.setOrientation(0, -0.05);
+        f.update(camera);
         Vector2d got = new Vector2d();
         Vector2d want = new Vector2d();
         double plantError = 0;

@@ -62,14 +62,15 @@ class QuadtreeForceFieldTest {
         FieldDebugView dbg = f.debugView();
         Quadtree t = f.tree();
         Rng rng = new Rng(99);
-        ViewCamera cam = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 120);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 120);
         Matrix4f vp = new Matrix4f();
         int hidden = 0;
         for (int k = 0; k < 40; k++) {
             double ex = rng.nextDouble(0, SIZE);
             double ez = rng.nextDouble(0, SIZE);
-            cam.setPosition(ex, rng.nextDouble(1.5, 30), ez)
-                    .setOrientation(rng.nextDouble(-Math.PI, Math.PI), rng.nextDouble(-1.2, 1.2));
+            cam.setPosition(ex, rng.nextDouble(1.5, 30), ez);
+            cam.setOrientation(rng.nextDouble(-Math.PI, Math.PI), rng.nextDouble(-1.2, 1.2));
             f.update(cam);
             cam.viewProjection(vp);
             for (int n = 0; n < dbg.nodeCount(); n++) {
@@ -90,9 +91,11 @@ class QuadtreeForceFieldTest {
 
     @Test
     void withoutLodDistancesEffectiveNodesAreTheVisibleLeaves() {
-        ForceFieldDef def = new ForceFieldDef(true, 8, 10, List.of());
+        ForceFieldDef def = ForceFieldDef.builder().maxDepth(10).lodDistances().build();
         QuadtreeForceField f = randomField(def, someWind(), 30_000, 8);
-        ViewCamera cam = new ViewCamera().setPosition(100, 2, 190).setOrientation(0.2, -0.1);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(100, 2, 190);
+        cam.setOrientation(0.2, -0.1);
         f.update(cam);
         FieldCounters c = f.counters();
         FieldDebugView dbg = f.debugView();
@@ -126,11 +129,16 @@ class QuadtreeForceFieldTest {
             xs[i] = (i % g) + 0.5f;
             zs[i] = (i / g) + 0.5f;
         }
-        return QuadtreeForceField.build(new ForceFieldDef(true, 1, 6, lod), 0, 0, g, g, 0, 0, wind, xs, zs);
+        return QuadtreeForceField.build(ForceFieldDef.builder().maxObjectsPerNode(1).maxDepth(6).lodDistances(lod)
+                .build(), 0, 0, g, g, 0, 0, wind, xs, zs);
     }
 
     static ViewCamera above() {
-        return new ViewCamera().setPosition(32, 200, 32).setOrientation(0, -Math.PI / 2).setLens(1.2, 1, 1, 1000);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(32, 200, 32);
+        camera.setOrientation(0, -Math.PI / 2);
+        camera.setLens(1.2, 1, 1, 1000);
+        return camera;
     }
 
     @Test
@@ -166,9 +174,14 @@ class QuadtreeForceFieldTest {
 
     @Test
     void countersMatchTheCollapsedSubtreesForAViewerInsideTheScene() {
-        ForceFieldDef def = new ForceFieldDef(true, 4, 10, List.of(10.0, 25.0, 50.0));
+        ForceFieldDef def = ForceFieldDef.builder().maxObjectsPerNode(4).maxDepth(10).lodDistances(10.0, 25.0, 50.0)
+                .build();
         QuadtreeForceField f = randomField(def, someWind(), 50_000, 21);
-        f.update(new ViewCamera().setPosition(60, 1.7, 150).setOrientation(0.5, 0).setLens(1.0, 1.6, 0.1, 400));
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(60, 1.7, 150);
+        camera.setOrientation(0.5, 0);
+        camera.setLens(1.0, 1.6, 0.1, 400);
+        f.update(camera);
         FieldCounters c = f.counters();
         FieldDebugView dbg = f.debugView();
         int[] leavesPerRep = new int[dbg.nodeCount()];
@@ -199,9 +212,12 @@ class QuadtreeForceFieldTest {
     void plantsGetTheWindOfTheirEffectiveNodeAtItsCentreOfGravityRefinedByItsGradient() {
         WindField wind = someWind();
         wind.advance(0.5);
-        ForceFieldDef def = new ForceFieldDef(true, 6, 10, List.of(20.0, 60.0));
+        ForceFieldDef def = ForceFieldDef.builder().maxObjectsPerNode(6).maxDepth(10).lodDistances(20.0, 60.0).build();
         QuadtreeForceField f = randomField(def, wind, 20_000, 2);
-        f.update(new ViewCamera().setPosition(20, 3, 20).setOrientation(Math.PI * 0.75, -0.05));
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(20, 3, 20);
+        camera.setOrientation(Math.PI * 0.75, -0.05);
+        f.update(camera);
         Vector2d got = new Vector2d();
         Vector2d want = new Vector2d();
         Quadtree t = f.tree();
@@ -247,7 +263,9 @@ class QuadtreeForceFieldTest {
     @Test
     void invisiblePlantsKeepTheirLastWind() {
         QuadtreeForceField f = randomField(ForceFieldDef.defaults(), someWind(), 5000, 4);
-        ViewCamera cam = new ViewCamera().setPosition(100, 2, 100).setOrientation(0, 0);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(100, 2, 100);
+        cam.setOrientation(0, 0);
         int n = f.plantCount();
         float[] wx = new float[n];
         float[] wz = new float[n];
@@ -272,9 +290,11 @@ class QuadtreeForceFieldTest {
 
     @Test
     void aDisabledFieldEvaluatesNothingAndGivesZeroWind() {
-        ForceFieldDef def = new ForceFieldDef(false, 8, 8, List.of(15.0));
+        ForceFieldDef def = ForceFieldDef.builder().enabled(false).lodDistances(15.0).build();
         QuadtreeForceField f = randomField(def, someWind(), 5000, 4);
-        f.update(new ViewCamera().setPosition(100, 2, 100));
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(100, 2, 100);
+        f.update(camera);
         assertEquals(0, f.counters().flowEvaluations());
         assertTrue(f.counters().effectiveNodes() > 0);
         Vector2d v = new Vector2d();
@@ -286,7 +306,9 @@ class QuadtreeForceFieldTest {
     @Test
     void plantsAddedAndMovedAfterUpdatesAreServed() {
         QuadtreeForceField f = randomField(ForceFieldDef.defaults(), someWind(), 100, 4);
-        ViewCamera cam = new ViewCamera().setPosition(100, 2, 100).setOrientation(0, -0.2);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(100, 2, 100);
+        cam.setOrientation(0, -0.2);
         f.update(cam);
         Rng rng = new Rng(3);
         for (int i = 0; i < 20_000; i++) {
@@ -311,12 +333,13 @@ class QuadtreeForceFieldTest {
         int plants = reuse.plantCount();
         float[][] w = new float[4][plants + 1];
         boolean[][] vis = new boolean[2][plants + 1];
-        ViewCamera cam = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 300);
+        ViewCamera cam = new ViewCamera();
+        cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 300);
         for (int k = 0; k < 120; k++) {
             // still stretches (the same cut) and moves (a new cut), the wind blowing on
             int stretch = k / 10;
-            cam.setPosition(40 + 7 * stretch + (k % 10 < 5 ? 0 : 0.01 * k), 2, 150 - 5 * stretch)
-                    .setOrientation(0.2 * stretch, -0.15);
+            cam.setPosition(40 + 7 * stretch + (k % 10 < 5 ? 0 : 0.01 * k), 2, 150 - 5 * stretch);
+            cam.setOrientation(0.2 * stretch, -0.15);
             if (k == 60) {
                 reuse.addPlant(100, 100);
                 fresh.addPlant(100, 100);

@@ -37,13 +37,14 @@ public class FieldUpdateBenchmark {
 
     private QuadtreeForceField field;
     private WindField wind;
-    private final ViewCamera camera = new ViewCamera().setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
+    private final ViewCamera camera = new ViewCamera();
     private double size;
     private int frame;
 
     @Setup
     public void setup() {
         size = Math.sqrt(plants / 4.0);
+        camera.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 500);
         wind = WindField.of(List.of(FlowDef.uniform("breeze", 2, 0.3),
                 FlowDef.point("vortex", FlowKind.VORTEX, size / 3, size / 3, 40),
                 FlowDef.point("source", FlowKind.SOURCE, size / 2, size / 4, 20)));
@@ -57,8 +58,8 @@ public class FieldUpdateBenchmark {
     @Benchmark
     public int update() {
         double a = ++frame * 0.005;
-        camera.setPosition(size / 2 + size * 0.3 * Math.cos(a), 1.7, size / 2 + size * 0.3 * Math.sin(a))
-                .setOrientation(2 * a, -0.1);
+        camera.setPosition(size / 2 + size * 0.3 * Math.cos(a), 1.7, size / 2 + size * 0.3 * Math.sin(a));
+        camera.setOrientation(2 * a, -0.1);
         wind.advance(1.0 / 60);
         field.update(camera);
         return field.counters().flowEvaluations();

@@ -41,7 +41,8 @@ public class FlowEvaluationBenchmark {
     public void setup() {
         wind = WindField.of(List.of(FlowDef.uniform("breeze", 2, 0.3),
                 new FlowDef("gust", FlowKind.GUST, true, 0, 0, 3, 0.5, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1),
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 1, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 FlowDef.point("source", FlowKind.SOURCE, 10, 10, 20),
                 FlowDef.point("sink", FlowKind.SINK, -10, 5, 15),
                 FlowDef.point("vortex", FlowKind.VORTEX, 0, -20, 40)));

@@ -57,10 +57,10 @@ public class UpdaterBenchmark {
         double side = Math.sqrt(tufts / 4.0) * 1.2;
         SimulationDef def = new SimulationDef(new TerrainDef(side, side, 17, 0, 0.5, 1, null,
                 ResourceMapDef.UNIFORM_FULL, ResourceMapDef.UNIFORM_FULL), List.of(SpeciesLibrary.grassTuftA()),
-                List.of(new DistributionDef(SpeciesLibrary.grassTuftA().id(), tufts, 1, 0, 1, 0, 1, Math.PI / 2,
-                        -1e5, 1e5, 0.12, 0, 0)), List.of(), List.of(FlowDef.uniform("breeze", 3, 0.4)),
+                List.of(DistributionDef.builder(SpeciesLibrary.grassTuftA().id()).count(tufts).footprint(0.12)
+                        .waterUse(0).nutrientUse(0).build()), List.of(), List.of(FlowDef.uniform("breeze", 3, 0.4)),
                 ForceFieldDef.defaults(), new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4, 0, 1), 1);
-        sim = Simulation.create(def, Path.of("."), Progress.NONE, workers);
+        sim = Simulation.create(def, Path.of("."), workers, Progress.NONE);
         camera = ViewCamera.of(new CameraDef(0, side * 0.6 + 5, 0, 0, -Math.PI / 2 + 1e-3, Math.toRadians(100), 0.5,
                 side * 4 + 100, List.of(), 1, false), 0, 16.0 / 9);
     }

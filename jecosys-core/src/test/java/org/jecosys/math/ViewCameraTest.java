@@ -23,7 +23,8 @@ class ViewCameraTest {
 
     @Test
     void positiveYawTurnsTowardPlusXAndPitchLooksUp() {
-        ViewCamera c = new ViewCamera().setOrientation(Math.PI / 2, 0);
+        ViewCamera c = new ViewCamera();
+        c.setOrientation(Math.PI / 2, 0);
         Vector3f f = c.forward(new Vector3f());
         assertEquals(1, f.x, EPS);
         assertEquals(0, f.z, EPS);
@@ -33,7 +34,9 @@ class ViewCameraTest {
 
     @Test
     void viewMatrixMapsForwardToMinusZAndEyeToOrigin() {
-        ViewCamera c = new ViewCamera().setPosition(3, 2, -5).setOrientation(0.7, -0.4);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(3, 2, -5);
+        c.setOrientation(0.7, -0.4);
         Matrix4f view = c.view(new Matrix4f());
         Vector3f f = c.forward(new Vector3f());
         Vector3f eye = view.transformPosition(new Vector3f(3, 2, -5));
@@ -46,7 +49,10 @@ class ViewCameraTest {
 
     @Test
     void viewProjectionEqualsProjectionTimesView() {
-        ViewCamera c = new ViewCamera().setPosition(1, 2, 3).setOrientation(-1.1, 0.2).setLens(1.0, 1.5, 0.2, 300);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(1, 2, 3);
+        c.setOrientation(-1.1, 0.2);
+        c.setLens(1.0, 1.5, 0.2, 300);
         Matrix4f vp = c.viewProjection(new Matrix4f());
         Matrix4f ref = c.projection(new Matrix4f()).mul(c.view(new Matrix4f()));
         Vector4f a = vp.transform(new Vector4f(7, 1, -9, 1));
@@ -76,10 +82,10 @@ class ViewCameraTest {
         org.joml.Matrix4f mine = new org.joml.Matrix4f();
         org.joml.Matrix4f joml = new org.joml.Matrix4f();
         for (int i = 0; i < 200; i++) {
-            ViewCamera c = new ViewCamera().setPosition(rng.nextDouble(-50, 50), rng.nextDouble(0, 10),
-                    rng.nextDouble(-50, 50)).setOrientation(rng.nextDouble(-7, 7), rng.nextDouble(-1.5, 1.5))
-                    .setLens(rng.nextDouble(0.3, 2.5), rng.nextDouble(0.5, 3), rng.nextDouble(0.01, 1),
-                            rng.nextDouble(10, 1000));
+            ViewCamera c = new ViewCamera();
+            c.setPosition(rng.nextDouble(-50, 50), rng.nextDouble(0, 10), rng.nextDouble(-50, 50));
+            c.setOrientation(rng.nextDouble(-7, 7), rng.nextDouble(-1.5, 1.5));
+            c.setLens(rng.nextDouble(0.3, 2.5), rng.nextDouble(0.5, 3), rng.nextDouble(0.01, 1), rng.nextDouble(10, 1000));
             float p = (float) -c.pitch();
             float y = (float) c.yaw();
             joml.setPerspective((float) c.fovY(), (float) c.aspect(), (float) c.near(), (float) c.far())

@@ -16,13 +16,14 @@ import org.junit.jupiter.api.Test;
  */
 class SizeClassesTest {
     private static VariationDef tufted(int variants, int classes, double size, double azimuthDegrees) {
-        return new VariationDef(variants, 0.3, 0.1, 0.2, Math.toRadians(15)).withTufts(size, classes,
+        return VariationDef.builder().variants(variants).length(0.3).width(0.1).curvature(0.2).tilt(Math.toRadians(15))
+                .build().withTufts(size, classes,
                 Math.toRadians(azimuthDegrees));
     }
 
     @Test
     void oneSizeClassIsTheOldMapping() {
-        VariationDef v = new VariationDef(8, 0.25, 0.15, 0.3, 0.15);
+        VariationDef v = VariationDef.builder().variants(8).length(0.25).width(0.15).curvature(0.3).tilt(0.15).build();
         assertEquals(VariationDef.DEFAULT_SIZE_CLASSES, v.sizeClasses());
         for (int p = 0; p < 8; p++) {
             assertEquals(1.0, v.sizeScale(p));

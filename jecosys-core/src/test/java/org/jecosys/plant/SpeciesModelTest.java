@@ -45,7 +45,7 @@ class SpeciesModelTest {
 
     @Test
     void variantsStayWithinTheDocumentedFractions() {
-        VariationDef v = new VariationDef(64, 0.2, 0.1, 0.3, 0.15);
+        VariationDef v = VariationDef.builder().variants(64).length(0.2).width(0.1).curvature(0.3).tilt(0.15).build();
         for (int i = 0; i < 64; i++) {
             ComponentVariant cv = ComponentVariant.sample(v, 99, i, 1);
             assertTrue(Math.abs(cv.lengthScale() - 1) <= 0.2);
@@ -99,7 +99,7 @@ class SpeciesModelTest {
         ComponentDef c = new ComponentDef("blade", ComponentType.LEAF, ComponentShape.STRIP, 1, null, 4, 0.4,
                 0.01, 0.01, 0, 0, 0, 1e-3, 0.2, 0.3, 0.001, new Rgb(0, 1, 0), List.of(4));
         SpeciesDef def = new SpeciesDef("s", "s", 8, 1.0, List.of(c),
-                List.of(new LodDef(Double.POSITIVE_INFINITY, Primitive.TRIANGLES)), VariationDef.NONE);
+                List.of(new LodDef(Double.POSITIVE_INFINITY, Primitive.TRIANGLES)), VariationDef.NONE, TrailDef.NONE);
         PoseTable t = SpeciesModel.build(def, 0, 0.0).component(0).poseTable(0);
         for (int i = 0; i < t.points(); i++) {
             assertEquals(0, t.get(t.offset(0, i)), 1e-7);

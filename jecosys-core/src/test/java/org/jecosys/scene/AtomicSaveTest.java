@@ -54,7 +54,7 @@ class AtomicSaveTest {
 
     @Test
     void failureAfterAnyNumberOfBytesLeavesTheOriginalUntouched() throws Exception {
-        SceneDef original = SceneFiles.load(Path.of("scenes/meadow.xml"));
+        SceneDef original = SceneFiles.parse(Path.of("scenes/meadow.xml"));
         Path target = dir.resolve("meadow.xml");
         byte[] before = "<!-- the user's own file -->\n".getBytes(StandardCharsets.UTF_8);
         Files.write(target, before);
@@ -74,7 +74,7 @@ class AtomicSaveTest {
         }
         assertTrue(tried > 70);
         SceneFiles.save(target, edited);
-        assertEquals(edited, SceneFiles.load(target));
+        assertEquals(edited, SceneFiles.parse(target));
         assertEquals(List.of(target), listing());
     }
 
@@ -83,7 +83,7 @@ class AtomicSaveTest {
         Path target = dir.resolve("missing/sub/scene.xml");
         SceneDef d;
         try {
-            d = SceneFiles.load(Path.of("scenes/meadow.xml"));
+            d = SceneFiles.parse(Path.of("scenes/meadow.xml"));
         } catch (SceneLoadException e) {
             throw new AssertionError(e);
         }

@@ -52,7 +52,7 @@ class BadSceneTest {
     @MethodSource("cases")
     void failsAtItsLineAndColumnWithAClearMessage(Expectation e) throws Exception {
         Path file = dir().resolve(e.file());
-        SceneLoadException ex = assertThrows(SceneLoadException.class, () -> SceneFiles.load(file));
+        SceneLoadException ex = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(file));
         SceneProblem first = ex.problems().get(0);
         assertEquals(file.toString(), first.file());
         assertEquals(e.line(), first.line(), () -> "line of: " + first);
@@ -94,9 +94,9 @@ class BadSceneTest {
     @Test
     void missingFileAndDirectoryAreClearProblems() throws Exception {
         Path missing = dir().resolve("no-such-scene.xml");
-        SceneLoadException a = assertThrows(SceneLoadException.class, () -> SceneFiles.load(missing));
+        SceneLoadException a = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(missing));
         assertTrue(a.getMessage().endsWith("no such file"));
-        SceneLoadException b = assertThrows(SceneLoadException.class, () -> SceneFiles.load(dir()));
+        SceneLoadException b = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(dir()));
         assertTrue(b.getMessage().contains("is a directory"));
     }
 
@@ -113,7 +113,7 @@ class BadSceneTest {
                 }
                 out.write("</scene>".getBytes(StandardCharsets.UTF_8));
             }
-            SceneLoadException ex = assertThrows(SceneLoadException.class, () -> SceneFiles.load(big));
+            SceneLoadException ex = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(big));
             assertTrue(ex.getMessage().contains("limited to " + SceneFiles.MAX_FILE_BYTES + " bytes"));
         } finally {
             Files.deleteIfExists(big);

@@ -150,7 +150,7 @@ class BudgetReliabilityTest {
         List<String> report = new ArrayList<>();
         try (DirectoryStream<Path> ds = Files.newDirectoryStream(Path.of("scenes"), "*.xml")) {
             for (Path f : ds) {
-                SceneDef s = SceneFiles.load(f);
+                SceneDef s = SceneFiles.parse(f);
                 double work = PlacementWork.estimate(s.terrain(), s.distributions(), s.placements()).total();
                 long blades = s.render().groundCover().bladesPerViewAtMost(s.terrain().sizeX(), s.terrain().sizeZ());
                 report.add(f.getFileName() + ": " + SceneWorkBudget.units(work) + ", " + blades + " blades");

@@ -7,12 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
 import java.util.List;
+import org.jecosys.field.ForceFieldDef;
 import org.jecosys.math.Waypoint;
 import org.jecosys.plant.ComponentDef;
 import org.jecosys.plant.ComponentType;
 import org.jecosys.plant.LodDef;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesDef;
+import org.jecosys.plant.VariationDef;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.FlowKind;
@@ -103,6 +105,37 @@ class DefBuildersTest {
     }
 
     @Test
+    void fieldVariationAndRenderBuilderDefaultsAreTheSchemas() throws Exception {
+        String xml = MINIMAL.replace("<lod/>", "<lod/>\n    <variation/>")
+                .replace("</scene>", "  <field/>\n  <render/>\n</scene>");
+        SceneDef loaded = SceneFiles.parse(xml.getBytes(StandardCharsets.UTF_8), "empty-elements.xml", null);
+        VariationDef variation = loaded.species().get(0).variation();
+        assertEquals(variation, VariationDef.builder().build());
+        assertEquals(VariationDef.NONE, variation);
+        assertEquals(variation, variation.toBuilder().build());
+        assertEquals(loaded.simulationDef().field(), ForceFieldDef.builder().build());
+        assertEquals(ForceFieldDef.defaults(), loaded.simulationDef().field());
+        assertEquals(loaded.render(), RenderDef.builder().build());
+        assertEquals(RenderDef.defaults(), loaded.render());
+        // every setter reaches its component, and toBuilder keeps every value
+        VariationDef v = VariationDef.builder().variants(6).length(0.1).width(0.2).curvature(0.3).tilt(0.1)
+                .responseTime(0.4).stiffness(0.5).hue(6).value(0.2).dryTips(0.7).size(0.3).sizeClasses(3)
+                .azimuth(0.5).build();
+        assertEquals(new VariationDef(6, 0.1, 0.2, 0.3, 0.1, 0.4, 0.5, 6, 0.2, 0.7, 0.3, 3, 0.5), v);
+        assertEquals(v, v.toBuilder().build());
+        ForceFieldDef f = ForceFieldDef.builder().enabled(false).maxObjectsPerNode(3).maxDepth(5).lodDistances(2, 4)
+                .thinning(10, 20, 0.5).lodFovY(1).build();
+        assertEquals(new ForceFieldDef(false, 3, 5, List.of(2.0, 4.0), 10, 20, 0.5, 1), f);
+        assertEquals(f, f.toBuilder().build());
+        RenderDef r = RenderDef.builder().size(320, 200).sky(new org.jecosys.math.Rgb(0.1f, 0.2f, 0.3f))
+                .lodTransition(2).terrainTint(RenderDef.Tint.WATER).showField(true).showWind(true)
+                .patches(new RenderDef.Patches(10, 0.5, 3)).antialiasing(2).build();
+        assertEquals(new RenderDef(320, 200, new org.jecosys.math.Rgb(0.1f, 0.2f, 0.3f), 2, RenderDef.Tint.WATER, true,
+                true, RenderDef.Light.DEFAULT, new RenderDef.Patches(10, 0.5, 3), 2, RenderDef.GroundCover.NONE), r);
+        assertEquals(r, r.toBuilder().build());
+    }
+
+    @Test
     void theFactoriesAgreeWithTheBuilders() {
         assertEquals(FlowDef.uniform("u", 3, 0.5), FlowDef.builder("u", FlowKind.UNIFORM).strength(3).direction(0.5)
                 .build());
@@ -125,6 +158,12 @@ class DefBuildersTest {
         assertTrue(assertThrows(IllegalArgumentException.class,
                 () -> DistributionDef.builder("s").water(0.8, 0.2).build()).getMessage().contains("maxWater"));
         assertThrows(IllegalArgumentException.class, () -> SpeciesDef.builder("s").component(leaf()).build());
+        assertTrue(assertThrows(IllegalArgumentException.class,
+                () -> VariationDef.builder().variants(2).sizeClasses(3).build()).getMessage().contains("sizeClasses"));
+        assertTrue(assertThrows(IllegalArgumentException.class,
+                () -> ForceFieldDef.builder().lodDistances(30, 15).build()).getMessage().contains("ascending"));
+        assertTrue(assertThrows(IllegalArgumentException.class,
+                () -> RenderDef.builder().antialiasing(3).build()).getMessage().contains("antialiasing"));
         assertNotEquals(leaf(), leaf().toBuilder().stiffness(0.6).build());
     }
 }

@@ -48,16 +48,16 @@ class FileProblemsTest {
     @Test
     void aFolderAMissingFileAndAFileOverTheLimitAreRefusedByTheirPaths() throws Exception {
         Path folder = Files.createDirectory(dir.resolve("folder.xml"));
-        assertTrue(byPathOnly(folder, assertThrows(SceneLoadException.class, () -> SceneFiles.load(folder)))
+        assertTrue(byPathOnly(folder, assertThrows(SceneLoadException.class, () -> SceneFiles.parse(folder)))
                 .message().startsWith("is a directory"));
         Path missing = dir.resolve("missing.xml");
         assertEquals("no such file",
-                byPathOnly(missing, assertThrows(SceneLoadException.class, () -> SceneFiles.load(missing))).message());
+                byPathOnly(missing, assertThrows(SceneLoadException.class, () -> SceneFiles.parse(missing))).message());
         Path big = dir.resolve("big.xml");
         try (RandomAccessFile f = new RandomAccessFile(big.toFile(), "rw")) {
             f.setLength(SceneFiles.MAX_FILE_BYTES + 1);
         }
-        assertTrue(byPathOnly(big, assertThrows(SceneLoadException.class, () -> SceneFiles.load(big)))
+        assertTrue(byPathOnly(big, assertThrows(SceneLoadException.class, () -> SceneFiles.parse(big)))
                 .message().contains("scene files are limited to " + SceneFiles.MAX_FILE_BYTES + " bytes"));
     }
 
@@ -73,7 +73,7 @@ class FileProblemsTest {
     void problemsInsideTheFileKeepTheirLineAndColumn() throws Exception {
         Path file = dir.resolve("bad.xml");
         Files.writeString(file, "<scene version=\"1\">\n  <terain/>\n</scene>\n");
-        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.load(file));
+        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(file));
         assertTrue(e.getMessage().startsWith(file + ":2:3: unknown element <terain>"), e.getMessage());
         assertEquals("f.xml:3:7: m", new SceneProblem("f.xml", 3, 7, "m").toString());
         assertEquals("f.xml: m", new SceneProblem("f.xml", 0, 0, "m").toString());

@@ -57,9 +57,9 @@ class GroundCoverSceneTest {
         assertFalse(d.render().groundCover().enabled());
         assertFalse(SceneFiles.toXml(d).contains("groundCover"));
         for (String name : new String[] {"c1.xml", "c2.xml", "c3.xml", "rose.xml"}) {
-            assertFalse(SceneFiles.load(SceneFilesTest.SCENES.resolve(name)).render().groundCover().enabled(), name);
+            assertFalse(SceneFiles.parse(SceneFilesTest.SCENES.resolve(name)).render().groundCover().enabled(), name);
         }
-        assertTrue(SceneFiles.load(SceneFilesTest.SCENES.resolve("meadow.xml")).render().groundCover().enabled());
+        assertTrue(SceneFiles.parse(SceneFilesTest.SCENES.resolve("meadow.xml")).render().groundCover().enabled());
     }
 
     @Test

@@ -103,7 +103,7 @@ class RenderLightTest {
     void shippedScenesSaveAsBefore() throws Exception {
         for (String name : new String[] {"c1.xml", "c2.xml", "c3.xml", "rose.xml", "meadow.xml"}) {
             Path file = SceneFilesTest.SCENES.resolve(name);
-            SceneDef d = SceneFiles.load(file);
+            SceneDef d = SceneFiles.parse(file);
             String saved = SceneFiles.toXml(d);
             if (!Files.readString(file).contains("<light")) {
                 assertFalse(saved.contains("<light") || saved.contains("<patches"), name);
@@ -142,11 +142,13 @@ class RenderLightTest {
     @Test
     void defsCheckTheirRanges() {
         assertThrows(IllegalArgumentException.class, () -> new RenderDef.Light(0, Math.toRadians(91),
-                new Rgb(1, 1, 1), 1, new Rgb(0, 0, 1), new Rgb(0.5f, 0.5f, 0.5f), 0.5, 1, 2));
+                new Rgb(1, 1, 1), 1, new Rgb(0, 0, 1), new Rgb(0.5f, 0.5f, 0.5f), 0.5, 1, 2, 1, 0));
         assertThrows(IllegalArgumentException.class, () -> new RenderDef.Patches(10, 1.01, 0));
         assertThrows(IllegalArgumentException.class, () -> VariationDef.NONE.withColour(61, 0, 0));
         assertThrows(IllegalArgumentException.class, () -> VariationDef.NONE.withColour(0, 0.6, 0));
-        VariationDef v = new VariationDef(3, 0.1, 0.1, 0.1, 0.1, 0.2, 0.2).withColour(5, 0.1, 1);
-        assertEquals(new VariationDef(3, 0.1, 0.1, 0.1, 0.1, 0.2, 0.2, 5, 0.1, 1), v);
+        VariationDef v = VariationDef.builder().variants(3).length(0.1).width(0.1).curvature(0.1).tilt(0.1)
+                .responseTime(0.2).stiffness(0.2).build().withColour(5, 0.1, 1);
+        assertEquals(VariationDef.builder().variants(3).length(0.1).width(0.1).curvature(0.1).tilt(0.1)
+                .responseTime(0.2).stiffness(0.2).hue(5).value(0.1).dryTips(1).build(), v);
     }
 }

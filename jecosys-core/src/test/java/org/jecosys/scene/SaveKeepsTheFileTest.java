@@ -31,7 +31,7 @@ class SaveKeepsTheFileTest {
 
     @BeforeAll
     static void load() throws Exception {
-        scene = SceneFiles.load(Path.of("scenes/c1.xml"));
+        scene = SceneFiles.parse(Path.of("scenes/c1.xml"));
     }
 
     private static boolean posix() {
@@ -46,7 +46,7 @@ class SaveKeepsTheFileTest {
         Files.setPosixFilePermissions(target, PosixFilePermissions.fromString("rw-r-----"));
         SceneFiles.save(target, scene);
         assertEquals("rw-r-----", PosixFilePermissions.toString(Files.getPosixFilePermissions(target)));
-        assertEquals(scene, SceneFiles.load(target));
+        assertEquals(scene, SceneFiles.parse(target));
         Files.setPosixFilePermissions(target, PosixFilePermissions.fromString("rw-rw-r--"));
         SceneFiles.save(target, scene);
         assertEquals("rw-rw-r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(target)));
@@ -65,7 +65,7 @@ class SaveKeepsTheFileTest {
         SceneFiles.save(link, scene);
         assertTrue(Files.isSymbolicLink(link), "the link is still a link");
         assertEquals(Path.of("real/scene.xml"), Files.readSymbolicLink(link));
-        assertEquals(scene, SceneFiles.load(real));
+        assertEquals(scene, SceneFiles.parse(real));
         assertEquals(List.of("link.xml", "real"), names(dir));
         assertEquals(List.of("scene.xml"), names(real.getParent()));
     }
@@ -121,7 +121,7 @@ class SaveKeepsTheFileTest {
         assertFalse(Files.exists(legacy));
         assertTrue(Files.exists(live), "a save of a live process is left alone");
         assertTrue(Files.exists(other), "only this target's temporary files are touched");
-        assertEquals(scene, SceneFiles.load(target));
+        assertEquals(scene, SceneFiles.parse(target));
     }
 
     private static List<String> names(Path d) throws IOException {

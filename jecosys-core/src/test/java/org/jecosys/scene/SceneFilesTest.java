@@ -52,7 +52,7 @@ class SceneFilesTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("sceneFiles")
     void loadsAndRoundTrips(Path file) throws Exception {
-        SceneDef a = SceneFiles.load(file);
+        SceneDef a = SceneFiles.parse(file);
         String x1 = SceneFiles.toXml(a);
         SceneDef b = SceneFiles.parse(x1.getBytes(StandardCharsets.UTF_8), "saved", file.getParent());
         assertEquals(a, b, "load, save, load gives equal Defs");

@@ -264,13 +264,13 @@ class SceneMutationTest {
 
     /** Builds and runs 5 steps; the first NaN or infinity found, or what was thrown; null when clean. */
     private static String simulate(SceneDef d) {
-        try (Simulation sim = Simulation.create(d.simulationDef(), Path.of("scenes"), Progress.NONE, 1)) {
+        try (Simulation sim = Simulation.create(d.simulationDef(), Path.of("scenes"), 1, Progress.NONE)) {
             double ground = sim.world().terrain().heightfield().height(d.camera().x(), d.camera().z());
             ViewCamera cam = ViewCamera.of(d.camera(), ground, 16.0 / 9);
             for (int s = 0; s < 5; s++) {
                 sim.stepFixed(cam);
             }
-            AnimationView v = sim.state();
+            AnimationView v = sim.inspect().state();
             Frame f = sim.latestFrame();
             for (int c = 0; c < sim.componentCount(); c++) {
                 double[] values = {v.deviationX(c), v.deviationZ(c), v.velocityX(c), v.velocityZ(c), v.bend(c),
@@ -282,8 +282,8 @@ class SceneMutationTest {
                 }
             }
             for (int p = 0; p < sim.plantCount(); p++) {
-                if (!Float.isFinite(sim.windX(p)) || !Float.isFinite(sim.windZ(p))) {
-                    return "plant " + p + " wind is " + sim.windX(p) + ", " + sim.windZ(p);
+                if (!Float.isFinite(sim.inspect().windX(p)) || !Float.isFinite(sim.inspect().windZ(p))) {
+                    return "plant " + p + " wind is " + sim.inspect().windX(p) + ", " + sim.inspect().windZ(p);
                 }
             }
             return null;

@@ -20,7 +20,7 @@ class ShippedScenesTest {
     @ValueSource(strings = {"c1.xml", "c2.xml", "c3.xml", "rose.xml", "meadow.xml", "large.xml"})
     void buildsWithExactlyTheDeclaredCounts(String name) throws Exception {
         Path file = Path.of("scenes", name);
-        SceneDef scene = SceneFiles.load(file);
+        SceneDef scene = SceneFiles.parse(file);
         World world = World.build(scene.simulationDef(), file.getParent(), 2, Progress.NONE);
         PlantLayout layout = world.layout();
         assertEquals(List.of(), layout.warnings(), "no warnings");
@@ -47,7 +47,7 @@ class ShippedScenesTest {
     @ValueSource(strings = {"c1.xml:50:15:15", "c2.xml:75:0:0", "c3.xml:0:100:100"})
     void paperScenesHoldTable4(String spec) throws Exception {
         String[] p = spec.split(":");
-        SceneDef scene = SceneFiles.load(Path.of("scenes", p[0]));
+        SceneDef scene = SceneFiles.parse(Path.of("scenes", p[0]));
         int[] want = {Integer.parseInt(p[1]), Integer.parseInt(p[2]), Integer.parseInt(p[3])};
         String[] names = {"grass tuft A", "yellow flower B", "purple flower C"};
         for (int i = 0; i < 3; i++) {

@@ -26,7 +26,7 @@ public final class SwappedImageMain {
             try (Simulation sim = Scenes.simulation(scene, 1, Progress.NONE)) {
                 System.out.println("checked bytes: built, height " + sim.world().terrain().heightfield().height(0, 0));
             }
-            try (Simulation sim = Simulation.create(scene.def().simulationDef(), Scenes.baseDir(file), Progress.NONE, 1)) {
+            try (Simulation sim = Simulation.create(scene.def().simulationDef(), Scenes.baseDir(file), 1, Progress.NONE)) {
                 System.out.println("folder again: built, height " + sim.world().terrain().heightfield().height(0, 0));
             } catch (IOException e) {
                 System.out.println("folder again: refused: " + e.getMessage());

@@ -53,7 +53,7 @@ class XmlLimitsTest {
     @Test
     void twoMillionEmptyElementsAreRefusedAtTheOneThatCrossesTheLimit() throws Exception {
         Path file = manyEmptyElements(dir);
-        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.load(file));
+        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(file));
         assertEquals(1, e.problems().size(), e.getMessage());
         // the root is element 1, so the <a/> with 0-based index MAX_ELEMENTS - 1 is one too many
         int k = SceneFiles.MAX_ELEMENTS - 1;
@@ -105,7 +105,7 @@ class XmlLimitsTest {
             }
             w.write("</scene>\n");
         }
-        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.load(file));
+        SceneLoadException e = assertThrows(SceneLoadException.class, () -> SceneFiles.parse(file));
         assertEquals(1, e.problems().size(), e.getMessage());
         assertEquals(file + ":" + (1 + k) + ":1: <a>: more than 700,000 attributes in one scene file, all elements "
                 + "together (the limit; no valid scene has more); reading stopped here", e.getMessage());
@@ -190,7 +190,7 @@ class XmlLimitsTest {
             }
             w.write("</wind>\n</scene>\n");
         }
-        SceneDef scene = SceneFiles.load(file);
+        SceneDef scene = SceneFiles.parse(file);
         assertEquals(SceneSchema.MAX_FLOWS, scene.flows().size());
         assertEquals(SceneSchema.MAX_WAYPOINTS, scene.flows().get(SceneSchema.MAX_FLOWS - 1).motion().waypoints().size());
     }

@@ -20,7 +20,7 @@ class ApiArgumentsTest {
     void aDuplicateFlowIdIsRefusedByTheCallNotByTheNextStep() throws Exception {
         try (Simulation sim = SimFixtures.c1(1)) {
             ViewCamera cam = SimFixtures.camera();
-            String sceneId = sim.windField().get(0).id();
+            String sceneId = sim.inspect().windField().get(0).id();
             IllegalArgumentException dup = assertThrows(IllegalArgumentException.class,
                     () -> sim.addFlow(FlowDef.point(sceneId, FlowKind.SOURCE, 0, 0, 1)));
             assertTrue(dup.getMessage().contains("'" + sceneId + "'"), dup.getMessage());
@@ -33,17 +33,17 @@ class ApiArgumentsTest {
             for (int i = 0; i < 3; i++) {
                 sim.stepFixed(cam); // nothing queued can fail now
             }
-            assertTrue(sim.windField().indexOf("boom") >= 0);
+            assertTrue(sim.inspect().windField().indexOf("boom") >= 0);
             // removing frees the id at once; a blast's id is free once it is over
             sim.removeFlow(queued);
             sim.addFlow(FlowDef.point("agent", FlowKind.SINK, 1, 1, 1));
             for (int i = 0; i < 60; i++) {
                 sim.stepFixed(cam);
             }
-            assertEquals(-1, sim.windField().indexOf("boom"));
+            assertEquals(-1, sim.inspect().windField().indexOf("boom"));
             sim.blast("boom", 0, 10, 50, 0.5);
             sim.stepFixed(cam);
-            assertTrue(sim.windField().indexOf("boom") >= 0);
+            assertTrue(sim.inspect().windField().indexOf("boom") >= 0);
         }
     }
 
@@ -80,7 +80,8 @@ class ApiArgumentsTest {
                 sim.stepFixed(cam);
             }
             for (int c = 0; c < sim.componentCount(); c++) {
-                assertFalse(Float.isNaN(sim.state().deviationX(c)) || Float.isNaN(sim.state().poseCoordinate(c)),
+                assertFalse(Float.isNaN(sim.inspect().state().deviationX(c)) || Float.isNaN(sim.inspect().state()
+                        .poseCoordinate(c)),
                         "component " + c);
             }
         }

@@ -88,24 +88,25 @@ class CommandFloodTest {
                 sim.stepFixed(cam);
                 steps++;
                 sinceStep.set(0);
-                maxPending = Math.max(maxPending, sim.pendingCommands());
-                maxFlows = Math.max(maxFlows, sim.windField().size());
+                maxPending = Math.max(maxPending, sim.inspect().pendingCommands());
+                maxFlows = Math.max(maxFlows, sim.inspect().windField().size());
             }
             done.set(true);
             for (Thread p : producers) {
                 p.join();
             }
             assertNull(problem.get());
-            assertEquals(steps, sim.steps());
+            assertEquals(steps, sim.inspect().steps());
             assertTrue(steps >= STEPS);
             assertTrue(maxPending <= Simulation.MAX_PENDING_COMMANDS, "pending " + maxPending);
             assertTrue(maxFlows <= Simulation.MAX_FLOWS, "flows " + maxFlows);
-            assertTrue(sim.flowCount() <= Simulation.MAX_FLOWS, "flows reserved " + sim.flowCount());
+            int flows = sim.inspect().flowCount();
+            assertTrue(flows <= Simulation.MAX_FLOWS, "flows reserved " + flows);
             assertTrue(accepted.get() > STEPS, "the producers got commands through: " + accepted.get());
             // what is still queued is applied by the next step, and only that
-            int before = sim.pendingCommands();
+            int before = sim.inspect().pendingCommands();
             sim.stepFixed(cam);
-            assertEquals(0, sim.pendingCommands(), "queued before: " + before);
+            assertEquals(0, sim.inspect().pendingCommands(), "queued before: " + before);
         }
     }
 
@@ -117,10 +118,10 @@ class CommandFloodTest {
             }
             IllegalStateException full = assertThrows(IllegalStateException.class, () -> sim.setMode(AnimationMode.STATIC));
             assertTrue(full.getMessage().contains("command queue is full"), full.getMessage());
-            assertEquals(Simulation.MAX_PENDING_COMMANDS, sim.pendingCommands());
+            assertEquals(Simulation.MAX_PENDING_COMMANDS, sim.inspect().pendingCommands());
             sim.stepFixed(SimFixtures.camera());
-            assertEquals(0, sim.pendingCommands());
-            assertTrue(!sim.fieldEnabled(), "the last queued command ran");
+            assertEquals(0, sim.inspect().pendingCommands());
+            assertTrue(!sim.inspect().fieldEnabled(), "the last queued command ran");
             sim.setMode(AnimationMode.STATIC);
         }
     }
@@ -128,8 +129,8 @@ class CommandFloodTest {
     @Test
     void flowsHaveAMaximumCountCheckedByTheCall() throws Exception {
         try (Simulation sim = SimFixtures.c1(1)) {
-            int scene = sim.flowCount();
-            assertEquals(sim.windField().size(), scene);
+            int scene = sim.inspect().flowCount();
+            assertEquals(sim.inspect().windField().size(), scene);
             for (int i = scene; i < Simulation.MAX_FLOWS; i++) {
                 sim.addFlow(FlowDef.point("f" + i, FlowKind.SOURCE, 0, 0, 1));
             }
@@ -137,11 +138,11 @@ class CommandFloodTest {
                     () -> sim.addFlow(FlowDef.point("one-too-many", FlowKind.SOURCE, 0, 0, 1)));
             assertTrue(ex.getMessage().contains("MAX_FLOWS"), ex.getMessage());
             sim.stepFixed(SimFixtures.camera());
-            assertEquals(Simulation.MAX_FLOWS, sim.windField().size());
-            sim.removeFlow(sim.windField().get(0));
+            assertEquals(Simulation.MAX_FLOWS, sim.inspect().windField().size());
+            sim.removeFlow(sim.inspect().windField().get(0));
             sim.addFlow(FlowDef.point("one-more", FlowKind.SOURCE, 0, 0, 1));
             sim.stepFixed(SimFixtures.camera());
-            assertEquals(Simulation.MAX_FLOWS, sim.windField().size());
+            assertEquals(Simulation.MAX_FLOWS, sim.inspect().windField().size());
         }
     }
 }

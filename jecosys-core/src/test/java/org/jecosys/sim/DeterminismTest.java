@@ -37,7 +37,7 @@ class DeterminismTest {
                 cam.setOrientation(yaw + 0.004 * i, cam.pitch());
                 sim.stepFixed(cam);
             }
-            return sim.stateHash();
+            return sim.inspect().stateHash();
         }
     }
 
@@ -75,14 +75,14 @@ class DeterminismTest {
             for (int i = 0; i < 60; i++) {
                 b.stepFixed(SimFixtures.camera());
                 if (i == 0) {
-                    rest = b.stateHash();
+                    rest = b.inspect().stateHash();
                 }
             }
-            assertEquals(rest, b.stateHash());
+            assertEquals(rest, b.inspect().stateHash());
             for (int c = 0; c < b.componentCount(); c++) {
-                assertEquals(0, b.state().deviationX(c));
-                assertEquals(0, b.state().deviationZ(c));
-                assertEquals(0, b.state().velocityX(c));
+                assertEquals(0, b.inspect().state().deviationX(c));
+                assertEquals(0, b.inspect().state().deviationZ(c));
+                assertEquals(0, b.inspect().state().velocityX(c));
             }
             Frame f = b.latestFrame();
             assertEquals(60, f.number());

@@ -28,8 +28,10 @@ class DrawDecisionCullingTest {
         int nearEdge = 0;
         for (double pitch : new double[] {-0.2, -0.5, -0.9}) {
             for (double yaw = 0; yaw < 2 * Math.PI; yaw += Math.PI / 3) {
-                ViewCamera cam = new ViewCamera().setPosition(1, 2, 1).setOrientation(yaw, pitch)
-                        .setLens(Math.toRadians(50), 16 / 9.0, 0.05, 200);
+                ViewCamera cam = new ViewCamera();
+                cam.setPosition(1, 2, 1);
+                cam.setOrientation(yaw, pitch);
+                cam.setLens(Math.toRadians(50), 16 / 9.0, 0.05, 200);
                 decision.decideAll(cam, frame);
                 cam.viewProjection(vp);
                 for (int p = 0; p < world.plantCount(); p++) {
@@ -79,8 +81,10 @@ class DrawDecisionCullingTest {
         int cut = 0;
         for (double pitch : new double[] {-0.3, -0.7, -1.2, -1.5}) {
             for (double yaw = 0; yaw < 2 * Math.PI; yaw += Math.PI / 4) {
-                ViewCamera cam = new ViewCamera().setPosition(0, pitch < -1 ? 12 : 3, 0).setOrientation(yaw, pitch)
-                        .setLens(Math.toRadians(60), 16 / 9.0, 0.05, 200);
+                ViewCamera cam = new ViewCamera();
+                cam.setPosition(0, pitch < -1 ? 12 : 3, 0);
+                cam.setOrientation(yaw, pitch);
+                cam.setLens(Math.toRadians(60), 16 / 9.0, 0.05, 200);
                 frustum.set(cam.viewProjection(vp), true);
                 for (int i = 0; i + 1 < first.length; i++) {
                     int o = 6 * i;

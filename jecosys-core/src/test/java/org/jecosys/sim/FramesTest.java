@@ -64,8 +64,8 @@ class FramesTest {
             assertEquals(0, f0.number());
             int bent = 0;
             for (int c = 0; c < f0.componentCount(); c++) {
-                assertEquals(sim.state().poseCoordinate(c), f0.poseCoord(c));
-                assertEquals(sim.state().azimuth(c), f0.bendAzimuth(c));
+                assertEquals(sim.inspect().state().poseCoordinate(c), f0.poseCoord(c));
+                assertEquals(sim.inspect().state().azimuth(c), f0.bendAzimuth(c));
                 bent += f0.poseCoord(c) > 0 ? 1 : 0;
             }
             assertTrue(bent > f0.componentCount() / 2, "before the first step the meadow already leans in the wind: "
@@ -82,11 +82,11 @@ class FramesTest {
             int visible = 0;
             for (int p = 0; p < f.plantCount(); p++) {
                 visible += f.plantVisible(p) ? 1 : 0;
-                assertEquals(sim.state().level(p), f.plantLevel(p));
+                assertEquals(sim.inspect().state().level(p), f.plantLevel(p));
             }
             assertTrue(visible > 0 && visible < f.plantCount(), "visible " + visible);
             for (int c = 0; c < f.componentCount(); c++) {
-                assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c));
+                assertEquals(sim.inspect().state().poseCoordinate(c), f.poseCoord(c));
             }
         }
     }
@@ -117,13 +117,18 @@ class FramesTest {
                 assertEquals(i + 1, f.number());
                 for (int p = 0; p < f.plantCount(); p++) {
                     culledChecked += f.plantVisible(p) ? 0 : 1;
-                    for (int c = sim.state().firstComponent(p); c < sim.state().firstComponent(p + 1); c++) {
-                        assertEquals(sim.state().deviationX(c), f.deviationX(c), "step " + i + " component " + c);
-                        assertEquals(sim.state().deviationZ(c), f.deviationZ(c), "step " + i + " component " + c);
-                        assertEquals(sim.state().deviationX(c), f.renderStates().getFloat(8 * c));
-                        assertEquals(sim.state().deviationZ(c), f.renderStates().getFloat(8 * c + 4));
-                        assertEquals(sim.state().poseCoordinate(c), f.poseCoord(c), "step " + i + " component " + c);
-                        assertEquals(sim.state().azimuth(c), f.bendAzimuth(c), "step " + i + " component " + c);
+                    int end = sim.inspect().state().firstComponent(p + 1);
+                    for (int c = sim.inspect().state().firstComponent(p); c < end; c++) {
+                        assertEquals(sim.inspect().state().deviationX(c), f.deviationX(c),
+                                "step " + i + " component " + c);
+                        assertEquals(sim.inspect().state().deviationZ(c), f.deviationZ(c),
+                                "step " + i + " component " + c);
+                        assertEquals(sim.inspect().state().deviationX(c), f.renderStates().getFloat(8 * c));
+                        assertEquals(sim.inspect().state().deviationZ(c), f.renderStates().getFloat(8 * c + 4));
+                        assertEquals(sim.inspect().state().poseCoordinate(c), f.poseCoord(c),
+                                "step " + i + " component " + c);
+                        assertEquals(sim.inspect().state().azimuth(c), f.bendAzimuth(c),
+                                "step " + i + " component " + c);
                     }
                 }
             }

@@ -22,8 +22,10 @@ class GameLoopTest {
     void aGameLoopStepsMovesAnAgentSwitchesModesAndCloses() throws Exception {
         long[] workers;
         try (Simulation sim = Scenes.simulation(Path.of("scenes/c1.xml"), Progress.NONE)) {
-            workers = sim.workerThreadIds();
-            ViewCamera camera = new ViewCamera().setPosition(0, 2, 14).setOrientation(0, -0.2);
+            workers = sim.inspect().workerThreadIds();
+            ViewCamera camera = new ViewCamera();
+            camera.setPosition(0, 2, 14);
+            camera.setOrientation(0, -0.2);
             WindSource player = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, 0, 10, 4));
             long lastFrame = -1;
             int fixedSteps = 0;
@@ -51,19 +53,20 @@ class GameLoopTest {
                     sim.removeFlow(player);
                 }
             }
-            assertEquals(fixedSteps, sim.steps());
-            assertEquals(sim.steps(), sim.latestFrame().number());
+            assertEquals(fixedSteps, sim.inspect().steps());
+            assertEquals(sim.inspect().steps(), sim.latestFrame().number());
             // each frame (at most 0.031 s, plus less than one fixed step of backlog) makes fewer fixed
             // steps due than the cap (maxSubSteps), so none is dropped: the simulation time is the
             // steps run, and lags the real time by the accumulator's remainder, under one fixed step
-            assertEquals(0, sim.droppedSteps());
-            assertEquals(sim.fixedStep() * sim.steps(), sim.time(), 1e-9);
-            double unsimulated = now - sim.time();
-            assertTrue(unsimulated >= -1e-9 && unsimulated < sim.fixedStep(),
-                    "real time " + now + " s, simulated " + sim.time() + " s, fixed step " + sim.fixedStep() + " s");
-            assertEquals(-1, sim.windField().indexOf("player"));
-            assertTrue(sim.fieldEnabled());
-            assertEquals(AnimationMode.CONSTRAINT, sim.mode());
+            assertEquals(0, sim.inspect().droppedSteps());
+            assertEquals(sim.inspect().fixedStep() * sim.inspect().steps(), sim.inspect().time(), 1e-9);
+            double unsimulated = now - sim.inspect().time();
+            assertTrue(unsimulated >= -1e-9 && unsimulated < sim.inspect().fixedStep(),
+                    "real time " + now + " s, simulated " + sim.inspect().time() + " s, fixed step "
+                            + sim.inspect().fixedStep() + " s");
+            assertEquals(-1, sim.inspect().windField().indexOf("player"));
+            assertTrue(sim.inspect().fieldEnabled());
+            assertEquals(AnimationMode.CONSTRAINT, sim.inspect().mode());
         }
         for (long id : workers) {
             for (Thread t : Thread.getAllStackTraces().keySet()) {
@@ -80,7 +83,7 @@ class GameLoopTest {
             assertEquals(1, sim.step(0.012, cam));
             int max = sim.def().animation().maxSubSteps();
             assertEquals(max, sim.step(1.0, cam));
-            assertTrue(sim.droppedSteps() > 0);
+            assertTrue(sim.inspect().droppedSteps() > 0);
             assertEquals(0, sim.step(0, cam));
             assertThrows(IllegalArgumentException.class, () -> sim.step(-1, cam));
             assertThrows(IllegalArgumentException.class, () -> sim.step(Double.NaN, cam));
@@ -92,15 +95,15 @@ class GameLoopTest {
         try (Simulation on = SimFixtures.c1(2); Simulation off = SimFixtures.c1(2)) {
             off.setFieldEnabled(false);
             ViewCamera cam = SimFixtures.camera();
-            long rest = on.stateHash();
+            long rest = on.inspect().stateHash();
             for (int i = 0; i < 60; i++) {
                 on.stepFixed(cam);
                 off.stepFixed(cam);
             }
-            assertNotEquals(rest, on.stateHash());
+            assertNotEquals(rest, on.inspect().stateHash());
             for (int c = 0; c < off.componentCount(); c++) {
-                assertEquals(0, off.state().deviationX(c), "no field, no wind: upright from the first step");
-                assertEquals(0, off.state().deviationZ(c));
+                assertEquals(0, off.inspect().state().deviationX(c), "no field, no wind: upright from the first step");
+                assertEquals(0, off.inspect().state().deviationZ(c));
             }
             assertEquals(off.componentCount(), off.latestFrame().componentsAnimated() + notDrawn(off),
                     "with the field off every plant counts as visible");
@@ -110,9 +113,9 @@ class GameLoopTest {
     private static int notDrawn(Simulation s) {
         int n = 0;
         for (int p = 0; p < s.plantCount(); p++) {
-            int bit = 1 << s.state().level(p);
+            int bit = 1 << s.inspect().state().level(p);
             for (int c = s.world().firstComponent(p), e = c + s.world().componentsOf(p); c < e; c++) {
-                n += (s.state().kinds().lodMask(s.state().kind(c)) & bit) == 0 ? 1 : 0;
+                n += (s.inspect().state().kinds().lodMask(s.inspect().state().kind(c)) & bit) == 0 ? 1 : 0;
             }
         }
         return n;

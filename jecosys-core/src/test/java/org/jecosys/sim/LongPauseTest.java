@@ -18,27 +18,27 @@ class LongPauseTest {
         try (Simulation sim = SimFixtures.c1(2)) {
             ViewCamera cam = SimFixtures.camera();
             int max = sim.def().animation().maxSubSteps();
-            double h = sim.fixedStep();
+            double h = sim.inspect().fixedStep();
             assertEquals(1, sim.step(h * 1.5, cam));
-            long stepsBefore = sim.steps();
-            double timeBefore = sim.time();
-            long droppedBefore = sim.droppedSteps();
+            long stepsBefore = sim.inspect().steps();
+            double timeBefore = sim.inspect().time();
+            long droppedBefore = sim.inspect().droppedSteps();
 
             assertEquals(max, sim.step(1e6, cam));
 
-            assertEquals(stepsBefore + max, sim.steps());
-            assertEquals(timeBefore + max * h, sim.time(), 1e-9);
-            long dropped = sim.droppedSteps() - droppedBefore;
+            assertEquals(stepsBefore + max, sim.inspect().steps());
+            assertEquals(timeBefore + max * h, sim.inspect().time(), 1e-9);
+            long dropped = sim.inspect().droppedSteps() - droppedBefore;
             long expected = (long) ((1e6 + 0.5 * h) / h) - max;
             assertTrue(Math.abs(dropped - expected) <= 1, "dropped " + dropped + ", expected about " + expected);
-            assertFinite(sim.state());
-            assertEquals(sim.steps(), sim.latestFrame().number());
+            assertFinite(sim.inspect().state());
+            assertEquals(sim.inspect().steps(), sim.latestFrame().number());
 
             // the backlog is gone: the next frames step normally
             assertEquals(0, sim.step(0, cam));
             assertEquals(1, sim.step(h, cam));
-            assertEquals(stepsBefore + max + 1, sim.steps());
-            assertFinite(sim.state());
+            assertEquals(stepsBefore + max + 1, sim.inspect().steps());
+            assertFinite(sim.inspect().state());
         }
     }
 
@@ -48,12 +48,12 @@ class LongPauseTest {
             ViewCamera cam = SimFixtures.camera();
             int max = sim.def().animation().maxSubSteps();
             assertEquals(max, sim.step(Double.MAX_VALUE, cam));
-            assertTrue(sim.droppedSteps() > 0);
+            assertTrue(sim.inspect().droppedSteps() > 0);
             assertEquals(max, sim.step(Double.MAX_VALUE, cam));
-            assertEquals(Long.MAX_VALUE, sim.droppedSteps(), "saturates, never wraps to negative");
-            assertEquals(1, sim.step(sim.fixedStep(), cam), "no backlog is kept");
-            assertEquals(2L * max + 1, sim.steps());
-            assertFinite(sim.state());
+            assertEquals(Long.MAX_VALUE, sim.inspect().droppedSteps(), "saturates, never wraps to negative");
+            assertEquals(1, sim.step(sim.inspect().fixedStep(), cam), "no backlog is kept");
+            assertEquals(2L * max + 1, sim.inspect().steps());
+            assertFinite(sim.inspect().state());
         }
     }
 
@@ -66,8 +66,8 @@ class LongPauseTest {
                 IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.step(dt, cam));
                 assertTrue(e.getMessage().contains("dt"), e.getMessage());
             }
-            assertEquals(0, sim.steps());
-            assertEquals(0, sim.droppedSteps());
+            assertEquals(0, sim.inspect().steps());
+            assertEquals(0, sim.inspect().droppedSteps());
         }
     }
 

@@ -26,7 +26,7 @@ class MeadowNatureTest {
 
     @BeforeAll
     static void build() throws Exception {
-        def = SceneFiles.load(Path.of("scenes/meadow.xml")).simulationDef();
+        def = SceneFiles.parse(Path.of("scenes/meadow.xml")).simulationDef();
         world = World.build(def, Path.of("scenes"), 4, Progress.NONE);
     }
 

@@ -41,7 +41,7 @@ class MeadowWindTest {
 
     @BeforeAll
     static void load() throws Exception {
-        scene = SceneFiles.load(Path.of("scenes/meadow.xml"));
+        scene = SceneFiles.parse(Path.of("scenes/meadow.xml"));
     }
 
     /** One run: per-frame bends of the plants always in view, the change per frame, the mean wind. */
@@ -66,12 +66,12 @@ class MeadowWindTest {
         SimulationDef def = new SimulationDef(d.terrain(), d.species(), quarter, d.placements(), flows,
                 d.field(), d.animation(), d.seed());
         Run r = new Run();
-        try (Simulation sim = Simulation.create(def, Path.of("scenes"), Progress.NONE, 2)) {
+        try (Simulation sim = Simulation.create(def, Path.of("scenes"), 2, Progress.NONE)) {
             World w = sim.world();
             r.world = w;
             ViewCamera cam = ViewCamera.of(scene.camera(), w.terrain().heightfield().height(scene.camera().x(),
                     scene.camera().z()), 16.0 / 9);
-            AnimationView s = sim.state();
+            AnimationView s = sim.inspect().state();
             int plants = sim.plantCount();
             int steps = (int) Math.round(seconds * HZ);
             float[] px = new float[sim.componentCount()];
@@ -91,7 +91,7 @@ class MeadowWindTest {
                 double sum = 0;
                 int n = 0;
                 for (int p = 0; p < plants; p++) {
-                    if (!sim.plantVisible(p)) {
+                    if (!sim.inspect().plantVisible(p)) {
                         always[p] = false;
                         continue;
                     }
@@ -103,8 +103,8 @@ class MeadowWindTest {
                         px[c] = x;
                         pz[c] = z;
                     }
-                    r.windX += sim.windX(p);
-                    r.windZ += sim.windZ(p);
+                    r.windX += sim.inspect().windX(p);
+                    r.windZ += sim.inspect().windZ(p);
                     winds++;
                 }
                 r.change[k] = sum / n;

@@ -32,7 +32,7 @@ class PaperScenesUnchangedTest {
             "rose.xml, 78d5ef05968d565dbcd34ba07f19bef0",
             "prairie.xml, be66c1a2b309d0c18b4dcf073201b6f9"})
     void buildsTheSamePlantsAsBefore(String file, String reference) throws Exception {
-        World w = World.build(SceneFiles.load(Path.of("scenes", file)).simulationDef(), Path.of("scenes"), 2,
+        World w = World.build(SceneFiles.parse(Path.of("scenes", file)).simulationDef(), Path.of("scenes"), 2,
                 Progress.NONE);
         String digest = digest(w);
         System.out.printf("%s: %d plants, %d components, digest %s%n", file, w.plantCount(), w.componentCount(),

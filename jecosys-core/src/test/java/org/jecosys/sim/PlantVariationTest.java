@@ -44,21 +44,24 @@ class PlantVariationTest {
         }
         FlowDef wind = FlowDef.builder("w", FlowKind.UNIFORM).strength(4).duration(1).build();
         return new SimulationDef(TerrainDef.flat(), List.of(s), List.of(), plants, List.of(wind),
-                new ForceFieldDef(true, 4, 6, List.of()), new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4,
+                ForceFieldDef.builder().maxObjectsPerNode(4).maxDepth(6).lodDistances().build(),
+                        new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4,
                 1, 1), 5);
     }
 
     /** Per plant: |D| in the wind (t = 1 s) and its share left one tau after the wind stops. */
     static double[][] run(VariationDef variation) throws Exception {
-        try (Simulation sim = Simulation.create(def(variation), Path.of("."), Progress.NONE, 1)) {
-            ViewCamera cam = new ViewCamera().setPosition(0, 20, 12).setOrientation(0, -1.1);
+        try (Simulation sim = Simulation.create(def(variation), Path.of("."), 1, Progress.NONE)) {
+            ViewCamera cam = new ViewCamera();
+            cam.setPosition(0, 20, 12);
+            cam.setOrientation(0, -1.1);
             int n = sim.plantCount();
             double[][] out = new double[2][n];
             for (int i = 0; i < 60; i++) {
                 sim.stepFixed(cam);
             }
             for (int p = 0; p < n; p++) {
-                assertTrue(sim.plantVisible(p));
+                assertTrue(sim.inspect().plantVisible(p));
                 out[0][p] = SpringResponseTest.deviationOf(sim, p);
             }
             for (int i = 0; i < Math.round(TAU * 60); i++) {
@@ -81,14 +84,15 @@ class PlantVariationTest {
 
     @Test
     void stiffnessAndResponseTimeVaryFromPlantToPlantWithinTheirFractions() throws Exception {
-        double[][] same = run(new VariationDef(1, 0, 0, 0, 0));
+        double[][] same = run(VariationDef.builder().variants(1).build());
         assertEquals(min(same[0]), max(same[0]), 0, "no variation: one equilibrium");
         assertEquals(min(same[1]), max(same[1]), 0, "and one release");
         double nominal = same[0][0];
         double left = same[1][0];
         assertEquals(2 * Math.exp(-1), left, 0.005, "(1 + t/tau) e^(-t/tau) at t = tau");
 
-        double[][] varied = run(new VariationDef(1, 0, 0, 0, 0, RESPONSE_VARIATION, STIFFNESS_VARIATION));
+        double[][] varied = run(VariationDef.builder().variants(1).responseTime(RESPONSE_VARIATION)
+                .stiffness(STIFFNESS_VARIATION).build());
         double lo = min(varied[0]) / nominal;
         double hi = max(varied[0]) / nominal;
         assertTrue(lo >= 1 / (1 + STIFFNESS_VARIATION) - 1e-6 && hi <= 1 / (1 - STIFFNESS_VARIATION) + 1e-6,

@@ -45,7 +45,8 @@ class SchemaExtremesTest {
     }
 
     static SimulationDef def(double fixedStep, int subIntervals) {
-        VariationDef most = new VariationDef(4, 0.9, 0.9, 0.9, Math.toRadians(45), 0.9, 0.9);
+        VariationDef most = VariationDef.builder().variants(4).length(0.9).width(0.9).curvature(0.9)
+                .tilt(Math.toRadians(45)).responseTime(0.9).stiffness(0.9).build();
         double minBend = Math.toRadians(SpeciesDef.MIN_MAX_BEND_DEGREES);
         double maxBend = Math.toRadians(SpeciesDef.MAX_MAX_BEND_DEGREES);
         List<SpeciesDef> species = List.of(
@@ -79,14 +80,15 @@ class SchemaExtremesTest {
                 FlowDef.builder("b", FlowKind.BLAST).centre(0, 0).strength(fmax).coreRadius(FlowDef.MIN_CORE_RADIUS)
                         .start(fixedStep).duration(5 * fixedStep).build());
         return new SimulationDef(TerrainDef.flat(), species, List.of(), plants, flows,
-                new ForceFieldDef(true, 1, 8, List.of(5.0)),
+                ForceFieldDef.builder().maxObjectsPerNode(1).lodDistances(5.0).build(),
                 new AnimationDef(AnimationMode.CONSTRAINT, fixedStep, 8, subIntervals, 2, 1), 11);
     }
 
     static void assertFinite(Simulation sim, String what) {
-        AnimationView s = sim.state();
+        AnimationView s = sim.inspect().state();
         for (int p = 0; p < sim.plantCount(); p++) {
-            assertTrue(Float.isFinite(sim.windX(p)) && Float.isFinite(sim.windZ(p)), what + ": wind of plant " + p);
+            assertTrue(Float.isFinite(sim.inspect().windX(p)) && Float.isFinite(sim.inspect().windZ(p)),
+                    what + ": wind of plant " + p);
         }
         for (int c = 0; c < sim.componentCount(); c++) {
             float pose = s.poseCoordinate(c);
@@ -107,10 +109,12 @@ class SchemaExtremesTest {
         double[] steps = {1e-5, 1.0 / 60, 1};
         int[] subs = {64, 4, 1};
         for (int r = 0; r < steps.length; r++) {
-            try (Simulation sim = Simulation.create(def(steps[r], subs[r]), Path.of("."), Progress.NONE, 2)) {
+            try (Simulation sim = Simulation.create(def(steps[r], subs[r]), Path.of("."), 2, Progress.NONE)) {
                 String what = "step " + steps[r] + " s, " + subs[r] + " sub-intervals";
                 assertFinite(sim, what + ", before the first step");
-                ViewCamera cam = new ViewCamera().setPosition(0, 30, 30).setOrientation(0, -0.8);
+                ViewCamera cam = new ViewCamera();
+                cam.setPosition(0, 30, 30);
+                cam.setOrientation(0, -0.8);
                 for (int i = 0; i < 40; i++) {
                     cam.setOrientation(0.05 * i, -0.8); // plants leave and enter the view
                     sim.stepFixed(cam);

@@ -22,7 +22,7 @@ final class SimFixtures {
 
     static synchronized SceneDef scene() throws Exception {
         if (scene == null) {
-            scene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/c1-fixture.xml"));
+            scene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/c1-fixture.xml"));
         }
         return scene;
     }
@@ -44,7 +44,7 @@ final class SimFixtures {
     /** C1's plants in a turbulent, travelling wind with a vortex, and plants varying in response. */
     static synchronized Simulation turbulent(int workers) throws Exception {
         if (turbulentScene == null) {
-            turbulentScene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/"
+            turbulentScene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/"
                     + "turbulent-fixture.xml"));
             turbulentWorld = World.build(turbulentScene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         }

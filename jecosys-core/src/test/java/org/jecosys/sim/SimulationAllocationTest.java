@@ -46,7 +46,7 @@ class SimulationAllocationTest {
                 ViewCamera cam = SimFixtures.camera();
                 double yaw = cam.yaw();
                 long self = Thread.currentThread().getId();
-                long[] workers = sim.workerThreadIds();
+                long[] workers = sim.inspect().workerThreadIds();
                 int i = 0;
                 for (; i < 1500; i++) {
                     cam.setOrientation(yaw + 0.6 * Math.sin(2 * Math.PI * i / 500), cam.pitch());
@@ -69,7 +69,7 @@ class SimulationAllocationTest {
                 assertEquals(2, zeroRun, mode + ": two consecutive windows of " + WINDOW + " steps allocating 0 bytes on"
                         + " the stepping thread and every worker; bytes per window: "
                         + java.util.Arrays.toString(java.util.Arrays.copyOf(windows, w)));
-                assertTrue(sim.allocatedBytes() >= 0);
+                assertTrue(sim.inspect().allocatedBytes() >= 0);
             }
         }
     }

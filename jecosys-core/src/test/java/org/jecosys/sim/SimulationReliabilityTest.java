@@ -45,7 +45,7 @@ class SimulationReliabilityTest {
     /** 2,000 tufts of 25 leaves: 50,000 components, every one in view. */
     private static synchronized World raceWorld() throws Exception {
         if (raceWorld == null) {
-            raceScene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
+            raceScene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
             raceWorld = World.build(raceScene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         }
         return raceWorld;
@@ -60,7 +60,7 @@ class SimulationReliabilityTest {
         int closedMidStep = 0;
         for (int trial = 0; trial < TRIALS; trial++) {
             Simulation sim = Simulation.of(world, raceScene.simulationDef(), 2);
-            assertTrue(sim.chunks() > 2, "the race needs several chunks: " + sim.chunks());
+            assertTrue(sim.inspect().chunks() > 2, "the race needs several chunks: " + sim.inspect().chunks());
             AtomicReference<Throwable> stepperEnd = new AtomicReference<>();
             AtomicInteger stepsRun = new AtomicInteger();
             Thread stepper = new Thread(() -> {
@@ -163,7 +163,7 @@ class SimulationReliabilityTest {
         Simulation sim = SimFixtures.c1(2);
         ViewCamera cam = SimFixtures.camera();
         sim.stepFixed(cam);
-        WindSource breeze = sim.windField().get(0);
+        WindSource breeze = sim.inspect().windField().get(0);
         sim.close();
         sim.close(); // idempotent
         List<Executable> calls = new ArrayList<>();
@@ -186,14 +186,14 @@ class SimulationReliabilityTest {
             IllegalStateException e = assertThrows(IllegalStateException.class, calls.get(i), "call " + i);
             assertEquals("the simulation is closed", e.getMessage(), "call " + i);
         }
-        assertEquals(0, sim.pendingCommands(), "nothing was queued after close");
+        assertEquals(0, sim.inspect().pendingCommands(), "nothing was queued after close");
     }
 
     @Test
     void aBlastThatWouldNeverEndIsRefusedByTheCallAndNoSlotLeaks() throws Exception {
         try (Simulation sim = SimFixtures.c1(1)) {
             ViewCamera cam = SimFixtures.camera();
-            int flows = sim.flowCount();
+            int flows = sim.inspect().flowCount();
             double[] bad = {Double.POSITIVE_INFINITY, Double.NaN, Double.NEGATIVE_INFINITY, 0, -1, 2e9};
             for (int i = 0; i < 2 * Simulation.MAX_FLOWS; i++) {
                 double d = bad[i % bad.length];
@@ -210,9 +210,9 @@ class SimulationReliabilityTest {
                 assertThrows(IllegalArgumentException.class, () -> sim.addFlow(
                         FlowDef.builder("nan", FlowKind.GUST).strength(1).noiseFrequency(v).build()));
             }
-            assertEquals(flows, sim.flowCount(), "refused calls hold no slot");
+            assertEquals(flows, sim.inspect().flowCount(), "refused calls hold no slot");
             sim.stepFixed(cam);
-            assertEquals(flows, sim.windField().size(), "and reached no step");
+            assertEquals(flows, sim.inspect().windField().size(), "and reached no step");
             // a blast that ends frees its slot; 2 x MAX_FLOWS of them never exhaust the slots
             for (int i = 0; i < 2 * Simulation.MAX_FLOWS; i++) {
                 sim.blast("ok" + i, 0, 10, 50, 0.01);
@@ -225,7 +225,7 @@ class SimulationReliabilityTest {
             for (int s = 0; s < 5; s++) {
                 sim.stepFixed(cam);
             }
-            assertEquals(flows, sim.flowCount(), "every expired blast freed its slot");
+            assertEquals(flows, sim.inspect().flowCount(), "every expired blast freed its slot");
         }
     }
 
@@ -233,18 +233,18 @@ class SimulationReliabilityTest {
     void aCommandThatFailsInTheStepFreesItsFlowId() throws Exception {
         try (Simulation sim = SimFixtures.c1(1)) {
             ViewCamera cam = SimFixtures.camera();
-            int flows = sim.flowCount();
+            int flows = sim.inspect().flowCount();
             // a flow already in the wind field under the same id, added behind the command queue's back
-            sim.windField().add(FlowDef.point("twin", FlowKind.SOURCE, 0, 0, 1));
+            sim.inspect().windField().add(FlowDef.point("twin", FlowKind.SOURCE, 0, 0, 1));
             sim.addFlow(FlowDef.point("twin", FlowKind.SINK, 1, 1, 1)); // the call cannot see it
-            assertEquals(flows + 1, sim.flowCount());
+            assertEquals(flows + 1, sim.inspect().flowCount());
             try {
                 sim.stepFixed(cam);
                 fail("the step adds a duplicate id");
             } catch (IllegalArgumentException expected) {
                 assertTrue(expected.getMessage().contains("'twin'"), expected.getMessage());
             }
-            assertEquals(flows, sim.flowCount(), "the failed command freed its reservation");
+            assertEquals(flows, sim.inspect().flowCount(), "the failed command freed its reservation");
             sim.stepFixed(cam);
         }
     }

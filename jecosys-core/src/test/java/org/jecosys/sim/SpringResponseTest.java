@@ -52,7 +52,9 @@ class SpringResponseTest {
                 .lodSegments(4).build();
         SpeciesDef one = SpeciesDef.builder("one").maxBend(1.2)
                 .lod(new LodDef(Double.POSITIVE_INFINITY, Primitive.TRIANGLES)).component(stalk).build();
-        return new SimulationDef(TerrainDef.flat(), List.of(one), List.of(), plants, flows, new ForceFieldDef(true, 1, 4, List.of()), new AnimationDef(AnimationMode.CONSTRAINT, dt, 8, 4, 1,
+        return new SimulationDef(TerrainDef.flat(), List.of(one), List.of(), plants, flows, ForceFieldDef.builder()
+                .maxObjectsPerNode(1).maxDepth(4).lodDistances().build(), new AnimationDef(AnimationMode.CONSTRAINT,
+                dt, 8, 4, 1,
                 1), 3);
     }
 
@@ -62,16 +64,19 @@ class SpringResponseTest {
     }
 
     static Simulation simulation(SimulationDef def) throws Exception {
-        return Simulation.create(def, Path.of("."), Progress.NONE, 1);
+        return Simulation.create(def, Path.of("."), 1, Progress.NONE);
     }
 
     /** Looking at the plant from 5 m. */
     static ViewCamera camera() {
-        return new ViewCamera().setPosition(0, 1.7, 5).setOrientation(0, -0.3);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 1.7, 5);
+        camera.setOrientation(0, -0.3);
+        return camera;
     }
 
     static double deviation(Simulation sim) {
-        return Math.hypot(sim.state().deviationX(0), sim.state().deviationZ(0));
+        return Math.hypot(sim.inspect().state().deviationX(0), sim.inspect().state().deviationZ(0));
     }
 
     /** |D| at times {@code at} (seconds, multiples of every step), stepping at dt. */
@@ -159,17 +164,21 @@ class SpringResponseTest {
         List<PlacementDef> plants = List.of(new PlacementDef("one", 5, 5, 0), new PlacementDef("one", -15, -15, 0));
         try (Simulation sim = simulation(def(1.0 / 60, List.of(wind(0.5, Double.POSITIVE_INFINITY)), plants))) {
             int p = sim.world().plantX(0) > 0 ? 0 : 1;
-            ViewCamera away = new ViewCamera().setPosition(5, 1.7, -5).setOrientation(0, 0);
+            ViewCamera away = new ViewCamera();
+            away.setPosition(5, 1.7, -5);
+            away.setOrientation(0, 0);
             for (int i = 0; i < 60; i++) {
                 sim.stepFixed(away);
-                assertTrue(!sim.plantVisible(p), "behind the camera");
+                assertTrue(!sim.inspect().plantVisible(p), "behind the camera");
             }
             assertEquals(0, deviationOf(sim, p), 0, "the plant was last animated in no wind");
-            ViewCamera toward = new ViewCamera().setPosition(5, 1.7, -5).setOrientation(Math.PI, 0);
+            ViewCamera toward = new ViewCamera();
+            toward.setPosition(5, 1.7, -5);
+            toward.setOrientation(Math.PI, 0);
             int seen = -1;
             for (int i = 0; i < 10; i++) {
                 sim.stepFixed(toward);
-                if (sim.plantVisible(p) && seen < 0) {
+                if (sim.inspect().plantVisible(p) && seen < 0) {
                     seen = i;
                     assertEquals(D_INF, deviationOf(sim, p), TOLERANCE * D_INF, "first step in view: no lean-in");
                 }
@@ -181,7 +190,7 @@ class SpringResponseTest {
 
     static double deviationOf(Simulation sim, int p) {
         int c = sim.world().firstComponent(p);
-        return Math.hypot(sim.state().deviationX(c), sim.state().deviationZ(c));
+        return Math.hypot(sim.inspect().state().deviationX(c), sim.inspect().state().deviationZ(c));
     }
 
     @Test

@@ -24,8 +24,10 @@ class StepDecisionTest {
             double[][] cams = {{0, 2, 12, 0, -0.3}, {3, 1.5, -4, 2.5, -0.2}, {0, 25, 0, 0, -1.5}, {0, 80, 0, 0.3, -1.5},
                 {-20, 40, 30, 0.8, -0.9}};
             for (double[] c : cams) {
-                ViewCamera cam = new ViewCamera().setPosition(c[0], c[1], c[2]).setOrientation(c[3], c[4])
-                        .setLens(Math.toRadians(60), 16 / 9.0, 0.05, 400);
+                ViewCamera cam = new ViewCamera();
+                cam.setPosition(c[0], c[1], c[2]);
+                cam.setOrientation(c[3], c[4]);
+                cam.setLens(Math.toRadians(60), 16 / 9.0, 0.05, 400);
                 // the step decides for the camera of the step before: two steps with it
                 sim.stepFixed(cam);
                 sim.stepFixed(cam);

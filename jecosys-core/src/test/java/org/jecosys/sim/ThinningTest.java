@@ -152,15 +152,16 @@ class ThinningTest {
         World w = world();
         ForceFieldDef f = def.field();
         SimulationDef thinDef = new SimulationDef(def.terrain(), def.species(), def.distributions(), def.placements(),
-                def.flows(), new ForceFieldDef(f.enabled(), f.maxObjectsPerNode(), f.maxDepth(), f.lodDistances(),
-                5, 15, 0.3), def.animation(), def.seed());
+                def.flows(), ForceFieldDef.builder().enabled(f.enabled()).maxObjectsPerNode(f.maxObjectsPerNode())
+                        .maxDepth(f.maxDepth()).lodDistances(f.lodDistances()).thinning(5, 15, 0.3).build(),
+                        def.animation(), def.seed());
         Frame[] frames = new Frame[2];
         int[] threads = {1, 3};
         for (int i = 0; i < 2; i++) {
             try (Simulation sim = Simulation.of(w, thinDef, threads[i], SimFixtures.CHUNK)) {
-                assertEquals(5, sim.thinStart());
-                assertEquals(15, sim.thinEnd());
-                assertEquals(0.3, sim.thinMinFraction());
+                assertEquals(5, sim.inspect().thinStart());
+                assertEquals(15, sim.inspect().thinEnd());
+                assertEquals(0.3, sim.inspect().thinMinFraction());
                 for (int k = 0; k < 30; k++) {
                     sim.step(1.0 / 60 + 1e-9, camera(0.01 * k));
                 }
@@ -177,7 +178,7 @@ class ThinningTest {
                 sim.setThinning(5, 15, 1);
                 sim.step(1.0 / 60 + 1e-9, camera(0.3));
                 sim.step(1.0 / 60 + 1e-9, camera(0.3));
-                assertEquals(1.0, sim.thinMinFraction());
+                assertEquals(1.0, sim.inspect().thinMinFraction());
             }
         }
         byte[] l0 = new byte[w.plantCount()];

@@ -68,7 +68,7 @@ class TrailsTest {
         }
         Path file = dir.resolve(name + ".xml");
         Files.writeString(file, text);
-        return SceneFiles.load(file);
+        return SceneFiles.parse(file);
     }
 
     /** Grass tufts of C1 (the walker does not move them) within 0.5 m of the line z = pathZ, |x| < 11. */
@@ -101,7 +101,11 @@ class TrailsTest {
 
     /** A camera high over the middle that sees the whole path. */
     static ViewCamera overhead() {
-        return new ViewCamera().setPosition(0, 9, 7).setOrientation(0, -0.9).setLens(Math.toRadians(100), 1.6, 0.1, 200);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 9, 7);
+        camera.setOrientation(0, -0.9);
+        camera.setLens(Math.toRadians(100), 1.6, 0.1, 200);
+        return camera;
     }
 
     /**
@@ -114,7 +118,7 @@ class TrailsTest {
         try (sim) {
             for (int i = 0; i < STEPS; i++) {
                 sim.stepFixed(cam);
-                AnimationView s = sim.state();
+                AnimationView s = sim.inspect().state();
                 for (int j = 0; j < plants.length; j++) {
                     int c = s.firstComponent(plants[j]);
                     d[i][2 * j] = s.deviationX(c);
@@ -207,7 +211,7 @@ class TrailsTest {
                 sim.stepFixed(cam);
             }
             long self = Thread.currentThread().getId();
-            long[] workers = sim.workerThreadIds();
+            long[] workers = sim.inspect().workerThreadIds();
             SimulationAllocationTest.total(self, workers);
             long[] windows = new long[6];
             int zeroRun = 0;
@@ -221,7 +225,7 @@ class TrailsTest {
                 windows[w] = SimulationAllocationTest.total(self, workers) - before;
                 zeroRun = windows[w] == 0 ? zeroRun + 1 : 0;
                 for (int p = 0; p < sim.plantCount(); p++) {
-                    flat = Math.max(flat, sim.state().flattening(p));
+                    flat = Math.max(flat, sim.inspect().state().flattening(p));
                 }
             }
             assertTrue(flat > 0, "plants were flattened while measuring");
@@ -241,11 +245,11 @@ class TrailsTest {
                 for (int i = 0; i < 900; i++) {
                     sim.stepFixed(cam);
                     for (int p = 0; p < sim.plantCount(); p++) {
-                        flat = Math.max(flat, sim.state().flattening(p));
+                        flat = Math.max(flat, sim.inspect().state().flattening(p));
                     }
                 }
                 assertTrue(flat > 0.5f, "the walker flattened plants, most by " + flat);
-                long h = sim.stateHash();
+                long h = sim.inspect().stateHash();
                 if (w == 1) {
                     first = h;
                 } else {
@@ -269,8 +273,8 @@ class TrailsTest {
                 with.stepFixed(cam);
                 without.stepFixed(cam);
             }
-            AnimationView s = with.state();
-            AnimationView o = without.state();
+            AnimationView s = with.inspect().state();
+            AnimationView o = without.inspect().state();
             for (int k = 0; k < s.componentCount(); k++) {
                 assertEquals(Float.floatToRawIntBits(o.deviationX(k)), Float.floatToRawIntBits(s.deviationX(k)), "D x " + k);
                 assertEquals(Float.floatToRawIntBits(o.deviationZ(k)), Float.floatToRawIntBits(s.deviationZ(k)), "D z " + k);

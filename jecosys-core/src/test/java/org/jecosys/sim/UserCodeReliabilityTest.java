@@ -46,7 +46,7 @@ class UserCodeReliabilityTest {
     /** 2,000 tufts of 25 leaves: 50,000 components, every one in view (the close-race fixture). */
     private static synchronized World world() throws Exception {
         if (world == null) {
-            scene = SceneFiles.load(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
+            scene = SceneFiles.parse(Path.of("jecosys-core/src/test/resources/org/jecosys/sim/close-race-fixture.xml"));
             world = World.build(scene.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
         }
         return world;
@@ -207,9 +207,9 @@ class UserCodeReliabilityTest {
             Throwable fault = stepOn(what, sim, cam);
             assertTrue(fault instanceof GameFault, what + ": the game's exception reaches the caller as it is, got " + fault);
             trap.disarm();
-            long frames = sim.steps();
+            long frames = sim.inspect().steps();
             assertSame(null, stepOn(what, sim, cam), what + ": the step after the fault failed");
-            assertEquals(frames + 1, sim.steps(), what + ": the step after the fault ran");
+            assertEquals(frames + 1, sim.inspect().steps(), what + ": the step after the fault ran");
         } finally {
             long t0 = System.nanoTime();
             Thread closer = new Thread(sim::close, "user-code-closer");
@@ -352,7 +352,7 @@ class UserCodeReliabilityTest {
         try (Simulation sim = SimFixtures.c1(2)) {
             ViewCamera good = SimFixtures.camera();
             sim.stepFixed(good);
-            long steps = sim.steps();
+            long steps = sim.inspect().steps();
             double[] bad = {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
             for (double v : bad) {
                 LooseCamera eyeless = new LooseCamera(good);
@@ -369,7 +369,7 @@ class UserCodeReliabilityTest {
                 e = assertThrows(IllegalArgumentException.class, () -> sim.addView(lens));
                 assertTrue(e.getMessage().startsWith("view: "), e.getMessage());
             }
-            assertEquals(steps, sim.steps(), "no refused step ran");
+            assertEquals(steps, sim.inspect().steps(), "no refused step ran");
             // a registered view that turns NaN later is refused at the step, by its index
             LooseCamera later = new LooseCamera(good);
             sim.addView(later);
@@ -379,7 +379,7 @@ class UserCodeReliabilityTest {
             assertTrue(e.getMessage().startsWith("view 0 (registered with addView): "), e.getMessage());
             sim.removeView(later);
             sim.stepFixed(good);
-            assertEquals(steps + 2, sim.steps());
+            assertEquals(steps + 2, sim.inspect().steps());
         }
     }
 }

@@ -25,17 +25,20 @@ class CompetitiveDistributorTest {
 
     /** Grass tuft: footprint 0.3 m, tolerant. */
     static DistributionDef tuft(int count) {
-        return new DistributionDef("A", count, 0, 0.1, 1, 0, 1, 0.6, -100, 100, 0.3, 0.2, 0.1);
+        return DistributionDef.builder("A").count(count).density(0).water(0.1, 1).maxSlope(0.6).altitude(-100, 100)
+                .footprint(0.3).waterUse(0.2).nutrientUse(0.1).build();
     }
 
     /** Yellow flower: footprint 0.1 m, likes nutrients. */
     static DistributionDef yellow(int count) {
-        return new DistributionDef("B", count, 0, 0, 1, 0.3, 1, 0.5, -100, 100, 0.1, 0.1, 0.3);
+        return DistributionDef.builder("B").count(count).density(0).nutrients(0.3, 1).maxSlope(0.5).altitude(-100, 100)
+                .footprint(0.1).waterUse(0.1).nutrientUse(0.3).build();
     }
 
     /** Purple flower: footprint 0.15 m, likes it moist and low. */
     static DistributionDef purple(int count) {
-        return new DistributionDef("C", count, 0, 0.4, 1, 0, 1, 0.5, -100, 3, 0.15, 0.3, 0.1);
+        return DistributionDef.builder("C").count(count).density(0).water(0.4, 1).maxSlope(0.5).altitude(-100, 3)
+                .footprint(0.15).waterUse(0.3).nutrientUse(0.1).build();
     }
 
     @Test
@@ -77,7 +80,8 @@ class CompetitiveDistributorTest {
     @Test
     void sameSeedSamePlacementWithOneAndTwoThreads() throws IOException {
         Terrain t = meadow(4);
-        DistributionDef lightTuft = new DistributionDef("A", 1500, 0, 0.1, 1, 0, 1, 0.6, -100, 100, 0.3, 0.05, 0.05);
+        DistributionDef lightTuft = DistributionDef.builder("A").count(1500).density(0).water(0.1, 1).maxSlope(0.6)
+                .altitude(-100, 100).footprint(0.3).waterUse(0.05).nutrientUse(0.05).build();
         List<DistributionDef> defs = List.of(lightTuft, yellow(1500), purple(1000));
         PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(new PlacementDef("B", 1, 2, 0.5)), 77, 1, Progress.NONE);
         PlantLayout two = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(new PlacementDef("B", 1, 2, 0.5)), 77, 2, Progress.NONE);
@@ -97,8 +101,10 @@ class CompetitiveDistributorTest {
     @Test
     void speciesMatchingNowhereGetsNoPlantsAndAWarning() throws IOException {
         Terrain t = meadow(5);
-        DistributionDef alpine = new DistributionDef("C", 40, 0, 0, 1, 0, 1, 0.5, 500, 600, 0.1, 0.1, 0.1);
-        DistributionDef byDensity = new DistributionDef("B", -1, 2, 0, 1, 0, 1, 0.5, 500, 600, 0.1, 0.1, 0.1);
+        DistributionDef alpine = DistributionDef.builder("C").count(40).density(0).maxSlope(0.5).altitude(500, 600)
+                .footprint(0.1).waterUse(0.1).nutrientUse(0.1).build();
+        DistributionDef byDensity = DistributionDef.builder("B").density(2).maxSlope(0.5).altitude(500, 600)
+                .footprint(0.1).waterUse(0.1).nutrientUse(0.1).build();
         PlantLayout l = DISTRIBUTOR.distribute(t, SPECIES, List.of(tuft(30), alpine, byDensity), List.of(), 1, 1,
                 Progress.NONE);
         assertSpeciesCounts(l, 30, 0, 0);
@@ -112,7 +118,8 @@ class CompetitiveDistributorTest {
     void densityMultipliesTheSuitableArea() {
         Terrain flat = new Terrain(Heightfield.of(40, 40, 2, new float[4]), ResourceMap.uniform(40, 40, 8, 1),
                 ResourceMap.uniform(40, 40, 8, 1));
-        DistributionDef d = new DistributionDef("A", -1, 0.5, 0, 1, 0, 1, 0.5, -1, 1, 0.2, 0.1, 0.1);
+        DistributionDef d = DistributionDef.builder("A").density(0.5).maxSlope(0.5).altitude(-1, 1).waterUse(0.1)
+                .nutrientUse(0.1).build();
         PlantLayout l = DISTRIBUTOR.distribute(flat, SPECIES, List.of(d), List.of(), 3, 2, Progress.NONE);
         assertEquals(800, l.target(0));
         assertEquals(800, l.count());
@@ -123,7 +130,8 @@ class CompetitiveDistributorTest {
     void impossibleCountPlacesWhatFitsAndWarnsOfTheShortfall() {
         Terrain small = new Terrain(Heightfield.of(10, 10, 2, new float[4]), ResourceMap.uniform(10, 10, 8, 1),
                 ResourceMap.uniform(10, 10, 8, 1));
-        DistributionDef big = new DistributionDef("A", 500, 0, 0, 1, 0, 1, 0.5, -1, 1, 1.0, 0, 0);
+        DistributionDef big = DistributionDef.builder("A").count(500).density(0).maxSlope(0.5).altitude(-1, 1)
+                .footprint(1.0).waterUse(0).nutrientUse(0).build();
         PlantLayout l = DISTRIBUTOR.distribute(small, SPECIES, List.of(big), List.of(), 3, 1, Progress.NONE);
         assertTrue(l.count() > 10 && l.count() < 40, "count " + l.count());
         assertEquals(1, l.warnings().size());
@@ -136,8 +144,10 @@ class CompetitiveDistributorTest {
         // 10 m square, water 1 in 2.5 m cells; each plant drinks its footprint dry; nobody grows below 0.9
         Terrain t = new Terrain(Heightfield.of(10, 10, 2, new float[4]), ResourceMap.uniform(10, 10, 4, 1),
                 ResourceMap.uniform(10, 10, 4, 1));
-        DistributionDef a = new DistributionDef("A", 1000, 0, 0.9, 1, 0, 1, 0.5, -1, 1, 0.3, 1, 0);
-        DistributionDef b = new DistributionDef("B", 1000, 0, 0.9, 1, 0, 1, 0.5, -1, 1, 0.3, 1, 0);
+        DistributionDef a = DistributionDef.builder("A").count(1000).density(0).water(0.9, 1).maxSlope(0.5)
+                .altitude(-1, 1).footprint(0.3).waterUse(1).nutrientUse(0).build();
+        DistributionDef b = DistributionDef.builder("B").count(1000).density(0).water(0.9, 1).maxSlope(0.5)
+                .altitude(-1, 1).footprint(0.3).waterUse(1).nutrientUse(0).build();
         PlantLayout alone = DISTRIBUTOR.distribute(t, SPECIES, List.of(b), List.of(), 9, 1, Progress.NONE);
         PlantLayout both = DISTRIBUTOR.distribute(t, SPECIES, List.of(a, b), List.of(), 9, 1, Progress.NONE);
         assertTrue(both.placed(1) < alone.placed(0), both.placed(1) + " vs " + alone.placed(0) + " " + both.placed(0));
@@ -174,7 +184,7 @@ class CompetitiveDistributorTest {
         assertTrue(e.getMessage().contains("distributions[0]") && e.getMessage().contains("'B'"));
         e = assertThrows(IllegalArgumentException.class,
                 () -> DISTRIBUTOR.distribute(t, SPECIES, List.of(), List.of(), 1, 0, Progress.NONE));
-        assertTrue(e.getMessage().contains("threads"));
+        assertTrue(e.getMessage().contains("workers"));
         e = assertThrows(IllegalArgumentException.class, () -> DISTRIBUTOR.distribute(t, SPECIES, List.of(),
                 List.of(new PlacementDef("A", 30, 0, 0)), 1, 1, Progress.NONE));
         assertTrue(e.getMessage().contains("placements[0]"));

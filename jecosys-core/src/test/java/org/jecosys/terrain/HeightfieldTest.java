@@ -120,7 +120,7 @@ class HeightfieldTest {
     void badArgumentsFailFastNamingTheArgument(@TempDir Path dir) throws IOException {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> Heightfield.generate(hills(1, 9), 0, Progress.NONE));
-        assertTrue(e.getMessage().contains("threads"));
+        assertTrue(e.getMessage().contains("workers"));
         Files.writeString(dir.resolve("x.png"), "hello");
         TerrainDef notImage = new TerrainDef(10, 10, 9, 1, 0.5, 1, "x.png", ResourceMapDef.UNIFORM_FULL,
                 ResourceMapDef.UNIFORM_FULL);

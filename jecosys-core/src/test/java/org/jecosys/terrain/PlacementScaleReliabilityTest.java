@@ -35,11 +35,13 @@ class PlacementScaleReliabilityTest {
     }
 
     private static DistributionDef grass(int count) {
-        return new DistributionDef("grass", count, 0, 0, 1, 0, 1, 1.5, -100, 100, 0.05, 0, 0);
+        return DistributionDef.builder("grass").count(count).density(0).maxSlope(1.5).altitude(-100, 100)
+                .footprint(0.05).waterUse(0).nutrientUse(0).build();
     }
 
     private static DistributionDef tree(int count, double footprint) {
-        return new DistributionDef("tree", count, 0, 0, 1, 0, 1, 1.5, -100, 100, footprint, 0, 0);
+        return DistributionDef.builder("tree").count(count).density(0).maxSlope(1.5).altitude(-100, 100)
+                .footprint(footprint).waterUse(0).nutrientUse(0).build();
     }
 
     private static PlantLayout place(List<DistributionDef> defs) {

@@ -31,9 +31,12 @@ class TerrainBenchmarkTest {
         double terrainMs = (System.nanoTime() - t0) / 1e6;
         List<String> species = List.of("tuft", "yellow", "purple");
         List<DistributionDef> defs = List.of(
-                new DistributionDef("tuft", 30_000, 0, 0.15, 1, 0, 1, 0.6, -1000, 1000, 0.25, 0.1, 0.05),
-                new DistributionDef("yellow", 5_000, 0, 0, 0.8, 0.35, 1, 0.5, -1000, 1000, 0.12, 0.05, 0.2),
-                new DistributionDef("purple", 5_000, 0, 0.4, 1, 0, 1, 0.5, -1000, 8, 0.12, 0.15, 0.05));
+                DistributionDef.builder("tuft").count(30_000).density(0).water(0.15, 1).maxSlope(0.6).altitude(-1000,
+                        1000).footprint(0.25).waterUse(0.1).nutrientUse(0.05).build(),
+                DistributionDef.builder("yellow").count(5_000).density(0).water(0, 0.8).nutrients(0.35, 1)
+                        .maxSlope(0.5).altitude(-1000, 1000).footprint(0.12).waterUse(0.05).nutrientUse(0.2).build(),
+                DistributionDef.builder("purple").count(5_000).density(0).water(0.4, 1).maxSlope(0.5).altitude(-1000,
+                        8).footprint(0.12).waterUse(0.15).nutrientUse(0.05).build());
         TerrainDistributor dist = new CompetitiveDistributor();
         StringBuilder md = new StringBuilder();
         md.append("# Terrain benchmark\n\n")

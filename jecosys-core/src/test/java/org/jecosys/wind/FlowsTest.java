@@ -14,7 +14,8 @@ class FlowsTest {
 
     static FlowDef def(FlowKind kind, double x, double z, double strength, double core, double influence,
                        ActivationDef act, MotionDef motion) {
-        return new FlowDef(kind.xmlName(), kind, true, x, z, strength, 0.3, core, influence, act, motion, 8, 0.25, 42);
+        return new FlowDef(kind.xmlName(), kind, true, x, z, strength, 0.3, core, influence, act, motion, 8, 0.25, 42,
+                FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE);
     }
 
     static FlowDef point(FlowKind kind, double x, double z, double strength) {
@@ -140,9 +141,11 @@ class FlowsTest {
     void superpositionIsLinear() {
         WindField f = WindField.of(List.of(FlowDef.uniform("u", 2, 1.0), point(FlowKind.SOURCE, 1, 1, 3),
                 new FlowDef("v", FlowKind.VORTEX, true, -2, 4, 5, 0, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 0),
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE),
                 new FlowDef("g", FlowKind.GUST, true, 0, 0, 4, 0.2, 0.5, Double.POSITIVE_INFINITY,
-                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 7)));
+                        ActivationDef.ALWAYS, MotionDef.FIXED, 8, 0.25, 7, FlowDef.DEFAULT_GUST_STRENGTH,
+                        FlowDef.DEFAULT_TURBULENCE)));
         f.advance(1.3);
         Vector2d sum = new Vector2d();
         Vector2d one = new Vector2d();
@@ -201,7 +204,8 @@ class FlowsTest {
     @Test
     void rainGivesImpulsesOnlyOnItsDisc() {
         WindSource r = WindSource.of(new FlowDef("r", FlowKind.RAIN, true, 50, 50, 2, 0, 0.1, 10,
-                ActivationDef.ALWAYS, MotionDef.FIXED, 1.0, 4.0, 9));
+                ActivationDef.ALWAYS, MotionDef.FIXED, 1.0, 4.0, 9, FlowDef.DEFAULT_GUST_STRENGTH,
+                FlowDef.DEFAULT_TURBULENCE));
         Vector2d v = new Vector2d();
         int nonZero = 0;
         for (double t = 0; t < 2; t += 0.05) {

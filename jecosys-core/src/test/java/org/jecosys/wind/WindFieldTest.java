@@ -15,7 +15,8 @@ class WindFieldTest {
 
     private static FlowDef advectedSource(double x, double z) {
         return new FlowDef("s", FlowKind.SOURCE, true, x, z, 3, 0, 0.5, Double.POSITIVE_INFINITY,
-                ActivationDef.ALWAYS, new MotionDef(MotionDef.Kind.ADVECTED, List.of(), 1, false), 8, 0.25, 0);
+                ActivationDef.ALWAYS, new MotionDef(MotionDef.Kind.ADVECTED, List.of(), 1, false), 8, 0.25, 0,
+                        FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE);
     }
 
     @Test
@@ -39,7 +40,7 @@ class WindFieldTest {
     void advectedFlowIgnoresItselfAndInactiveFlows() {
         ActivationDef later = new ActivationDef(100, Double.POSITIVE_INFINITY, 0, 0);
         FlowDef u = new FlowDef("u", FlowKind.UNIFORM, true, 0, 0, 5, 0, 0.5, Double.POSITIVE_INFINITY, later,
-                MotionDef.FIXED, 8, 0.25, 0);
+                MotionDef.FIXED, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE);
         WindField f = WindField.of(List.of(u, advectedSource(1, 1)));
         f.advance(1);
         assertEquals(1, f.get(1).centreX(), 0);
@@ -51,7 +52,7 @@ class WindFieldTest {
         MotionDef path = new MotionDef(MotionDef.Kind.PATH,
                 List.of(new Waypoint(0, 0, 0), new Waypoint(10, 0, 0), new Waypoint(10, 0, 10)), 2, false);
         FlowDef d = new FlowDef("p", FlowKind.VORTEX, true, 0, 0, 1, 0, 0.5, Double.POSITIVE_INFINITY,
-                ActivationDef.ALWAYS, path, 8, 0.25, 0);
+                ActivationDef.ALWAYS, path, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE);
         WindField f = WindField.of(List.of(d));
         WindSource s = f.get(0);
         assertEquals(0, s.centreX(), 0);
@@ -67,7 +68,8 @@ class WindFieldTest {
 
         MotionDef loop = new MotionDef(MotionDef.Kind.PATH, List.of(new Waypoint(0, 0, 0), new Waypoint(4, 0, 0)), 1, true);
         WindField g = WindField.of(List.of(new FlowDef("l", FlowKind.SOURCE, true, 0, 0, 1, 0, 0.5,
-                Double.POSITIVE_INFINITY, ActivationDef.ALWAYS, loop, 8, 0.25, 0)));
+                Double.POSITIVE_INFINITY, ActivationDef.ALWAYS, loop, 8, 0.25, 0, FlowDef.DEFAULT_GUST_STRENGTH,
+                FlowDef.DEFAULT_TURBULENCE)));
         g.advance(5);
         assertEquals(1, g.get(0).centreX(), 1e-9);
     }
@@ -86,7 +88,8 @@ class WindFieldTest {
         assertFalse(f.remove(agent));
         assertThrows(IllegalArgumentException.class, () -> f.attachAgent(new FlowDef("x", FlowKind.SOURCE, true, 0, 0,
                 1, 0, 0.5, Double.POSITIVE_INFINITY, ActivationDef.ALWAYS,
-                new MotionDef(MotionDef.Kind.ADVECTED, List.of(), 1, false), 8, 0.25, 0)));
+                new MotionDef(MotionDef.Kind.ADVECTED, List.of(), 1, false), 8, 0.25, 0,
+                        FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE)));
     }
 
     @Test
@@ -117,7 +120,8 @@ class WindFieldTest {
     @Test
     void activeCountFollowsWindowsAndSwitches() {
         WindField f = WindField.of(List.of(FlowDef.uniform("a", 1, 0), new FlowDef("b", FlowKind.UNIFORM, true, 0, 0, 1,
-                0, 0.5, Double.POSITIVE_INFINITY, new ActivationDef(1, 1, 0, 0), MotionDef.FIXED, 8, 0.25, 0)));
+                0, 0.5, Double.POSITIVE_INFINITY, new ActivationDef(1, 1, 0, 0), MotionDef.FIXED, 8, 0.25, 0,
+                        FlowDef.DEFAULT_GUST_STRENGTH, FlowDef.DEFAULT_TURBULENCE)));
         assertEquals(1, f.activeCount());
         f.advance(1.5);
         assertEquals(2, f.activeCount());

@@ -41,7 +41,7 @@ class PlantLayerLoaderTest {
         loader.loadAsync(null, NAME, file, p);
         Simulation sim = loader.pending(NAME);
         assertNotNull(sim, "built by loadAsync");
-        assertEquals(2, sim.workers());
+        assertEquals(2, sim.inspect().workers());
         assertTrue(sim.plantCount() > 0);
         loader.unloadAsync(null, NAME, file, p);
         assertNull(loader.pending(NAME));

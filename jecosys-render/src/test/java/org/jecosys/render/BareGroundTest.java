@@ -71,8 +71,10 @@ class BareGroundTest {
     @Test
     void fromAboveLittleSoilShows() {
         double gy = world.terrain().heightfield().height(0, 0);
-        ViewCamera top = new ViewCamera().setPosition(0, gy + 10, 0).setOrientation(0, -Math.PI / 2 + 1e-3)
-                .setLens(def.camera().fovY(), W / (double) H, 0.1, 200);
+        ViewCamera top = new ViewCamera();
+        top.setPosition(0, gy + 10, 0);
+        top.setOrientation(0, -Math.PI / 2 + 1e-3);
+        top.setLens(def.camera().fovY(), W / (double) H, 0.1, 200);
         double share = bare(top, 0, H);
         System.out.printf("[look] meadow from 10 m above: %.1f%% of the picture is bare ground (<= 10%%)%n",
                 100 * share);

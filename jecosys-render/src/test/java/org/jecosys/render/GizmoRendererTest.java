@@ -79,7 +79,9 @@ class GizmoRendererTest {
     }
 
     private static ViewCamera camera() {
-        ViewCamera c = new ViewCamera().setPosition(0, 22, 4).setOrientation(0, -1.25);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 22, 4);
+        c.setOrientation(0, -1.25);
         c.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         return c;
     }

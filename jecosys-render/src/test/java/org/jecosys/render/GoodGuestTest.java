@@ -67,7 +67,9 @@ class GoodGuestTest {
     }
 
     private static ViewCamera camera() {
-        ViewCamera c = new ViewCamera().setPosition(0, 1.6, 9).setOrientation(0, -0.2);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 1.6, 9);
+        c.setOrientation(0, -0.2);
         c.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         return c;
     }

@@ -50,9 +50,10 @@ class HorizonTest {
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             for (double pitchDeg : new double[] {-15, -40}) {
                 for (int k = 0; k < 4; k++) {
-                    ViewCamera cam = new ViewCamera().setPosition(cx, eyeY, cz)
-                            .setOrientation(k * Math.PI / 2 + 0.3, Math.toRadians(pitchDeg))
-                            .setLens(def.camera().fovY(), W / (double) H, 0.05, 400);
+                    ViewCamera cam = new ViewCamera();
+                    cam.setPosition(cx, eyeY, cz);
+                    cam.setOrientation(k * Math.PI / 2 + 0.3, Math.toRadians(pitchDeg));
+                    cam.setLens(def.camera().fovY(), W / (double) H, 0.05, 400);
                     double[] dist = s.groundDistance(TestFrames.rest(world, cam), cam);
                     Matrix4f inv = cam.viewProjection(new Matrix4f()).invert();
                     Vector3f near = new Vector3f();

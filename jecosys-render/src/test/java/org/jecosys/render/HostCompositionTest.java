@@ -117,7 +117,9 @@ class HostCompositionTest {
     }
 
     private ViewCamera camera(int w, int h) {
-        ViewCamera c = new ViewCamera().setPosition(0, 1.6, 9).setOrientation(0, -0.2);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 1.6, 9);
+        c.setOrientation(0, -0.2);
         c.setLens(Math.toRadians(50), w / (double) h, 0.05, 200);
         return c;
     }

@@ -60,8 +60,10 @@ class LightingLooksTest {
     }
 
     private static double brightness(Shots s, World world, SceneDef def, double x, double y, double z, double yaw) {
-        ViewCamera cam = new ViewCamera().setPosition(x, y, z).setOrientation(yaw, Math.toRadians(-35))
-                .setLens(def.camera().fovY(), W / (double) H, 0.05, 500);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(x, y, z);
+        cam.setOrientation(yaw, Math.toRadians(-35));
+        cam.setLens(def.camera().fovY(), W / (double) H, 0.05, 500);
         Shots.View v = s.view(TestFrames.rest(world, cam), cam);
         assertTrue(ImageMetrics.count(v.vegetation()) > W * H / 20, "little grass in view");
         return ImageMetrics.meanLuma(v.full(), v.vegetation());
@@ -74,8 +76,10 @@ class LightingLooksTest {
         Heightfield hf = world.terrain().heightfield();
         double[] spot = openSpot(world, new Bases(world));
         double gy = hf.height(spot[0], spot[1]);
-        ViewCamera cam = new ViewCamera().setPosition(spot[0], gy + 4, spot[1]).setOrientation(0, -Math.PI / 2 + 1e-3)
-                .setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(spot[0], gy + 4, spot[1]);
+        cam.setOrientation(0, -Math.PI / 2 + 1e-3);
+        cam.setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             var frame = TestFrames.rest(world, cam);
             ImageMetrics.Img full = s.render(frame, cam, true, true);

@@ -64,7 +64,9 @@ class ManyViewsTest {
 
     /** A camera 1.7 m high, 9 m from the middle, looking across it along +Z (north) or -Z. */
     private static ViewCamera looking(boolean north) {
-        ViewCamera c = new ViewCamera().setPosition(0, 1.7, north ? -9 : 9).setOrientation(north ? Math.PI : 0, -0.18);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 1.7, north ? -9 : 9);
+        c.setOrientation(north ? Math.PI : 0, -0.18);
         c.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         return c;
     }

@@ -20,7 +20,9 @@ import org.jecosys.render.plant.PlantBatches;
  */
 class OneDecisionTest {
     private static ViewCamera camera() {
-        ViewCamera c = new ViewCamera().setPosition(0, 2.5, 16).setOrientation(0, -0.15);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 2.5, 16);
+        c.setOrientation(0, -0.15);
         c.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
         return c;
     }

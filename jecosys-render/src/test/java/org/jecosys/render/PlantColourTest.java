@@ -115,8 +115,10 @@ class PlantColourTest {
     private static void collect(Shots s, World world, SceneDef def, double x, double z, double height,
                                 List<List<double[]>> colours, List<List<double[]>> cores) {
         double gy = world.terrain().heightfield().height(x, z);
-        ViewCamera cam = new ViewCamera().setPosition(x, gy + height, z).setOrientation(0, -Math.PI / 2 + 1e-3)
-                .setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(x, gy + height, z);
+        cam.setOrientation(0, -Math.PI / 2 + 1e-3);
+        cam.setLens(def.camera().fovY(), W / (double) H, 0.1, 100);
         Shots.View v = s.view(TestFrames.rest(world, cam), cam);
         ImageMetrics.Blobs blobs = ImageMetrics.blobs(v.vegetation(), W, H);
         int[] plantsIn = new int[blobs.count()];

@@ -247,7 +247,8 @@ class RenderC1Test {
             xs[p] = world.plantX(p);
             zs[p] = world.plantZ(p);
         }
-        QuadtreeForceField field = QuadtreeForceField.build(new ForceFieldDef(true, 4, 6, List.of(4.0, 8.0)),
+        QuadtreeForceField field = QuadtreeForceField.build(ForceFieldDef.builder().maxObjectsPerNode(4).maxDepth(6)
+                .lodDistances(4.0, 8.0).build(),
                 h.minX(), h.minZ(), h.maxX(), h.maxZ(), h.minHeight(), h.maxHeight() + 1, wind, xs, zs);
         ViewCamera cam = cameraAt(grassPlant(), 3);
         field.update(cam);

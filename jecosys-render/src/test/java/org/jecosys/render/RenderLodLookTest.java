@@ -36,7 +36,7 @@ class RenderLodLookTest {
         // issue's thin-geometry work on the line level is to close
         SceneDef def;
         try {
-            def = org.jecosys.scene.SceneFiles.load(java.nio.file.Path.of(
+            def = org.jecosys.scene.SceneFiles.parse(java.nio.file.Path.of(
                     "jecosys-render/src/test/resources/org/jecosys/render/meadow-sparse-fixture.xml"));
         } catch (Exception e) {
             throw new IllegalStateException(e);

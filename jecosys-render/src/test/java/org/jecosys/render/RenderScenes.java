@@ -14,7 +14,7 @@ public final class RenderScenes {
 
     public static SceneDef load(String name) {
         try {
-            return SceneFiles.load(Path.of("scenes", name));
+            return SceneFiles.parse(Path.of("scenes", name));
         } catch (Exception e) {
             throw new IllegalStateException("cannot load scenes/" + name, e);
         }

@@ -148,7 +148,11 @@ final class Shots implements AutoCloseable {
         double dz = tz - ez;
         double yaw = Math.atan2(dx, -dz);
         double pitch = Math.atan2(dy, Math.hypot(dx, dz));
-        return new ViewCamera().setPosition(ex, ey, ez).setOrientation(yaw, pitch).setLens(fovY, aspect, near, far);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(ex, ey, ez);
+        camera.setOrientation(yaw, pitch);
+        camera.setLens(fovY, aspect, near, far);
+        return camera;
     }
 
     @Override

@@ -101,7 +101,9 @@ class SkyAndGroundTest {
 
     /** A camera at the origin, 1 m up, looking along (yaw, pitch), 60 degree vertical field. */
     private static ViewCamera look(double yaw, double pitch) {
-        ViewCamera c = new ViewCamera().setPosition(0, 1, 0).setOrientation(yaw, pitch);
+        ViewCamera c = new ViewCamera();
+        c.setPosition(0, 1, 0);
+        c.setOrientation(yaw, pitch);
         c.setLens(Math.toRadians(60), W / (double) H, 0.05, 200);
         return c;
     }
@@ -154,7 +156,9 @@ class SkyAndGroundTest {
      */
     @Test
     void groundUnderThePlantsIsDarkerThanOpenGround() {
-        ViewCamera top = new ViewCamera().setPosition(0, 9, 0.001).setOrientation(0, Math.toRadians(-89.9));
+        ViewCamera top = new ViewCamera();
+        top.setPosition(0, 9, 0.001);
+        top.setOrientation(0, Math.toRadians(-89.9));
         top.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         render(top, false);
         Matrix4f vp = top.viewProjection(new Matrix4f());
@@ -220,7 +224,9 @@ class SkyAndGroundTest {
 
     @Test
     void theSunLightsTheGround() {
-        ViewCamera top = new ViewCamera().setPosition(0, 9, 0.001).setOrientation(0, Math.toRadians(-89.9));
+        ViewCamera top = new ViewCamera();
+        top.setPosition(0, 9, 0.001);
+        top.setOrientation(0, Math.toRadians(-89.9));
         top.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         Matrix4f vp = top.viewProjection(new Matrix4f());
         settings.setSun(Math.toRadians(135), Math.toRadians(80));

@@ -75,8 +75,10 @@ class SunShadowTest {
         settings.setContactShadow(0.5f);
         settings.setShadowPath(path);
         try (Shots s = new Shots(world, settings, W, H)) {
-            ViewCamera above = new ViewCamera().setPosition(0, 3, 0).setOrientation(0, -Math.PI / 2 + 1e-4)
-                    .setLens(Math.toRadians(60), 1, 0.05, 50);
+            ViewCamera above = new ViewCamera();
+            above.setPosition(0, 3, 0);
+            above.setOrientation(0, -Math.PI / 2 + 1e-4);
+            above.setLens(Math.toRadians(60), 1, 0.05, 50);
             Frame frame = TestFrames.rest(world, above);
             ViewCamera a = Shots.lookAt(0, 1.5, 1.5, 0, 0, 0, Math.toRadians(50), 1, 0.05, 50);
             settings.setSun(Math.toRadians(0), Math.toRadians(30));

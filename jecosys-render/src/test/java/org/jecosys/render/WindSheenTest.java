@@ -139,7 +139,7 @@ class WindSheenTest {
                     top = y; // the highest ground row (GL rows, bottom up) in the middle column
                 }
             }
-            Vector2d travel = sim.windField().gustTravel(new Vector2d());
+            Vector2d travel = sim.inspect().windField().gustTravel(new Vector2d());
             gustSpeed = travel.length();
             if (gustSpeed > 0) {
                 pairPixels = pairs(world, cam, top, travel.x / gustSpeed, travel.y / gustSpeed);

@@ -138,7 +138,7 @@ class MeadowGameTest {
                 for (double[] w : walked) {
                     d = Math.min(d, Math.hypot(world.plantX(p) - w[0], world.plantZ(p) - w[1]));
                 }
-                boolean flat = game.simulation().state().flattening(p) > 0.3f;
+                boolean flat = game.simulation().inspect().state().flattening(p) > 0.3f;
                 if (d <= 0.3) {
                     near++;
                     nearFlat += flat ? 1 : 0;

@@ -22,8 +22,11 @@ class ShadowFitTest {
     private static final float LZ = (float) (Math.cos(Math.toRadians(30)) * Math.sin(Math.toRadians(40)));
 
     private static ViewCamera camera(double x, double z, double yaw) {
-        return new ViewCamera().setPosition(x, 1.7, z).setOrientation(yaw, -0.2).setLens(Math.toRadians(60), 16 / 9.0,
-                0.1, 500);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(x, 1.7, z);
+        camera.setOrientation(yaw, -0.2);
+        camera.setLens(Math.toRadians(60), 16 / 9.0, 0.1, 500);
+        return camera;
     }
 
     private static Vector3f map(ShadowFit fit, double x, double y, double z) {

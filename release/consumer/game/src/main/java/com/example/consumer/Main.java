@@ -38,20 +38,23 @@ public final class Main {
             scene = SceneFiles.read(in, "patch.xml", ImageSource.NONE);
         }
         // the game's camera: 1.5 m up at the patch's edge, looking over it
-        ViewCamera camera = new ViewCamera().setPosition(0, 1.5, -7).setOrientation(Math.PI, -0.2)
-                .setLens(Math.toRadians(50), 16.0 / 9, 0.1, 200);
+        ViewCamera camera = new ViewCamera();
+        camera.setPosition(0, 1.5, -7);
+        camera.setOrientation(Math.PI, -0.2);
+        camera.setLens(Math.toRadians(50), 16.0 / 9, 0.1, 200);
         try (Simulation sim = Scenes.simulation(scene, 2, Progress.NONE)) {
-            long before = sim.stateHash();
+            long before = sim.inspect().stateHash();
             for (int i = 0; i < STEPS; i++) {
                 sim.stepFixed(camera);
             }
             Frame frame = sim.latestFrame();
             System.out.printf("consumer: %s, %d plants, %d components, %d steps (%.2f s), state hash %016x%n",
-                    scene.def().name(), sim.plantCount(), sim.componentCount(), sim.steps(), sim.time(), sim.stateHash());
+                    scene.def().name(), sim.plantCount(), sim.componentCount(), sim.inspect().steps(),
+                    sim.inspect().time(), sim.inspect().stateHash());
             check(sim.plantCount() > 0, "the scene has plants");
-            check(sim.steps() == STEPS, "the simulation ran " + STEPS + " fixed steps");
+            check(sim.inspect().steps() == STEPS, "the simulation ran " + STEPS + " fixed steps");
             check(frame != null, "a frame was published");
-            check(sim.stateHash() != before, "the wind moved the plants");
+            check(sim.inspect().stateHash() != before, "the wind moved the plants");
         }
         checkJar("jecosys-core", Simulation.class);
         checkJar("jecosys-render", SceneRenderer.class);
