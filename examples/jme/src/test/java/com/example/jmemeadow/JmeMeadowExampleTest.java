@@ -28,6 +28,8 @@ class JmeMeadowExampleTest {
     private static final String TAG = "[jme-meadow]";
     private static final Path OUT = Path.of("examples/jme/target/example-test");
     private static VirtualDisplay display;
+    /** The core-profile run with jME's default gamma correction, made once: two tests read it. */
+    private static ExampleShot core;
 
     @BeforeAll
     static void startDisplay() throws Exception {
@@ -58,9 +60,17 @@ class JmeMeadowExampleTest {
         return shot;
     }
 
+    /** {@return the core-profile run (jME's default, gamma correction on), made at the first call} */
+    private static ExampleShot core() throws Exception {
+        if (core == null) {
+            core = run("core", "--renderer", "core");
+        }
+        return core;
+    }
+
     @Test
     void theCoreProfileShowsHudGroundPlayerAndPushedPlantsWithoutGlErrors() throws Exception {
-        ExampleShot shot = run("core", "--renderer", "core");
+        ExampleShot shot = core();
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core.png"));
     }
 
@@ -78,7 +88,7 @@ class JmeMeadowExampleTest {
     @Test
     void gammaCorrectionKeepsThePlantsColours() throws Exception {
         ExampleShot linear = run("core-no-gamma", "--renderer", "core", "--no-gamma");
-        ExampleShot gamma = run("core-gamma", "--renderer", "core");
+        ExampleShot gamma = core();
         int[] a = linear.median(ExampleShot::plant, linear.plants(), 4);
         int[] b = gamma.median(ExampleShot::plant, gamma.plants(), 4);
         assertNotNull(a);
