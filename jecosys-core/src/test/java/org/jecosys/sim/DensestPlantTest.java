@@ -22,21 +22,25 @@ class DensestPlantTest {
     @Test
     void noPlantOfTheSpeciesHasMoreNeighboursOfItsOwnKind() throws Exception {
         World w = SimFixtures.world();
-        for (int s = 0; s < w.plants().species().size(); s++) {
-            int best = w.densestPlant(s, 1.5);
-            if (best < 0) {
-                for (int p = 0; p < w.plantCount(); p++) {
-                    assertTrue(w.plantSpecies(p) != s, "species " + s + " has plants but none was found");
+        // radii from a fraction of the plants' spacing (grid cells hold few plants) to wider than the
+        // terrain (one cell)
+        for (double radius : new double[] {0.05, 0.4, 1.5, 1e6}) {
+            for (int s = 0; s < w.plants().species().size(); s++) {
+                int best = w.densestPlant(s, radius);
+                if (best < 0) {
+                    for (int p = 0; p < w.plantCount(); p++) {
+                        assertTrue(w.plantSpecies(p) != s, "species " + s + " has plants but none was found");
+                    }
+                    continue;
                 }
-                continue;
-            }
-            assertEquals(s, w.plantSpecies(best));
-            int most = neighbours(w, best, 1.5);
-            for (int p = 0; p < w.plantCount(); p++) {
-                if (w.plantSpecies(p) == s) {
-                    int n = neighbours(w, p, 1.5);
-                    assertTrue(n < most || (n == most && p >= best),
-                            "plant " + p + " has " + n + " neighbours, the one found " + most);
+                assertEquals(s, w.plantSpecies(best));
+                int most = neighbours(w, best, radius);
+                for (int p = 0; p < w.plantCount(); p++) {
+                    if (w.plantSpecies(p) == s) {
+                        int n = neighbours(w, p, radius);
+                        assertTrue(n < most || (n == most && p >= best), "radius " + radius + ": plant " + p
+                                + " has " + n + " neighbours, the one found " + most);
+                    }
                 }
             }
         }

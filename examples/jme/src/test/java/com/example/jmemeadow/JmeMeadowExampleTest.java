@@ -9,6 +9,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import org.jecosys.render.ChildJvm;
 import org.jecosys.render.ExampleShot;
 import org.jecosys.render.VirtualDisplay;
@@ -22,26 +26,55 @@ import org.junit.jupiter.api.Test;
  * default) and on its compatibility-profile one ({@code LWJGL_OPENGL2}), with jME's default gamma
  * correction; the screenshot (read after the GUI viewport) shows the HUD text, the game's own ground,
  * its player and the JEcoSys plants where the example says they are, the player has pushed the plants
- * around it, and no phase of any frame raised a GL error.
+ * around it, and no phase of any frame raised a GL error. The three runs go at once, each on its own
+ * display: much of a run is single-threaded (the JVM's start, Mesa compiling shaders).
  */
 class JmeMeadowExampleTest {
     private static final String TAG = "[jme-meadow]";
     private static final Path OUT = Path.of("examples/jme/target/example-test");
-    private static VirtualDisplay display;
+    private static final List<VirtualDisplay> DISPLAYS = new ArrayList<>();
+    private static ExecutorService runs;
+    /** The core-profile run with jME's default gamma correction: two tests read it. */
+    private static Future<ExampleShot> core;
+    private static Future<ExampleShot> compat;
+    private static Future<ExampleShot> coreNoGamma;
 
     @BeforeAll
-    static void startDisplay() throws Exception {
-        display = VirtualDisplay.start(1024, 768);
+    static void startTheRuns() throws Exception {
+        runs = Executors.newFixedThreadPool(3);
+        core = start("core", "--renderer", "core");
+        compat = start("compat", "--renderer", "compat");
+        coreNoGamma = start("core-no-gamma", "--renderer", "core", "--no-gamma");
     }
 
     @AfterAll
-    static void stopDisplay() {
-        if (display != null) {
-            display.close();
+    static void stopDisplays() {
+        if (runs != null) {
+            runs.shutdownNow();
+        }
+        DISPLAYS.forEach(VirtualDisplay::close);
+    }
+
+    /** Starts a run on a display of its own. */
+    private static Future<ExampleShot> start(String name, String... extra) throws Exception {
+        VirtualDisplay display = VirtualDisplay.start(1024, 768);
+        DISPLAYS.add(display);
+        return runs.submit(() -> run(display, name, extra));
+    }
+
+    /** The run's screenshot, or what failed in the run, thrown as it was. */
+    private static ExampleShot shot(Future<ExampleShot> run) throws Exception {
+        try {
+            return run.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw (Exception) e.getCause();
         }
     }
 
-    private static ExampleShot run(String name, String... extra) throws Exception {
+    private static ExampleShot run(VirtualDisplay display, String name, String... extra) throws Exception {
         Files.createDirectories(OUT);
         Path png = OUT.resolve(name + ".png");
         Files.deleteIfExists(png);
@@ -60,13 +93,13 @@ class JmeMeadowExampleTest {
 
     @Test
     void theCoreProfileShowsHudGroundPlayerAndPushedPlantsWithoutGlErrors() throws Exception {
-        ExampleShot shot = run("core", "--renderer", "core");
+        ExampleShot shot = shot(core);
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core.png"));
     }
 
     @Test
     void theCompatibilityProfileShowsTheSame() throws Exception {
-        ExampleShot shot = run("compat", "--renderer", "compat");
+        ExampleShot shot = shot(compat);
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("compat.png"));
     }
 
@@ -77,8 +110,8 @@ class JmeMeadowExampleTest {
      */
     @Test
     void gammaCorrectionKeepsThePlantsColours() throws Exception {
-        ExampleShot linear = run("core-no-gamma", "--renderer", "core", "--no-gamma");
-        ExampleShot gamma = run("core-gamma", "--renderer", "core");
+        ExampleShot linear = shot(coreNoGamma);
+        ExampleShot gamma = shot(core);
         int[] a = linear.median(ExampleShot::plant, linear.plants(), 4);
         int[] b = gamma.median(ExampleShot::plant, gamma.plants(), 4);
         assertNotNull(a);
