@@ -43,6 +43,10 @@ final class Commands {
     private WindSource[] blasts = new WindSource[4];
     private Object[] blastTokens = new Object[4];
     private int blastCount;
+    /** The latest requested centre of each moved flow, applied after the queue ({@link #moveAgent}). */
+    private final AgentMoves moves = new AgentMoves();
+    /** Whether a flow still holds its id here (for {@link AgentMoves#apply}); made once. */
+    private final java.util.function.Predicate<WindSource> held = source -> flowIds.get(source.id()) == source;
 
     /**
      * Reserves the ids of the flows a simulation starts with. Build time; allocates.
@@ -57,16 +61,20 @@ final class Commands {
         flowsReserved.set(wind.size());
     }
 
-    /** Applies the commands queued when it starts, no more (later ones wait for the next step). */
+    /**
+     * Applies the commands queued when it starts, no more (later ones wait for the next step), then
+     * the agents' latest moves.
+     */
     void drain() {
         for (int n = pendingCommands.get(); n > 0; n--) {
             Runnable r = queue.poll();
             if (r == null) {
-                return; // counted but not yet in the queue: the next step takes it
+                break; // counted but not yet in the queue: the next step takes it
             }
             pendingCommands.decrementAndGet();
             r.run();
         }
+        moves.apply(held);
     }
 
     /** Refuses every later command and reservation, and drops those still queued. Any thread. */
@@ -193,6 +201,7 @@ final class Commands {
         Require.nonNull("source", source);
         enqueue(() -> wind.remove(source));
         releaseFlow(source.id(), source);
+        moves.forget(source);
     }
 
     /** Queues an agent, a flow of FIXED motion ({@link Simulation#attachAgent}); returns its handle. */
@@ -205,12 +214,19 @@ final class Commands {
         return addFlow(WindSource.of(def));
     }
 
-    /** Queues moving a flow's centre to (x, z), metres ({@link Simulation#moveAgent}). */
+    /**
+     * Moves a flow's centre to (x, z), metres, at the next step ({@link Simulation#moveAgent}): the
+     * latest move of a flow between two steps wins. A flow that is not in the simulation (never added,
+     * or removed) is not moved. No allocation after the flow's first move.
+     */
     void moveAgent(WindSource agent, double x, double z) {
+        checkOpen();
         Require.nonNull("agent", agent);
         Require.range("x", x, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
         Require.range("z", z, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
-        enqueue(() -> agent.setCentre(x, z));
+        if (held.test(agent)) {
+            moves.move(agent, x, z);
+        }
     }
 
     /** Queues a blast, its id reserved until it is over ({@link Simulation#blast}). */

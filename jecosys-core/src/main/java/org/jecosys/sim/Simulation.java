@@ -68,7 +68,8 @@ import org.jecosys.wind.WindSource;
  * at the start of the next fixed step. A step applies at most the commands queued when it started,
  * so producers can never keep it from returning; at most {@link #MAX_PENDING_COMMANDS} wait at a
  * time, and a command past that is refused with an IllegalStateException (back-pressure: step more
- * often or send fewer). They allocate a small command; steps allocate nothing after warm-up, on the
+ * often or send fewer). They allocate a small command, except {@link #moveAgent}, which allocates
+ * nothing after a flow's first move; steps allocate nothing after warm-up, on the
  * stepping thread and on every worker.</li>
  * <li>{@link #close()}: any thread, any time, idempotent: it refuses every later step and command
  * ({@code IllegalStateException}), waits for a running step to end its fixed step, and stops the
@@ -351,7 +352,11 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * Queues moving a flow's centre to (x, z). Any thread; allocates a command.
+     * Moves a flow's centre to (x, z) at the start of the next fixed step, after that step's queued
+     * commands. Moves of one flow between two steps coalesce: the latest wins. A flow that is not in
+     * the simulation (never added, or removed) is not moved. Any thread; allocates nothing after the
+     * flow's first move (a game may call it every frame), and does not count against
+     * {@link #MAX_PENDING_COMMANDS}.
      *
      * @param agent the flow's handle: a built-in flow, or a user flow with a movable centre (an
      *              {@link org.jecosys.wind.AbstractWindSource}; the interface's default
@@ -359,7 +364,7 @@ public final class Simulation implements AutoCloseable {
      * @param x     new centre X, metres, |x| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
      * @param z     new centre Z, metres, |z| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
      * @throws IllegalArgumentException when the agent is null or a coordinate is out of range
-     * @throws IllegalStateException    when {@link #MAX_PENDING_COMMANDS} commands are already queued
+     * @throws IllegalStateException    when the simulation is closed
      */
     public void moveAgent(WindSource agent, double x, double z) {
         loop.commands.moveAgent(agent, x, z);
