@@ -179,6 +179,15 @@ public class PlantAppState extends BaseAppState {
         return renderer;
     }
 
+    /**
+     * {@return how many times jME replaced the GL context under the plants ({@code app.restart()}):
+     * the renderer noticed it at its next frame and made its GL objects again; -1 before
+     * {@link #initialize}} Render thread; no allocation.
+     */
+    public int contextGeneration() {
+        return gl == null ? -1 : gl.generation();
+    }
+
     /** Draws the plants in the viewport's postFrame; holds no resources of its own. */
     private final class Hook implements SceneProcessor {
         private boolean initialized;

@@ -48,6 +48,18 @@ import org.jecosys.render.gl.GlTracker;
  * headless context's {@link #close()} destroys its EGL context and display. Close every renderer
  * first (see {@link #tracker()}).
  *
+ * <p>A new context: a game may destroy its context and make a new one (jMonkeyEngine's
+ * {@code app.restart()} to change the resolution, vsync or samples; a window made again). Every GL
+ * object belongs to a context generation ({@link #generation()}); a wrapped context ({@link #current})
+ * follows the host's: {@link #follow()}, which {@code SceneRenderer.render} calls first every frame,
+ * sees that the LWJGL capabilities current on the render thread are no longer the ones this object
+ * was made with (every host makes new ones, {@code GL.createCapabilities()}, for a new context),
+ * and then does what {@link #contextReplaced()} does: the objects made so far are abandoned (closing
+ * them makes no GL call: their names died with the old context) and the renderers make theirs again
+ * in the new context. A host that hands the same capabilities object to a new context calls
+ * {@link #contextReplaced()} itself. A context the library made ({@link #headless}, {@link #windowed})
+ * is never replaced; once it is {@link #close() closed}, closing a renderer made in it makes no GL call.
+ *
  * <p>Each of the three takes a {@link DebugOutput}: whether the library asks for a debug context and
  * turns the GL's KHR_debug messages into exceptions ({@code GlContext.headless(DebugOutput.ON)} in
  * tests, {@code GlContext.current(DebugOutput.OFF)} in a game).
@@ -76,7 +88,8 @@ public final class GlContext implements AutoCloseable {
     private final long window;
     private final Thread thread;
     private final GlTracker tracker = new GlTracker();
-    private final GLCapabilities caps;
+    /** The capabilities LWJGL made for the context this object stands for; replaced by {@link #contextReplaced()}. */
+    private GLCapabilities caps;
     private final GlDebug debug;
     /** What {@link #close()} releases besides the debug callback; null for a wrapped context. */
     private final Runnable release;
@@ -296,6 +309,74 @@ public final class GlContext implements AutoCloseable {
         return debug;
     }
 
+    /**
+     * {@return the context generation the renderers' GL objects belong to: 0 at first, one more each
+     * time the wrapped context is replaced ({@link #follow()}, {@link #contextReplaced()}) and when a
+     * context the library made is closed} Any thread that may call the context's methods; no allocation.
+     */
+    public int generation() {
+        return tracker.generation();
+    }
+
+    /**
+     * For a wrapped context ({@link #current}): whether the host replaced its context since the last
+     * call, told by the LWJGL capabilities current on this thread ({@code GL.getCapabilities()}, a
+     * thread-local read) no longer being the ones this object holds; if so, {@link #contextReplaced()}.
+     * For a context the library made: nothing. Renderers call it first in every frame and remake their
+     * GL objects when the generation changed. Render thread; no allocation unless replaced.
+     *
+     * @return the current {@link #generation()}
+     * @throws IllegalStateException off the render thread, or when no LWJGL capabilities are current
+     *                               on it (the host has no context)
+     */
+    public int follow() {
+        checkThread();
+        if (release == null && !closed) {
+            GLCapabilities now = GL.getCapabilities();
+            if (now != caps) {
+                replace(now);
+            }
+        }
+        return tracker.generation();
+    }
+
+    /**
+     * The host destroyed its context and made a new one current on this (the render) thread: takes the
+     * new context's LWJGL capabilities, abandons every GL object made so far (closing one makes no GL
+     * call) and moves the debug callback, if any, to the new context. The renderers made with this
+     * object remake their objects at their next frame (they compare {@link #generation()}). Only for a
+     * wrapped context ({@link #current}); {@link #follow()} does this by itself whenever the host made
+     * new capabilities, so call this only when the host hands the old capabilities object to the new
+     * context. Render thread; allocates nothing itself.
+     *
+     * @throws IllegalStateException off the render thread, for a context the library made, after
+     *                               {@link #close()}, or when no LWJGL capabilities are current
+     */
+    public void contextReplaced() {
+        checkThread();
+        if (release != null || closed) {
+            throw new IllegalStateException(closed ? "the context is closed"
+                    : "a context the library made is never replaced; make a new GlContext instead");
+        }
+        replace(GL.getCapabilities());
+    }
+
+    private void replace(GLCapabilities now) {
+        caps = now;
+        tracker.abandon();
+        if (debug != null) {
+            debug.moveTo(now);
+        }
+    }
+
+    private static GLCapabilities currentCapsOrNull() {
+        try {
+            return GL.getCapabilities();
+        } catch (IllegalStateException none) {
+            return null;
+        }
+    }
+
     /** {@return the context's LWJGL capabilities} */
     public GLCapabilities capabilities() {
         return caps;
@@ -352,10 +433,15 @@ public final class GlContext implements AutoCloseable {
         checkThread();
         closed = true;
         if (debug != null) {
-            debug.close();
+            if (release == null && currentCapsOrNull() != caps) {
+                debug.forget(); // the host's context it was installed in is gone
+            } else {
+                debug.close();
+            }
         }
         if (release != null) {
             release.run();
+            tracker.abandon(); // the names died with the context: closing a renderer now makes no GL call
         }
     }
 }

@@ -47,20 +47,24 @@ import org.jecosys.render.ResolvePath;
  * ground cover and the terrain then read. Owns the sky, terrain, plant, shadow-map and overlay
  * renderers. Render thread only; {@link #render} allocates nothing in the steady state (changing the
  * tint or LOD band re-uploads or rebuilds once).
+ *
+ * <p>A new context: each {@link #render} first asks {@link GlContext#follow()} whether the host
+ * replaced its context (jMonkeyEngine's {@code app.restart()}); if so it forgets the old objects
+ * without a GL call and makes them again in the new context (once; allocates), then draws as before.
  */
 public final class SceneRenderer implements AutoCloseable {
     private final GlContext gl;
     private final RenderSettings settings;
     private final World world;
-    private final TerrainRenderer terrain;
-    private final CoverBlades cover;
-    private final PlantRenderer plants;
-    private final SkyRenderer sky;
-    private final FieldOverlay overlay;
+    private TerrainRenderer terrain;
+    private CoverBlades cover;
+    private PlantRenderer plants;
+    private SkyRenderer sky;
+    private FieldOverlay overlay;
     private FieldDebugView field;
-    private final GlStateGuard state;
+    private GlStateGuard state;
     /** The path {@link ShadowPath#AUTO} takes on this context. */
-    private final ShadowPath autoShadows;
+    private ShadowPath autoShadows;
     /** The sun's shadow map, made at the first frame that draws one. */
     private SunShadowMap shadowMap;
     /** The shadow map's per-frame values as the shaders read them, shared with the plants, terrain and cover. */
@@ -71,6 +75,10 @@ public final class SceneRenderer implements AutoCloseable {
      */
     private final double castReach;
     private boolean closed;
+    /** The resolve path asked for when made (null: the best), for a rebuild in a new context. */
+    private final ResolvePath path;
+    /** The context generation ({@link GlContext#generation()}) the GL objects were made in. */
+    private int generation;
     /**
      * Benchmark breakdown and tests only (package-private): skip the terrain or the plants (plants
      * skipped still cast into the shadow map: the ground as it is under them).
@@ -106,6 +114,14 @@ public final class SceneRenderer implements AutoCloseable {
         this.gl = gl;
         this.settings = settings;
         this.world = world;
+        this.path = path;
+        castReach = castReach(world);
+        build();
+    }
+
+    /** Makes every GL object in the current context; puts back the state uploading changes. Allocates. */
+    private void build() {
+        generation = gl.generation();
         TerrainRenderer t = null;
         CoverBlades c = null;
         PlantRenderer p = null;
@@ -139,7 +155,6 @@ public final class SceneRenderer implements AutoCloseable {
         plants = p;
         state = g;
         autoShadows = ShadowPath.AUTO.on(org.lwjgl.opengl.GL11C.glGetString(org.lwjgl.opengl.GL11C.GL_RENDERER));
-        castReach = castReach(world);
         terrain.useShadowMap(shadow);
         cover.useShadowMap(shadow);
         plants.useShadowMap(shadow);
@@ -252,6 +267,9 @@ public final class SceneRenderer implements AutoCloseable {
         Require.nonNull("frame", frame);
         Require.nonNull("camera", camera);
         Camera.requireFinite("camera", camera, cameraCheck);
+        if (gl.follow() != generation) {
+            rebuild();
+        }
         state.save();
         try {
             glViewport(0, 0, width, height);
@@ -290,6 +308,9 @@ public final class SceneRenderer implements AutoCloseable {
         Require.nonNull("frame", frame);
         Require.nonNull("camera", camera);
         Camera.requireFinite("camera", camera, cameraCheck);
+        if (gl.follow() != generation) {
+            rebuild();
+        }
         state.save();
         try {
             draw(frame, camera, state.viewportX(), state.viewportY(), state.viewportWidth(),
@@ -444,19 +465,32 @@ public final class SceneRenderer implements AutoCloseable {
         return plants.batches().lineCount();
     }
 
+    /** A new context: forgets the old objects (no GL call, {@code GlTracker}) and makes them again. Allocates. */
+    private void rebuild() {
+        Closing.closeAll(shadowMap, overlay, sky, plants, cover, terrain, state);
+        shadowMap = null;
+        build();
+    }
+
     /**
      * Deletes every GL object of the renderers, leaving the host's state as it found it (a binding of
-     * a deleted object would fall back to 0). Render thread; idempotent.
+     * a deleted object would fall back to 0); after the context is gone ({@link GlContext#generation()}
+     * changed) only forgets them, without a GL call. Render thread; idempotent.
      */
     @Override
     public void close() {
         if (!closed) {
             closed = true;
-            state.save();
+            boolean current = gl.generation() == generation; // else the context is gone: no GL call
+            if (current) {
+                state.save();
+            }
             try {
                 Closing.closeAll(shadowMap, overlay, sky, plants, cover, terrain);
             } finally {
-                state.restore();
+                if (current) {
+                    state.restore();
+                }
                 state.close();
             }
         }

@@ -38,12 +38,15 @@ import org.jecosys.wind.WindSource;
  * ({@link SceneAssetLoader}); {@link PlantAppState} steps and draws the plants.
  * <pre>
  * JmeMeadowGame [--scene FILE] [--size WxH] [--renderer core|core33|compat] [--no-gamma]
- *               [--frames N --screenshot FILE.png]
+ *               [--frames N --screenshot FILE.png] [--restart-at N] [--graphics-debug]
  * </pre>
  * {@code --renderer compat} runs jME's OpenGL 2 renderer (a compatibility context); {@code core} (the
  * default, jME's {@code LWJGL_OPENGL32}) and {@code core33} a core one. {@code --frames N} is the test
  * mode: N frames at a fixed 1/30 s, then the finished frame (GUI included) is saved to
- * {@code --screenshot}, what the test checks is printed, and the game exits with 0.
+ * {@code --screenshot}, what the test checks is printed, and the game exits with 0. {@code --restart-at
+ * N} calls {@code restart()} after frame N (jME makes a new GL context, as a game does to change the
+ * resolution, vsync or samples); {@code --graphics-debug} turns on jME's GL error check after every
+ * call of its own ({@code AppSettings.setGraphicsDebug}), which fails the game on any GL error.
  */
 public final class JmeMeadowGame extends SimpleApplication {
     /** Player flow strength, m²/s: a source of this strength blows 3.2 m/s one metre away. */
@@ -63,9 +66,11 @@ public final class JmeMeadowGame extends SimpleApplication {
      * @param gamma      jME's gamma correction (its default: on)
      * @param frames     test mode: frames to render before the screenshot; 0 to play
      * @param screenshot test mode: where to write the PNG
+     * @param restartAt  test mode: the frame after which the app restarts its context; 0 for none
+     * @param debug      jME's graphics debugging (a GL error check after each of its calls)
      */
     record Options(String scene, int width, int height, String renderer, boolean gamma, int frames,
-                   Path screenshot) {
+                   Path screenshot, int restartAt, boolean debug) {
     }
 
     private final Options options;
@@ -280,7 +285,7 @@ public final class JmeMeadowGame extends SimpleApplication {
         } catch (IllegalArgumentException e) {
             System.err.println("jme-meadow: " + e.getMessage());
             System.err.println("usage: JmeMeadowGame [--scene FILE] [--size WxH] [--renderer core|core33|compat] "
-                    + "[--no-gamma] [--frames N --screenshot FILE.png]");
+                    + "[--no-gamma] [--frames N --screenshot FILE.png] [--restart-at N] [--graphics-debug]");
             System.exit(2);
             return;
         }
@@ -292,6 +297,7 @@ public final class JmeMeadowGame extends SimpleApplication {
         s.setDepthBits(24);
         s.setGammaCorrection(o.gamma());
         s.setAudioRenderer(null);
+        s.setGraphicsDebug(o.debug());
         if (o.frames() > 0) {
             s.setVSync(false);
             s.setFrameRate(-1);
@@ -314,6 +320,8 @@ public final class JmeMeadowGame extends SimpleApplication {
         boolean gamma = true;
         int frames = 0;
         Path shot = null;
+        int restartAt = 0;
+        boolean debug = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -341,16 +349,21 @@ public final class JmeMeadowGame extends SimpleApplication {
                 case "--no-gamma" -> gamma = false;
                 case "--frames" -> frames = Integer.parseInt(value(args, ++i, a));
                 case "--screenshot" -> shot = Path.of(value(args, ++i, a));
+                case "--restart-at" -> restartAt = Integer.parseInt(value(args, ++i, a));
+                case "--graphics-debug" -> debug = true;
                 default -> throw new IllegalArgumentException("unknown argument " + a);
             }
         }
         if (w < 16 || h < 16 || frames < 0) {
             throw new IllegalArgumentException("--size at least 16x16, --frames at least 0");
         }
+        if (restartAt < 0 || restartAt > 0 && restartAt >= frames) {
+            throw new IllegalArgumentException("--restart-at: a frame before the last (--frames)");
+        }
         if (frames > 0 && shot == null) {
             throw new IllegalArgumentException("--frames needs --screenshot FILE.png");
         }
-        return new Options(scene, w, h, renderer, gamma, frames, shot);
+        return new Options(scene, w, h, renderer, gamma, frames, shot, restartAt, debug);
     }
 
     private static String value(String[] args, int i, String flag) {

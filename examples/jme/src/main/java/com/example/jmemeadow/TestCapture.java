@@ -83,6 +83,12 @@ final class TestCapture {
 
     private void frameDone() {
         frame++;
+        if (frame == options.restartAt()) {
+            // a new GL context from the next frame on: the plants' renderer must notice and remake its objects
+            System.out.println(TAG + "restart after frame " + frame + ", generation "
+                    + game.plants().contextGeneration());
+            game.restart();
+        }
         if (frame == options.frames()) {
             capture();
             game.stop();
@@ -115,6 +121,9 @@ final class TestCapture {
         System.out.printf("%sdraw allocations: %d of %d frames, at most %d bytes%n", TAG, drawsAllocating,
                 drawsMeasured, drawMostBytes);
         System.out.printf("%sframes %d in %.1f s%n", TAG, frame, (System.nanoTime() - start) / 1e9);
+        if (options.restartAt() > 0) {
+            System.out.println(TAG + "context generation " + game.plants().contextGeneration());
+        }
         System.out.println(TAG + "gl errors: " + (errors == 0 ? "none" : errors));
     }
 

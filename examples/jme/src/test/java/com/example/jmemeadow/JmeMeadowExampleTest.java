@@ -38,13 +38,16 @@ class JmeMeadowExampleTest {
     private static Future<ExampleShot> core;
     private static Future<ExampleShot> compat;
     private static Future<ExampleShot> coreNoGamma;
+    /** The core-profile run restarted (a new GL context) after frame 10, with jME's graphics debugging. */
+    private static Future<ExampleShot> restarted;
 
     @BeforeAll
     static void startTheRuns() throws Exception {
-        runs = Executors.newFixedThreadPool(3);
+        runs = Executors.newFixedThreadPool(4);
         core = start("core", "--renderer", "core");
         compat = start("compat", "--renderer", "compat");
         coreNoGamma = start("core-no-gamma", "--renderer", "core", "--no-gamma");
+        restarted = start("core-restart", "--renderer", "core", "--restart-at", "10", "--graphics-debug");
     }
 
     @AfterAll
@@ -101,6 +104,30 @@ class JmeMeadowExampleTest {
     void theCompatibilityProfileShowsTheSame() throws Exception {
         ExampleShot shot = shot(compat);
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("compat.png"));
+    }
+
+    /**
+     * {@code app.restart()} after frame 10 gives jME a new GL context: the plants' renderer notices it at
+     * its next frame (context generation 1), forgets its old objects without a GL call and makes them
+     * again, so the last frame shows as many plant pixels (within 5%) as the run without a restart,
+     * with jME's graphics debugging on (a GL error check after each of its calls: any error fails the
+     * game), no GL error in any phase, and a clean exit (status 0, the screenshot checks pass).
+     */
+    @Test
+    void afterRestartWithANewContextThePlantsAreDrawnAsBeforeWithoutGlErrors() throws Exception {
+        ExampleShot shot = shot(restarted);
+        ExampleShot plain = shot(core);
+        assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core-restart.png"));
+        String log = Files.readString(OUT.resolve("core-restart.log"));
+        assertTrue(log.contains(TAG + " context generation 1"), "the renderer saw one new context:\n" + log);
+        int w = shot.image().getWidth();
+        int h = shot.image().getHeight();
+        int after = shot.count(ExampleShot::plant, 0, 0, w, h);
+        int without = plain.count(ExampleShot::plant, 0, 0, w, h);
+        System.out.printf("%s plant pixels: %d after restart(), %d without%n", TAG, after, without);
+        assertTrue(without > 1000, "plant pixels without a restart: " + without);
+        assertTrue(Math.abs(after - without) <= 0.05 * without,
+                "plant pixels after restart() " + after + ", without " + without);
     }
 
     /**

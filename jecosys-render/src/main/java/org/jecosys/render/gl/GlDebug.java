@@ -29,16 +29,44 @@ public final class GlDebug implements AutoCloseable {
 
     public GlDebug(GLCapabilities caps) {
         callback = GLDebugMessageCallback.create(this::message);
+        if (!install(caps)) {
+            callback.free();
+            throw new IllegalStateException("GL debug output needs OpenGL 4.3 or KHR_debug; this driver has neither");
+        }
+    }
+
+    private boolean install(GLCapabilities caps) {
         if (caps.OpenGL43) {
             GL43C.glDebugMessageCallback(callback, 0);
         } else if (caps.GL_KHR_debug) {
             KHRDebug.glDebugMessageCallback(callback, 0);
         } else {
-            callback.free();
-            throw new IllegalStateException("GL debug output needs OpenGL 4.3 or KHR_debug; this driver has neither");
+            return false;
         }
         glEnable(GL_DEBUG_OUTPUT);
         glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+        return true;
+    }
+
+    /**
+     * Installs the same callback in a new context that replaced the old one (the old context, and
+     * its callback registration, are gone); the error record carries on. Render thread, with the new
+     * context current; no allocation. A new context without debug output records nothing more.
+     *
+     * @param caps the new context's capabilities
+     */
+    public void moveTo(GLCapabilities caps) {
+        if (!closed) {
+            install(caps);
+        }
+    }
+
+    /** Frees the callback without a GL call: its context is gone. Idempotent. */
+    public void forget() {
+        if (!closed) {
+            closed = true;
+            callback.free();
+        }
     }
 
     private void message(int source, int type, int id, int severity, int length, long message, long user) {

@@ -7,6 +7,7 @@ package org.jecosys.render.gl;
  */
 public abstract class GlResource implements AutoCloseable {
     private final GlTracker tracker;
+    private final int generation;
     private int id;
 
     public GlResource(GlTracker tracker, int id) {
@@ -19,6 +20,7 @@ public abstract class GlResource implements AutoCloseable {
         }
         this.tracker = tracker;
         this.id = id;
+        this.generation = tracker.generation();
         tracker.created();
     }
 
@@ -40,13 +42,21 @@ public abstract class GlResource implements AutoCloseable {
         return id == 0;
     }
 
-    /** Deletes the GL object. Render thread; idempotent. */
+    /**
+     * Deletes the GL object; when its context is gone ({@link GlTracker#abandon()}) only forgets the
+     * name, without a GL call. Render thread; idempotent; no allocation.
+     */
     @Override
     public final void close() {
         if (id != 0) {
-            delete(id);
-            id = 0;
-            tracker.deleted();
+            if (generation == tracker.generation()) {
+                delete(id);
+                id = 0;
+                tracker.deleted();
+            } else {
+                id = 0;
+                tracker.forgotten();
+            }
         }
     }
 

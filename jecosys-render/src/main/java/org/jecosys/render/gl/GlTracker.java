@@ -5,12 +5,20 @@ package org.jecosys.render.gl;
  * Counts the live GL objects created through the {@code Gl*} wrappers of one {@code GlContext}, so a
  * test (or a leak check at shutdown) can prove that closing the renderers released every one.
  *
+ * <p>Objects belong to a context generation ({@link #generation()}). When the context they were made
+ * in is gone (destroyed, or replaced by the host), {@link #abandon()} starts a new generation: closing
+ * an object of an older one then forgets its name without any GL call (the names died with their
+ * context, and deleting them in the new one would delete or fail on that context's names), and counts
+ * it as {@link #abandoned()}; it still leaves {@link #live()}.
+ *
  * <p>Render thread only. No allocation.
  */
 public final class GlTracker {
     private int live;
     private long created;
     private long failAt = -1;
+    private int generation;
+    private long abandoned;
 
     public GlTracker() {
     }
@@ -40,6 +48,30 @@ public final class GlTracker {
 
     public void deleted() {
         live--;
+    }
+
+    /** Counts an object of an older generation closed without a GL call ({@link #abandon()}); it also leaves {@link #live()}. */
+    public void forgotten() {
+        live--;
+        abandoned++;
+    }
+
+    /**
+     * The context the objects were made in is gone: every object made so far belongs to a dead
+     * generation, and its {@code close()} only forgets its name. Render thread; no allocation.
+     */
+    public void abandon() {
+        generation++;
+    }
+
+    /** {@return the current context generation: 0 at first, one more after each {@link #abandon()}} */
+    public int generation() {
+        return generation;
+    }
+
+    /** {@return how many objects were closed after their context was gone, without a GL call} */
+    public long abandoned() {
+        return abandoned;
     }
 
     /** {@return the number of GL objects created and not yet closed} */
