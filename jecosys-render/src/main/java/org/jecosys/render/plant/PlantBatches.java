@@ -54,6 +54,8 @@ public final class PlantBatches {
     public static final int WHOLE = 0xFF;
     /** Gaps between listed plants' components up to this many are uploaded rather than split. */
     public static final int GAP = 64;
+    /** Whether a plant in a band is drawn whole at one level instead of dithered (see {@link #setWholePlants}). */
+    private boolean wholePlants;
 
     /**
      * Batches for a world. Build time; allocates the lists for every plant at every level.
@@ -171,10 +173,49 @@ public final class PlantBatches {
             runEnd[runs++] = c1;
         }
         int s = world.plantSpecies(p);
-        add(listBase[s] + l, p, keep & 0xFFFF);
-        if (keep >>> 16 != 0 && l + 1 < levels[s]) {
-            add(listBase[s] + l + 1, p, keep >>> 16);
+        int next = keep >>> 16 != 0 && l + 1 < levels[s] ? keep >>> 16 : 0;
+        if (wholePlants && (keep & 0xFFFF) != WHOLE) {
+            // the plant's own threshold picks the one window (of the two complementary ones) it falls in
+            float t = threshold(p);
+            if (inWindow(keep & 0xFFFF, t)) {
+                add(listBase[s] + l, p, WHOLE);
+            } else if (next != 0 && inWindow(next, t)) {
+                add(listBase[s] + l + 1, p, WHOLE);
+            }
+            return;
         }
+        add(listBase[s] + l, p, keep & 0xFFFF);
+        if (next != 0) {
+            add(listBase[s] + l + 1, p, next);
+        }
+    }
+
+    /**
+     * Chooses how plants in a level-switch or thinning band are drawn: dithered per pixel over both
+     * levels (false, the default: the screen-door thresholds of {@code plant.frag}, which multisampling
+     * turns into partial coverage), or each whole at one of them (true), the level whose window holds
+     * the plant's own fixed threshold, so that a band shows no pixel pattern on a target without
+     * samples: the share of plants at each level is the window's share, a plant keeps its level while
+     * its window holds its threshold, and a thinned-out plant leaves whole. Render thread; no allocation.
+     *
+     * @param whole true for whole plants
+     */
+    public void setWholePlants(boolean whole) {
+        wholePlants = whole;
+    }
+
+    /** {@return the plant's fixed threshold in (0, 1): a hash of its index} */
+    static float threshold(int plant) {
+        int h = plant * 0x9E3779B9;
+        h ^= h >>> 16;
+        h *= 0x85EBCA6B;
+        h ^= h >>> 13;
+        return ((h >>> 8) + 0.5f) * (1f / (1 << 24));
+    }
+
+    /** Whether threshold t lies in the packed window (lo &lt;&lt; 8 | hi, in 1/255): lo &lt;= t &lt; hi. */
+    static boolean inWindow(int window, float t) {
+        return t >= (window >>> 8) * (1f / 255) && t < (window & 255) * (1f / 255);
     }
 
     private void finish() {

@@ -89,6 +89,9 @@ public final class PlantRenderer implements AutoCloseable {
     private int levelMask = ~0;
     private boolean closed;
 
+    /** Band plants are drawn whole below this many samples per pixel ({@link #setWholePlantsBelow}). */
+    private int wholePlantsBelow = 2;
+
     /**
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
      * allocates. If it throws, every GL object it had made is deleted again.
@@ -321,6 +324,18 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
+     * Plants in a level-switch or thinning band are drawn whole at one level, not dithered over two,
+     * when the bound target has fewer samples per pixel than this (default 2: on a back buffer without
+     * multisampling, where the dither would show as a checker; {@link PlantBatches#setWholePlants}).
+     * 0 dithers always. Render thread; no allocation.
+     *
+     * @param minSamples in [0, 64]
+     */
+    public void setWholePlantsBelow(int minSamples) {
+        wholePlantsBelow = Require.range("minSamples", minSamples, 0, 64);
+    }
+
+    /**
      * Culls, chooses levels, uploads the per-instance data of {@code frame} and draws the triangle
      * (near) levels, opaque, writing depth. For the camera the frame's decision was made for (the one
      * its step followed) it draws that decision as it is; for any other camera it decides first
@@ -352,6 +367,8 @@ public final class PlantRenderer implements AutoCloseable {
                     + world.componentCount());
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
+        int targetSamples = query.get(GL13C.GL_SAMPLES);
+        batches.setWholePlants(targetSamples < wholePlantsBelow);
         if (frame.decidedFor(camera, viewProj)) {
             batches.update(frame); // the step's own decision, made by the workers for this very camera
         } else {
@@ -372,7 +389,7 @@ public final class PlantRenderer implements AutoCloseable {
                 (float) (camera.viewHeightPerMetre() / viewportHeight));
         gpu.resolver.frame(look, context);
         gpu.resolver.resolve(look);
-        context.multisampled = query.get(GL13C.GL_SAMPLES) > 1;
+        context.multisampled = targetSamples > 1;
         passes.frame(look, context);
     }
 
