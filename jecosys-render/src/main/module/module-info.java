@@ -10,6 +10,7 @@ module org.jecosys.render {
     requires transitive org.lwjgl;
     requires transitive org.lwjgl.opengl;
     requires org.lwjgl.glfw;
+    requires java.logging;
     requires static org.lwjgl.egl;
     requires static org.lwjgl.stb;
 

@@ -9,6 +9,8 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.SoftwareQuality;
+import org.jecosys.sim.DrawQuality;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneLoadException;
 import org.jecosys.scene.Scenes;
@@ -28,8 +30,9 @@ import org.jecosys.sim.Simulation;
  * The plants are drawn into whatever framebuffer and viewport libGDX has bound (the back buffer, or a
  * {@code FrameBuffer} between its {@code begin()} and {@code end()}), depth-tested against what the
  * game drew, and every GL state the renderer changes is put back, so ModelBatch and SpriteBatch
- * carry on as if nothing happened. Ask for a 24-bit depth buffer
- * ({@code config.setBackBufferConfig(8, 8, 8, 8, 24, 0, 0)}; libGDX's default is 16 bits).
+ * carry on as if nothing happened. Ask for a 24-bit depth buffer and 4 samples
+ * ({@code config.setBackBufferConfig(8, 8, 8, 8, 24, 0, 4)}; libGDX's default is 16 bits and none).
+ * On a software rasteriser the layer thins far plants by itself ({@link SoftwareQuality}).
  *
  * <p>Threads: libGDX's render thread (the one that runs {@code create()} and {@code render()}) makes,
  * draws and disposes the layer; {@link #update} steps the simulation on that thread and its workers.
@@ -45,6 +48,8 @@ public final class PlantLayer implements Disposable {
     private final SceneRenderer renderer;
     private final GdxCamera camera = new GdxCamera();
     private boolean disposed;
+    /** The quality applied when the layer was made, or null for the scene's own. */
+    private final DrawQuality applied;
 
     /**
      * Makes the renderer's GL objects for a simulation. Render thread (libGDX's GL context current);
@@ -58,12 +63,27 @@ public final class PlantLayer implements Disposable {
      * @throws IllegalStateException when no OpenGL 3.3 context is current on this thread
      */
     public PlantLayer(Simulation simulation, RenderSettings settings) {
+        this(simulation, settings, null);
+    }
+
+    /**
+     * As {@link #PlantLayer(Simulation, RenderSettings)} with a draw quality: the far plants' thinning
+     * ({@link SoftwareQuality#apply}). Render thread; allocates.
+     *
+     * @param simulation the plants, owned by the layer from now on
+     * @param settings   the look, read every frame
+     * @param quality    the game's choice, or null: low on a software rasteriser (said once in the
+     *                   log), the scene's own on a GPU
+     * @throws IllegalStateException when no OpenGL 3.3 context is current on this thread
+     */
+    public PlantLayer(Simulation simulation, RenderSettings settings, DrawQuality quality) {
         Require.nonNull("simulation", simulation);
         Require.nonNull("settings", settings);
         GlContext g = null;
         try {
             g = GlContext.current(DebugOutput.OFF);
             renderer = new SceneRenderer(g, simulation.world(), settings);
+            applied = SoftwareQuality.apply(g, simulation, quality);
         } catch (RuntimeException e) {
             if (g != null) {
                 g.close();
@@ -90,6 +110,11 @@ public final class PlantLayer implements Disposable {
     public static PlantLayer load(FileHandle sceneFile) throws SceneLoadException, IOException {
         Scene scene = GdxScenes.read(sceneFile);
         return new PlantLayer(Scenes.simulation(scene, 0, Progress.NONE), RenderSettings.of(scene.def()));
+    }
+
+    /** {@return the draw quality applied when the layer was made, or null when the scene's own thinning was kept} */
+    public DrawQuality quality() {
+        return applied;
     }
 
     /**

@@ -47,6 +47,11 @@ public final class PlantLayerLoader extends AsynchronousAssetLoader<PlantLayer, 
         public int workers;
         /** Whether the library draws the scene's terrain mesh under the plants (default: the game draws its ground). */
         public boolean terrain;
+        /**
+         * The far plants' thinning ({@link org.jecosys.sim.DrawQuality}); null (the default): low on a
+         * software rasteriser, said once in the log, and the scene's own on a GPU.
+         */
+        public org.jecosys.sim.DrawQuality quality;
 
         /** The defaults: the scene's worker count, no library terrain. */
         public Parameters() {
@@ -124,7 +129,7 @@ public final class PlantLayerLoader extends AsynchronousAssetLoader<PlantLayer, 
         }
         RenderSettings settings = RenderSettings.of(p.scene.def());
         settings.setTerrain(parameter != null && parameter.terrain);
-        return new PlantLayer(p.simulation, settings); // closes the simulation if it fails
+        return new PlantLayer(p.simulation, settings, parameter == null ? null : parameter.quality); // closes the simulation if it fails
     }
 
     /** {@return the simulation loadAsync built for an asset and loadSync has not taken, or null} Tests. */

@@ -71,4 +71,58 @@ class PlantLayerTest {
             GlContexts.debug(owner).check("the plant layer test");
         }
     }
+
+    @Test
+    void onASoftwareRasteriserTheLayerPicksTheLowQualityAndSaysSoOnceAndAGameChoiceWins() throws Exception {
+        java.util.List<String> said = new java.util.concurrent.CopyOnWriteArrayList<>();
+        java.util.logging.Logger log = java.util.logging.Logger.getLogger("org.jecosys.render");
+        java.util.logging.Handler handler = new java.util.logging.Handler() {
+            @Override
+            public void publish(java.util.logging.LogRecord r) {
+                said.add(r.getMessage());
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        log.addHandler(handler);
+        try (GlContext owner = GlContext.headless(DebugOutput.ON)) {
+            assertTrue(org.jecosys.render.ShadowPath.software(owner.describe()), "this test runs on llvmpipe: "
+                    + owner.describe());
+            PerspectiveCamera cam = new PerspectiveCamera(55, 320, 180);
+            cam.update();
+            PlantLayer auto = PlantLayer.load(new Lwjgl3Files().classpath("org/jecosys/gdx/tiny/tiny.xml"));
+            try {
+                assertEquals(org.jecosys.sim.DrawQuality.LOW, auto.quality());
+                auto.update(1 / 30f, cam); // the thinning is a command: applied at the next step
+                assertEquals(org.jecosys.sim.DrawQuality.LOW.thinStart(), auto.simulation().inspect().thinStart(), 0);
+                assertEquals(org.jecosys.sim.DrawQuality.LOW.thinMinFraction(),
+                        auto.simulation().inspect().thinMinFraction(), 0);
+            } finally {
+                auto.dispose();
+            }
+            assertEquals(1, said.size(), "said once for the layer: " + said);
+            assertTrue(said.get(0).contains("low quality") && said.get(0).contains("llvmpipe"), said.get(0));
+            org.jecosys.scene.Scene scene = GdxScenes.read(new Lwjgl3Files().classpath("org/jecosys/gdx/tiny/tiny.xml"));
+            PlantLayer chosen = new PlantLayer(org.jecosys.scene.Scenes.simulation(scene, 0,
+                    org.jecosys.math.Progress.NONE), org.jecosys.render.RenderSettings.of(scene.def()),
+                    org.jecosys.sim.DrawQuality.HIGH);
+            try {
+                assertEquals(org.jecosys.sim.DrawQuality.HIGH, chosen.quality());
+                chosen.update(1 / 30f, cam);
+                assertEquals(org.jecosys.sim.DrawQuality.HIGH.thinMinFraction(),
+                        chosen.simulation().inspect().thinMinFraction(), 0);
+            } finally {
+                chosen.dispose();
+            }
+            assertEquals(1, said.size(), "nothing said for the game's own choice: " + said);
+        } finally {
+            log.removeHandler(handler);
+        }
+    }
 }

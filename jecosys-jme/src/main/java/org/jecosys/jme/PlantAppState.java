@@ -16,6 +16,8 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.SoftwareQuality;
+import org.jecosys.sim.DrawQuality;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.Scenes;
 import org.jecosys.sim.Simulation;
@@ -53,6 +55,8 @@ public class PlantAppState extends BaseAppState {
     private GlContext gl;
     private SceneRenderer renderer;
     private ViewPort viewPort;
+    private volatile DrawQuality quality;
+    private DrawQuality applied;
 
     /**
      * The plants of a scene: builds its simulation now, on the calling thread (the render thread in
@@ -91,6 +95,22 @@ public class PlantAppState extends BaseAppState {
         this.settings = Require.nonNull("settings", settings);
     }
 
+    /**
+     * Chooses the far plants' thinning the state applies when it is attached ({@link DrawQuality});
+     * null (the default): low on a software rasteriser, said once in the log, the scene's own on a GPU
+     * ({@link SoftwareQuality}). Call before attaching; any thread; no allocation.
+     *
+     * @param quality the game's choice, or null
+     */
+    public void setQuality(DrawQuality quality) {
+        this.quality = quality;
+    }
+
+    /** {@return the quality applied at attach time, or null when the scene's own thinning was kept (or not yet attached)} */
+    public DrawQuality quality() {
+        return applied;
+    }
+
     private static Simulation build(Scene scene, int workers) {
         try {
             return Scenes.simulation(scene, workers, Progress.NONE);
@@ -110,6 +130,7 @@ public class PlantAppState extends BaseAppState {
         try {
             gl = GlContext.current(DebugOutput.OFF);
             renderer = new SceneRenderer(gl, simulation.world(), settings);
+            applied = SoftwareQuality.apply(gl, simulation, quality);
         } catch (RuntimeException e) {
             if (gl != null) {
                 gl.close();
