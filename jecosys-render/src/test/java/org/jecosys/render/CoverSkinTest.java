@@ -236,4 +236,93 @@ class CoverSkinTest {
         assertTrue(share[1] >= 0.15 && share[1] >= 4 * share[0], String.format("without the skin the game's ground"
                 + " shows (%.1f%% of the lower half), with it %.1f%%", 100 * share[1], 100 * share[0]));
     }
+
+    @Test
+    void aGamesGroundAboveTheScenesHeightsHidesTheSkin() {
+        // the game's ground 10 cm above the scene's heights: things that stand on the ground win over the skin
+        ViewCamera cam = RenderScenes.camera(def, world, W, H);
+        Frame frame = TestFrames.rest(world, cam);
+        RenderSettings settings = guest(true);
+        try (SceneRenderer r = new SceneRenderer(gl, world, settings)) {
+            int[] with = frame(r, frame, cam, 0.1f).rgb().clone();
+            settings.setCoverSkin(false);
+            int[] without = frame(r, frame, cam, 0.1f).rgb();
+            int differ = 0;
+            for (int i = 0; i < with.length; i++) {
+                differ += with[i] != without[i] ? 1 : 0;
+            }
+            System.out.printf("[look] a game's ground 10 cm above the meadow's heights: %d pixels differ with the"
+                    + " skin%n", differ);
+            assertTrue(differ <= W * H / 1000, differ + " pixels show the skin through a game's ground above it");
+        }
+    }
+
+    @Test
+    void theSkinShowsTheCoverOfTheLibrarysTerrain() {
+        // the same view with the library's own terrain: the skin carries its cover's colour, grain and shading
+        ViewCamera cam = RenderScenes.camera(def, world, W, H);
+        Frame frame = TestFrames.rest(world, cam);
+        RenderSettings own = RenderSettings.of(def);
+        own.setSky(SKY);
+        own.setClear(true);
+        own.setTerrain(true);
+        int[] ours;
+        try (SceneRenderer r = new SceneRenderer(gl, world, own)) {
+            ours = frame(r, frame, cam, 0f).rgb().clone();
+        }
+        Img guest;
+        try (SceneRenderer r = new SceneRenderer(gl, world, guest(true))) {
+            guest = frame(r, frame, cam, 0f);
+        }
+        double diff = 0;
+        for (int y = 0; y < H / 2; y++) {
+            for (int x = 0; x < W; x++) {
+                int p = guest.at(x, y);
+                int q = ours[y * W + x];
+                diff += Math.abs(ImageMetrics.r(p) - ImageMetrics.r(q)) + Math.abs(ImageMetrics.g(p) - ImageMetrics.g(q))
+                        + Math.abs(ImageMetrics.b(p) - ImageMetrics.b(q));
+            }
+        }
+        diff /= 3.0 * W * H / 2;
+        System.out.printf("[look] meadow start view, lower half: the skin over a game's ground differs from the"
+                + " library's terrain by %.2f levels a channel on average%n", diff);
+        assertTrue(diff < 4, String.format("mean difference %.2f levels a channel from the library's terrain", diff));
+    }
+
+    @Test
+    void drawingTheSkinAllocatesNothingAfterWarmUp() {
+        ThreadMXBean threads = (ThreadMXBean) ManagementFactory.getThreadMXBean();
+        SceneDef c1 = RenderScenes.load("c1.xml");
+        World small = RenderScenes.build(c1);
+        int w = 160;
+        int h = 100;
+        ViewCamera cam = RenderScenes.camera(c1, small, w, h);
+        Frame frame = TestFrames.wind(small, 0.3, cam);
+        RenderSettings settings = RenderSettings.of(c1);
+        settings.setGroundCover(new RenderDef.GroundCover(1, 0.06, 800, 6, 1.5, new Rgb(0.3f, 0.5f, 0.16f),
+                new Rgb(0.6f, 0.55f, 0.3f)));
+        long thread = Thread.currentThread().getId();
+        try (SceneRenderer r = new SceneRenderer(gl, small, settings)) {
+            fb.bind();
+            int made = gl.tracker().live();
+            for (int i = 0; i < 20; i++) {
+                r.render(frame, cam, w, h);
+            }
+            assertEquals(made + 2, gl.tracker().live(), "the skin's program and vertex array made at the first frame");
+            threads.getThreadAllocatedBytes(thread); // the counter's own first call allocates
+            long[] windows = new long[40];
+            int zeroRun = 0;
+            int n = 0;
+            for (; n < windows.length && zeroRun < 2; n++) {
+                long start = threads.getThreadAllocatedBytes(thread);
+                for (int i = 0; i < 50; i++) {
+                    r.render(frame, cam, w, h);
+                }
+                windows[n] = threads.getThreadAllocatedBytes(thread) - start;
+                zeroRun = windows[n] == 0 ? zeroRun + 1 : 0;
+            }
+            assertEquals(2, zeroRun, "two windows of 50 guest frames with the cover skin allocating 0 bytes: "
+                    + java.util.Arrays.toString(java.util.Arrays.copyOf(windows, n)));
+        }
+    }
 }
