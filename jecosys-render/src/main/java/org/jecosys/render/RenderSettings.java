@@ -45,6 +45,7 @@ public final class RenderSettings {
     private float fogEnd = 150;
     private boolean clear;
     private boolean terrain;
+    private boolean coverSkin = true;
     private RenderDef.GroundCover groundCover = RenderDef.GroundCover.NONE;
     private float sheen = 1f;
     private float shadows;
@@ -52,8 +53,8 @@ public final class RenderSettings {
     private float shadowReach = (float) org.jecosys.render.ground.SunShadowMap.DEFAULT_REACH;
 
     /**
-     * The defaults of a guest in a game's frame: the plants only, drawn over what the game drew (no
-     * clear, no sky, no terrain), lit like a scene file's defaults: a light blue horizon (the haze
+     * The defaults of a guest in a game's frame: the plants and their ground cover over what the game drew
+     * (no clear, no sky, no terrain), lit like a scene file's defaults: a light blue horizon (the haze
      * colour) and a deeper blue zenith, the sun at azimuth 135 degrees and elevation 50 degrees, warm
      * white at intensity 0.8, a cool ambient of about 0.45, contact shadow 0.5, haze from 20 m to
      * 150 m, 12 m colour patches at strength 0.3 (seed 1), no terrain tint, overlays hidden.
@@ -81,8 +82,8 @@ public final class RenderSettings {
      * The look a scene file asks for in its {@code <render>} element: sky and haze colours, sun, ambient
      * light, contact shadow, fog, colour patches, ground cover, terrain tint and overlays
      * ({@code RenderDef}, its {@code <light>}, {@code <patches>} and {@code <groundCover>}). Clearing and
-     * the terrain stay off, as for any guest; the
-     * viewer adds {@code setClear(true)} and {@code setTerrain(true)}. Any thread; allocates.
+     * the terrain stay off, as for any guest; the viewer adds {@code setClear(true)} and
+     * {@code setTerrain(true)}. Any thread; allocates.
      *
      * @param scene the scene
      * @return new settings
@@ -99,12 +100,10 @@ public final class RenderSettings {
      */
     public static RenderSettings of(RenderDef def) {
         Require.nonNull("def", def);
-        RenderDef.Tint tint = def.terrainTint();
         RenderDef.Light l = def.light();
-        RenderDef.Patches p = def.patches();
         RenderSettings s = new RenderSettings();
         s.setSky(def.sky());
-        s.setTint(tint);
+        s.setTint(def.terrainTint());
         s.overlays.setShowField(def.showField());
         s.overlays.setShowWind(def.showWind());
         s.setSun(l.sunAzimuth(), l.sunElevation());
@@ -116,7 +115,7 @@ public final class RenderSettings {
         s.setFog((float) l.fogStart(), (float) l.fogEnd());
         s.setSheen((float) l.sheen());
         s.setShadows((float) l.shadows());
-        s.setPatches((float) p.scale(), (float) p.strength(), p.seed());
+        s.setPatches((float) def.patches().scale(), (float) def.patches().strength(), def.patches().seed());
         s.setGroundCover(def.groundCover());
         return s;
     }
@@ -180,10 +179,9 @@ public final class RenderSettings {
     }
 
     /**
-     * Sets how far from the eye the shadow map ({@link ShadowPath#MAP}) reaches: it covers the view's
-     * frustum out to this distance; farther, the ground keeps the splatted shadows. A longer reach makes
-     * the map's texels larger (about {@code 2.4 x reach / 2048} metres with a 60-degree lens). No
-     * allocation.
+     * Sets how far from the eye the shadow map ({@link ShadowPath#MAP}) reaches: it covers the view's frustum
+     * out to this distance; farther, the ground keeps the splatted shadows. A longer reach makes the map's
+     * texels larger (about {@code 2.4 x reach / 2048} metres with a 60-degree lens). No allocation.
      *
      * @param metres in [2, 200]
      */
@@ -199,8 +197,9 @@ public final class RenderSettings {
 
     /**
      * Sets the ground cover ({@link RenderDef.GroundCover#NONE} for bare ground between the plants). The
-     * renderer draws it with the plants (near blades) and the terrain (the cover's colour on the
-     * ground); it works out where cover grows from the plants once per {@code spread}, so a new spread
+     * renderer draws it with the plants (near blades) and the terrain (the cover's colour on the ground)
+     * or, without it, as a skin over the host's ground on the scene's heights, faded where the cover ends
+     * ({@link #coverSkin()}); it works out where cover grows from the plants once per {@code spread}, so a new spread
      * costs one rebuild of that map (allocates), the rest applies at the next frame. Render thread; no
      * allocation.
      *
@@ -379,7 +378,6 @@ public final class RenderSettings {
         this.sky = Require.nonNull("sky", sky);
     }
 
-
     /** {@return the terrain tint} */
     public RenderDef.Tint tint() {
         return tint;
@@ -470,6 +468,20 @@ public final class RenderSettings {
      */
     public void setTerrain(boolean terrain) {
         this.terrain = terrain;
+    }
+
+    /** {@return whether the ground cover is laid over a host's ground when {@link #terrain()} is off (on by default)} */
+    public boolean coverSkin() {
+        return coverSkin;
+    }
+
+    /**
+     * Sets {@link #coverSkin()}. No allocation.
+     *
+     * @param coverSkin false for the near blades alone over a host's ground
+     */
+    public void setCoverSkin(boolean coverSkin) {
+        this.coverSkin = coverSkin;
     }
 
     /**

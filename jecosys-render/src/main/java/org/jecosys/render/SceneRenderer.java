@@ -33,6 +33,7 @@ import org.jecosys.render.ground.SunShadow;
 import org.jecosys.render.ground.ShadowParams;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.ground.CoverBlades;
+import org.jecosys.render.ground.CoverSkin;
 import org.jecosys.render.ground.TerrainRenderer;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.plant.PlantRenderer;
@@ -44,8 +45,8 @@ import org.jecosys.render.ResolvePath;
  * game's own or a {@link GlFramebuffer}), and puts back every GL state it changed (see
  * {@link #render(Frame, Camera)}). With sun shadows on the {@link ShadowPath#MAP} path it first draws
  * the plants resolved for the view into the sun's shadow map (SunShadowMap), which the plants, the
- * ground cover and the terrain then read. Owns the sky, terrain, plant, shadow-map and overlay
- * renderers. Render thread only; {@link #render} allocates nothing in the steady state (changing the
+ * ground cover and the terrain then read. Owns the sky, terrain, ground-cover (blades and skin),
+ * plant, shadow-map and overlay renderers. Render thread only; {@link #render} allocates nothing in the steady state (changing the
  * tint or LOD band re-uploads or rebuilds once).
  *
  * <p>A new context: each {@link #render} first asks {@link GlContext#follow()} whether the host
@@ -58,6 +59,8 @@ public final class SceneRenderer implements AutoCloseable {
     private final World world;
     private TerrainRenderer terrain;
     private CoverBlades cover;
+    /** The cover over a host's own ground (terrain off), made at the first frame that draws it. */
+    private CoverSkin skin;
     private PlantRenderer plants;
     private SkyRenderer sky;
     private FieldOverlay overlay;
@@ -115,7 +118,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.settings = settings;
         this.world = world;
         this.path = path;
-        castReach = castReach(world);
+        castReach = SunShadowMap.castReach(world);
         build();
     }
 
@@ -285,7 +288,9 @@ public final class SceneRenderer implements AutoCloseable {
      * {@link RenderSettings#clear()} on, the viewport's rectangle is first cleared to the horizon colour
      * and depth 1 (a scissored clear) and the sky (gradient and sun) is drawn where no geometry is;
      * off, the plants are depth-tested against what is already in the depth buffer and no sky is drawn.
-     * {@link RenderSettings#terrain()} says whether the library's own terrain is drawn.
+     * {@link RenderSettings#terrain()} says whether the library's own terrain is drawn; without it the
+     * ground cover's skin is laid over the host's ground where the scene has cover
+     * ({@link RenderSettings#coverSkin()}).
      *
      * <p>State contract (a good guest): every GL state this method changes is put back before it
      * returns, and every state the drawing depends on is set first, whatever the host left (blend
@@ -382,6 +387,12 @@ public final class SceneRenderer implements AutoCloseable {
             } else {
                 terrain.drawBare(camera, settings); // the ground as it is without the vegetation
             }
+        } else if (drawPlants && !settings.terrain() && settings.coverSkin() && terrain.prepareCover(settings)) {
+            if (skin == null) {
+                skin = new CoverSkin(gl, terrain, cover);
+                skin.useShadowMap(shadow);
+            }
+            skin.draw(camera, settings); // the cover over the host's own ground
         }
         if (settings.clear()) {
             // the sky where nothing is (depth still 1), before the blended far level
@@ -439,22 +450,6 @@ public final class SceneRenderer implements AutoCloseable {
                 (float) camera.x(), (float) camera.y(), (float) camera.z(), (float) reach);
     }
 
-    /** The nearest distance at which a species with a line level draws lines, metres (infinite: none). */
-    private static double castReach(World world) {
-        double reach = Double.POSITIVE_INFINITY;
-        for (org.jecosys.plant.SpeciesModel m : world.plants().species()) {
-            double triangles = 0;
-            for (org.jecosys.plant.LodDef l : m.def().lods()) {
-                if (l.primitive() != org.jecosys.plant.Primitive.TRIANGLES) {
-                    reach = Math.min(reach, triangles);
-                    break;
-                }
-                triangles = l.maxDistance();
-            }
-        }
-        return Math.max(2, reach);
-    }
-
     /** {@return the number of triangles submitted by the last {@link #render}: plants plus terrain} */
     public long triangles() {
         return plants.batches().triangles() + terrain.triangles();
@@ -467,8 +462,9 @@ public final class SceneRenderer implements AutoCloseable {
 
     /** A new context: forgets the old objects (no GL call, {@code GlTracker}) and makes them again. Allocates. */
     private void rebuild() {
-        Closing.closeAll(shadowMap, overlay, sky, plants, cover, terrain, state);
+        Closing.closeAll(skin, shadowMap, overlay, sky, plants, cover, terrain, state);
         shadowMap = null;
+        skin = null;
         build();
     }
 
@@ -486,7 +482,7 @@ public final class SceneRenderer implements AutoCloseable {
                 state.save();
             }
             try {
-                Closing.closeAll(shadowMap, overlay, sky, plants, cover, terrain);
+                Closing.closeAll(skin, shadowMap, overlay, sky, plants, cover, terrain);
             } finally {
                 if (current) {
                     state.restore();

@@ -315,6 +315,11 @@ public final class CoverBlades implements AutoCloseable {
         return (int) Math.min(perTile, RenderDef.GroundCover.MAX_BLADES_PER_VIEW / tiles);
     }
 
+    /** {@return the heightfield the blades stand on} */
+    Heightfield heightfield() {
+        return field;
+    }
+
     private double heightSpan() {
         return field.maxHeight() - field.minHeight();
     }

@@ -69,4 +69,26 @@ public final class SunShadowMap implements AutoCloseable {
         map.close();
         fit.close();
     }
+
+    /**
+     * How far from the eye plants cast into the map: the nearest distance at which a species of the
+     * world draws lines (lines do not cast), at least 2 metres. Any thread; setup time (iterates a list).
+     *
+     * @param world the plants' species and their levels of detail
+     * @return metres; infinite when no species has a line level
+     */
+    public static double castReach(org.jecosys.sim.World world) {
+        double reach = Double.POSITIVE_INFINITY;
+        for (org.jecosys.plant.SpeciesModel m : world.plants().species()) {
+            double triangles = 0;
+            for (org.jecosys.plant.LodDef l : m.def().lods()) {
+                if (l.primitive() != org.jecosys.plant.Primitive.TRIANGLES) {
+                    reach = Math.min(reach, triangles);
+                    break;
+                }
+                triangles = l.maxDistance();
+            }
+        }
+        return Math.max(2, reach);
+    }
 }

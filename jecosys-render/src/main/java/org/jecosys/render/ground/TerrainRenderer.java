@@ -23,7 +23,6 @@ import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
-import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
 import org.jecosys.sim.World;
 import org.jecosys.terrain.Heightfield;
@@ -73,10 +72,8 @@ public final class TerrainRenderer implements AutoCloseable {
     private final Matrix4f viewProj = new Matrix4f();
     private final int uViewProj;
     private final int uEye;
-    private final int uCover;
-    private final int uSheen;
-    private final int uSheenLight;
-    private final int uSunXZ;
+    /** The cover's amount, grain and sheen uniforms ({@code ground_cover.glsl}), shared with the cover skin. */
+    private final CoverUniforms coverLook;
     private GlTexture2D bendMap;
     /** Contact occlusion (red), ground cover (green) and sun shadow (blue) over the terrain. */
     private final GroundMaps maps;
@@ -183,18 +180,14 @@ public final class TerrainRenderer implements AutoCloseable {
         matrix = MemoryUtil.memAllocFloat(16);
         uViewProj = program.uniform("uViewProj");
         uEye = program.uniform("uEye");
-        uCover = program.uniform("uCover");
-        uSheen = program.uniform("uSheen");
-        uSheenLight = program.uniform("uSheenLight");
-        uSunXZ = program.uniform("uSunXZ");
+        coverLook = new CoverUniforms(program);
         uShadows = program.uniform("uShadows");
         ground = new GroundUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), TextureUnits.GROUND_MAPS);
         GroundUniforms.bindShadowSampler(program);
-        glUniform1i(program.uniform("uGrain"), TextureUnits.COVER_GRAIN);
-        glUniform1i(program.uniform("uBend"), TextureUnits.TILE_BENDS);
+        CoverUniforms.bindSamplers(program);
         if (occlusionMap == null) {
             glUniform4f(program.uniform("uOcclusionMap"), 0, 0, 0, 0);
             glUniform2f(program.uniform("uOcclusionHalf"), 0.5f, 0.5f);
@@ -368,7 +361,6 @@ public final class TerrainRenderer implements AutoCloseable {
     }
 
     private void draw(Camera camera, RenderSettings settings, boolean cover) {
-        RenderDef.GroundCover gc = settings.groundCover();
         boolean withCover = cover && prepareCover(settings);
         boolean shadows = maps.prepareShadows(settings);
         program.use();
@@ -376,18 +368,9 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
         ground.set(settings);
         ground.setShadowMap(shadow);
-        Rgb sun = settings.sunColour();
-        float k = settings.sunIntensity();
-        Rgb amb = settings.ambient();
-        Rgb fog = settings.sky();
         glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
-        glUniform4f(uCover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
         boolean sheen = withCover && bendMap != null && settings.sheen() > 0;
-        glUniform1f(uSheen, sheen ? settings.sheen() : 0f);
-        glUniform3f(uSheenLight, 0.35f * fog.r() * (amb.r() + 0.5f * sun.r() * k),
-                0.35f * fog.g() * (amb.g() + 0.5f * sun.g() * k), 0.35f * fog.b() * (amb.b() + 0.5f * sun.b() * k));
-        float sl = (float) Math.hypot(settings.sunX(), settings.sunZ());
-        glUniform2f(uSunXZ, sl > 1e-6f ? settings.sunX() / sl : 0f, sl > 1e-6f ? settings.sunZ() / sl : 0f);
+        coverLook.set(settings, withCover, sheen);
         if (sheen) {
             bendMap.bind(TextureUnits.TILE_BENDS);
         }
@@ -412,9 +395,6 @@ public final class TerrainRenderer implements AutoCloseable {
         glUniform4f(program.uniform("uBendMap"), transform[0], transform[1], transform[2], transform[3]);
         glUseProgram(previous);
     }
-
-    /** Side of the grain tile on the ground, metres. */
-    static final float GRAIN_TILE = 0.7f;
 
     /**
      * Makes sure the cover map matches the settings' ground cover (rebuilds it when its spread changed:
@@ -447,6 +427,21 @@ public final class TerrainRenderer implements AutoCloseable {
     /** {@return the contact-occlusion map, whose grid the cover map shares; null when built without plants} */
     public ContactOcclusion occlusionMap() {
         return occlusionMap;
+    }
+
+    /** {@return the mesh's vertex buffer (position, normal, colour: 9 floats a vertex), for the cover skin} */
+    GlBuffer vertexBuffer() {
+        return vertices;
+    }
+
+    /** {@return the mesh's index buffer: the heightfield's {@link #triangles()} first, then the horizon skirt} */
+    GlBuffer indexBuffer() {
+        return indices;
+    }
+
+    /** {@return the cover's grain tile, repeating and mipmapped} */
+    GlTexture2D grain() {
+        return grain;
     }
 
     /** Deletes the GL objects. Render thread; idempotent. */

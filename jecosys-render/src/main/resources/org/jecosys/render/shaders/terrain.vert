@@ -20,11 +20,21 @@ out vec3 vLight;                                 // the sky's light falling on t
 out vec3 vSunLight;                              // the sun's, before contact occlusion and the plants' shadows
 out vec3 vWorld;                                 // position, metres: the haze is worked out per fragment
 out vec3 vUvDry;                                 // occlusion-map coordinates, dryness of the patch
+#ifdef COVER_SKIN
+uniform float uLift;                             // share of the way to the eye the cover skin is drawn nearer
+#endif
 
 #include "patches.glsl"
 
 void main() {
+#ifdef COVER_SKIN
+    // the ground cover's skin over a host's own ground (CoverSkin): moved toward the eye along its view
+    // ray, so it covers the same pixels but a little nearer (a depth bias growing with distance, as the
+    // depth buffer's steps do): it wins over a host's ground at the same height, not over what stands on it
+    gl_Position = uViewProj * vec4(mix(aPos, uEye, uLift), 1.0);
+#else
     gl_Position = uViewProj * vec4(aPos, 1.0);
+#endif
     // the horizon skirt reaches far beyond any far plane: drawn just inside it instead of clipped, so
     // the ground meets the sky at the horizon (the sky is drawn where the depth is still 1)
     gl_Position.z = min(gl_Position.z, 0.999999 * gl_Position.w);
