@@ -47,6 +47,9 @@ public final class PlantLayer implements Disposable {
     private final GlContext gl;
     private final SceneRenderer renderer;
     private final GdxCamera camera = new GdxCamera();
+    /** The camera {@link #update} stepped with last, drawn without a view of its own. */
+    private com.badlogic.gdx.graphics.Camera stepping;
+    private final RenderedViews views;
     private boolean disposed;
     /** The quality applied when the layer was made, or null for the scene's own. */
     private final DrawQuality applied;
@@ -94,6 +97,7 @@ public final class PlantLayer implements Disposable {
         this.simulation = simulation;
         this.settings = settings;
         this.gl = g;
+        this.views = new RenderedViews(simulation);
     }
 
     /**
@@ -130,6 +134,8 @@ public final class PlantLayer implements Disposable {
      */
     public void update(float deltaSeconds, com.badlogic.gdx.graphics.Camera camera) {
         checkLive();
+        stepping = camera;
+        views.tick();
         simulation.step(deltaSeconds, this.camera.update(camera));
     }
 
@@ -138,6 +144,9 @@ public final class PlantLayer implements Disposable {
      * viewport, depth-tested against what is in the depth buffer; puts back every GL state it changes.
      * Call between the game's 3D pass ({@code modelBatch.end()}) and its 2D pass
      * ({@code spriteBatch.begin()}); may be called more than once per frame (split screen, mirrors).
+     * A camera other than the one {@link #update} steps with is registered as a view of the simulation
+     * the first time it is drawn, so what it sees animates too, and dropped once it has not been drawn
+     * for 30 updates (a removed viewport stops costing animation; {@link #drawnViews()}).
      * Render thread; no allocation in the steady state.
      *
      * @param camera the camera to draw with, after its {@code update()}; its aspect should match the
@@ -146,7 +155,12 @@ public final class PlantLayer implements Disposable {
      */
     public void render(com.badlogic.gdx.graphics.Camera camera) {
         checkLive();
-        renderer.render(simulation.latestFrame(), this.camera.update(camera));
+        renderer.render(simulation.latestFrame(), camera == stepping ? this.camera.update(camera) : views.drawn(camera));
+    }
+
+    /** {@return the game cameras other than the stepping one that are registered as views now} */
+    public int drawnViews() {
+        return views.count();
     }
 
     /** {@return the simulation: agents, flows, wind, level of detail; commands from any thread} */

@@ -125,4 +125,62 @@ class PlantLayerTest {
             log.removeHandler(handler);
         }
     }
+
+    @Test
+    void everyCameraThatDrawsIsAViewUntilItStopsDrawing() throws Exception {
+        try (GlContext owner = GlContext.headless(DebugOutput.ON)) {
+            GlFramebuffer target = new GlFramebuffer(GlContexts.tracker(owner), 320, 180);
+            PlantLayer layer = PlantLayer.load(new Lwjgl3Files().classpath("org/jecosys/gdx/tiny/tiny.xml"));
+            try {
+                Heightfield t = layer.simulation().world().terrain().heightfield();
+                float y = (float) t.height(0, 0) + 1.5f;
+                // the stepping camera looks at +X from the middle; the others at -X, +Z and -Z
+                float[][] looks = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+                PerspectiveCamera[] cams = new PerspectiveCamera[looks.length];
+                for (int c = 0; c < cams.length; c++) {
+                    cams[c] = new PerspectiveCamera(40, 320, 180);
+                    cams[c].near = 0.05f;
+                    cams[c].far = 100f;
+                    cams[c].position.set(0, y, 0);
+                    cams[c].lookAt(looks[c][0], y - 0.8f, looks[c][1]);
+                    cams[c].update();
+                }
+                org.jecosys.sim.World world = layer.simulation().world();
+                target.bind();
+                for (int i = 0; i < 5; i++) { // one camera only: plants behind it (x < -1) are not animated
+                    layer.update(1 / 30f, cams[0]);
+                    layer.render(cams[0]);
+                }
+                int behind = -1;
+                for (int p = 0; p < world.plantCount() && behind < 0; p++) {
+                    if (world.plantX(p) < -1.5 && Math.abs(world.plantZ(p)) < 1) {
+                        behind = p;
+                    }
+                }
+                assertTrue(behind >= 0, "a plant behind the stepping camera");
+                assertTrue(!layer.simulation().inspect().plantVisible(behind), "not animated with one camera");
+                assertEquals(0, layer.simulation().inspect().viewCount(), "registered views");
+                for (int i = 0; i < 5; i++) { // four viewports, no addView call
+                    layer.update(1 / 30f, cams[0]);
+                    for (PerspectiveCamera c : cams) {
+                        layer.render(c);
+                    }
+                }
+                assertEquals(3, layer.drawnViews(), "the three other cameras are views");
+                assertEquals(3, layer.simulation().inspect().viewCount(), "registered views");
+                assertTrue(layer.simulation().inspect().plantVisible(behind), "animated for the camera that sees it");
+                for (int i = 0; i < RenderedViews.IDLE_FRAMES + 3; i++) { // the other viewports are gone
+                    layer.update(1 / 30f, cams[0]);
+                    layer.render(cams[0]);
+                }
+                assertEquals(0, layer.drawnViews(), "their views dropped");
+                assertEquals(0, layer.simulation().inspect().viewCount(), "registered views");
+                assertTrue(!layer.simulation().inspect().plantVisible(behind), "no longer animated");
+            } finally {
+                layer.dispose();
+                target.close();
+            }
+            GlContexts.debug(owner).check("the views test");
+        }
+    }
 }
