@@ -50,8 +50,10 @@ public class PlantAppState extends BaseAppState {
     private final Simulation simulation;
     private final RenderSettings settings;
     private final JmeCamera stepCamera = new JmeCamera();
-    private final JmeCamera drawCamera = new JmeCamera();
     private final Hook hook = new Hook();
+    /** The game's other viewports that draw the plants ({@link #addViewPort}); render thread. */
+    private final java.util.ArrayList<Hook> others = new java.util.ArrayList<>();
+    private RenderManager renderManager;
     private GlContext gl;
     private SceneRenderer renderer;
     private ViewPort viewPort;
@@ -140,6 +142,8 @@ public class PlantAppState extends BaseAppState {
             throw e;
         }
         viewPort = app.getViewPort();
+        renderManager = app.getRenderManager();
+        hook.viewPort = viewPort;
         viewPort.getProcessors().add(0, hook); // before any FilterPostProcessor: the plants get the scene's depth and filters
     }
 
@@ -153,6 +157,10 @@ public class PlantAppState extends BaseAppState {
             if (viewPort != null) {
                 viewPort.removeProcessor(hook);
             }
+            for (Hook h : others) {
+                h.viewPort.removeProcessor(h);
+            }
+            others.clear();
             if (renderer != null) {
                 renderer.close();
             }
@@ -182,7 +190,72 @@ public class PlantAppState extends BaseAppState {
      */
     @Override
     public void update(float tpf) {
+        for (int i = 0; i < others.size(); i++) {
+            others.get(i).follow();
+        }
         simulation.step(tpf, stepCamera.update(viewPort.getCamera()));
+    }
+
+    /**
+     * Draws the plants in another viewport of the game too (split screen, a minimap, a rear-view
+     * mirror), and animates what its camera sees: the viewport's camera is a view of the simulation
+     * ({@link Simulation#addView}) while the viewport is enabled and attached to the render manager,
+     * and stops costing animation when it is disabled or removed. Call after the state is attached
+     * (from {@code simpleInitApp} on, or the state's own initialisation). Render thread; allocates.
+     *
+     * @param vp a viewport of the game's render manager, other than the main one
+     * @throws IllegalArgumentException when vp is null, the main viewport or already added
+     * @throws IllegalStateException    when the state is not initialised yet
+     */
+    public void addViewPort(ViewPort vp) {
+        Require.nonNull("vp", vp);
+        if (renderer == null) {
+            throw new IllegalStateException("attach the state (and let it initialise) before adding viewports");
+        }
+        if (vp == viewPort || find(vp) >= 0) {
+            throw new IllegalArgumentException("viewport '" + vp.getName() + "' already draws the plants");
+        }
+        Hook h = new Hook();
+        h.viewPort = vp;
+        others.add(h);
+        vp.getProcessors().add(0, h);
+        h.follow();
+    }
+
+    /**
+     * Stops drawing the plants in a viewport added with {@link #addViewPort} and drops its view.
+     * Render thread.
+     *
+     * @param vp the viewport
+     * @return whether it was added
+     */
+    public boolean removeViewPort(ViewPort vp) {
+        int i = find(vp);
+        if (i < 0) {
+            return false;
+        }
+        Hook h = others.remove(i);
+        h.viewPort.removeProcessor(h);
+        h.setViewed(false);
+        return true;
+    }
+
+    /** {@return the viewports added with {@link #addViewPort} whose cameras are views of the simulation now} */
+    public int viewedViewPorts() {
+        int n = 0;
+        for (Hook h : others) {
+            n += h.viewed ? 1 : 0;
+        }
+        return n;
+    }
+
+    private int find(ViewPort vp) {
+        for (int i = 0; i < others.size(); i++) {
+            if (others.get(i).viewPort == vp) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** {@return the simulation: agents, flows, wind, level of detail; commands from any thread} */
@@ -209,9 +282,33 @@ public class PlantAppState extends BaseAppState {
         return gl == null ? -1 : gl.generation();
     }
 
-    /** Draws the plants in the viewport's postFrame; holds no resources of its own. */
+    /** Draws the plants in a viewport's postFrame; holds no resources of its own. */
     private final class Hook implements SceneProcessor {
         private boolean initialized;
+        ViewPort viewPort;
+        private final JmeCamera drawCamera = new JmeCamera();
+        /** The viewport's camera as a view of the simulation (other viewports only); stepping thread. */
+        private final JmeCamera viewCamera = new JmeCamera();
+        boolean viewed;
+
+        /** Keeps the view in step with the viewport: current while it draws, dropped when it does not. */
+        void follow() {
+            boolean live = viewPort.isEnabled() && (renderManager.getMainViews().contains(viewPort)
+                    || renderManager.getPreViews().contains(viewPort) || renderManager.getPostViews().contains(viewPort));
+            if (live) {
+                viewCamera.update(viewPort.getCamera());
+            }
+            setViewed(live);
+        }
+
+        void setViewed(boolean on) {
+            if (on && !viewed) {
+                simulation.addView(viewCamera);
+            } else if (!on && viewed) {
+                simulation.removeView(viewCamera);
+            }
+            viewed = on;
+        }
 
         @Override
         public void initialize(RenderManager rm, ViewPort vp) {
