@@ -38,6 +38,7 @@ public final class ViewDecision {
     private final LevelBands bands;
     private final RangeDecision range;
     private int drawn;
+    private int unanimated;
 
     /** The edges a frame recorded, read through {@link DrawDecision.Edges}. */
     private static final class FrameEdges implements DrawDecision.Edges {
@@ -112,6 +113,8 @@ public final class ViewDecision {
         bands.fill(edges, frame.lodTransition());
         int plants = world.plantCount();
         int n = 0;
+        int still = 0;
+        boolean[] animated = frame.plantVisible;
         for (int b = 0; b < blocks; b++) {
             int p0 = b * BLOCK;
             int p1 = Math.min(plants, p0 + BLOCK);
@@ -125,10 +128,14 @@ public final class ViewDecision {
             range.setFrustum(frustum, res == FrustumIntersection.INTERSECT);
             range.decide(p0, p1, level, keep);
             for (int p = p0; p < p1; p++) {
-                n += level[p] >= 0 ? 1 : 0;
+                if (level[p] >= 0) {
+                    n++;
+                    still += animated[p] ? 0 : 1;
+                }
             }
         }
         drawn = n;
+        unanimated = still;
         edges.frame = null;
     }
 
@@ -151,5 +158,14 @@ public final class ViewDecision {
     /** {@return the plants the last {@link #decide} draws} */
     public int drawn() {
         return drawn;
+    }
+
+    /**
+     * {@return the plants the last {@link #decide} draws that the frame's step did not animate (on no
+     * visible force-field node of any view it followed, {@link Frame#plantVisible}): they stand still
+     * until the camera is registered with {@code Simulation.addView}}
+     */
+    public int unanimated() {
+        return unanimated;
     }
 }

@@ -89,6 +89,10 @@ public final class PlantRenderer implements AutoCloseable {
     private int levelMask = ~0;
     private boolean closed;
 
+    /** Plants a camera may draw unanimated before {@link #prepareNear} says so (the field's one-step lag). */
+    static final int STILL_PLANTS = 50;
+    /** Whether a camera no view covers was reported (once per renderer). */
+    private boolean saidStill;
     /** Band plants are drawn whole below this many samples per pixel ({@link #setWholePlantsBelow}). */
     private int wholePlantsBelow = 2;
 
@@ -374,6 +378,12 @@ public final class PlantRenderer implements AutoCloseable {
         } else {
             view.decide(frame, camera); // any other view: decided here, every plant's state is in the frame
             batches.update(frame, view.levels(), view.keeps());
+            if (!saidStill && view.unanimated() > Math.max(STILL_PLANTS, view.drawn() / 10)) {
+                saidStill = true;
+                java.util.logging.Logger.getLogger("org.jecosys.render").warning("JEcoSys: a camera draws "
+                        + view.unanimated() + " of its " + view.drawn() + " plants standing still: no view of the "
+                        + "simulation sees them; register the camera with Simulation.addView (said once)");
+            }
         }
         passes.resetCounts();
         pending = batches.instances() > 0;
