@@ -314,8 +314,8 @@ final class SceneEditor {
      * @param elevation radians, in [0, pi / 2]
      */
     void setSun(double azimuth, double elevation) {
-        if (azimuth != settings.sunAzimuth() || elevation != settings.sunElevation()) {
-            settings.setSun(azimuth, elevation);
+        if (azimuth != settings.lighting().sunAzimuth() || elevation != settings.lighting().sunElevation()) {
+            settings.lighting().setSun(azimuth, elevation);
             dirty = true;
         }
     }
@@ -363,11 +363,11 @@ final class SceneEditor {
         RenderDef r = def.render();
         RenderDef.Light l = r.light();
         // the panel edits the sun (radians, as the scene's light holds it: an untouched sun saves exactly)
-        double az = settings.sunAzimuth();
-        double el = settings.sunElevation();
+        double az = settings.lighting().sunAzimuth();
+        double el = settings.lighting().sunElevation();
         RenderDef.Light nl = new RenderDef.Light(az, el, l.sunColour(), l.sunIntensity(), l.skyZenith(), l.ambient(),
                 l.contactShadow(), l.fogStart(), l.fogEnd(), l.sheen(), l.shadows());
-        RenderDef nr = new RenderDef(r.width(), r.height(), settings.sky(), lodTransition,
+        RenderDef nr = new RenderDef(r.width(), r.height(), settings.lighting().sky(), lodTransition,
                 settings.tint(), settings.overlays().showField(), settings.overlays().showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();

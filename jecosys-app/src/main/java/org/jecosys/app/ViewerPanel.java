@@ -170,13 +170,13 @@ final class ViewerPanel {
             }
         }
         if (ImGui.collapsingHeader("Light")) {
-            edit[0] = (float) Math.toDegrees(s.sunAzimuth());
+            edit[0] = (float) Math.toDegrees(s.lighting().sunAzimuth());
             if (ImGui.sliderFloat("sun azimuth (deg)", edit, -180, 360, "%.0f")) {
-                editor.setSun(Math.toRadians(edit[0]), s.sunElevation());
+                editor.setSun(Math.toRadians(edit[0]), s.lighting().sunElevation());
             }
-            edit[0] = (float) Math.toDegrees(s.sunElevation());
+            edit[0] = (float) Math.toDegrees(s.lighting().sunElevation());
             if (ImGui.sliderFloat("sun elevation (deg)", edit, 0, 90, "%.0f")) {
-                editor.setSun(s.sunAzimuth(), Math.toRadians(edit[0]));
+                editor.setSun(s.lighting().sunAzimuth(), Math.toRadians(edit[0]));
             }
             // a view setting: the scene file keeps its own <light sheen>
             if (ImGui.checkbox("wind sheen on bent grass", s.sheen() > 0)) {

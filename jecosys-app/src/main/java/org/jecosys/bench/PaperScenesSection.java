@@ -80,7 +80,7 @@ final class PaperScenesSection implements Section {
                 for (int s = 0; s < count; s++) {
                     SceneDef scene = defs.get(s);
                     RenderSettings settings = RenderSettings.standalone();
-                    settings.setSky(scene.render().sky());
+                    settings.lighting().setSky(scene.render().sky());
                     try (SceneRenderer renderer = new SceneRenderer(gl, worlds.get(s), settings)) {
                         fb.bind();
                         int frames = s == 3 ? Math.max(2, renderFrames / 4) : renderFrames;

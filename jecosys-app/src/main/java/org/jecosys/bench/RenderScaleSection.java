@@ -96,7 +96,7 @@ final class RenderScaleSection implements Section {
                         SceneRenderer r;
                         try {
                             RenderSettings settings = RenderSettings.standalone();
-                            settings.setSky(def.render().sky());
+                            settings.lighting().setSky(def.render().sky());
                             r = new SceneRenderer(gl, sim.world(), settings, path);
                         } catch (IllegalArgumentException e) {
                             // a path the context cannot run for this scene (a storage buffer too small)

@@ -26,19 +26,19 @@ class LightSettingsTest {
         RenderDef def = RenderDef.builder().size(640, 360).sky(new Rgb(0.7f, 0.8f, 0.9f)).light(light)
                 .patches(new RenderDef.Patches(25, 0.7, 42)).build();
         RenderSettings s = HeadlessRender.settings(def);
-        assertEquals(Math.toRadians(-40), s.sunAzimuth(), 1e-12);
-        assertEquals(Math.toRadians(20), s.sunElevation(), 1e-12);
-        assertEquals(light.sunColour(), s.sunColour());
-        assertEquals(1.25f, s.sunIntensity());
-        assertEquals(light.skyZenith(), s.skyZenith());
-        assertEquals(light.ambient(), s.ambient());
+        assertEquals(Math.toRadians(-40), s.lighting().sunAzimuth(), 1e-12);
+        assertEquals(Math.toRadians(20), s.lighting().sunElevation(), 1e-12);
+        assertEquals(light.sunColour(), s.lighting().sunColour());
+        assertEquals(1.25f, s.lighting().sunIntensity());
+        assertEquals(light.skyZenith(), s.lighting().skyZenith());
+        assertEquals(light.ambient(), s.lighting().ambient());
         assertEquals(0.65f, s.contactShadow());
-        assertEquals(8, s.fogStart());
-        assertEquals(80, s.fogEnd());
+        assertEquals(8, s.lighting().fogStart());
+        assertEquals(80, s.lighting().fogEnd());
         assertEquals(25, s.patchScale());
         assertEquals(0.7f, s.patchStrength());
         assertEquals(42, s.patchSeed());
-        assertEquals(def.sky(), s.sky());
+        assertEquals(def.sky(), s.lighting().sky());
     }
 
     @Test
@@ -48,7 +48,7 @@ class LightSettingsTest {
             RenderSettings settings = HeadlessRender.settings(def.render());
             SceneEditor editor = new SceneEditor(def, sim, settings);
             assertEquals(def.render(), editor.snapshot().render(), "an untouched sun saves the file's light exactly");
-            editor.setSun(settings.sunAzimuth(), settings.sunElevation());
+            editor.setSun(settings.lighting().sunAzimuth(), settings.lighting().sunElevation());
             assertFalse(editor.dirty(), "the same sun is no change");
             editor.setSun(Math.toRadians(-60), Math.toRadians(25));
             assertTrue(editor.dirty());

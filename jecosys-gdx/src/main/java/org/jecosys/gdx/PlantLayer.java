@@ -24,7 +24,7 @@ import org.jecosys.sim.Simulation;
  * plants.update(Gdx.graphics.getDeltaTime(), camera);   // steps the simulation
  * ScreenUtils.clear(0.5f, 0.7f, 0.9f, 1, true);
  * modelBatch.begin(camera); modelBatch.render(ground, environment); modelBatch.end();
- * plants.render(camera);                                 // depth-tested against the ground
+ * plants.render(camera, environment);                    // depth-tested, lit by the game's lights
  * spriteBatch.begin(); font.draw(spriteBatch, "HUD", 10, 20); spriteBatch.end();
  * }</pre>
  * The plants are drawn into whatever framebuffer and viewport libGDX has bound (the back buffer, or a
@@ -156,6 +156,27 @@ public final class PlantLayer implements Disposable {
     public void render(com.badlogic.gdx.graphics.Camera camera) {
         checkLive();
         renderer.render(simulation.latestFrame(), camera == stepping ? this.camera.update(camera) : views.drawn(camera));
+    }
+
+    /**
+     * As {@link #render(com.badlogic.gdx.graphics.Camera)}, lit and fogged by the game's libGDX
+     * {@link com.badlogic.gdx.graphics.g3d.Environment} (the one given to {@code ModelBatch.render}), as
+     * libGDX's default shader lights the game's models: its first directional light is the sun, its
+     * {@code ColorAttribute.AmbientLight} the sky light, its {@code ColorAttribute.Fog} the haze, full
+     * at {@code camera.far / 1.09} and growing as the distance squared; what the environment lacks, the
+     * plants lack too (no directional light, no sun; no fog attribute, no haze). The values are written
+     * into {@link #settings()}{@code .lighting()} before drawing, so a later {@code render(camera)}
+     * keeps them. Render thread; no allocation in the steady state.
+     *
+     * @param camera      the camera to draw with, after its {@code update()}
+     * @param environment the game's lights and fog, not null
+     * @throws IllegalStateException when the layer was disposed, or this is not the render thread
+     */
+    public void render(com.badlogic.gdx.graphics.Camera camera, com.badlogic.gdx.graphics.g3d.Environment environment) {
+        checkLive();
+        Require.nonNull("environment", environment);
+        GdxLights.apply(environment, camera, settings.lighting());
+        render(camera);
     }
 
     /** {@return the game cameras other than the stepping one that are registered as views now} */

@@ -1,48 +1,31 @@
 package org.jecosys.render;
 
 import org.jecosys.math.Require;
-import org.jecosys.math.Rgb;
 import org.jecosys.scene.RenderDef;
 import org.jecosys.scene.SceneDef;
 
 /**
- * What the renderer shows, changeable between frames (the viewer's panel edits it): sky colours, sun,
- * ambient light, contact shadow, fog (aerial perspective), colour patches, terrain tint, the
- * force-field overlays ({@link #overlays()}), and whether the library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it
- * from a scene's {@code <render>} settings. Colours are display (sRGB) values in [0, 1], as a colour
- * picker gives them; the renderer writes them unconverted. Each value has a getter {@code x()} and a
- * setter {@code setX(...)} that checks its arguments and returns nothing. Render thread only (or
- * whichever thread owns the settings while the renderer does not read them); setters do not allocate
- * (they keep the {@link Rgb} given).
+ * What the renderer shows, changeable between frames (the viewer's panel edits it): the light and
+ * haze ({@link #lighting()}: sun, sky, ambient light, fog), contact shadow, sheen, shadows, colour
+ * patches, ground cover, terrain tint, the force-field overlays ({@link #overlays()}), and whether the
+ * library clears and draws its own sky and terrain. {@link #of(SceneDef)} fills it from a scene's
+ * {@code <render>} settings. Colours are display (sRGB) values, as a colour picker gives them; the
+ * renderer writes them unconverted. Each value has a getter {@code x()} and a setter
+ * {@code setX(...)} that checks its arguments and returns nothing. Render thread only (or whichever
+ * thread owns the settings while the renderer does not read them); setters do not allocate.
  *
  * <p>Per-plant colour variation is per species, not here: {@code world.plants().species().get(s).def()
  * .variation()} gives the {@code VariationDef} ({@code hue()}, {@code value()}, {@code dryTips()}) of
  * species {@code s}, and {@code world.plantSpecies(p)} the species of plant {@code p}.
  */
 public final class RenderSettings {
-    /** Default sun azimuth, radians: 135 degrees (behind and to the left of a camera looking along -Z). */
-    public static final double DEFAULT_SUN_AZIMUTH = Math.toRadians(135);
-    /** Default sun elevation, radians: 50 degrees. */
-    public static final double DEFAULT_SUN_ELEVATION = Math.toRadians(50);
-
-    private Rgb sky = new Rgb(0.62f, 0.76f, 0.92f);
-    private Rgb skyZenith = new Rgb(0.30f, 0.50f, 0.85f);
-    private Rgb sunColour = new Rgb(1f, 0.95f, 0.85f);
-    private float sunIntensity = 0.8f;
-    private Rgb ambient = new Rgb(0.42f, 0.46f, 0.52f);
     private float contactShadow = 0.5f;
-    private double sunAzimuth;
-    private double sunElevation;
-    private float sunX;
-    private float sunY;
-    private float sunZ;
     private float patchScale = 12;
     private float patchStrength = 0.3f;
     private int patchSeed = 1;
     private RenderDef.Tint tint = RenderDef.Tint.NONE;
     private final OverlaySettings overlays = new OverlaySettings();
-    private float fogStart = 20;
-    private float fogEnd = 150;
+    private final Lighting lighting = new Lighting();
     private boolean clear;
     private boolean terrain;
     private boolean coverSkin = true;
@@ -61,7 +44,15 @@ public final class RenderSettings {
      * {@link #standalone()} adds the library's sky and terrain. Allocates.
      */
     public RenderSettings() {
-        setSun(DEFAULT_SUN_AZIMUTH, DEFAULT_SUN_ELEVATION);
+        // every field has its default; the light's are Lighting's
+    }
+
+    /**
+     * {@return the light and haze: this object's own, read every frame; change them through it (a game
+     * sets its own lights there each frame, without allocating)}
+     */
+    public Lighting lighting() {
+        return lighting;
     }
 
     /**
@@ -102,17 +93,17 @@ public final class RenderSettings {
         Require.nonNull("def", def);
         RenderDef.Light l = def.light();
         RenderSettings s = new RenderSettings();
-        s.setSky(def.sky());
+        s.lighting.setSky(def.sky());
         s.setTint(def.terrainTint());
         s.overlays.setShowField(def.showField());
         s.overlays.setShowWind(def.showWind());
-        s.setSun(l.sunAzimuth(), l.sunElevation());
-        s.setSunColour(l.sunColour());
-        s.setSunIntensity((float) l.sunIntensity());
-        s.setSkyZenith(l.skyZenith());
-        s.setAmbient(l.ambient());
+        s.lighting.setSun(l.sunAzimuth(), l.sunElevation());
+        s.lighting.setSunColour(l.sunColour());
+        s.lighting.setSunIntensity((float) l.sunIntensity());
+        s.lighting.setSkyZenith(l.skyZenith());
+        s.lighting.setAmbient(l.ambient());
         s.setContactShadow((float) l.contactShadow());
-        s.setFog((float) l.fogStart(), (float) l.fogEnd());
+        s.lighting.setFog((float) l.fogStart(), (float) l.fogEnd());
         s.setSheen((float) l.sheen());
         s.setShadows((float) l.shadows());
         s.setPatches((float) def.patches().scale(), (float) def.patches().strength(), def.patches().seed());
@@ -210,110 +201,6 @@ public final class RenderSettings {
     }
 
     /**
-     * Sets the sun's direction; the unit vector toward the sun is
-     * {@code (cos el cos az, sin el, cos el sin az)}, so azimuth 0 is +X, pi/2 is +Z, pi is -X (the
-     * scene's {@code <light sunAzimuth sunElevation>}, which the file gives in degrees). No allocation.
-     *
-     * @param azimuth   compass angle of the sun, radians, in [-2 pi, 2 pi]
-     * @param elevation height above the horizon, radians, in [0, pi / 2]
-     * @throws IllegalArgumentException when an angle is out of range or not finite
-     */
-    public void setSun(double azimuth, double elevation) {
-        Require.range("sunAzimuth", azimuth, -2 * Math.PI, 2 * Math.PI);
-        Require.range("sunElevation", elevation, 0, Math.PI / 2);
-        sunAzimuth = azimuth;
-        sunElevation = elevation;
-        double az = azimuth;
-        double el = elevation;
-        sunX = (float) (Math.cos(el) * Math.cos(az));
-        sunY = (float) Math.sin(el);
-        sunZ = (float) (Math.cos(el) * Math.sin(az));
-    }
-
-    /** {@return the sun's azimuth, radians, as last set} */
-    public double sunAzimuth() {
-        return sunAzimuth;
-    }
-
-    /** {@return the sun's elevation above the horizon, radians, as last set} */
-    public double sunElevation() {
-        return sunElevation;
-    }
-
-    /** {@return X of the unit vector toward the sun, {@code cos el * cos az}} */
-    public float sunX() {
-        return sunX;
-    }
-
-    /** {@return Y (up) of the unit vector toward the sun, {@code sin el}} */
-    public float sunY() {
-        return sunY;
-    }
-
-    /** {@return Z of the unit vector toward the sun, {@code cos el * sin az}} */
-    public float sunZ() {
-        return sunZ;
-    }
-
-    /** {@return the colour of the sunlight (multiply by {@link #sunIntensity()} for the light)} */
-    public Rgb sunColour() {
-        return sunColour;
-    }
-
-    /**
-     * Sets the colour of the sunlight.
-     *
-     * @param colour the sun colour, not null
-     */
-    public void setSunColour(Rgb colour) {
-        this.sunColour = Require.nonNull("sunColour", colour);
-    }
-
-    /** {@return the multiplier of the sun colour: the direct light is sunColour x sunIntensity} */
-    public float sunIntensity() {
-        return sunIntensity;
-    }
-
-    /**
-     * Sets the sun's intensity.
-     *
-     * @param intensity multiplier of {@link #sunColour()}, in [0, 4]
-     * @throws IllegalArgumentException when out of range
-     */
-    public void setSunIntensity(float intensity) {
-        Require.range("sunIntensity", intensity, 0, 4);
-        this.sunIntensity = intensity;
-    }
-
-    /** {@return the sky colour straight up (the gradient runs from {@link #sky()} at the horizon)} */
-    public Rgb skyZenith() {
-        return skyZenith;
-    }
-
-    /**
-     * Sets the sky colour straight up.
-     *
-     * @param zenith the zenith colour, not null
-     */
-    public void setSkyZenith(Rgb zenith) {
-        this.skyZenith = Require.nonNull("skyZenith", zenith);
-    }
-
-    /** {@return the ambient (sky) light on an upward-facing surface, colour times strength} */
-    public Rgb ambient() {
-        return ambient;
-    }
-
-    /**
-     * Sets the ambient (sky) light.
-     *
-     * @param ambient colour times strength of the light from the whole sky, not null
-     */
-    public void setAmbient(Rgb ambient) {
-        this.ambient = Require.nonNull("ambient", ambient);
-    }
-
-    /**
      * {@return how much darker fully occluded ground under plants is, in [0, 1] (0 none); ground within
      * about 0.2 m of a plant's base is occluded}
      */
@@ -364,20 +251,6 @@ public final class RenderSettings {
         patchSeed = seed;
     }
 
-    /** {@return the sky colour at the horizon, also the fog (aerial perspective) and clear colour} */
-    public Rgb sky() {
-        return sky;
-    }
-
-    /**
-     * Sets the sky colour at the horizon.
-     *
-     * @param sky the horizon, fog and clear colour, not null
-     */
-    public void setSky(Rgb sky) {
-        this.sky = Require.nonNull("sky", sky);
-    }
-
     /** {@return the terrain tint} */
     public RenderDef.Tint tint() {
         return tint;
@@ -398,36 +271,6 @@ public final class RenderSettings {
      */
     public OverlaySettings overlays() {
         return overlays;
-    }
-
-    /**
-     * {@return the distance where fog (aerial perspective: haze toward {@link #sky()}) begins, metres;
-     * the haze is {@code f * f} with {@code f = clamp((d - fogStart) / (fogEnd - fogStart), 0, 1)}, for
-     * plants and ground alike}
-     */
-    public float fogStart() {
-        return fogStart;
-    }
-
-    /** {@return the distance of full fog, metres} */
-    public float fogEnd() {
-        return fogEnd;
-    }
-
-    /**
-     * Sets the fog range.
-     *
-     * @param start distance where fog begins, metres, &gt;= 0
-     * @param end   distance of full fog, metres, &gt; start
-     * @throws IllegalArgumentException when the range is empty or starts below 0
-     */
-    public void setFog(float start, float end) {
-        Require.nonNegative("fogStart", start);
-        if (!(end > start)) {
-            throw new IllegalArgumentException("fog end must be > start, got " + start + ".." + end);
-        }
-        fogStart = start;
-        fogEnd = end;
     }
 
     /**

@@ -22,7 +22,6 @@ import static org.lwjgl.opengl.GL11C.glIsEnabled;
 
 import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Require;
-import org.jecosys.math.Rgb;
 import org.jecosys.math.Camera;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
@@ -339,11 +338,11 @@ public final class SceneRenderer implements AutoCloseable {
             org.lwjgl.opengl.GL30C.glColorMaski(1, true, true, true, true);
         }
         terrain.setTint(settings.tint());
-        Rgb horizon = settings.sky();
+        Lighting light = settings.lighting();
         if (settings.clear()) {
             glEnable(GL_SCISSOR_TEST);
             glScissor(vx, vy, width, height);
-            glClearColor(horizon.r(), horizon.g(), horizon.b(), 1f);
+            glClearColor(light.skyR(), light.skyG(), light.skyB(), 1f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             glDisable(GL_SCISSOR_TEST);
         }
@@ -354,9 +353,9 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_BLEND);
         // near plants first: the terrain drawn after them fails the early depth test behind them (less
         // shading on a software rasteriser); the far (line) level last, blended over both
-        float lx = settings.sunX();
-        float ly = settings.sunY();
-        float lz = settings.sunZ();
+        float lx = light.sunX();
+        float ly = light.sunY();
+        float lz = light.sunZ();
         // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
         terrain.prepareShadows(settings);
         shadow.clear();
@@ -364,11 +363,9 @@ public final class SceneRenderer implements AutoCloseable {
                 && ly >= Math.sin(SunShadow.MIN_ELEVATION);
         if (drawPlants || map) {
             // (without the plants on screen their shadows are still drawn: the ground as it is under them)
-            plants.setLight(settings.sunColour(), settings.sunIntensity(), settings.ambient());
+            plants.setLighting(light);
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.setSheen(settings.sheen());
-            plants.setSunDirection(lx, ly, lz);
-            plants.setHaze(horizon, settings.fogStart(), settings.fogEnd());
             plants.prepareNear(frame, camera, height);
             if (map) {
                 drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);

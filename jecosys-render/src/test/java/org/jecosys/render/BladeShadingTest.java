@@ -50,7 +50,7 @@ class BladeShadingTest {
         SceneDef def = SceneFiles.parse(SCENE.getBytes(StandardCharsets.UTF_8), "tuft.xml", Path.of("scenes"));
         World world = RenderScenes.build(def);
         RenderSettings settings = RenderSettings.standalone();
-        settings.setSun(Math.toRadians(90), Math.toRadians(35));
+        settings.lighting().setSun(Math.toRadians(90), Math.toRadians(35));
         try (Shots s = new Shots(world, settings, W, H)) {
             // the sun stands toward +Z: the front-lit camera stands on the sun's side (+Z) looking along -Z
             ViewCamera front = Shots.lookAt(0, 0.35, 0.7, 0, 0.15, 0, Math.toRadians(50), W / (double) H, 0.02, 50);

@@ -84,15 +84,21 @@ abstract class ComponentRecordsTest {
         renderer.readRecords(rec);
     }
 
-    private static final org.jecosys.math.Rgb SKY = new org.jecosys.math.Rgb(0.6f, 0.7f, 0.9f);
+    /** The light of these pictures: the sun high and to the side, haze from 25 m to 160 m. */
+    private final Lighting light = new Lighting();
+
+    {
+        light.setSunDirection(0.3f, 0.9f, 0.3f);
+        light.setSky(0.6f, 0.7f, 0.9f);
+        light.setFog(25f, 160f);
+    }
 
     void draw() {
         draw(renderer);
     }
 
     void draw(PlantRenderer r) {
-        r.setSunDirection(0.3f, 0.9f, 0.3f);
-        r.setHaze(SKY, 25f, 160f);
+        r.setLighting(light);
         r.draw(frame, cam, 180);
     }
 

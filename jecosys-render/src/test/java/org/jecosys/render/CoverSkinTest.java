@@ -174,7 +174,7 @@ class CoverSkinTest {
     /** The guest settings a game starts from: the scene's look, no clear, no terrain. */
     private RenderSettings guest(boolean skin) {
         RenderSettings s = RenderSettings.of(def);
-        s.setSky(SKY);
+        s.lighting().setSky(SKY);
         s.setCoverSkin(skin);
         assertTrue(!s.clear() && !s.terrain(), "a guest's defaults");
         return s;
@@ -252,7 +252,7 @@ class CoverSkinTest {
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
         Frame frame = TestFrames.rest(world, cam);
         RenderSettings own = RenderSettings.of(def);
-        own.setSky(SKY);
+        own.lighting().setSky(SKY);
         own.setClear(true);
         own.setTerrain(true);
         int[] ours;

@@ -86,7 +86,7 @@ class GoodGuestTest {
                     assertTrue(before.size() >= 80, "entries in the census: " + before.size());
                     // with the sun's shadow map: its own framebuffer is bound and put back within each render
                     RenderSettings settings = RenderSettings.standalone();
-                    settings.setSky(SKY);
+                    settings.lighting().setSky(SKY);
                     settings.setShadows(0.6f);
                     settings.setShadowPath(ShadowPath.MAP);
                     SceneRenderer renderer = new SceneRenderer(gl, world, settings);
@@ -236,7 +236,7 @@ class GoodGuestTest {
     /** A guest's settings (no clear, no terrain) with the test's sky. */
     private static RenderSettings guest() {
         RenderSettings s = new RenderSettings();
-        s.setSky(SKY);
+        s.lighting().setSky(SKY);
         return s;
     }
 }

@@ -438,7 +438,7 @@ class HostCompositionTest {
     /** The library's whole picture with the test's sky. */
     private static RenderSettings standalone() {
         RenderSettings s = RenderSettings.standalone();
-        s.setSky(SKY);
+        s.lighting().setSky(SKY);
         return s;
     }
 }

@@ -61,9 +61,9 @@ class RenderC1Test {
         fb = new GlFramebuffer(gl.tracker(), W, H);
         // a flat sky (zenith = horizon, no sun glow), so that every sky pixel has one known colour
         RenderSettings flat = RenderSettings.standalone();
-        flat.setSky(SKY);
-        flat.setSkyZenith(SKY);
-        flat.setSunIntensity(0);
+        flat.lighting().setSky(SKY);
+        flat.lighting().setSkyZenith(SKY);
+        flat.lighting().setSunIntensity(0);
         renderer = new SceneRenderer(gl, world, flat);
         px = MemoryUtil.memAlloc(4 * 1024 * 1024);
         other = MemoryUtil.memAlloc(4 * 1024 * 1024);

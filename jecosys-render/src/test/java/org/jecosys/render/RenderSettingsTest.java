@@ -21,71 +21,71 @@ class RenderSettingsTest {
         RenderSettings s = new RenderSettings();
         RenderDef.Light l = RenderDef.Light.DEFAULT;
         RenderDef.Patches p = RenderDef.Patches.DEFAULT;
-        assertEquals(l.sunAzimuth(), s.sunAzimuth(), 1e-12);
-        assertEquals(l.sunElevation(), s.sunElevation(), 1e-12);
-        assertEquals(l.sunColour(), s.sunColour());
-        assertEquals(l.sunIntensity(), s.sunIntensity(), 1e-6);
-        assertEquals(l.skyZenith(), s.skyZenith());
-        assertEquals(l.ambient(), s.ambient());
+        assertEquals(l.sunAzimuth(), s.lighting().sunAzimuth(), 1e-12);
+        assertEquals(l.sunElevation(), s.lighting().sunElevation(), 1e-12);
+        assertEquals(l.sunColour(), s.lighting().sunColour());
+        assertEquals(l.sunIntensity(), s.lighting().sunIntensity(), 1e-6);
+        assertEquals(l.skyZenith(), s.lighting().skyZenith());
+        assertEquals(l.ambient(), s.lighting().ambient());
         assertEquals(l.contactShadow(), s.contactShadow(), 1e-6);
-        assertEquals(l.fogStart(), s.fogStart(), 1e-6);
-        assertEquals(l.fogEnd(), s.fogEnd(), 1e-6);
+        assertEquals(l.fogStart(), s.lighting().fogStart(), 1e-6);
+        assertEquals(l.fogEnd(), s.lighting().fogEnd(), 1e-6);
         assertEquals(p.scale(), s.patchScale(), 1e-6);
         assertEquals(p.strength(), s.patchStrength(), 1e-6);
         assertEquals(p.seed(), s.patchSeed());
-        assertEquals(RenderDef.defaults().sky(), s.sky(), "the horizon is the old sky colour");
-        assertNotEquals(s.sky(), s.skyZenith(), "a gradient by default");
+        assertEquals(RenderDef.defaults().sky(), s.lighting().sky(), "the horizon is the old sky colour");
+        assertNotEquals(s.lighting().sky(), s.lighting().skyZenith(), "a gradient by default");
     }
 
     @Test
     void sunVectorIsTowardTheSun() {
         RenderSettings s = new RenderSettings();
-        assertTrue(s.sunX() < 0 && s.sunZ() > 0 && s.sunY() > 0.7, "default: high, behind-left of a -Z camera");
+        assertTrue(s.lighting().sunX() < 0 && s.lighting().sunZ() > 0 && s.lighting().sunY() > 0.7, "default: high, behind-left of a -Z camera");
         float[][] cases = {{0, 0, 1, 0, 0}, {90, 0, 0, 0, 1}, {180, 0, -1, 0, 0}, {-90, 0, 0, 0, -1},
             {0, 90, 0, 1, 0}, {30, 40, 0, 0, 0}};
         for (float[] c : cases) {
-            s.setSun(Math.toRadians(c[0]), Math.toRadians(c[1]));
-            assertEquals(Math.toRadians(c[0]), s.sunAzimuth());
-            assertEquals(Math.toRadians(c[1]), s.sunElevation());
+            s.lighting().setSun(Math.toRadians(c[0]), Math.toRadians(c[1]));
+            assertEquals(Math.toRadians(c[0]), s.lighting().sunAzimuth());
+            assertEquals(Math.toRadians(c[1]), s.lighting().sunElevation());
             double az = Math.toRadians(c[0]);
             double el = Math.toRadians(c[1]);
-            assertEquals(Math.cos(el) * Math.cos(az), s.sunX(), 1e-6);
-            assertEquals(Math.sin(el), s.sunY(), 1e-6);
-            assertEquals(Math.cos(el) * Math.sin(az), s.sunZ(), 1e-6);
-            assertEquals(1, Math.sqrt(s.sunX() * s.sunX() + s.sunY() * s.sunY() + s.sunZ() * s.sunZ()), 1e-6);
+            assertEquals(Math.cos(el) * Math.cos(az), s.lighting().sunX(), 1e-6);
+            assertEquals(Math.sin(el), s.lighting().sunY(), 1e-6);
+            assertEquals(Math.cos(el) * Math.sin(az), s.lighting().sunZ(), 1e-6);
+            assertEquals(1, Math.sqrt(s.lighting().sunX() * s.lighting().sunX() + s.lighting().sunY() * s.lighting().sunY() + s.lighting().sunZ() * s.lighting().sunZ()), 1e-6);
         }
     }
 
     @Test
     void settersCheckTheirRanges() {
         RenderSettings s = new RenderSettings();
-        s.setSun(Math.toRadians(10), Math.toRadians(20));
+        s.lighting().setSun(Math.toRadians(10), Math.toRadians(20));
         s.setContactShadow(0.3f);
         s.setPatches(5, 0.5f, 9);
-        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(0), Math.toRadians(91)));
-        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(0), Math.toRadians(-1)));
-        assertThrows(IllegalArgumentException.class, () -> s.setSun(Math.toRadians(361), Math.toRadians(10)));
-        assertThrows(IllegalArgumentException.class, () -> s.setSun(Double.NaN, 0.1));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSun(Math.toRadians(0), Math.toRadians(91)));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSun(Math.toRadians(0), Math.toRadians(-1)));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSun(Math.toRadians(361), Math.toRadians(10)));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSun(Double.NaN, 0.1));
         assertThrows(IllegalArgumentException.class, () -> s.setContactShadow(1.1f));
-        assertThrows(IllegalArgumentException.class, () -> s.setSunIntensity(5));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSunIntensity(5));
         assertThrows(IllegalArgumentException.class, () -> s.setPatches(0.1f, 0.5f, 1));
         assertThrows(IllegalArgumentException.class, () -> s.setPatches(10, -0.5f, 1));
-        assertThrows(IllegalArgumentException.class, () -> s.setSunColour(null));
-        assertThrows(IllegalArgumentException.class, () -> s.setSkyZenith(null));
-        assertThrows(IllegalArgumentException.class, () -> s.setAmbient(null));
-        assertEquals(Math.toRadians(10), s.sunAzimuth(), "a refused value leaves the setting as it was");
-        assertEquals(Math.toRadians(20), s.sunElevation());
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSunColour(null));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setSkyZenith(null));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setAmbient(null));
+        assertEquals(Math.toRadians(10), s.lighting().sunAzimuth(), "a refused value leaves the setting as it was");
+        assertEquals(Math.toRadians(20), s.lighting().sunElevation());
         assertEquals(0.3f, s.contactShadow());
         assertEquals(5, s.patchScale());
         assertEquals(0.5f, s.patchStrength());
         assertEquals(9, s.patchSeed());
         Rgb c = new Rgb(1, 0.5f, 0.25f);
-        s.setSunColour(c);
-        s.setSkyZenith(c);
-        s.setAmbient(c);
-        assertSame(c, s.sunColour());
-        assertSame(c, s.skyZenith());
-        assertSame(c, s.ambient());
+        s.lighting().setSunColour(c);
+        s.lighting().setSkyZenith(c);
+        s.lighting().setAmbient(c);
+        assertEquals(c, s.lighting().sunColour());
+        assertEquals(c, s.lighting().skyZenith());
+        assertEquals(c, s.lighting().ambient());
     }
 
     @Test
@@ -132,7 +132,7 @@ class RenderSettingsTest {
         s.setShadows(0.4f);
         s.setShadowPath(ShadowPath.MAP);
         s.setShadowReach(30);
-        s.setFog(5, 60);
+        s.lighting().setFog(5, 60);
         s.setClear(true);
         s.setTerrain(true);
         s.setTint(RenderDef.Tint.WATER);
@@ -140,19 +140,19 @@ class RenderSettingsTest {
         assertEquals(0.4f, s.shadows());
         assertEquals(ShadowPath.MAP, s.shadowPath());
         assertEquals(30f, s.shadowReach());
-        assertEquals(5f, s.fogStart());
-        assertEquals(60f, s.fogEnd());
+        assertEquals(5f, s.lighting().fogStart());
+        assertEquals(60f, s.lighting().fogEnd());
         assertTrue(s.clear() && s.terrain());
         assertEquals(RenderDef.Tint.WATER, s.tint());
         assertThrows(IllegalArgumentException.class, () -> s.setSheen(2.5f));
         assertThrows(IllegalArgumentException.class, () -> s.setShadows(-0.1f));
         assertThrows(IllegalArgumentException.class, () -> s.setShadowPath(null));
         assertThrows(IllegalArgumentException.class, () -> s.setShadowReach(1));
-        assertThrows(IllegalArgumentException.class, () -> s.setFog(10, 10));
+        assertThrows(IllegalArgumentException.class, () -> s.lighting().setFog(10, 10));
         assertThrows(IllegalArgumentException.class, () -> s.setTint(null));
         assertThrows(IllegalArgumentException.class, () -> s.setGroundCover(null));
         assertEquals(1.5f, s.sheen(), "a refused value leaves the setting as it was");
-        assertEquals(5f, s.fogStart());
+        assertEquals(5f, s.lighting().fogStart());
     }
 
     @Test

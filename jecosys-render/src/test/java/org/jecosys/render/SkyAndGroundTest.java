@@ -116,7 +116,7 @@ class SkyAndGroundTest {
 
     @Test
     void skyIsAGradientFromHorizonToZenith() {
-        settings.setSun(Math.toRadians(135), Math.toRadians(50));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(50));
         // looking up 55 degrees, away from the sun: the top row is 85 degrees up
         render(look(yawToward(-45), Math.toRadians(55)), true);
         int[] top = {Pixels.red(px, W, W / 2, H - 3), Pixels.green(px, W, W / 2, H - 3), Pixels.blue(px, W, W / 2, H - 3)};
@@ -124,8 +124,8 @@ class SkyAndGroundTest {
         render(look(yawToward(-45), 0), true);
         int[] low = {Pixels.red(px, W, W / 2, H / 2 + 5), Pixels.green(px, W, W / 2, H / 2 + 5),
             Pixels.blue(px, W, W / 2, H / 2 + 5)};
-        int[] zenith = rgb(settings.skyZenith());
-        int[] horizon = rgb(settings.sky());
+        int[] zenith = rgb(settings.lighting().skyZenith());
+        int[] horizon = rgb(settings.lighting().sky());
         int diff = Math.abs(top[0] - low[0]) + Math.abs(top[1] - low[1]) + Math.abs(top[2] - low[2]);
         System.out.printf("sky: near zenith %d,%d,%d, just above the horizon %d,%d,%d%n", top[0], top[1], top[2], low[0], low[1],
                 low[2]);
@@ -136,13 +136,13 @@ class SkyAndGroundTest {
 
     @Test
     void skyIsBrighterTowardTheSun() {
-        settings.setSun(Math.toRadians(135), Math.toRadians(30));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(30));
         render(look(yawToward(135), Math.toRadians(30)), true);
         double toward = block(W / 2, H / 2);
         double beside = block(W / 2 + 60, H / 2);
         render(look(yawToward(135 + 180), Math.toRadians(30)), true);
         double away = block(W / 2, H / 2);
-        settings.setSun(Math.toRadians(135), Math.toRadians(50));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(50));
         System.out.printf("sky luma: toward the sun %.1f, 13 degrees beside %.1f, away %.1f%n", toward, beside, away);
         assertTrue(toward >= 250, "the sun's disc is near white: " + toward);
         assertTrue(beside > away + 8, "the glow around the sun: " + beside + " vs " + away);
@@ -229,13 +229,13 @@ class SkyAndGroundTest {
         top.setOrientation(0, Math.toRadians(-89.9));
         top.setLens(Math.toRadians(50), W / (double) H, 0.05, 200);
         Matrix4f vp = top.viewProjection(new Matrix4f());
-        settings.setSun(Math.toRadians(135), Math.toRadians(80));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(80));
         render(top, false);
         double high = groundLuma(vp, 0, 0);
-        settings.setSun(Math.toRadians(135), Math.toRadians(10));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(10));
         render(top, false);
         double low = groundLuma(vp, 0, 0);
-        settings.setSun(Math.toRadians(135), Math.toRadians(50));
+        settings.lighting().setSun(Math.toRadians(135), Math.toRadians(50));
         System.out.printf("open ground luma, sun at 80 degrees %.1f, at 10 degrees %.1f%n", high, low);
         assertTrue(high > low * 1.3, "a high sun lights flat ground more than a low one: " + high + " vs " + low);
     }

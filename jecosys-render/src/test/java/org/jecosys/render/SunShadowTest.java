@@ -81,10 +81,10 @@ class SunShadowTest {
             above.setLens(Math.toRadians(60), 1, 0.05, 50);
             Frame frame = TestFrames.rest(world, above);
             ViewCamera a = Shots.lookAt(0, 1.5, 1.5, 0, 0, 0, Math.toRadians(50), 1, 0.05, 50);
-            settings.setSun(Math.toRadians(0), Math.toRadians(30));
+            settings.lighting().setSun(Math.toRadians(0), Math.toRadians(30));
             Img neverOn = s.render(frame, a, true, true);
 
-            settings.setSun(Math.toRadians(0), Math.toRadians(30));
+            settings.lighting().setSun(Math.toRadians(0), Math.toRadians(30));
             double[] low = moments(s, settings, frame, above);
             double along = -low[1];                       // the sun stands toward +X: its shadow toward -X
             double across = Math.abs(low[2]);
@@ -101,7 +101,7 @@ class SunShadowTest {
             double elongated = path == ShadowPath.MAP ? 1.2 : 1.3;
             assertTrue(elongation >= elongated, String.format("elongated along the sun: %.2f", elongation));
 
-            settings.setSun(Math.toRadians(0), Math.toRadians(90));
+            settings.lighting().setSun(Math.toRadians(0), Math.toRadians(90));
             double[] noon = moments(s, settings, frame, above);
             double[] under = footprintCentroid(world);
             double off = Math.hypot(noon[1] - under[0], noon[2] - under[1]);
@@ -111,7 +111,7 @@ class SunShadowTest {
             assertTrue(off <= 0.1 * height, String.format("centroid %.3f m from the tuft's own outline's", off));
 
             // half a pixel sideways, seen from 2 m at 45 degrees
-            settings.setSun(Math.toRadians(0), Math.toRadians(30));
+            settings.lighting().setSun(Math.toRadians(0), Math.toRadians(30));
             double pixel = 2 * Math.hypot(1.5, 1.5) * Math.tan(Math.toRadians(25)) / H;
             ViewCamera b = Shots.lookAt(0.5 * pixel, 1.5, 1.5, 0.5 * pixel, 0, 0, Math.toRadians(50), 1, 0.05, 50);
             double[] da = darkening(s, settings, frame, a);
@@ -132,7 +132,7 @@ class SunShadowTest {
 
             // switched off again: the picture (plants, ground cover, terrain) is exactly as before they were on
             settings.setShadows(0);
-            settings.setSun(Math.toRadians(0), Math.toRadians(30));
+            settings.lighting().setSun(Math.toRadians(0), Math.toRadians(30));
             Img offAgain = s.render(frame, a, true, true);
             assertTrue(java.util.Arrays.equals(neverOn.rgb(), offAgain.rgb()), "shadows off gives today's picture");
         }
@@ -158,8 +158,8 @@ class SunShadowTest {
                 World world = RenderScenes.build(def);
                 RenderSettings settings = RenderSettings.standalone();
                 settings.setShadowPath(paths[k]);
-                settings.setSun(Math.toRadians(0), Math.toRadians(20));
-                settings.setSunIntensity(1.6f);
+                settings.lighting().setSun(Math.toRadians(0), Math.toRadians(20));
+                settings.lighting().setSunIntensity(1.6f);
                 try (Shots s = new Shots(world, settings, W, H)) {
                     Frame frame = TestFrames.rest(world, SIDE);
                     settings.setShadows(0);

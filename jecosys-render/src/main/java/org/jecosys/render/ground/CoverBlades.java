@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.Lighting;
 import org.jecosys.render.gl.GlContexts;
 import static org.lwjgl.opengl.GL11C.GL_FLOAT;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
@@ -21,7 +22,6 @@ import static org.lwjgl.opengl.GL33C.glVertexAttribDivisor;
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import org.jecosys.math.Camera;
-import org.jecosys.math.Rgb;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.RenderSettings;
@@ -278,16 +278,15 @@ public final class CoverBlades implements AutoCloseable {
         glUniform3f(uEye, (float) ex, (float) camera.y(), (float) ez);
         ground.set(settings);
         ground.setShadowMap(shadow);
-        Rgb sun = settings.sunColour();
-        float k = settings.sunIntensity();
-        Rgb amb = settings.ambient();
+        Lighting l = settings.lighting();
+        float k = l.sunIntensity();
         glUniform4f(uBlade, (float) gc.height(), (float) gc.amount(), perTile, 0f);
         glUniform1f(uReach, (float) reach);
         glUniform1f(uSheen, settings.sheen());
         // the sun's share of the light on flat ground: what a blade in a plant's shadow loses (times the
         // shadow's strength and its share in the map's blue channel, 0 while shadows are off)
-        float sunLight = k * Math.max(0f, settings.sunY()) * (0.2126f * sun.r() + 0.7152f * sun.g() + 0.0722f * sun.b());
-        float skyLight = 0.2126f * amb.r() + 0.7152f * amb.g() + 0.0722f * amb.b();
+        float sunLight = k * Math.max(0f, l.sunY()) * (0.2126f * l.sunR() + 0.7152f * l.sunG() + 0.0722f * l.sunB());
+        float skyLight = 0.2126f * l.ambientR() + 0.7152f * l.ambientG() + 0.0722f * l.ambientB();
         glUniform2f(uShadows, settings.shadows(), sunLight / Math.max(1e-6f, sunLight + skyLight));
         maps.bind(TextureUnits.GROUND_MAPS);
         bendTexture.bind(TextureUnits.TILE_BENDS);

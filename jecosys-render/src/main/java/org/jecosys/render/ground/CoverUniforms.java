@@ -1,12 +1,12 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.Lighting;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 
-import org.jecosys.math.Rgb;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.TextureUnits;
@@ -54,15 +54,14 @@ final class CoverUniforms {
      */
     void set(RenderSettings settings, boolean withCover, boolean withSheen) {
         RenderDef.GroundCover gc = settings.groundCover();
-        Rgb sun = settings.sunColour();
-        float k = settings.sunIntensity();
-        Rgb amb = settings.ambient();
-        Rgb fog = settings.sky();
+        Lighting l = settings.lighting();
+        float k = l.sunIntensity();
         glUniform4f(cover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
         glUniform1f(sheen, withSheen ? settings.sheen() : 0f);
-        glUniform3f(sheenLight, 0.35f * fog.r() * (amb.r() + 0.5f * sun.r() * k),
-                0.35f * fog.g() * (amb.g() + 0.5f * sun.g() * k), 0.35f * fog.b() * (amb.b() + 0.5f * sun.b() * k));
-        float sl = (float) Math.hypot(settings.sunX(), settings.sunZ());
-        glUniform2f(sunXZ, sl > 1e-6f ? settings.sunX() / sl : 0f, sl > 1e-6f ? settings.sunZ() / sl : 0f);
+        glUniform3f(sheenLight, 0.35f * l.skyR() * (l.ambientR() + 0.5f * l.sunR() * k),
+                0.35f * l.skyG() * (l.ambientG() + 0.5f * l.sunG() * k),
+                0.35f * l.skyB() * (l.ambientB() + 0.5f * l.sunB() * k));
+        float sl = (float) Math.hypot(l.sunX(), l.sunZ());
+        glUniform2f(sunXZ, sl > 1e-6f ? l.sunX() / sl : 0f, sl > 1e-6f ? l.sunZ() / sl : 0f);
     }
 }

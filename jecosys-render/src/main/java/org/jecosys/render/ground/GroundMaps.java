@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.Lighting;
 import java.nio.ByteBuffer;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlTexture2D;
@@ -81,7 +82,7 @@ final class GroundMaps implements AutoCloseable {
      */
     boolean prepareShadows(RenderSettings settings) {
         if (settings.shadows() <= 0 || grid == null
-                || Math.asin(Math.min(1, settings.sunY())) < SunShadow.MIN_ELEVATION) {
+                || Math.asin(Math.min(1, settings.lighting().sunY())) < SunShadow.MIN_ELEVATION) {
             if (shadow != null) { // shadows off: the blue channel goes back to 0 for every reader
                 shadow = null;
                 shadowX = Float.NaN;
@@ -89,11 +90,12 @@ final class GroundMaps implements AutoCloseable {
             }
             return false;
         }
-        if (settings.sunX() != shadowX || settings.sunY() != shadowY || settings.sunZ() != shadowZ) {
-            shadow = SunShadow.of(world, grid, settings.sunX(), settings.sunY(), settings.sunZ());
-            shadowX = settings.sunX();
-            shadowY = settings.sunY();
-            shadowZ = settings.sunZ();
+        Lighting l = settings.lighting();
+        if (l.sunX() != shadowX || l.sunY() != shadowY || l.sunZ() != shadowZ) {
+            shadow = SunShadow.of(world, grid, l.sunX(), l.sunY(), l.sunZ());
+            shadowX = l.sunX();
+            shadowY = l.sunY();
+            shadowZ = l.sunZ();
             upload();
         }
         return true;

@@ -1,10 +1,10 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.Lighting;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform3f;
 
-import org.jecosys.math.Rgb;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.TextureUnits;
@@ -65,16 +65,14 @@ final class GroundUniforms {
 
     /** Sets them from the settings on the program in use. No allocation. */
     void set(RenderSettings settings) {
-        glUniform3f(lightDir, settings.sunX(), settings.sunY(), settings.sunZ());
-        Rgb sun = settings.sunColour();
-        float k = settings.sunIntensity();
-        glUniform3f(sunColour, sun.r() * k, sun.g() * k, sun.b() * k);
-        Rgb amb = settings.ambient();
-        glUniform3f(ambient, amb.r(), amb.g(), amb.b());
-        Rgb fog = settings.sky();
-        glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
-        glUniform1f(fogStart, settings.fogStart());
-        glUniform1f(fogEnd, settings.fogEnd());
+        Lighting l = settings.lighting();
+        glUniform3f(lightDir, l.sunX(), l.sunY(), l.sunZ());
+        float k = l.sunIntensity();
+        glUniform3f(sunColour, l.sunR() * k, l.sunG() * k, l.sunB() * k);
+        glUniform3f(ambient, l.ambientR(), l.ambientG(), l.ambientB());
+        glUniform3f(fogColour, l.skyR(), l.skyG(), l.skyB());
+        glUniform1f(fogStart, l.fogStart());
+        glUniform1f(fogEnd, l.fogEnd());
         glUniform3f(patch, 1 / settings.patchScale(), settings.patchStrength(), settings.patchStrength() > 0 ? 1 : 0);
         glUniform1i(patchSeed, settings.patchSeed());
         glUniform1f(contactShadow, settings.contactShadow());

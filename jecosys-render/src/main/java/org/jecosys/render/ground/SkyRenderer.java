@@ -1,5 +1,6 @@
 package org.jecosys.render.ground;
 
+import org.jecosys.render.Lighting;
 import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_TRIANGLES;
@@ -10,7 +11,6 @@ import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
 import java.nio.FloatBuffer;
 import org.jecosys.math.Camera;
-import org.jecosys.math.Rgb;
 import org.joml.Matrix4f;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.GlContext;
@@ -73,14 +73,12 @@ public final class SkyRenderer implements AutoCloseable {
     public void draw(Camera camera, RenderSettings settings) {
         program.use();
         glUniformMatrix4fv(uInvViewProj, false, camera.viewProjection(viewProj).invert().get(matrix));
-        Rgb h = settings.sky();
-        Rgb z = settings.skyZenith();
-        Rgb s = settings.sunColour();
-        float k = settings.sunIntensity();
-        glUniform3f(uHorizon, h.r(), h.g(), h.b());
-        glUniform3f(uZenith, z.r(), z.g(), z.b());
-        glUniform3f(uSunDir, settings.sunX(), settings.sunY(), settings.sunZ());
-        glUniform3f(uSunColour, s.r() * k, s.g() * k, s.b() * k);
+        Lighting l = settings.lighting();
+        float k = l.sunIntensity();
+        glUniform3f(uHorizon, l.skyR(), l.skyG(), l.skyB());
+        glUniform3f(uZenith, l.zenithR(), l.zenithG(), l.zenithB());
+        glUniform3f(uSunDir, l.sunX(), l.sunY(), l.sunZ());
+        glUniform3f(uSunColour, l.sunR() * k, l.sunG() * k, l.sunB() * k);
         vao.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);

@@ -1,7 +1,6 @@
 package org.jecosys.render.plant;
 
 import java.nio.FloatBuffer;
-import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 
 /**
@@ -23,7 +22,9 @@ final class PassContext {
     float lightY = 1f;
     float lightZ;
     /** Haze colour (the sky's horizon), and where the haze starts and is full, metres. */
-    Rgb fog = new Rgb(0f, 0f, 0f);
+    float fogR;
+    float fogG;
+    float fogB;
     float fogStart = 20f;
     float fogEnd = 150f;
     /** A pixel's size at the eye and its growth per metre of distance, metres. */
@@ -48,9 +49,11 @@ final class PassContext {
         lightZ = z;
     }
 
-    /** Sets the haze: its colour (kept) and where it starts and is full, metres. */
-    void setFog(Rgb colour, float start, float end) {
-        fog = colour;
+    /** Sets the haze: its colour and where it starts and is full, metres. */
+    void setFog(float r, float g, float b, float start, float end) {
+        fogR = r;
+        fogG = g;
+        fogB = b;
         fogStart = start;
         fogEnd = end;
     }

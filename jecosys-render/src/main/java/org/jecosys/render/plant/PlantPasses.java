@@ -134,7 +134,7 @@ public final class PlantPasses {
         PassContext c = caster;
         c.viewProj = at.viewProjection();
         c.setEye((float) at.sunward(0), (float) at.sunward(1), (float) at.sunward(2));
-        c.setFog(view.fog, 0f, 1f);
+        c.setFog(view.fogR, view.fogG, view.fogB, 0f, 1f);
         c.setLight(0f, 1f, 0f);
         c.setPixel((float) at.texelMetres(), 0f);
         c.frame = view.frame;

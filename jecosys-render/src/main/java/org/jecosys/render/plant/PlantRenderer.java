@@ -14,10 +14,10 @@ import java.nio.FloatBuffer;
 import java.util.List;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
-import org.jecosys.math.Rgb;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.plant.VariationDef;
 import org.jecosys.render.GlContext;
+import org.jecosys.render.Lighting;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.ResolvePath;
 import org.jecosys.render.gl.GlInts;
@@ -178,58 +178,21 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * Sets the light on the plants: the sun's colour times its intensity on a surface facing it, and
-     * the sky's ambient light (the direction: {@link #setSunDirection}). {@code SceneRenderer} sets it
-     * from its {@link RenderSettings} every frame. Render thread; no allocation.
+     * Sets the light and haze the next {@link #prepareNear} draws the plants in: the sun's direction
+     * and its colour times its intensity, the sky's ambient light, and the haze toward the sky's
+     * horizon colour from {@link Lighting#fogStart()} to {@link Lighting#fogEnd()} (values copied).
+     * {@code SceneRenderer} sets it from its {@link RenderSettings#lighting()} every frame. Render
+     * thread; no allocation.
      *
-     * @param sun       sunlight colour, components in [0, 4]
-     * @param intensity factor on the sun's colour, in [0, 4]
-     * @param ambient   sky light colour and strength, components in [0, 4]
-     * @throws IllegalArgumentException when a value is out of range
+     * @param light the light, not null
      */
-    public void setLight(Rgb sun, float intensity, Rgb ambient) {
-        checkLight("sun", sun);
-        checkLight("ambient", ambient);
-        Require.range("intensity", intensity, 0, 4);
-        look.setLight(sun.r() * intensity, sun.g() * intensity, sun.b() * intensity, ambient.r(), ambient.g(),
-                ambient.b());
-    }
-
-    private static void checkLight(String name, Rgb c) {
-        Require.nonNull(name, c);
-        if (!(c.r() >= 0 && c.r() <= 4 && c.g() >= 0 && c.g() <= 4 && c.b() >= 0 && c.b() <= 4)) {
-            throw new IllegalArgumentException(name + " components must be in [0, 4], got " + c);
-        }
-    }
-
-    /**
-     * Sets the direction toward the sun the next {@link #prepareNear} lights the plants from
-     * ({@link RenderSettings#sunX()} and its siblings). Render thread; no allocation.
-     *
-     * @param x toward the sun, X (a unit vector)
-     * @param y toward the sun, Y (up)
-     * @param z toward the sun, Z
-     * @throws IllegalArgumentException when a component is not finite
-     */
-    public void setSunDirection(float x, float y, float z) {
-        if (!(Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(z))) {
-            throw new IllegalArgumentException("sun direction must be finite, got " + x + ", " + y + ", " + z);
-        }
-        context.setLight(x, y, z);
-    }
-
-    /**
-     * Sets the haze (aerial perspective) the next {@link #prepareNear} draws the plants with: toward
-     * {@code colour} (the sky's horizon) from {@code start} to full at {@code end}. Render thread; no
-     * allocation (the colour is kept).
-     *
-     * @param colour the haze colour, not null
-     * @param start  distance where the haze starts, metres
-     * @param end    distance of full haze, metres
-     * @throws IllegalArgumentException when the colour is null
-     */
-    public void setHaze(Rgb colour, float start, float end) {
-        context.setFog(Require.nonNull("colour", colour), start, end);
+    public void setLighting(Lighting light) {
+        Require.nonNull("light", light);
+        float k = light.sunIntensity();
+        look.setLight(light.sunR() * k, light.sunG() * k, light.sunB() * k, light.ambientR(), light.ambientG(),
+                light.ambientB());
+        context.setLight(light.sunX(), light.sunY(), light.sunZ());
+        context.setFog(light.skyR(), light.skyG(), light.skyB(), light.fogStart(), light.fogEnd());
     }
 
     /**

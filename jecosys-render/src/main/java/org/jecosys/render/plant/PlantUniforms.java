@@ -7,7 +7,6 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 
-import org.jecosys.math.Rgb;
 import org.jecosys.sim.Frame;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.TextureUnits;
@@ -91,8 +90,7 @@ public final class PlantUniforms {
         glUniform1f(flowerTilt, r.flowerTilt);
         glUniform3f(lightDir, c.lightX, c.lightY, c.lightZ);
         glUniform3f(eye, c.eyeX, c.eyeY, c.eyeZ);
-        Rgb fog = c.fog;
-        glUniform3f(fogColour, fog.r(), fog.g(), fog.b());
+        glUniform3f(fogColour, c.fogR, c.fogG, c.fogB);
         glUniform1f(fogStart, c.fogStart);
         glUniform1f(fogEnd, c.fogEnd);
     }
