@@ -39,6 +39,9 @@ import org.jecosys.sim.Simulation;
  * default, and later) and on the compatibility profile ({@code LWJGL_OPENGL2}) where the driver offers
  * OpenGL 3.3 in it. The renderer shares jME's context and puts back every GL state it changes.
  *
+ * <p>The plants are lit by the lights on the application's root node (its sun and ambient light,
+ * {@link #setLightsFrom}) and fogged by the viewport's {@code FogFilter} as the rest of the picture.
+ *
  * <p>Threads: jME's render thread ("jME3 Main") initializes, updates, draws and cleans up the state,
  * as jME does for every app state. The game may queue commands on the {@link #simulation()} from any
  * thread (agents, flows). The simulation steps with the camera as it is when the state updates
@@ -59,6 +62,12 @@ public class PlantAppState extends BaseAppState {
     private ViewPort viewPort;
     private volatile DrawQuality quality;
     private DrawQuality applied;
+    /** The node whose lights light the plants, or null for the settings' own light; render thread. */
+    private com.jme3.scene.Spatial lightsFrom;
+    /** Whether the game chose {@link #lightsFrom} (otherwise the root node at initialisation). */
+    private boolean lightsChosen;
+    /** jME's gamma correction: its light colours are linear. */
+    private boolean gamma;
 
     /**
      * The plants of a scene: builds its simulation now, on the calling thread (the render thread in
@@ -143,6 +152,11 @@ public class PlantAppState extends BaseAppState {
         }
         viewPort = app.getViewPort();
         renderManager = app.getRenderManager();
+        gamma = app.getContext() != null && app.getContext().getSettings() != null
+                && app.getContext().getSettings().isGammaCorrection();
+        if (!lightsChosen && app instanceof com.jme3.app.SimpleApplication simple) {
+            lightsFrom = simple.getRootNode();
+        }
         hook.viewPort = viewPort;
         viewPort.getProcessors().add(0, hook); // before any FilterPostProcessor: the plants get the scene's depth and filters
     }
@@ -190,10 +204,36 @@ public class PlantAppState extends BaseAppState {
      */
     @Override
     public void update(float tpf) {
+        if (lightsFrom != null) {
+            JmeLights.apply(lightsFrom, gamma, settings.lighting());
+        }
         for (int i = 0; i < others.size(); i++) {
             others.get(i).follow();
         }
         simulation.step(tpf, stepCamera.update(viewPort.getCamera()));
+    }
+
+    /**
+     * Chooses the node whose lights light the plants, read at every {@link #update}: its first enabled
+     * {@code DirectionalLight} is the sun (opposite its direction, its colour), its enabled
+     * {@code AmbientLight}s the sky light, as jME's lit materials see them; a node without any light
+     * leaves the light as it was. The plants' own haze is off: a {@code FogFilter} in the viewport fogs
+     * them with the rest of the picture (they are drawn before the filters). With jME's gamma
+     * correction on, the light colours (linear) are encoded to the display values the plants are lit
+     * in. By default, for a {@code SimpleApplication}, its root node; null lights the plants with
+     * {@link #settings()}{@code .lighting()} alone, as the game sets it. Render thread (or before
+     * attaching); no allocation.
+     *
+     * @param node the node holding the game's lights (usually the root node), or null
+     */
+    public void setLightsFrom(com.jme3.scene.Spatial node) {
+        lightsFrom = node;
+        lightsChosen = true;
+    }
+
+    /** {@return the node whose lights light the plants, or null for the settings' own light} */
+    public com.jme3.scene.Spatial lightsFrom() {
+        return lightsFrom;
     }
 
     /**

@@ -176,4 +176,52 @@ class RenderSettingsTest {
         assertThrows(IllegalArgumentException.class, () -> GlContext.headless(null));
         assertThrows(IllegalArgumentException.class, () -> GlContext.windowed("t", 64, 64, null));
     }
+
+    @Test
+    void aGamesLightIsSetFromFloatsWithoutAllocation() {
+        Lighting l = new RenderSettings().lighting();
+        l.setSunDirection(0f, 2f, -2f);
+        assertEquals(0, l.sunX(), 1e-6);
+        assertEquals(Math.sqrt(0.5), l.sunY(), 1e-6);
+        assertEquals(-Math.sqrt(0.5), l.sunZ(), 1e-6);
+        assertEquals(Math.toRadians(45), l.sunElevation(), 1e-6);
+        assertEquals(Math.toRadians(-90), l.sunAzimuth(), 1e-6);
+        l.setSunDirection(1f, -1f, 0f);
+        assertEquals(Math.toRadians(-45), l.sunElevation(), 1e-6, "a sun under the horizon, from a direction");
+        assertThrows(IllegalArgumentException.class, () -> l.setSunDirection(0f, 0f, 0f));
+        assertThrows(IllegalArgumentException.class, () -> l.setSunDirection(Float.NaN, 1f, 0f));
+        l.setSunColour(1.5f, 1.2f, 0.9f);
+        assertEquals(1.5f, l.sunR());
+        assertEquals(new org.jecosys.math.Rgb(1f, 1f, 0.9f), l.sunColour(), "the Rgb getter clamps to [0, 1]");
+        assertThrows(IllegalArgumentException.class, () -> l.setSunColour(4.5f, 0f, 0f));
+        assertThrows(IllegalArgumentException.class, () -> l.setAmbient(-0.1f, 0f, 0f));
+        assertThrows(IllegalArgumentException.class, () -> l.setSky(1.1f, 0f, 0f));
+        assertEquals(1.5f, l.sunR(), "a refused value leaves the light as it was");
+        assertTrue(l.hasFog());
+        l.setNoFog();
+        assertTrue(!l.hasFog() && l.fogStart() > 1e20f, "no haze within any view's reach");
+        l.setFog(0f, 90f);
+        assertTrue(l.hasFog());
+        assertThrows(IllegalArgumentException.class, () -> l.setFog(10f, Float.POSITIVE_INFINITY));
+        Lighting copy = new Lighting();
+        copy.set(l);
+        assertEquals(l.sunX(), copy.sunX());
+        assertEquals(l.fogEnd(), copy.fogEnd());
+        com.sun.management.ThreadMXBean mx =
+                (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long self = Thread.currentThread().getId();
+        long least = Long.MAX_VALUE;
+        for (int run = 0; run < 5; run++) {
+            long before = mx.getThreadAllocatedBytes(self);
+            for (int i = 0; i < 1000; i++) {
+                l.setSunDirection(0.3f, 0.8f + i * 1e-4f, 0.1f);
+                l.setSunColour(1f, 0.9f, 0.8f);
+                l.setAmbient(0.4f, 0.4f, 0.5f);
+                l.setSky(0.6f, 0.7f, 0.8f);
+                l.setFog(0f, 100f + i);
+            }
+            least = Math.min(least, mx.getThreadAllocatedBytes(self) - before);
+        }
+        assertEquals(0, least, "bytes allocated by 1000 frames of a game's light");
+    }
 }

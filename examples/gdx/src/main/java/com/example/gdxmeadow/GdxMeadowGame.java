@@ -153,7 +153,7 @@ public final class GdxMeadowGame extends ApplicationAdapter {
         modelBatch.render(player, environment);
         modelBatch.end();
         checkGl("ModelBatch");
-        plants.render(camera); // between the game's 3D pass and its 2D pass, depth-tested against the ground
+        plants.render(camera, environment); // between the 3D and 2D passes, depth-tested, in the game's light
         checkGl("plants");
         hudText.setLength(0);
         hudText.append("JEcoSys in libGDX: ").append(plants.simulation().plantCount()).append(" plants, ")
