@@ -18,14 +18,11 @@ import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
-import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
-import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glUseProgram;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
-import java.nio.FloatBuffer;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
 import org.jecosys.render.GlContext;
@@ -37,8 +34,6 @@ import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
 import org.jecosys.render.gl.TextureUnits;
 import org.jecosys.terrain.Heightfield;
-import org.joml.Matrix4f;
-import org.lwjgl.system.MemoryUtil;
 
 /**
  * The ground cover's skin: the far part of the ground cover ({@code <groundCover>}) for a host that
@@ -70,13 +65,7 @@ public final class CoverSkin implements AutoCloseable {
     private final GlProgram program;
     private final GlVertexArray vao;
     private final int indexCount;
-    private final GroundUniforms ground;
-    private final CoverUniforms coverLook;
-    private final FloatBuffer matrix;
-    private final Matrix4f viewProj = new Matrix4f();
-    private final int uViewProj;
-    private final int uEye;
-    private final int uShadows;
+    private final SurfaceUniforms surface;
     private final int uEdge;
     private final CoverBlades blades;
     private ShadowParams shadow = new ShadowParams();
@@ -117,12 +106,7 @@ public final class CoverSkin implements AutoCloseable {
         program = prog;
         vao = va;
         indexCount = 3 * terrain.triangles();
-        ground = new GroundUniforms(program);
-        coverLook = new CoverUniforms(program);
-        matrix = MemoryUtil.memAllocFloat(16);
-        uViewProj = program.uniform("uViewProj");
-        uEye = program.uniform("uEye");
-        uShadows = program.uniform("uShadows");
+        surface = new SurfaceUniforms(program);
         uEdge = program.uniform("uEdge");
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
@@ -154,13 +138,8 @@ public final class CoverSkin implements AutoCloseable {
     public void draw(Camera camera, RenderSettings settings) {
         boolean shadows = terrain.prepareShadows(settings);
         program.use();
-        glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
-        glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
-        ground.set(settings);
-        ground.setShadowMap(shadow);
-        glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
         boolean sheen = settings.sheen() > 0;
-        coverLook.set(settings, true, sheen);
+        surface.set(camera, settings, shadow, shadows, true, sheen);
         Heightfield h = blades.heightfield();
         glUniform1f(uEdge, (float) Math.max(settings.groundCover().spread(), 2 * Math.max(h.cellX(), h.cellZ())));
         if (sheen) {
@@ -204,7 +183,7 @@ public final class CoverSkin implements AutoCloseable {
         if (!closed) {
             closed = true;
             Closing.closeAll(vao, program);
-            MemoryUtil.memFree((java.nio.Buffer) matrix);
+            surface.close();
         }
     }
 }

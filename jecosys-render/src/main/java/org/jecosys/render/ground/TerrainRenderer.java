@@ -10,13 +10,10 @@ import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_ELEMENT_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
-import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUniform2f;
 import static org.lwjgl.opengl.GL20C.glUniform4f;
 import static org.lwjgl.opengl.GL20C.glUseProgram;
-import static org.lwjgl.opengl.GL20C.glUniform3f;
-import static org.lwjgl.opengl.GL20C.glUniformMatrix4fv;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
@@ -29,7 +26,6 @@ import org.jecosys.terrain.Heightfield;
 import org.jecosys.terrain.ResourceMap;
 import org.jecosys.terrain.Terrain;
 import org.jecosys.terrain.TerrainMaps;
-import org.joml.Matrix4f;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.RenderSettings;
@@ -68,12 +64,8 @@ public final class TerrainRenderer implements AutoCloseable {
     private final GlBuffer vertices;
     private final GlBuffer indices;
     private final int indexCount;
-    private final FloatBuffer matrix;
-    private final Matrix4f viewProj = new Matrix4f();
-    private final int uViewProj;
-    private final int uEye;
-    /** The cover's amount, grain and sheen uniforms ({@code ground_cover.glsl}), shared with the cover skin. */
-    private final CoverUniforms coverLook;
+    /** The view, light, haze, shadow and cover uniforms, set as the cover skin sets its own. */
+    private final SurfaceUniforms surface;
     private GlTexture2D bendMap;
     /** Contact occlusion (red), ground cover (green) and sun shadow (blue) over the terrain. */
     private final GroundMaps maps;
@@ -81,9 +73,6 @@ public final class TerrainRenderer implements AutoCloseable {
     private final ContactOcclusion occlusionMap;
     /** The ground cover's grain: a repeating, mipmapped tile. */
     private final GlTexture2D grain;
-    private final int uShadows;
-    /** The light, haze, patch, contact-shadow and cover-colour uniforms, shared with the cover blades. */
-    private final GroundUniforms ground;
     /** The frame's sun shadow map, as {@link #useShadowMap} gave it (none until then). */
     private ShadowParams shadow = new ShadowParams();
     private RenderDef.Tint tint;
@@ -177,12 +166,7 @@ public final class TerrainRenderer implements AutoCloseable {
         }
         glBindVertexArray(0);
         this.tint = tint;
-        matrix = MemoryUtil.memAllocFloat(16);
-        uViewProj = program.uniform("uViewProj");
-        uEye = program.uniform("uEye");
-        coverLook = new CoverUniforms(program);
-        uShadows = program.uniform("uShadows");
-        ground = new GroundUniforms(program);
+        surface = new SurfaceUniforms(program);
         int previous = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
         program.use();
         glUniform1i(program.uniform("uOcclusion"), TextureUnits.GROUND_MAPS);
@@ -364,13 +348,8 @@ public final class TerrainRenderer implements AutoCloseable {
         boolean withCover = cover && prepareCover(settings);
         boolean shadows = maps.prepareShadows(settings);
         program.use();
-        glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
-        glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
-        ground.set(settings);
-        ground.setShadowMap(shadow);
-        glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
         boolean sheen = withCover && bendMap != null && settings.sheen() > 0;
-        coverLook.set(settings, withCover, sheen);
+        surface.set(camera, settings, shadow, shadows, withCover, sheen);
         if (sheen) {
             bendMap.bind(TextureUnits.TILE_BENDS);
         }
@@ -450,7 +429,7 @@ public final class TerrainRenderer implements AutoCloseable {
         if (!closed) {
             closed = true;
             Closing.closeAll(vao, vertices, indices, program, maps, grain);
-            MemoryUtil.memFree((java.nio.Buffer) matrix);
+            surface.close();
         }
     }
 
