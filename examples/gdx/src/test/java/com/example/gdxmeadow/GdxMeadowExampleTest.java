@@ -136,7 +136,7 @@ class GdxMeadowExampleTest {
         double share = ExampleLook.groundShare(shot.image(), ground);
         double bare = ExampleLook.groundShare(ground, ground);
         assertTrue(bare >= 0.99, "the lower half of the frame before the plants is the game's ground: " + bare);
-        System.out.printf("[look] libGDX example, meadow start view %dx%d, 0 samples: %.1f%% of the lower half keeps"
+        System.out.printf("[look] libGDX example, meadow start view %dx%d, 0 samples: %.2f%% of the lower half keeps"
                 + " the game's ground colour (<= 5%%)%n", START_W, START_H, 100 * share);
         assertTrue(share <= 0.05, String.format("%.1f%% of the lower half shows the game's ground, want <= 5%%; see %s",
                 100 * share, OUT.resolve("start-view.png")));
