@@ -23,9 +23,14 @@ import com.badlogic.gdx.graphics.g3d.attributes.ColorAttribute;
 import com.badlogic.gdx.graphics.g3d.environment.DirectionalLight;
 import com.badlogic.gdx.graphics.g3d.utils.ModelBuilder;
 import com.badlogic.gdx.math.Vector3;
+import com.badlogic.gdx.utils.GdxRuntimeException;
 import com.badlogic.gdx.utils.ScreenUtils;
+import org.jecosys.gdx.GdxScenes;
 import org.jecosys.gdx.PlantLayer;
 import org.jecosys.gdx.PlantLayerLoader;
+import org.jecosys.math.CameraDef;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneLoadException;
 import org.jecosys.sim.Simulation;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.wind.FlowDef;
@@ -41,6 +46,8 @@ import org.jecosys.wind.WindSource;
  *
  * <p>The player walks a loop through the grass; a source flow attached to it ({@code attachAgent})
  * pushes the plants aside, so a trail of bent grass follows it. Arrow keys or WASD steer it instead.
+ * The test mode's {@code --start-view} leaves the player out and holds the camera at the scene's start
+ * camera instead.
  */
 public final class GdxMeadowGame extends ApplicationAdapter {
     /** Player flow strength, m²/s: a source of this strength blows 3.2 m/s one metre away. */
@@ -123,9 +130,38 @@ public final class GdxMeadowGame extends ApplicationAdapter {
         centreX = (float) (terrain.minX() + terrain.sizeX() / 2);
         centreZ = (float) (terrain.minZ() + terrain.sizeZ() / 2);
         loopRadius = (float) Math.min(terrain.sizeX(), terrain.sizeZ()) * 0.2f;
+        if (options.startView()) {
+            startView();
+            return;
+        }
         walk(0);
         playerFlow = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, playerX, playerZ,
                 options.playerStrength()));
+    }
+
+    /**
+     * The test mode's still camera: the scene's start camera ({@code <camera>}, its height above the
+     * ground under it), with its lens, as the library's viewer opens the scene.
+     */
+    private void startView() {
+        CameraDef c;
+        try {
+            c = GdxScenes.read(resolver.resolve(options.scene())).def().camera();
+        } catch (SceneLoadException e) {
+            throw new GdxRuntimeException(e.getMessage(), e);
+        }
+        ViewCamera v = ViewCamera.of(c, terrain.height(c.x(), c.z()),
+                Gdx.graphics.getWidth() / (double) Gdx.graphics.getHeight());
+        org.joml.Vector3f ahead = v.forward(new org.joml.Vector3f());
+        camera.fieldOfView = (float) Math.toDegrees(v.fovY());
+        camera.near = (float) v.near();
+        camera.far = (float) v.far();
+        camera.position.set((float) v.x(), (float) v.y(), (float) v.z());
+        camera.direction.set(ahead.x, ahead.y, ahead.z);
+        camera.up.set(Vector3.Y);
+        camera.viewportWidth = Gdx.graphics.getWidth();
+        camera.viewportHeight = Gdx.graphics.getHeight();
+        camera.update();
     }
 
     @Override
@@ -142,19 +178,29 @@ public final class GdxMeadowGame extends ApplicationAdapter {
         // a fixed frame time in the test mode, so that its pictures do not depend on the machine's speed
         float dt = capture != null ? 1 / 30f : Gdx.graphics.getDeltaTime();
         time += dt;
-        walk(dt);
-        plants.simulation().moveAgent(playerFlow, playerX, playerZ);
-        follow();
+        if (playerFlow != null) {
+            walk(dt);
+            plants.simulation().moveAgent(playerFlow, playerX, playerZ);
+            follow();
+        }
         plants.update(dt, camera);
 
         ScreenUtils.clear(0.55f, 0.72f, 0.92f, 1f, true);
         modelBatch.begin(camera);
         modelBatch.render(ground, environment);
-        modelBatch.render(player, environment);
+        if (playerFlow != null) {
+            modelBatch.render(player, environment);
+        }
         modelBatch.end();
         checkGl("ModelBatch");
+        if (capture != null) {
+            capture.beforePlants();
+        }
         plants.render(camera, environment); // between the 3D and 2D passes, depth-tested, in the game's light
         checkGl("plants");
+        if (capture != null) {
+            capture.afterPlants();
+        }
         hudText.setLength(0);
         hudText.append("JEcoSys in libGDX: ").append(plants.simulation().plantCount()).append(" plants, ")
                 .append(Gdx.graphics.getFramesPerSecond()).append(" fps; WASD walks");

@@ -12,12 +12,19 @@ import java.nio.file.Path;
  * Starts {@link GdxMeadowGame} in a libGDX LWJGL 3 window.
  * <pre>
  * GdxMeadowLauncher [--scene FILE] [--size WxH] [--gl30] [--frames N --screenshot FILE.png]
+ *                   [--start-view] [--ground-screenshot FILE.png] [--sheen FILE]
  * </pre>
  * {@code --scene} is a scene file on disk (default: {@code meadow/patch.xml}, an internal file found on
  * the classpath); {@code --gl30} asks libGDX for an OpenGL 3.3 core context (default: libGDX's GL20
  * emulation, a compatibility context); {@code --frames N} is the test mode: N frames at a fixed 1/30 s
  * after the scene has loaded, then the back buffer (HUD included) is saved to {@code --screenshot},
- * what the test checks is printed, and the game exits with 0.
+ * what the test checks is printed, and the game exits with 0. In the test mode, {@code --start-view}
+ * puts the camera at the scene's start camera ({@code <camera>}: its pose above the ground and its
+ * lens), standing still, and leaves the player and its flow out: the meadow's start view, as the
+ * library's viewer opens it; {@code --ground-screenshot} also saves the last frame as it is before
+ * the plants are drawn (the game's ground as lit, the player); {@code --sheen} writes, for every
+ * frame, the mean luminance of each 16 x 16 block of the picture after the plants and before the HUD
+ * ({@link TestCapture#blockLuminance}).
  */
 public final class GdxMeadowLauncher {
     private GdxMeadowLauncher() {
@@ -33,9 +40,12 @@ public final class GdxMeadowLauncher {
      * @param frames         test mode: frames to render before the screenshot; 0 to play
      * @param screenshot     test mode: where to write the PNG
      * @param playerStrength the player's flow strength, m²/s
+     * @param startView      test mode: the scene's start camera, still, and no player
+     * @param groundShot     test mode: where to write the last frame before the plants, or null
+     * @param sheen          test mode: where to write the frames' block luminance, or null
      */
     record Options(String scene, int width, int height, boolean gl30, int frames, Path screenshot,
-                   double playerStrength) {
+                   double playerStrength, boolean startView, Path groundShot, Path sheen) {
     }
 
     /**
@@ -50,7 +60,7 @@ public final class GdxMeadowLauncher {
         } catch (IllegalArgumentException e) {
             System.err.println("gdx-meadow: " + e.getMessage());
             System.err.println("usage: GdxMeadowLauncher [--scene FILE] [--size WxH] [--gl30] "
-                    + "[--frames N --screenshot FILE.png]");
+                    + "[--frames N --screenshot FILE.png] [--start-view] [--ground-screenshot FILE.png] [--sheen FILE]");
             System.exit(2);
             return;
         }
@@ -88,6 +98,9 @@ public final class GdxMeadowLauncher {
         boolean gl30 = false;
         int frames = 0;
         Path shot = null;
+        boolean startView = false;
+        Path groundShot = null;
+        Path sheen = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -109,6 +122,9 @@ public final class GdxMeadowLauncher {
                 case "--gl30" -> gl30 = true;
                 case "--frames" -> frames = Integer.parseInt(value(args, ++i, a));
                 case "--screenshot" -> shot = Path.of(value(args, ++i, a));
+                case "--start-view" -> startView = true;
+                case "--ground-screenshot" -> groundShot = Path.of(value(args, ++i, a));
+                case "--sheen" -> sheen = Path.of(value(args, ++i, a));
                 default -> throw new IllegalArgumentException("unknown argument " + a);
             }
         }
@@ -118,7 +134,10 @@ public final class GdxMeadowLauncher {
         if (frames > 0 && shot == null) {
             throw new IllegalArgumentException("--frames needs --screenshot FILE.png");
         }
-        return new Options(scene, w, h, gl30, frames, shot, GdxMeadowGame.PLAYER_STRENGTH);
+        if (frames == 0 && (startView || groundShot != null || sheen != null)) {
+            throw new IllegalArgumentException("--start-view, --ground-screenshot and --sheen are for the test mode (--frames)");
+        }
+        return new Options(scene, w, h, gl30, frames, shot, GdxMeadowGame.PLAYER_STRENGTH, startView, groundShot, sheen);
     }
 
     private static String value(String[] args, int i, String flag) {

@@ -5,10 +5,13 @@ import com.badlogic.gdx.graphics.GL20;
 import com.badlogic.gdx.graphics.PerspectiveCamera;
 import com.badlogic.gdx.math.Vector3;
 import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.nio.IntBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
@@ -21,7 +24,10 @@ import org.jecosys.terrain.Heightfield;
  * phase of a frame, and after the last frame saves the back buffer (HUD included) as a PNG and prints
  * what a test checks in it, one {@code [gdx-meadow] ...} line each: where the HUD text is, bare
  * ground, plants, the player, the mean bend near the player and away from it, and the GL error count.
- * Image coordinates have their origin at the top left.
+ * Image coordinates have their origin at the top left. With {@code --start-view} it prints the camera
+ * and the back buffer's samples instead of the probes (there is no player); with
+ * {@code --ground-screenshot} it also saves the last frame as it is before the plants are drawn; with
+ * {@code --sheen} it keeps each frame's block luminance ({@link #writeSheen}).
  */
 final class TestCapture {
     private static final String TAG = "[gdx-meadow] ";
@@ -29,9 +35,112 @@ final class TestCapture {
     private int frame;
     private int errors;
     private final long start = System.nanoTime();
+    /** Read-backs of the back buffer (RGBA, GL rows bottom up), made at the first that needs one. */
+    private ByteBuffer px;
+    /** Per frame, the mean luminance of each {@link #BLOCK} x {@link #BLOCK} block (--sheen). */
+    private float[][] sheen;
+
+    /** The side of the sheen's blocks, pixels. */
+    static final int BLOCK = 16;
 
     TestCapture(GdxMeadowLauncher.Options options) {
         this.options = options;
+    }
+
+    /** After the game's ground and player, before the plants: on the last frame, the ground screenshot. */
+    void beforePlants() {
+        if (options.groundShot() != null && frame + 1 == options.frames()) {
+            int w = Gdx.graphics.getBackBufferWidth();
+            int h = Gdx.graphics.getBackBufferHeight();
+            write(read(w, h), w, h, options.groundShot());
+        }
+    }
+
+    /** After the plants, before the HUD: the frame's block luminance (--sheen). */
+    void afterPlants() {
+        if (options.sheen() == null) {
+            return;
+        }
+        int w = Gdx.graphics.getBackBufferWidth();
+        int h = Gdx.graphics.getBackBufferHeight();
+        if (sheen == null) {
+            sheen = new float[options.frames()][(w / BLOCK) * (h / BLOCK)];
+        }
+        blockLuminance(read(w, h), w, h, sheen[frame]);
+    }
+
+    /**
+     * The mean luminance (0.2126 R + 0.7152 G + 0.0722 B, 0-255 as stored) of each whole
+     * {@code BLOCK} x {@code BLOCK} block of a read-back, blocks from the bottom-left corner, row by row
+     * upwards (GL order); the rows and columns left over at the top and right are not in any block.
+     */
+    static void blockLuminance(ByteBuffer rgba, int w, int h, float[] dest) {
+        int bx = w / BLOCK;
+        int by = h / BLOCK;
+        for (int j = 0; j < by; j++) {
+            for (int i = 0; i < bx; i++) {
+                double sum = 0;
+                for (int y = j * BLOCK; y < (j + 1) * BLOCK; y++) {
+                    for (int x = i * BLOCK, k = 4 * (y * w + x); x < (i + 1) * BLOCK; x++, k += 4) {
+                        sum += 0.2126 * (rgba.get(k) & 255) + 0.7152 * (rgba.get(k + 1) & 255)
+                                + 0.0722 * (rgba.get(k + 2) & 255);
+                    }
+                }
+                dest[j * bx + i] = (float) (sum / (BLOCK * BLOCK));
+            }
+        }
+    }
+
+    /**
+     * Writes the sheen's series: four ints (width, height, block side, frames), then per frame the
+     * block means of {@link #blockLuminance} as floats (big-endian, {@code DataOutputStream}).
+     */
+    private void writeSheen(int w, int h) throws IOException {
+        Path out = options.sheen().toAbsolutePath();
+        Files.createDirectories(out.getParent());
+        try (DataOutputStream d = new DataOutputStream(new BufferedOutputStream(Files.newOutputStream(out)))) {
+            d.writeInt(w);
+            d.writeInt(h);
+            d.writeInt(BLOCK);
+            d.writeInt(sheen.length);
+            for (float[] f : sheen) {
+                for (float v : f) {
+                    d.writeFloat(v);
+                }
+            }
+        }
+        System.out.println(TAG + "sheen " + out + " " + sheen.length + " frames");
+    }
+
+    /** The back buffer now, RGBA, GL rows bottom up. */
+    private ByteBuffer read(int w, int h) {
+        if (px == null) {
+            px = ByteBuffer.allocateDirect(4 * w * h).order(ByteOrder.nativeOrder());
+        }
+        px.clear();
+        Gdx.gl.glPixelStorei(GL20.GL_PACK_ALIGNMENT, 4);
+        Gdx.gl.glReadPixels(0, 0, w, h, GL20.GL_RGBA, GL20.GL_UNSIGNED_BYTE, px);
+        checkGl("glReadPixels");
+        return px;
+    }
+
+    /** Writes a read-back as an opaque PNG, rows top down. */
+    private static void write(ByteBuffer rgba, int w, int h, Path file) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB); // the window is opaque
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int i = 4 * ((h - 1 - y) * w + x);
+                img.setRGB(x, y, (rgba.get(i) & 255) << 16 | (rgba.get(i + 1) & 255) << 8 | (rgba.get(i + 2) & 255));
+            }
+        }
+        try {
+            Path out = file.toAbsolutePath();
+            Files.createDirectories(out.getParent());
+            ImageIO.write(img, "png", out.toFile());
+            System.out.println(TAG + "screenshot " + out + " " + w + "x" + h);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /** Reports the GL errors raised since the last check. */
@@ -62,26 +171,24 @@ final class TestCapture {
     private void capture(GdxMeadowGame game) {
         int w = Gdx.graphics.getBackBufferWidth();
         int h = Gdx.graphics.getBackBufferHeight();
-        ByteBuffer px = ByteBuffer.allocateDirect(4 * w * h).order(ByteOrder.nativeOrder());
-        Gdx.gl.glPixelStorei(GL20.GL_PACK_ALIGNMENT, 4);
-        Gdx.gl.glReadPixels(0, 0, w, h, GL20.GL_RGBA, GL20.GL_UNSIGNED_BYTE, px);
-        checkGl("glReadPixels");
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB); // the window is opaque
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                int i = 4 * ((h - 1 - y) * w + x);
-                img.setRGB(x, y, (px.get(i) & 255) << 16 | (px.get(i + 1) & 255) << 8 | (px.get(i + 2) & 255));
+        write(read(w, h), w, h, options.screenshot());
+        if (sheen != null) {
+            try {
+                writeSheen(w, h);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
             }
         }
-        try {
-            Path out = options.screenshot().toAbsolutePath();
-            Files.createDirectories(out.getParent());
-            ImageIO.write(img, "png", out.toFile());
-            System.out.println(TAG + "screenshot " + out + " " + w + "x" + h);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
+        if (options.startView()) {
+            PerspectiveCamera c = game.camera();
+            IntBuffer samples = ByteBuffer.allocateDirect(64).order(ByteOrder.nativeOrder()).asIntBuffer();
+            Gdx.gl.glGetIntegerv(GL20.GL_SAMPLES, samples);
+            System.out.printf("%sstart view: eye %.2f %.2f %.2f, looking %.3f %.3f %.3f, fov %.1f, back buffer"
+                    + " samples %d%n", TAG, c.position.x, c.position.y, c.position.z, c.direction.x, c.direction.y,
+                    c.direction.z, c.fieldOfView, samples.get(0));
+        } else {
+            probes(game, w, h);
         }
-        probes(game, w, h);
         System.out.printf("%sframes %d in %.1f s%n", TAG, frame, (System.nanoTime() - start) / 1e9);
         System.out.println(TAG + "gl errors: " + (errors == 0 ? "none" : errors));
     }

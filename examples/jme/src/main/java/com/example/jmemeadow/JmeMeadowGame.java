@@ -23,6 +23,8 @@ import java.util.concurrent.CountDownLatch;
 import org.jecosys.jme.PlantAppState;
 import org.jecosys.jme.SceneAssetLoader;
 import org.jecosys.jme.SceneKey;
+import org.jecosys.math.CameraDef;
+import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.Scene;
 import org.jecosys.sim.Simulation;
 import org.jecosys.terrain.Heightfield;
@@ -39,6 +41,7 @@ import org.jecosys.wind.WindSource;
  * <pre>
  * JmeMeadowGame [--scene FILE] [--size WxH] [--renderer core|core33|compat] [--no-gamma]
  *               [--frames N --screenshot FILE.png] [--restart-at N] [--graphics-debug]
+ *               [--start-view] [--ground-screenshot FILE.png] [--sheen FILE]
  * </pre>
  * {@code --renderer compat} runs jME's OpenGL 2 renderer (a compatibility context); {@code core} (the
  * default, jME's {@code LWJGL_OPENGL32}) and {@code core33} a core one. {@code --frames N} is the test
@@ -47,6 +50,12 @@ import org.jecosys.wind.WindSource;
  * N} calls {@code restart()} after frame N (jME makes a new GL context, as a game does to change the
  * resolution, vsync or samples); {@code --graphics-debug} turns on jME's GL error check after every
  * call of its own ({@code AppSettings.setGraphicsDebug}), which fails the game on any GL error.
+ * {@code --start-view} (test mode) puts the camera at the scene's start camera ({@code <camera>}: its
+ * pose above the ground and its lens), standing still, and leaves the player and its flow out: the
+ * meadow's start view, as the library's viewer opens it; {@code --ground-screenshot} also saves the
+ * last frame as it is before the plants are drawn (the game's ground as lit); {@code --sheen} writes,
+ * for every frame, the mean luminance of each 16 x 16 block of the picture after the plants and before
+ * the GUI ({@link TestCapture#blockLuminance}).
  */
 public final class JmeMeadowGame extends SimpleApplication {
     /** Player flow strength, m²/s: a source of this strength blows 3.2 m/s one metre away. */
@@ -68,9 +77,12 @@ public final class JmeMeadowGame extends SimpleApplication {
      * @param screenshot test mode: where to write the PNG
      * @param restartAt  test mode: the frame after which the app restarts its context; 0 for none
      * @param debug      jME's graphics debugging (a GL error check after each of its calls)
+     * @param startView  test mode: the scene's start camera, still, and no player
+     * @param groundShot test mode: where to write the last frame before the plants, or null
+     * @param sheen      test mode: where to write the frames' block luminance, or null
      */
     record Options(String scene, int width, int height, String renderer, boolean gamma, int frames,
-                   Path screenshot, int restartAt, boolean debug) {
+                   Path screenshot, int restartAt, boolean debug, boolean startView, Path groundShot, Path sheen) {
     }
 
     private final Options options;
@@ -127,7 +139,9 @@ public final class JmeMeadowGame extends SimpleApplication {
         Cylinder body = new Cylinder(2, 16, 0.25f, 1.7f, true);
         player = new Geometry("player", body);
         player.setMaterial(lit(new ColorRGBA(0.15f, 0.3f, 0.95f, 1f)));
-        rootNode.attachChild(player);
+        if (!options.startView()) {
+            rootNode.attachChild(player);
+        }
         rootNode.addLight(new AmbientLight(new ColorRGBA(0.45f, 0.45f, 0.5f, 1f)));
         rootNode.addLight(new DirectionalLight(new Vector3f(-0.4f, -1f, 0.3f).normalizeLocal(),
                 new ColorRGBA(0.8f, 0.78f, 0.7f, 1f)));
@@ -145,13 +159,30 @@ public final class JmeMeadowGame extends SimpleApplication {
         guiNode.attachChild(hudPanel);
         guiNode.attachChild(hud);
 
-        walk(0);
-        playerFlow = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, playerX, playerZ, PLAYER_STRENGTH));
+        if (options.startView()) {
+            startView(scene.def().camera());
+        } else {
+            walk(0);
+            playerFlow = sim.attachAgent(FlowDef.point("player", FlowKind.SOURCE, playerX, playerZ, PLAYER_STRENGTH));
+        }
         if (options.frames() > 0) {
             capture = new TestCapture(this, options);
         } else {
             keys();
         }
+    }
+
+    /**
+     * The test mode's still camera: the scene's start camera (its height above the ground under it),
+     * with its lens, as the library's viewer opens the scene.
+     */
+    private void startView(CameraDef c) {
+        ViewCamera v = ViewCamera.of(c, terrain.height(c.x(), c.z()), cam.getWidth() / (double) cam.getHeight());
+        org.joml.Vector3f ahead = v.forward(new org.joml.Vector3f());
+        cam.setFrustumPerspective((float) Math.toDegrees(v.fovY()), (float) v.aspect(), (float) v.near(),
+                (float) v.far());
+        cam.setLocation(new Vector3f((float) v.x(), (float) v.y(), (float) v.z()));
+        cam.lookAtDirection(new Vector3f(ahead.x, ahead.y, ahead.z), Vector3f.UNIT_Y);
     }
 
     private Material lit(ColorRGBA colour) {
@@ -185,9 +216,11 @@ public final class JmeMeadowGame extends SimpleApplication {
             capture.beforeFrame();
         }
         time += tpf;
-        walk(tpf);
-        plants.simulation().moveAgent(playerFlow, playerX, playerZ);
-        follow();
+        if (playerFlow != null) {
+            walk(tpf);
+            plants.simulation().moveAgent(playerFlow, playerX, playerZ);
+            follow();
+        }
         hudText.setLength(0);
         hudText.append("JEcoSys in jME: ").append(plants.simulation().plantCount()).append(" plants, ")
                 .append(Math.round(timer.getFrameRate())).append(" fps; WASD walks");
@@ -285,7 +318,8 @@ public final class JmeMeadowGame extends SimpleApplication {
         } catch (IllegalArgumentException e) {
             System.err.println("jme-meadow: " + e.getMessage());
             System.err.println("usage: JmeMeadowGame [--scene FILE] [--size WxH] [--renderer core|core33|compat] "
-                    + "[--no-gamma] [--frames N --screenshot FILE.png] [--restart-at N] [--graphics-debug]");
+                    + "[--no-gamma] [--frames N --screenshot FILE.png] [--restart-at N] [--graphics-debug] "
+                    + "[--start-view] [--ground-screenshot FILE.png] [--sheen FILE]");
             System.exit(2);
             return;
         }
@@ -322,6 +356,9 @@ public final class JmeMeadowGame extends SimpleApplication {
         Path shot = null;
         int restartAt = 0;
         boolean debug = false;
+        boolean startView = false;
+        Path groundShot = null;
+        Path sheen = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -351,6 +388,9 @@ public final class JmeMeadowGame extends SimpleApplication {
                 case "--screenshot" -> shot = Path.of(value(args, ++i, a));
                 case "--restart-at" -> restartAt = Integer.parseInt(value(args, ++i, a));
                 case "--graphics-debug" -> debug = true;
+                case "--start-view" -> startView = true;
+                case "--ground-screenshot" -> groundShot = Path.of(value(args, ++i, a));
+                case "--sheen" -> sheen = Path.of(value(args, ++i, a));
                 default -> throw new IllegalArgumentException("unknown argument " + a);
             }
         }
@@ -363,7 +403,10 @@ public final class JmeMeadowGame extends SimpleApplication {
         if (frames > 0 && shot == null) {
             throw new IllegalArgumentException("--frames needs --screenshot FILE.png");
         }
-        return new Options(scene, w, h, renderer, gamma, frames, shot, restartAt, debug);
+        if (frames == 0 && (startView || groundShot != null || sheen != null)) {
+            throw new IllegalArgumentException("--start-view, --ground-screenshot and --sheen are for the test mode (--frames)");
+        }
+        return new Options(scene, w, h, renderer, gamma, frames, shot, restartAt, debug, startView, groundShot, sheen);
     }
 
     private static String value(String[] args, int i, String flag) {

@@ -15,6 +15,8 @@ import com.jme3.renderer.queue.RenderQueue;
 import com.jme3.texture.FrameBuffer;
 import com.jme3.util.BufferUtils;
 import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
@@ -32,7 +34,13 @@ import com.jme3.math.Vector3f;
  * PNG, prints what a test checks in it, one {@code [jme-meadow] ...} line each (where the HUD text is,
  * bare ground, plants, the player, the mean bend near the player and away from it, in how many of
  * the last half of the frames drawing the plants allocated on the render thread, the GL error count)
- * and stops the game. Image coordinates have their origin at the top left. Render thread.
+ * and stops the game. Image coordinates have their origin at the top left. With {@code --restart-at N}
+ * it also counts the pixels the plants' pass changes (the frame read before and after it) in frames N
+ * and N + 1 (the last before the restart and the first after it) and in the last frame:
+ * {@code plant pass pixels in frame F: P}. With {@code --start-view} it prints the camera and the back
+ * buffer's samples instead of the probes (there is no player); with {@code --ground-screenshot} it also
+ * saves the last frame as it is before the plants are drawn; with {@code --sheen} it writes each frame's
+ * block luminance ({@link #blockLuminance}, {@link #writeSheen}). Render thread.
  */
 final class TestCapture {
     private static final String TAG = "[jme-meadow] ";
@@ -51,6 +59,14 @@ final class TestCapture {
     private int drawsMeasured;
     private int drawsAllocating;
     private long drawMostBytes;
+    /** Read-backs of the frame (RGBA, GL rows bottom up): before the plants' pass and after it. */
+    private ByteBuffer before;
+    private ByteBuffer after;
+    /** Per frame, the mean luminance of each {@link #BLOCK} x {@link #BLOCK} block (--sheen). */
+    private float[][] sheen;
+
+    /** The side of the sheen's blocks, pixels. */
+    static final int BLOCK = 16;
 
     TestCapture(JmeMeadowGame game, JmeMeadowGame.Options options) {
         this.game = game;
@@ -81,6 +97,130 @@ final class TestCapture {
         }
     }
 
+    /** Whether the frame being drawn (1-based) is one whose plant pass pixels are counted. */
+    private boolean countsPlantPass(int f) {
+        int r = options.restartAt();
+        return r > 0 && (f == r || f == r + 1 || f == options.frames());
+    }
+
+    /** Before the plants' pass: the ground screenshot (last frame) and the frame to compare with. */
+    private void beforePlants() {
+        int f = frame + 1;
+        boolean ground = options.groundShot() != null && f == options.frames();
+        if (ground || countsPlantPass(f)) {
+            before = read(before);
+        }
+        if (ground) {
+            write(before, options.groundShot());
+        }
+    }
+
+    /** After the plants' pass, before the GUI: the pixels it changed, the frame's block luminance. */
+    private void afterPlants() {
+        int f = frame + 1;
+        if (!countsPlantPass(f) && options.sheen() == null) {
+            return;
+        }
+        after = read(after);
+        if (countsPlantPass(f)) {
+            int changed = 0;
+            for (int i = 0; i < after.capacity(); i += 4) {
+                if (after.get(i) != before.get(i) || after.get(i + 1) != before.get(i + 1)
+                        || after.get(i + 2) != before.get(i + 2)) {
+                    changed++;
+                }
+            }
+            System.out.printf("%splant pass pixels in frame %d: %d (context generation %d)%n", TAG, f, changed,
+                    game.plants().contextGeneration());
+        }
+        if (options.sheen() != null) {
+            Camera cam = game.getCamera();
+            if (sheen == null) {
+                sheen = new float[options.frames()][(cam.getWidth() / BLOCK) * (cam.getHeight() / BLOCK)];
+            }
+            blockLuminance(after, cam.getWidth(), cam.getHeight(), sheen[frame]);
+        }
+    }
+
+    /**
+     * The mean luminance (0.2126 R + 0.7152 G + 0.0722 B, 0-255 as stored) of each whole
+     * {@code BLOCK} x {@code BLOCK} block of a read-back, blocks from the bottom-left corner, row by row
+     * upwards (GL order); the rows and columns left over at the top and right are not in any block.
+     */
+    static void blockLuminance(ByteBuffer rgba, int w, int h, float[] dest) {
+        int bx = w / BLOCK;
+        int by = h / BLOCK;
+        for (int j = 0; j < by; j++) {
+            for (int i = 0; i < bx; i++) {
+                double sum = 0;
+                for (int y = j * BLOCK; y < (j + 1) * BLOCK; y++) {
+                    for (int x = i * BLOCK, k = 4 * (y * w + x); x < (i + 1) * BLOCK; x++, k += 4) {
+                        sum += 0.2126 * (rgba.get(k) & 255) + 0.7152 * (rgba.get(k + 1) & 255)
+                                + 0.0722 * (rgba.get(k + 2) & 255);
+                    }
+                }
+                dest[j * bx + i] = (float) (sum / (BLOCK * BLOCK));
+            }
+        }
+    }
+
+    /**
+     * Writes the sheen's series: four ints (width, height, block side, frames), then per frame the
+     * block means of {@link #blockLuminance} as floats (big-endian, {@code DataOutputStream}).
+     */
+    private void writeSheen(int w, int h) {
+        Path out = options.sheen().toAbsolutePath();
+        try {
+            Files.createDirectories(out.getParent());
+            try (DataOutputStream d = new DataOutputStream(new BufferedOutputStream(Files.newOutputStream(out)))) {
+                d.writeInt(w);
+                d.writeInt(h);
+                d.writeInt(BLOCK);
+                d.writeInt(sheen.length);
+                for (float[] f : sheen) {
+                    for (float v : f) {
+                        d.writeFloat(v);
+                    }
+                }
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        System.out.println(TAG + "sheen " + out + " " + sheen.length + " frames");
+    }
+
+    /** The frame now (the default framebuffer), RGBA, GL rows bottom up, into {@code into} or a new buffer. */
+    private ByteBuffer read(ByteBuffer into) {
+        Camera cam = game.getCamera();
+        ByteBuffer px = into != null ? into : BufferUtils.createByteBuffer(4 * cam.getWidth() * cam.getHeight());
+        px.clear();
+        game.getRenderManager().getRenderer().readFrameBuffer(null, px);
+        check("readFrameBuffer");
+        return px;
+    }
+
+    /** Writes a read-back as an opaque PNG, rows top down. */
+    private void write(ByteBuffer px, Path file) {
+        Camera cam = game.getCamera();
+        int w = cam.getWidth();
+        int h = cam.getHeight();
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int i = 4 * ((h - 1 - y) * w + x);
+                img.setRGB(x, y, (px.get(i) & 255) << 16 | (px.get(i + 1) & 255) << 8 | (px.get(i + 2) & 255));
+            }
+        }
+        try {
+            Path out = file.toAbsolutePath();
+            Files.createDirectories(out.getParent());
+            ImageIO.write(img, "png", out.toFile());
+            System.out.println(TAG + "screenshot " + out + " " + w + "x" + h);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
     private void frameDone() {
         frame++;
         if (frame == options.restartAt()) {
@@ -99,25 +239,19 @@ final class TestCapture {
         Camera cam = game.getCamera();
         int w = cam.getWidth();
         int h = cam.getHeight();
-        ByteBuffer px = BufferUtils.createByteBuffer(4 * w * h);
-        game.getRenderManager().getRenderer().readFrameBuffer(null, px);
-        check("readFrameBuffer");
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                int i = 4 * ((h - 1 - y) * w + x);
-                img.setRGB(x, y, (px.get(i) & 255) << 16 | (px.get(i + 1) & 255) << 8 | (px.get(i + 2) & 255));
-            }
+        write(read(null), options.screenshot());
+        if (sheen != null) {
+            writeSheen(w, h);
         }
-        try {
-            Path out = options.screenshot().toAbsolutePath();
-            Files.createDirectories(out.getParent());
-            ImageIO.write(img, "png", out.toFile());
-            System.out.println(TAG + "screenshot " + out + " " + w + "x" + h);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
+        if (options.startView()) {
+            int samples = org.lwjgl.opengl.GL11C.glGetInteger(org.lwjgl.opengl.GL13C.GL_SAMPLES);
+            Vector3f eye = cam.getLocation();
+            Vector3f ahead = cam.getDirection();
+            System.out.printf("%sstart view: eye %.2f %.2f %.2f, looking %.3f %.3f %.3f, back buffer samples %d%n",
+                    TAG, eye.x, eye.y, eye.z, ahead.x, ahead.y, ahead.z, samples);
+        } else {
+            probes(cam, w, h);
         }
-        probes(cam, w, h);
         System.out.printf("%sdraw allocations: %d of %d frames, at most %d bytes%n", TAG, drawsAllocating,
                 drawsMeasured, drawMostBytes);
         System.out.printf("%sframes %d in %.1f s%n", TAG, frame, (System.nanoTime() - start) / 1e9);
@@ -266,6 +400,9 @@ final class TestCapture {
         @Override
         public void postFrame(FrameBuffer out) {
             check(phase);
+            if (this == sceneDone) {
+                beforePlants(); // before the allocation count starts
+            }
             long now = threads.getThreadAllocatedBytes(Thread.currentThread().getId());
             if (this == sceneDone) {
                 drawStart = now; // the plant state's processor draws next
@@ -275,6 +412,9 @@ final class TestCapture {
                 drawsMeasured++;
                 drawsAllocating += bytes > 0 ? 1 : 0;
                 drawMostBytes = Math.max(drawMostBytes, bytes);
+            }
+            if (this == plantsDone) {
+                afterPlants(); // after the allocation count
             } else if (this == guiDone) {
                 frameDone();
             }

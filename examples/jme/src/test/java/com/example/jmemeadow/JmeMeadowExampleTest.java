@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,7 +14,9 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import javax.imageio.ImageIO;
 import org.jecosys.render.ChildJvm;
+import org.jecosys.render.ExampleLook;
 import org.jecosys.render.ExampleShot;
 import org.jecosys.render.VirtualDisplay;
 import org.junit.jupiter.api.AfterAll;
@@ -26,8 +29,11 @@ import org.junit.jupiter.api.Test;
  * default) and on its compatibility-profile one ({@code LWJGL_OPENGL2}), with jME's default gamma
  * correction; the screenshot (read after the GUI viewport) shows the HUD text, the game's own ground,
  * its player and the JEcoSys plants where the example says they are, the player has pushed the plants
- * around it, and no phase of any frame raised a GL error. The three runs go at once, each on its own
- * display: much of a run is single-threaded (the JVM's start, Mesa compiling shaders).
+ * around it, and no phase of any frame raised a GL error. The runs go at once, each on its own
+ * display: much of a run is single-threaded (the JVM's start, Mesa compiling shaders). One more run
+ * shows the showcase meadow ({@code scenes/meadow.xml}) from its start camera at 960 x 540 on jME's
+ * default back buffer (no samples) and the example's own brown ground (issue 38): the plants' ground
+ * cover hides the game's ground ({@link #theMeadowsStartViewHidesTheGamesGroundUnderTheCover}).
  */
 class JmeMeadowExampleTest {
     private static final String TAG = "[jme-meadow]";
@@ -40,14 +46,23 @@ class JmeMeadowExampleTest {
     private static Future<ExampleShot> coreNoGamma;
     /** The core-profile run restarted (a new GL context) after frame 10, with jME's graphics debugging. */
     private static Future<ExampleShot> restarted;
+    /** The meadow's start view at 960 x 540, three frames, with the ground read before the plants. */
+    private static Future<ExampleShot> startView;
+    /** The meadow's start view in the examples' tests: the scene, the picture's size. */
+    static final String MEADOW = "scenes/meadow.xml";
+    static final int START_W = 960;
+    static final int START_H = 540;
 
     @BeforeAll
     static void startTheRuns() throws Exception {
-        runs = Executors.newFixedThreadPool(4);
-        core = start("core", "--renderer", "core");
-        compat = start("compat", "--renderer", "compat");
-        coreNoGamma = start("core-no-gamma", "--renderer", "core", "--no-gamma");
-        restarted = start("core-restart", "--renderer", "core", "--restart-at", "10", "--graphics-debug");
+        runs = Executors.newFixedThreadPool(5);
+        core = start("core", 640, 360, 40, "--renderer", "core");
+        compat = start("compat", 640, 360, 40, "--renderer", "compat");
+        coreNoGamma = start("core-no-gamma", 640, 360, 40, "--renderer", "core", "--no-gamma");
+        restarted = start("core-restart", 640, 360, 40, "--renderer", "core", "--restart-at", "10",
+                "--graphics-debug");
+        startView = start("start-view", START_W, START_H, 3, "--scene", MEADOW, "--start-view",
+                "--ground-screenshot", OUT.resolve("start-view-ground.png").toString());
     }
 
     @AfterAll
@@ -59,10 +74,10 @@ class JmeMeadowExampleTest {
     }
 
     /** Starts a run on a display of its own. */
-    private static Future<ExampleShot> start(String name, String... extra) throws Exception {
+    private static Future<ExampleShot> start(String name, int w, int h, int frames, String... extra) throws Exception {
         VirtualDisplay display = VirtualDisplay.start(1024, 768);
         DISPLAYS.add(display);
-        return runs.submit(() -> run(display, name, extra));
+        return runs.submit(() -> run(display, name, w, h, frames, extra));
     }
 
     /** The run's screenshot, or what failed in the run, thrown as it was. */
@@ -77,20 +92,26 @@ class JmeMeadowExampleTest {
         }
     }
 
-    private static ExampleShot run(VirtualDisplay display, String name, String... extra) throws Exception {
+    /**
+     * Runs the example's test mode in a child JVM: {@code frames} frames at w x h, the screenshot to
+     * {@code OUT/name.png}, its output to {@code OUT/name.log}; fails on a non-zero exit status.
+     */
+    static ExampleShot run(VirtualDisplay display, String name, int w, int h, int frames, String... extra)
+            throws Exception {
         Files.createDirectories(OUT);
         Path png = OUT.resolve(name + ".png");
         Files.deleteIfExists(png);
-        List<String> args = new ArrayList<>(List.of("--frames", "40", "--screenshot", png.toString(),
-                "--size", "640x360"));
+        List<String> args = new ArrayList<>(List.of("--frames", String.valueOf(frames), "--screenshot",
+                png.toString(), "--size", w + "x" + h));
         args.addAll(List.of(extra));
-        ChildJvm.Result r = ChildJvm.run(JmeMeadowGame.class.getName(), args, Map.of("DISPLAY", display.name()), 90);
+        ChildJvm.Result r = ChildJvm.run(JmeMeadowGame.class.getName(), args, Map.of("DISPLAY", display.name()),
+                90 + frames);
         Files.writeString(OUT.resolve(name + ".log"), r.output());
         assertEquals(0, r.exitCode(), "the example's exit status; it printed:\n" + r.output());
         assertTrue(Files.isRegularFile(png), "the screenshot " + png);
         ExampleShot shot = ExampleShot.read(png, r.output(), TAG);
-        assertEquals(640, shot.image().getWidth());
-        assertEquals(360, shot.image().getHeight());
+        assertEquals(w, shot.image().getWidth());
+        assertEquals(h, shot.image().getHeight());
         return shot;
     }
 
@@ -109,9 +130,11 @@ class JmeMeadowExampleTest {
     /**
      * {@code app.restart()} after frame 10 gives jME a new GL context: the plants' renderer notices it at
      * its next frame (context generation 1), forgets its old objects without a GL call and makes them
-     * again, so the last frame shows as many plant pixels (within 5%) as the run without a restart,
-     * with jME's graphics debugging on (a GL error check after each of its calls: any error fails the
-     * game), no GL error in any phase, and a clean exit (status 0, the screenshot checks pass).
+     * again: the first frame after the restart changes as many pixels in its plants' pass (the frame
+     * read before and after the pass) as the last frame before it, within 5%, and the last frame shows
+     * as many plant pixels (within 5%) as the run without a restart, with jME's graphics debugging on (a
+     * GL error check after each of its calls: any error fails the game), no GL error in any phase, and a
+     * clean exit (status 0, the screenshot checks pass).
      */
     @Test
     void afterRestartWithANewContextThePlantsAreDrawnAsBeforeWithoutGlErrors() throws Exception {
@@ -120,6 +143,15 @@ class JmeMeadowExampleTest {
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core-restart.png"));
         String log = Files.readString(OUT.resolve("core-restart.log"));
         assertTrue(log.contains(TAG + " context generation 1"), "the renderer saw one new context:\n" + log);
+        int before = plantPassPixels(log, 10, 0);
+        int next = plantPassPixels(log, 11, 1);
+        int last = plantPassPixels(log, 40, 1);
+        System.out.printf("[look] jME example, restart() after frame 10 (graphics debugging on, %s): the plants' pass"
+                + " changes %d pixels in frame 10 (before), %d in frame 11 (first after, %+.2f%%), %d in frame 40%n",
+                shot.noGlErrors() ? "no GL error" : "GL errors", before, next, 100.0 * (next - before) / before, last);
+        assertTrue(before > 1000, "plant pass pixels before the restart: " + before);
+        assertTrue(Math.abs(next - before) <= 0.05 * before,
+                "plant pass pixels in the first frame after restart() " + next + ", in the last before " + before);
         int w = shot.image().getWidth();
         int h = shot.image().getHeight();
         int after = shot.count(ExampleShot::plant, 0, 0, w, h);
@@ -128,6 +160,15 @@ class JmeMeadowExampleTest {
         assertTrue(without > 1000, "plant pixels without a restart: " + without);
         assertTrue(Math.abs(after - without) <= 0.05 * without,
                 "plant pixels after restart() " + after + ", without " + without);
+    }
+
+    /** What the restart run printed for a frame: the pixels the plants' pass changed, in the given context generation. */
+    private static int plantPassPixels(String log, int frame, int generation) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile(java.util.regex.Pattern.quote(TAG)
+                + " plant pass pixels in frame " + frame + ": (\\d+) \\(context generation " + generation + "\\)")
+                .matcher(log);
+        assertTrue(m.find(), "frame " + frame + "'s plant pass pixels (context generation " + generation + "):\n" + log);
+        return Integer.parseInt(m.group(1));
     }
 
     /**
@@ -158,5 +199,29 @@ class JmeMeadowExampleTest {
             most = Math.max(most, ratio);
         }
         assertTrue(most - least <= 0.1, "the hue is kept: " + both);
+    }
+
+    /**
+     * Issue 38: the meadow's start view (its scene camera, 960 x 540) on jME's default back buffer (no
+     * samples) with its default gamma correction, over the example's own lit brown ground: at most 5%
+     * of the lower half keeps the game's ground colour. A pixel keeps it when it has, within 3 levels or
+     * 6% a channel ({@link ExampleLook#groundShare}), the colour the same pixel had in the same frame
+     * before the plants' pass: the ground as the game lit it, whatever its light and normals; the
+     * ground cover's colours differ from it by tens of levels.
+     */
+    @Test
+    void theMeadowsStartViewHidesTheGamesGroundUnderTheCover() throws Exception {
+        ExampleShot shot = shot(startView);
+        String log = Files.readString(OUT.resolve("start-view.log"));
+        assertTrue(shot.noGlErrors(), "GL errors in the start view run:\n" + log);
+        assertTrue(log.contains("back buffer samples 0"), "the default back buffer, no samples:\n" + log);
+        BufferedImage ground = ImageIO.read(OUT.resolve("start-view-ground.png").toFile());
+        double share = ExampleLook.groundShare(shot.image(), ground);
+        double bare = ExampleLook.groundShare(ground, ground);
+        assertTrue(bare >= 0.99, "the lower half of the frame before the plants is the game's ground: " + bare);
+        System.out.printf("[look] jME example, meadow start view %dx%d, 0 samples: %.2f%% of the lower half keeps"
+                + " the game's ground colour (<= 5%%)%n", START_W, START_H, 100 * share);
+        assertTrue(share <= 0.05, String.format("%.1f%% of the lower half shows the game's ground, want <= 5%%; see %s",
+                100 * share, OUT.resolve("start-view.png")));
     }
 }
