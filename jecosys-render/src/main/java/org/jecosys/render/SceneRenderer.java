@@ -371,13 +371,50 @@ public final class SceneRenderer implements AutoCloseable {
                 drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);
             }
         }
-        if (drawPlants) {
+        // without samples the near plants are blended by the share of a pixel they cover, writing depth:
+        // the ground and the cover go first, so the plants' thin edges blend over them
+        boolean blendedNear = drawPlants && plants.blendsNear();
+        boolean withCover = drawPlants && terrain.prepareCover(settings);
+        if (withCover) {
+            cover.prepare(frame);
+        }
+        if (drawPlants && !blendedNear) {
             plants.drawPreparedNear();
-            if (terrain.prepareCover(settings)) {
-                cover.prepare(frame);
+            if (withCover) {
                 cover.draw(frame, camera, settings, terrain.maps());
             }
         }
+        drawGround(camera, settings);
+        if (blendedNear) {
+            if (withCover) {
+                cover.draw(frame, camera, settings, terrain.maps());
+            }
+            drawSky(camera, settings); // under the plants' fringe, which writes no depth
+            plants.drawPreparedNear();
+        } else {
+            drawSky(camera, settings);
+        }
+        if (drawPlants) {
+            plants.drawFar();
+        }
+        glDisable(GL_DEPTH_TEST);
+        OverlaySettings shown = settings.overlays();
+        if (field != null && (shown.showField() || shown.showWind())) {
+            overlay.draw(field, camera, shown, vx, vy, width, height);
+        }
+    }
+
+    /** The sky where nothing is drawn yet (depth still 1), when the settings clear; before any blended plants. */
+    private void drawSky(Camera camera, RenderSettings settings) {
+        if (settings.clear()) {
+            glDepthMask(false);
+            this.sky.draw(camera, settings);
+            glDepthMask(true);
+        }
+    }
+
+    /** The library's terrain, or the cover skin over a host's ground, as the settings ask. */
+    private void drawGround(Camera camera, RenderSettings settings) {
         if (drawTerrain && settings.terrain()) {
             if (drawPlants) {
                 terrain.draw(camera, settings);
@@ -390,20 +427,6 @@ public final class SceneRenderer implements AutoCloseable {
                 skin.useShadowMap(shadow);
             }
             skin.draw(camera, settings); // the cover over the host's own ground
-        }
-        if (settings.clear()) {
-            // the sky where nothing is (depth still 1), before the blended far level
-            glDepthMask(false);
-            this.sky.draw(camera, settings);
-            glDepthMask(true);
-        }
-        if (drawPlants) {
-            plants.drawFar();
-        }
-        glDisable(GL_DEPTH_TEST);
-        OverlaySettings shown = settings.overlays();
-        if (field != null && (shown.showField() || shown.showWind())) {
-            overlay.draw(field, camera, shown, vx, vy, width, height);
         }
     }
 

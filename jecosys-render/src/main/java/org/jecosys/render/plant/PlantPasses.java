@@ -47,6 +47,14 @@ public final class PlantPasses {
      * null until {@link #useCasters}.
      */
     private PlantUniforms[] receivers;
+    /**
+     * The triangle programs of a target without samples, which keep a fragment's opaque core or its
+     * fringe ({@code SPLIT}), program k from {@link #compileSplit}{@code (t, k, false)}; null until
+     * {@link #useSplit}.
+     */
+    private PlantUniforms[] split;
+    /** As {@link #split}, reading the shadow map; null until {@link #useSplitReceivers}. */
+    private PlantUniforms[] splitReceivers;
     /** Whether the triangle levels read the shadow map this frame ({@link #shadow}). */
     private boolean mapped;
     private final boolean[] flowers;
@@ -101,6 +109,54 @@ public final class PlantPasses {
      */
     public static GlProgram compileReceiver(GlTracker t, int k) {
         return GlProgram.variant(t, "plant.vert", "plant.frag", mapDefines("SHADOW_MAP", k));
+    }
+
+    /**
+     * Compiles split program {@code k} of {@link #CASTERS} (bit 0: the dither test, bit 1: flower parts),
+     * with the shadow map read or not: the triangle levels' programs with {@code SPLIT}, which keep
+     * either the opaque core of the plants or their fringe ({@code uSplit}). Render thread; allocates.
+     */
+    public static GlProgram compileSplit(GlTracker t, int k, boolean shadowMap) {
+        String[] d = mapDefines("SPLIT", k);
+        if (shadowMap) {
+            String[] more = java.util.Arrays.copyOf(d, d.length + 1);
+            more[d.length] = "SHADOW_MAP";
+            d = more;
+        }
+        return GlProgram.variant(t, "plant.vert", "plant.frag", d);
+    }
+
+    /** Takes the {@link #CASTERS} split programs into use ({@link #compileSplit}, no shadow map). Render thread; allocates. */
+    public void useSplit(GlProgram[] programs) {
+        split = uniformsOf(programs);
+    }
+
+    /** Takes the {@link #CASTERS} split programs that read the shadow map into use. Render thread; allocates. */
+    public void useSplitReceivers(GlProgram[] programs) {
+        splitReceivers = uniformsOf(programs);
+    }
+
+    /** {@return whether the split programs the next draw needs are in use: with the shadow map's when it is read} */
+    public boolean hasSplit() {
+        return split != null && (!mapped || splitReceivers != null);
+    }
+
+    /** {@return whether {@link #useSplit} was called} */
+    public boolean hasPlainSplit() {
+        return split != null;
+    }
+
+    /** {@return whether {@link #useSplitReceivers} was called} */
+    public boolean hasSplitReceivers() {
+        return splitReceivers != null;
+    }
+
+    private static PlantUniforms[] uniformsOf(GlProgram[] programs) {
+        PlantUniforms[] u = new PlantUniforms[CASTERS];
+        for (int k = 0; k < CASTERS; k++) {
+            u[k] = new PlantUniforms(programs[k]);
+        }
+        return u;
     }
 
     /**
@@ -181,13 +237,19 @@ public final class PlantPasses {
      * write alpha 1). No allocation.
      */
     void frame(PlantLook look, PassContext context) {
-        float alphaFloor = context.multisampled ? 0f : 1f;
+        float alphaFloor = 0f; // coverage in alpha: to samples when multisampled, blended otherwise
         for (PlantUniforms u : passes) {
             u.program.use();
             u.frame(look, context, alphaFloor);
         }
-        if (receivers != null) {
-            for (PlantUniforms u : receivers) {
+        frame(receivers, look, context, alphaFloor);
+        frame(split, look, context, alphaFloor);
+        frame(splitReceivers, look, context, alphaFloor);
+    }
+
+    private static void frame(PlantUniforms[] programs, PlantLook look, PassContext context, float alphaFloor) {
+        if (programs != null) {
+            for (PlantUniforms u : programs) {
                 u.program.use();
                 u.frame(look, context, alphaFloor);
             }
@@ -204,6 +266,12 @@ public final class PlantPasses {
             for (PlantUniforms u : receivers) {
                 u.program.use();
                 u.shadow(look);
+            }
+            if (splitReceivers != null) {
+                for (PlantUniforms u : splitReceivers) {
+                    u.program.use();
+                    u.shadow(look);
+                }
             }
         }
     }
@@ -223,6 +291,20 @@ public final class PlantPasses {
     public void drawTriangles(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
                               int levelMask) {
         draw(mapped ? receivers : passes, false, batches, vaos, indexCount, look, levelMask);
+    }
+
+    /**
+     * As {@link #drawTriangles}, with the split programs ({@link #hasSplit}): the plants' opaque core
+     * ({@code core}) or their fringe. The caller sets the depth mask and blending. No allocation.
+     */
+    public void drawTrianglesSplit(boolean core, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount,
+                                   PlantLook look, int levelMask) {
+        PlantUniforms[] programs = mapped ? splitReceivers : split;
+        for (PlantUniforms u : programs) {
+            u.program.use();
+            glUniform1f(u.split, core ? 1f : 2f);
+        }
+        draw(programs, false, batches, vaos, indexCount, look, levelMask);
     }
 
     /** As {@link #drawTriangles}, the line levels' lists. No allocation. */

@@ -406,8 +406,20 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
+     * {@return whether the last {@link #prepareNear} found a target without multisampling, where
+     * {@link #drawPreparedNear} blends the near plants by the share of a pixel they cover: draw the
+     * ground before them then, so their thin edges blend over it} Render thread; no allocation.
+     */
+    public boolean blendsNear() {
+        return !context.multisampled;
+    }
+
+    /**
      * The second half of {@link #drawNear}: draws the triangle (near) levels the last
-     * {@link #prepareNear} resolved, opaque, writing depth. Render thread; no allocation.
+     * {@link #prepareNear} resolved, writing depth. Multisampled, the share of a pixel a thin part
+     * covers goes to samples (alpha-to-coverage) and the plants are opaque; without samples it blends
+     * the part over what is there ({@link #blendsNear()}), so a blade narrower than a pixel weighs what
+     * it covers rather than a whole pixel. Render thread; no allocation.
      */
     public void drawPreparedNear() {
         if (!pending) {
@@ -415,12 +427,50 @@ public final class PlantRenderer implements AutoCloseable {
         }
         passes.shadow(look);
         gpu.bindForDraws();
-        // coverage to samples when multisampled, and alpha 1 stored (alpha-to-one): plants are opaque
-        glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-        passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-        glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-        glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        if (context.multisampled) {
+            // coverage to samples, and alpha 1 stored (alpha-to-one): plants are opaque
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+            passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
+            glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            return;
+        }
+        if (!passes.hasSplit()) {
+            compileSplit();
+        }
+        glEnable(GL_BLEND);
+        // colour blended by coverage; alpha composited "over": opaque over an opaque target. The opaque
+        // core writes depth; the fringe (soft edges, thin parts) only blends, so it hides nothing
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        passes.drawTrianglesSplit(true, batches, gpu.vaos, gpu.indexCount, look, levelMask);
+        glDepthMask(false);
+        passes.drawTrianglesSplit(false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
+        glDepthMask(true);
+        glDisable(GL_BLEND);
+    }
+
+    /**
+     * Compiles the split programs a target without samples needs, at its first frame (and those that read
+     * the shadow map at the first frame that draws one). Allocates.
+     */
+    private void compileSplit() {
+        for (int mapped = 0; mapped < 2; mapped++) {
+            if (mapped == 0 ? passes.hasPlainSplit() : !passes.hasCasters() || passes.hasSplitReceivers()) {
+                continue;
+            }
+            GlProgram[] programs = new GlProgram[PlantPasses.CASTERS];
+            for (int k = 0; k < programs.length; k++) {
+                programs[k] = gpu.own(PlantPasses.compileSplit(gpu.tracker, k, mapped == 1));
+            }
+            if (mapped == 0) {
+                passes.useSplit(programs);
+            } else {
+                passes.useSplitReceivers(programs);
+            }
+        }
+        passes.frame(look, context); // this frame's values onto the new programs
+        passes.shadow(look);
     }
 
     /**

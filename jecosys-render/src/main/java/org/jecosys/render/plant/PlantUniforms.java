@@ -18,6 +18,12 @@ import org.jecosys.render.gl.TextureUnits;
  * use. Render thread.
  */
 public final class PlantUniforms {
+    /**
+     * The soft edge of blades and stems on a target without samples, pixels: each ribbon grows by half
+     * of it on both sides and fades over it (the near plants are blended there), so a thin part steps
+     * from pixel to pixel no more than under multisampling.
+     */
+    public static final float FEATHER = 0.5f;
     public final GlProgram program;
     public final int viewProj;
     public final int eye;
@@ -37,6 +43,10 @@ public final class PlantUniforms {
     public final int thin;
     public final int sheen;
     public final int alphaFloor;
+    /** The soft edge of blades and stems, pixels ({@code uFeather}). */
+    public final int feather;
+    /** Which part a split program keeps: 1 the opaque core, 2 the fringe ({@code uSplit}). */
+    public final int split;
     public final int sunShadow;
     public final int shadowMatrix;
     public final int shadowEye;
@@ -62,6 +72,8 @@ public final class PlantUniforms {
         thin = p.optionalUniform("uThin");
         sheen = p.optionalUniform("uSheen");
         alphaFloor = p.optionalUniform("uAlphaFloor");
+        feather = p.optionalUniform("uFeather");
+        split = p.optionalUniform("uSplit");
         sunShadow = p.optionalUniform("uSunShadow");
         shadowMatrix = p.optionalUniform("uShadowMatrix");
         shadowEye = p.optionalUniform("uShadowEye");
@@ -78,6 +90,7 @@ public final class PlantUniforms {
      */
     void frame(PlantLook r, PassContext c, float alphaFloorValue) {
         glUniform1f(alphaFloor, alphaFloorValue);
+        glUniform1f(feather, c.multisampled ? 0f : FEATHER);
         glUniform2f(pixelScale, c.pixelX, c.pixelY);
         Frame frame = c.frame;
         glUniform3f(thin, (float) frame.thinStart(), (float) frame.thinEnd(), (float) frame.thinMinFraction());

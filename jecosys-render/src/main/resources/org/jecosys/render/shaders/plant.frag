@@ -9,7 +9,15 @@
 // Compiled with SHADOW_MAP (the sun's shadow map is drawn) it takes the sun's share away where the map
 // says the fragment is in shadow.
 in vec4 vShade;
+noperspective in vec2 vEdge;
 uniform float uAlphaFloor;
+uniform float uFeather;
+#ifdef SPLIT
+// targets without samples draw the near plants twice: their opaque core writing depth (uSplit 1), then
+// the fringe the soft edge and thin parts blend (uSplit 2), depth-tested but not written, so a faint
+// edge never hides a blade behind it
+uniform float uSplit;
+#endif
 #ifdef DITHER
 flat in vec2 vKeep;
 #endif
@@ -28,6 +36,13 @@ in vec3 vWorld;
 #endif
 
 void main() {
+    // the soft edge (targets without samples, which blend by alpha): the outer uFeather pixels fade
+    float alpha = uFeather > 0.0 ? vShade.a * clamp((1.0 - abs(vEdge.x)) * vEdge.y / uFeather, 0.0, 1.0) : vShade.a;
+#ifdef SPLIT
+    if ((alpha >= 0.996) != (uSplit < 1.5)) {
+        discard;
+    }
+#endif
 #ifdef DITHER
     if (dithered(vKeep)) {
         discard;
@@ -36,9 +51,9 @@ void main() {
 #ifdef SHADOW_MAP
     // the other plants' shadows (and its own), per fragment: the sun's share taken away
     vec2 shadow = sunShadowMap(vWorld);
-    fragColour = vec4(vShade.rgb - (uSunShadow.w * shadow.x * shadow.y) * vSun, max(vShade.a, uAlphaFloor));
+    fragColour = vec4(vShade.rgb - (uSunShadow.w * shadow.x * shadow.y) * vSun, max(alpha, uAlphaFloor));
 #else
-    fragColour = vec4(vShade.rgb, max(vShade.a, uAlphaFloor));
+    fragColour = vec4(vShade.rgb, max(alpha, uAlphaFloor));
 #endif
     fragDetail = vec4(1.0);
 }

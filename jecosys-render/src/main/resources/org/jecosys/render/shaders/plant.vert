@@ -17,6 +17,9 @@ out vec4 vShade;                                 // rgb: lit and fogged per vert
                                                  // drawn width the part covers (one varying: a software
                                                  // rasteriser sets up each varying of each primitive)
 #endif
+#ifndef SHADOW_CASTER
+noperspective out vec2 vEdge;                    // side (-1 to 1) and drawn half width, pixels (uFeather)
+#endif
 #ifdef SHADOW_MAP
 out vec3 vSun;                                   // what the sun's direct light adds to vShade.rgb
 out vec3 vWorld;                                 // the vertex, world: plant.frag reads the shadow map there
@@ -43,6 +46,7 @@ void main() {
 #ifndef SHADOW_CASTER
     // record texel 1's w: the dither window (whole part) and how far the component is bent (fraction)
     vShade = vec4(shade(v, c2, false, fract(c1.w) * (1.0 / 0.99), vec2(c0.w, c1.z)), v.cover);
+    vEdge = v.edge;
 #endif
 #ifdef SHADOW_MAP
     // lit again without the sun: plant.frag moves toward that where the shadow map says it is shaded

@@ -33,6 +33,9 @@ uniform int uComponentBase;
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
 uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
+uniform float uFeather;                          // soft edge of blades and stems, pixels (0: off; targets
+                                                 // without samples: their ribbons grow by it and fade over
+                                                 // it at each side, so thin parts blend instead of stepping)
 
 
 struct Placed {
@@ -41,6 +44,7 @@ struct Placed {
     vec3 toEye;                                  // eye - vertex
     float distance;                              // |toEye|
     float cover;                                 // share of the drawn width the real part covers
+    vec2 edge;                                   // side (-1 to 1) and the drawn half width, pixels
     float height;                                // height above the component's base, metres
 };
 
@@ -74,6 +78,7 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     float pix = uPixelScale.x + d * uPixelScale.y;
     Placed r;
     r.cover = 1.0;
+    r.edge = vec2(0.0, 1e4);
 #ifdef FLOWERS
     if (kind >= 2) {
         vec3 rel = pw + a * sw + b * nw;
@@ -117,10 +122,18 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
             r.normal = hw > 0.0 ? nw + (0.55 * a * length(nw) / hw) * sw : nw;
         }
         vec3 world = centre + a * offset + b * nw;
+        float drawn = seen;
         if (widen && uMinPixels > 0.0) {
             float least = 0.5 * uMinPixels * pix;
             world += a * max(least - seen, 0.0) * across;
             r.cover = clamp(seen / least, 0.0, 1.0);
+            drawn = max(least, seen);
+        }
+        if (widen && uFeather > 0.0) {
+            // half the feather outward on each side: the fade then keeps the ribbon's weight
+            float extra = 0.5 * uFeather * pix;
+            world += a * extra * across;
+            r.edge = vec2(a, (drawn + extra) / pix);
         }
         r.world = world;
     }
