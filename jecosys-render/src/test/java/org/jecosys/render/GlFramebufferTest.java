@@ -79,8 +79,9 @@ class GlFramebufferTest {
         try {
             double tvSingle = variation(single);
             double tvBox = variation(box);
-            assertTrue(tvBox < 0.9 * tvSingle, "4 samples soften the plants' edges: total variation " + tvBox
-                    + " vs " + tvSingle + " single-sampled");
+            // without samples the plants' thin parts and edges are blended by their coverage: no rougher
+            assertTrue(tvSingle < 1.2 * tvBox, "the single-sampled picture is no rougher than 4 samples: total "
+                    + "variation " + tvSingle + " vs " + tvBox);
             double tvTent = variation(tent);
             assertTrue(tvTent < 0.85 * tvBox, "the tent smooths: total variation " + tvTent + " vs " + tvBox);
             // the sky's top row is a smooth gradient: the filter leaves it within a level

@@ -295,7 +295,8 @@ public final class PlantPasses {
 
     /**
      * As {@link #drawTriangles}, with the split programs ({@link #hasSplit}): the plants' opaque core
-     * ({@code core}) or their fringe. The caller sets the depth mask and blending. No allocation.
+     * ({@code core}) or their fringe. The caller sets the depth mask and blending. The fringe's draws
+     * are not counted ({@link #draws()} and {@link #instances()} count each list once). No allocation.
      */
     public void drawTrianglesSplit(boolean core, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount,
                                    PlantLook look, int levelMask) {
@@ -304,7 +305,13 @@ public final class PlantPasses {
             u.program.use();
             glUniform1f(u.split, core ? 1f : 2f);
         }
+        int draws0 = draws;
+        long instances0 = instances;
         draw(programs, false, batches, vaos, indexCount, look, levelMask);
+        if (!core) {
+            draws = draws0;
+            instances = instances0;
+        }
     }
 
     /** As {@link #drawTriangles}, the line levels' lists. No allocation. */

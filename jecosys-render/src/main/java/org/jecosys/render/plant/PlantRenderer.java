@@ -263,7 +263,11 @@ public final class PlantRenderer implements AutoCloseable {
         return batches;
     }
 
-    /** {@return the number of instanced draw calls issued by the last {@link #draw}} */
+    /**
+     * {@return the number of instanced draw calls issued by the last {@link #draw}} On a target without
+     * samples the near lists are drawn a second time for their fringe ({@link #drawPreparedNear}), not
+     * counted here.
+     */
     public int drawCalls() {
         return passes.draws();
     }
