@@ -25,6 +25,10 @@ public record RollingTerrain(long seed, double amplitude, double wavelength, int
     /**
      * Checks the components.
      *
+     * @param seed       selects the hills
+     * @param amplitude  largest height above or below 0, metres, in [0, 10000]
+     * @param wavelength size of the largest hills, metres, in [1, 1e6]
+     * @param octaves    layers summed, in [1, 12]
      * @throws IllegalArgumentException when a component is out of range
      */
     public RollingTerrain {

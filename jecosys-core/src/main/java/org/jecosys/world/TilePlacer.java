@@ -87,6 +87,12 @@ public final class TilePlacer {
     /**
      * A placer without soil functions: water and nutrient limits are not checked. Allocates.
      *
+     * @param seed          the world's seed
+     * @param tileSize      tile side, metres (see the full constructor)
+     * @param distributions what grows, each with {@code count == -1}
+     * @param speciesOf     species index of each distribution
+     * @param height        the ground, not null
+     * @throws IllegalArgumentException on a bad argument (see the full constructor)
      * @see #TilePlacer(long, double, List, int[], HeightFunction, ResourceFunction, ResourceFunction)
      */
     public TilePlacer(long seed, double tileSize, List<DistributionDef> distributions, int[] speciesOf,

@@ -22,6 +22,14 @@ public record TilePlants(int tileI, int tileJ, float[] x, float[] y, float[] z, 
     /**
      * Checks that the arrays are present and of one length.
      *
+     * @param tileI       the tile's index along X
+     * @param tileJ       the tile's index along Z
+     * @param x           world X of each plant, metres
+     * @param y           world Y of each plant, metres
+     * @param z           world Z of each plant, metres
+     * @param species     species index of each plant
+     * @param variantSeed seed of each plant's variation
+     * @param azimuth     rotation of each plant about Y, radians
      * @throws IllegalArgumentException when an array is null or their lengths differ
      */
     public TilePlants {
