@@ -163,7 +163,30 @@ class TileSeamTest {
             }
         }
         double straddleMean = straddleSum / straddle;
-        // densities: 1 m bands either side of the inner borders, and the tiles' insides 1 m from any border
+        double[] bands = bandDensities(b);
+        double interiorDensity = bands[0];
+        double beforeRatio = bands[1];
+        double afterRatio = bands[2];
+        double minDistance = minDistanceAndNoOverlap(b, g);
+        System.out.printf(Locale.ROOT, "[bench] seams: %d plants on %.0f m^2 (%.2f per m^2 inside tiles); Clark-Evans"
+                        + " inside tiles %.3f (%d windows), straddling borders %.3f (%d windows, worst window off by"
+                        + " %.3f); density in the 1 m bands before/after a border %.3f/%.3f of the inside; nearest"
+                        + " two plants %.4f m%n", b.n(), TILES * TILE * TILES * TILE, interiorDensity, insideMean, inside,
+                straddleMean, straddle, worst, beforeRatio, afterRatio, minDistance);
+        assertTrue(interiorDensity > 5.2 && interiorDensity < 6.2, "about the meadow's density: " + interiorDensity);
+        assertEquals(insideMean, straddleMean, 0.1, "Clark-Evans ratio straddling borders vs inside tiles");
+        assertTrue(Math.abs(beforeRatio - 1) <= 0.1 && Math.abs(afterRatio - 1) <= 0.1,
+                "border band densities " + beforeRatio + ", " + afterRatio + " of the inside's");
+        assertTrue(minDistance >= 0.01, "no two plants closer than 1 cm: " + minDistance);
+    }
+
+    /**
+     * The density inside the tiles (1 m from any border), per m², and the densities of the 1 m bands
+     * just before and just after the inner borders (all six lines together), as shares of it.
+     */
+    static double[] bandDensities(Block b) {
+        double lo = FIRST * TILE;
+        double hi = lo + TILES * TILE;
         int before = 0;
         int after = 0;
         int interior = 0;
@@ -195,17 +218,7 @@ class TileSeamTest {
         double interiorDensity = interior / (TILES * TILES * (TILE - 2) * (TILE - 2));
         double beforeRatio = before / bandArea / interiorDensity;
         double afterRatio = after / bandArea / interiorDensity;
-        double minDistance = minDistanceAndNoOverlap(b, g);
-        System.out.printf(Locale.ROOT, "[bench] seams: %d plants on %.0f m^2 (%.2f per m^2 inside tiles); Clark-Evans"
-                        + " inside tiles %.3f (%d windows), straddling borders %.3f (%d windows, worst window off by"
-                        + " %.3f); density in the 1 m bands before/after a border %.3f/%.3f of the inside; nearest"
-                        + " two plants %.4f m%n", b.n(), TILES * TILE * TILES * TILE, interiorDensity, insideMean, inside,
-                straddleMean, straddle, worst, beforeRatio, afterRatio, minDistance);
-        assertTrue(interiorDensity > 5.2 && interiorDensity < 6.2, "about the meadow's density: " + interiorDensity);
-        assertEquals(insideMean, straddleMean, 0.1, "Clark-Evans ratio straddling borders vs inside tiles");
-        assertTrue(Math.abs(beforeRatio - 1) <= 0.1 && Math.abs(afterRatio - 1) <= 0.1,
-                "border band densities " + beforeRatio + ", " + afterRatio + " of the inside's");
-        assertTrue(minDistance >= 0.01, "no two plants closer than 1 cm: " + minDistance);
+        return new double[] {interiorDensity, beforeRatio, afterRatio};
     }
 
     /** The distance of the closest two plants; fails when two footprints overlap (across borders too). */
