@@ -280,24 +280,40 @@ public final class TilePlacer {
             if (k % tuft == 0) {
                 cx = below(x0 + rng.nextDouble() * size, x1);
                 cz = below(z0 + rng.nextDouble() * size, z1);
+                // only a tuft that can reach the region is worked out further; the draws are taken anyway
+                boolean near = cx >= minX - lim && cx < maxX + lim && cz >= minZ - lim && cz < maxZ + lim;
+                kept = near;
                 if (strength > 0) {
                     double u = rng.nextDouble();
-                    // the field is read only where the tuft can reach the region: the draw is taken anyway
-                    kept = cx >= minX - lim && cx < maxX + lim && cz >= minZ - lim && cz < maxZ + lim
-                            && u < clumpAcceptance(clumpSeed[d], 1 / (2 * def.clumpSize()), strength, cx, cz);
+                    kept = near && u < clumpAcceptance(clumpSeed[d], 1 / (2 * def.clumpSize()), strength, cx, cz);
                 }
             }
             double x = cx;
             double z = cz;
             if (tuft > 1) {
-                x += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
-                z += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
+                if (kept) {
+                    x += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
+                    z += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
+                } else {
+                    skip(rng, 4); // two normal draws take two longs each
+                }
+            }
+            if (!kept) {
+                skip(rng, 2); // azimuth and variant seed
+                continue;
             }
             float az = (float) (rng.nextDouble() * 2 * Math.PI);
             long vs = rng.nextLong();
-            if (kept && x >= minX && x < maxX && z >= minZ && z < maxZ && suits(def, x, z)) {
+            if (x >= minX && x < maxX && z >= minZ && z < maxZ && suits(def, x, z)) {
                 out.add(x, z, az < 2 * (float) Math.PI ? az : 0, vs, d, ti, tj, k);
             }
+        }
+    }
+
+    /** Advances the stream by n draws, as n calls of {@link Rng#nextLong} (or nextDouble) would. */
+    private static void skip(Rng rng, int n) {
+        for (int k = 0; k < n; k++) {
+            rng.nextLong();
         }
     }
 
