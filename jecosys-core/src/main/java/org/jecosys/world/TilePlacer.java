@@ -16,8 +16,8 @@ import org.jecosys.terrain.DistributionDef;
  * along X and Z. For each distribution d its candidates come from the stream
  * {@code Rng.forStream(seed, hash(i, j, d))}: a count of density x tile area (the fractional part
  * drawn from the stream), positions uniform in the tile, an azimuth and a variant seed each. The
- * density is that of the candidates, so the placed density is lower where footprints crowd (by a few
- * per cent at meadow densities). With {@code tuftCount > 1} the candidates come in tufts: offsets
+ * density is that of the candidates, so the placed density is lower where footprints crowd (with the
+ * meadow's footprints and tufts, 7.6 candidates per m² give 5.7 plants per m²). With {@code tuftCount > 1} the candidates come in tufts: offsets
  * around a shared centre, normal with s.d. {@code tuftSize}, clamped to {@link #TUFT_REACH} s.d. (so
  * a tuft reaches a known distance beyond its tile). With {@code clumpStrength > 0} each tuft centre
  * (each candidate without tufts) is kept with the chance {@code 1 - strength + strength g(x, z)} where
@@ -36,8 +36,9 @@ import org.jecosys.terrain.DistributionDef;
  * seen from either side: no seam, and no dependence on the visit order.
  *
  * <p><b>Left out</b>, because they cannot be made local: resource consumption (a plant lowering the
- * water and nutrients around it for later ones; in the finite distributor this acts only through the
- * resource grid's cells, since accepted footprints never overlap), exact counts ({@code count} must be
+ * water and nutrients around it for later ones, an order-dependent state over the whole terrain; in
+ * the finite distributor it acts mostly through the resource grid's cells, since accepted footprints
+ * never overlap), exact counts ({@code count} must be
  * -1), hand placements and the finite distributor's rounds (candidates beyond the target). Levels are
  * read at a candidate's centre, not averaged over its footprint.
  *
@@ -118,6 +119,12 @@ public final class TilePlacer {
      */
     public TilePlacer(long seed, double tileSize, List<DistributionDef> distributions, int[] speciesOf,
                       HeightFunction height, ResourceFunction water, ResourceFunction nutrients) {
+        this(seed, tileSize, distributions, speciesOf, height, water, nutrients, false);
+    }
+
+    /** The full constructor; {@code wholeHalo} makes the reach the whole halo (for tests of the reach). */
+    TilePlacer(long seed, double tileSize, List<DistributionDef> distributions, int[] speciesOf,
+               HeightFunction height, ResourceFunction water, ResourceFunction nutrients, boolean wholeHalo) {
         Require.range("tileSize", tileSize, MIN_TILE_SIZE, MAX_TILE_SIZE);
         Require.nonNull("distributions", distributions);
         Require.nonNull("speciesOf", speciesOf);
@@ -176,7 +183,7 @@ public final class TilePlacer {
                     + TUFT_REACH + " tuftSize = " + lim + " m)");
         }
         double neighbours = perM2 * Math.PI * 4 * rMax * rMax;
-        this.reach = neighbours <= SPARSE_NEIGHBOURS ? Math.min(halo, REACH_DIAMETERS * 2 * rMax) : halo;
+        this.reach = neighbours <= SPARSE_NEIGHBOURS && !wholeHalo ? Math.min(halo, REACH_DIAMETERS * 2 * rMax) : halo;
     }
 
     /** {@return the tile side, metres} */

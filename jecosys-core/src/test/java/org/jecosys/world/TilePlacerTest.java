@@ -81,6 +81,17 @@ class TilePlacerTest {
     }
 
     @Test
+    void theReachGivesTheSamePlantsAsTheWholeHalo() {
+        TilePlacer near = new TilePlacer(17, 24, TileSeamTest.meadow(), TileSeamTest.SPECIES, WAVES, null, null, false);
+        TilePlacer whole = new TilePlacer(17, 24, TileSeamTest.meadow(), TileSeamTest.SPECIES, WAVES, null, null, true);
+        assertEquals(9.6, near.reach(), 1e-9);
+        assertEquals(24 - 3 * 0.12, whole.reach(), 1e-9);
+        for (int k = 0; k < 3; k++) {
+            assertSame(whole.place(k, -k), near.place(k, -k));
+        }
+    }
+
+    @Test
     void plantsLieInTheirTileAndStandOnTheGamesGround() {
         TilePlacer placer = meadow(11, 12);
         int plants = 0;
