@@ -16,6 +16,7 @@ module org.jecosys.core {
     exports org.jecosys.wind;
     exports org.jecosys.plant;
     exports org.jecosys.terrain;
+    exports org.jecosys.world;
     exports org.jecosys.field;
     exports org.jecosys.anim;
     exports org.jecosys.sim;

@@ -4,6 +4,7 @@ import java.io.IOException;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
+import org.jecosys.world.HeightFunction;
 import org.joml.Vector3f;
 
 /**
@@ -14,9 +15,11 @@ import org.joml.Vector3f;
  * with i along X (x = minX + i * cellX) and j along Z. Per-vertex normals are stored as three floats
  * per vertex. Queries at any (x, z) clamp to the border, so they never fail outside the terrain.
  *
- * <p>Immutable once built: any thread may query it concurrently; queries do not allocate.
+ * <p>Immutable once built: any thread may query it concurrently; queries do not allocate. It is a
+ * {@link HeightFunction}, so tiled placement ({@code org.jecosys.world.TilePlacer}) can stand plants on
+ * it; its heights and slopes are the same through either.
  */
-public final class Heightfield {
+public final class Heightfield implements HeightFunction {
     /** Generated relief: hills per side of the terrain's longer edge at the first octave. */
     public static final double BASE_FEATURES_PER_SIDE = 3.0;
     /** Generated relief: the finest octave still spans at least this many grid cells. */
@@ -295,6 +298,7 @@ public final class Heightfield {
      * @param z world Z, metres
      * @return the ground height, metres
      */
+    @Override
     public double height(double x, double z) {
         double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
         double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
@@ -310,6 +314,7 @@ public final class Heightfield {
      * @param z world Z, metres
      * @return the slope, radians in [0, pi/2)
      */
+    @Override
     public double slope(double x, double z) {
         double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
         double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);

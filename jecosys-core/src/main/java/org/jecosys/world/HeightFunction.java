@@ -1,0 +1,41 @@
+package org.jecosys.world;
+
+/**
+ * The ground's height at a point: the one small interface through which placement (and later the
+ * ground cover and the field) reads a game's own terrain (docs: DESIGN.md, "Where the game owns
+ * things", Height). The library's {@link org.jecosys.terrain.Heightfield} implements it, and so does
+ * {@link RollingTerrain}; a game implements it over its own terrain.
+ *
+ * <p>Implementations must be safe for concurrent calls from worker threads (tiles are built on
+ * workers), must not allocate per call if they sit on a hot path, and must be pure: the same (x, z)
+ * always gives the same height, or tiles would depend on the order they are built in.
+ */
+@FunctionalInterface
+public interface HeightFunction {
+    /** Step, metres, of the central differences of the default {@link #slope}. */
+    double SLOPE_STEP = 0.05;
+
+    /**
+     * The ground height at world position (x, z). Any thread, concurrently; should not allocate.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the ground height (world Y, up), metres, finite
+     */
+    double height(double x, double z);
+
+    /**
+     * The slope of the ground at (x, z), radians in [0, pi/2): by default from central differences
+     * of {@link #height} {@link #SLOPE_STEP} metres either side along X and Z (four height calls).
+     * An implementation that knows its gradient may do better. Any thread; no allocation.
+     *
+     * @param x world X, metres
+     * @param z world Z, metres
+     * @return the angle of the ground from horizontal, radians in [0, pi/2)
+     */
+    default double slope(double x, double z) {
+        double gx = (height(x + SLOPE_STEP, z) - height(x - SLOPE_STEP, z)) / (2 * SLOPE_STEP);
+        double gz = (height(x, z + SLOPE_STEP) - height(x, z - SLOPE_STEP)) / (2 * SLOPE_STEP);
+        return Math.atan(Math.sqrt(gx * gx + gz * gz));
+    }
+}
