@@ -37,8 +37,7 @@ class ArchitectureTest {
             Map.entry("wind", Set.of("math")),
             Map.entry("plant", Set.of("math")),
             Map.entry("terrain", Set.of("plant", "math")),
-            // the open world's placement, above terrain (its DistributionDef); terrain uses only its
-            // HeightFunction, which the Heightfield implements (TERRAIN_USES_OF_WORLD)
+            // the open world's placement, above terrain (its DistributionDef)
             Map.entry("world", Set.of("terrain", "plant", "math")),
             Map.entry("field", Set.of("wind", "math")),
             Map.entry("anim", Set.of("field", "plant", "math")),
@@ -52,9 +51,6 @@ class ArchitectureTest {
                     "math")),
             Map.entry("app", Set.of("render", "bench", "scene", "sim", "anim", "field", "wind", "plant", "terrain",
                     "world", "math")));
-
-    /** What terrain may use of world (the one edge against the downward order): the ground's interface. */
-    private static final Set<String> TERRAIN_USES_OF_WORLD = Set.of("org.jecosys.world.HeightFunction");
 
     /** A dotted name that starts at a word boundary and is not itself part of a longer dotted name. */
     private static final Pattern QUALIFIED = Pattern.compile(
@@ -244,8 +240,7 @@ class ArchitectureTest {
             String target = u.used().substring("org.jecosys.".length()).split("\\.")[0];
             Set<String> allowed = ALLOWED.get(u.pkg());
             assertTrue(allowed != null, "unknown package " + u.pkg());
-            boolean groundInterface = u.pkg().equals("terrain") && TERRAIN_USES_OF_WORLD.contains(u.used());
-            if (!target.equals(u.pkg()) && !allowed.contains(target) && !groundInterface) {
+            if (!target.equals(u.pkg()) && !allowed.contains(target)) {
                 bad.add(u.file() + " (" + u.pkg() + ") uses " + u.used());
             }
         }

@@ -4,7 +4,7 @@ import java.io.IOException;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
-import org.jecosys.world.HeightFunction;
+import org.jecosys.math.HeightFunction;
 import org.joml.Vector3f;
 
 /**

@@ -1,5 +1,6 @@
 package org.jecosys.world;
 
+import org.jecosys.math.HeightFunction;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Require;
 

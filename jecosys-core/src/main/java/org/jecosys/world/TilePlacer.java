@@ -1,5 +1,6 @@
 package org.jecosys.world;
 
+import org.jecosys.math.HeightFunction;
 import java.util.List;
 import org.jecosys.math.Noise;
 import org.jecosys.math.Require;
@@ -9,8 +10,8 @@ import org.jecosys.terrain.DistributionDef;
 /**
  * The paper's competitive distribution (§4.3) over an unbounded world cut into square tiles, each a
  * pure function of (seed, tile coordinates, distributions, height and soil functions), so a streaming
- * runtime can build tiles on workers in any order and evict and rebuild them at will (DESIGN.md,
- * "Where the game owns things", World).
+ * runtime can build tiles on workers in any order and evict and rebuild them at will (docs/ARCHITECTURE.md,
+ * the {@code world} package).
  *
  * <p><b>Candidates.</b> Tile (i, j) covers [i size, (i + 1) size) x [j size, (j + 1) size) metres
  * along X and Z. For each distribution d its candidates come from the stream

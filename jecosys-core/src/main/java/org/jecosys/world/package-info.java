@@ -1,6 +1,6 @@
 /**
  * The open world's placement foundation (issue 39): plants in square tiles around the views, on the
- * game's own ground. {@link org.jecosys.world.HeightFunction} is the ground (the library's
+ * game's own ground. {@link org.jecosys.math.HeightFunction} is the ground (the library's
  * {@link org.jecosys.terrain.Heightfield}, the endless {@link org.jecosys.world.RollingTerrain}, or a
  * game's terrain), {@link org.jecosys.world.ResourceFunction} its water and nutrients, and
  * {@link org.jecosys.world.TilePlacer} the paper's competitive distribution (§4.3) cut into tiles that

@@ -1,5 +1,6 @@
 package org.jecosys.world;
 
+import org.jecosys.math.HeightFunction;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,10 +1,9 @@
-package org.jecosys.world;
+package org.jecosys.math;
 
 /**
  * The ground's height at a point: the one small interface through which placement (and later the
- * ground cover and the field) reads a game's own terrain (docs: DESIGN.md, "Where the game owns
- * things", Height). The library's {@link org.jecosys.terrain.Heightfield} implements it, and so does
- * {@link RollingTerrain}; a game implements it over its own terrain.
+ * ground cover and the field) reads a game's own terrain. The library's heightfield implements it,
+ * and so do the open world's rolling hills; a game implements it over its own terrain.
  *
  * <p>Implementations must be safe for concurrent calls from worker threads (tiles are built on
  * workers), must not allocate per call if they sit on a hot path, and must be pure: the same (x, z)
