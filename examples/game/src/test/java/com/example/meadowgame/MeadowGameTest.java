@@ -59,7 +59,8 @@ class MeadowGameTest {
                         sky++;
                     } else if (r > g && g > b && r - b > 25) {
                         ground++;
-                    } else if (g > r + 8 && g > b + 8) {
+                    } else if (g >= r && g > b + 8) {
+                        // green (the thin blades are blended by their coverage over the brown ground)
                         plants++;
                     }
                 }

@@ -159,4 +159,40 @@ final class PlantGpu implements AutoCloseable {
         Closing.closeReverse(owned);
         owned.clear();
     }
+
+    /**
+     * Compiles the shadow map's caster and receiver programs and takes them into use in {@code passes}
+     * (at the first frame that draws the map). Render thread; allocates.
+     */
+    void compileCasters(PlantPasses passes) {
+        GlProgram[] casters = new GlProgram[PlantPasses.CASTERS];
+        GlProgram[] receivers = new GlProgram[PlantPasses.CASTERS];
+        for (int k = 0; k < casters.length; k++) {
+            casters[k] = own(PlantPasses.compileCaster(tracker, k));
+            receivers[k] = own(PlantPasses.compileReceiver(tracker, k));
+        }
+        passes.useCasters(casters, receivers);
+    }
+
+    /**
+     * Compiles the split programs a target without samples needs and takes them into use in
+     * {@code passes} (at its first frame, and those that read the shadow map at the first such frame that
+     * draws one). Render thread; allocates.
+     */
+    void compileSplit(PlantPasses passes) {
+        for (int mapped = 0; mapped < 2; mapped++) {
+            if (mapped == 0 ? passes.hasPlainSplit() : !passes.hasCasters() || passes.hasSplitReceivers()) {
+                continue;
+            }
+            GlProgram[] programs = new GlProgram[PlantPasses.CASTERS];
+            for (int k = 0; k < programs.length; k++) {
+                programs[k] = own(PlantPasses.compileSplit(tracker, k, mapped == 1));
+            }
+            if (mapped == 0) {
+                passes.useSplit(programs);
+            } else {
+                passes.useSplitReceivers(programs);
+            }
+        }
+    }
 }

@@ -21,7 +21,6 @@ import org.jecosys.render.Lighting;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.ResolvePath;
 import org.jecosys.render.gl.GlInts;
-import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.ground.ShadowParams;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.sim.Frame;
@@ -383,13 +382,7 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         if (!passes.hasCasters()) {
-            GlProgram[] casters = new GlProgram[PlantPasses.CASTERS];
-            GlProgram[] receivers = new GlProgram[PlantPasses.CASTERS];
-            for (int k = 0; k < casters.length; k++) {
-                casters[k] = gpu.own(PlantPasses.compileCaster(gpu.tracker, k));
-                receivers[k] = gpu.own(PlantPasses.compileReceiver(gpu.tracker, k));
-            }
-            passes.useCasters(casters, receivers);
+            gpu.compileCasters(passes);
             passes.frame(look, context); // this frame's values onto the new programs
         }
         passes.casterFrame(look, shadow.placement(), context);
@@ -441,7 +434,9 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         if (!passes.hasSplit()) {
-            compileSplit();
+            gpu.compileSplit(passes);
+            passes.frame(look, context); // this frame's values onto the new programs
+            passes.shadow(look);
         }
         glEnable(GL_BLEND);
         // colour blended by coverage; alpha composited "over": opaque over an opaque target. The opaque
@@ -452,29 +447,6 @@ public final class PlantRenderer implements AutoCloseable {
         passes.drawTrianglesSplit(false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(true);
         glDisable(GL_BLEND);
-    }
-
-    /**
-     * Compiles the split programs a target without samples needs, at its first frame (and those that read
-     * the shadow map at the first frame that draws one). Allocates.
-     */
-    private void compileSplit() {
-        for (int mapped = 0; mapped < 2; mapped++) {
-            if (mapped == 0 ? passes.hasPlainSplit() : !passes.hasCasters() || passes.hasSplitReceivers()) {
-                continue;
-            }
-            GlProgram[] programs = new GlProgram[PlantPasses.CASTERS];
-            for (int k = 0; k < programs.length; k++) {
-                programs[k] = gpu.own(PlantPasses.compileSplit(gpu.tracker, k, mapped == 1));
-            }
-            if (mapped == 0) {
-                passes.useSplit(programs);
-            } else {
-                passes.useSplitReceivers(programs);
-            }
-        }
-        passes.frame(look, context); // this frame's values onto the new programs
-        passes.shadow(look);
     }
 
     /**
