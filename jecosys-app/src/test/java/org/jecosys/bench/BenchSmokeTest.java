@@ -35,6 +35,13 @@ class BenchSmokeTest {
             assertTrue(md.contains("### " + title), title);
         }
         assertTrue(md.contains("## Machine") && md.contains("- CPU: "));
+        // the open world's tiles along a walk: checkpoints with the heap after GC and the tiles alive
+        Table walk = r.tables().stream().filter(t -> t.id().equals("streaming")).findFirst().orElseThrow();
+        assertEquals(2, walk.rows().size(), "two checkpoints in the smoke run");
+        for (List<Object> row : walk.rows()) {
+            int tiles = ((Number) row.get(2)).intValue();
+            assertTrue(tiles > 20 && tiles <= 100, "tiles alive within 100 m of the view: " + tiles);
+        }
         // render scale: the meadow on every resolve path the context runs, transform feedback always
         assertTrue(md.contains("### Render scale"), "render scale");
         assertTrue(md.contains(org.jecosys.render.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
