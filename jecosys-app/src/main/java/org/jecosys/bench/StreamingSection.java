@@ -56,8 +56,11 @@ final class StreamingSection implements Section {
             double[] x = {0};
             double[] z = {0};
             // load the start before timing, as a game's loading screen would
-            for (int k = 0; k < 20 && (k == 0 || s.pendingTiles() > 0); k++) {
+            for (int k = 0; k < 64; k++) {
                 s.update(x, z, 1);
+                if (s.pendingTiles() == 0) {
+                    break; // nothing more to start: every tile within the radius is alive
+                }
                 s.settle();
             }
             int perSecond = (int) RATE;
