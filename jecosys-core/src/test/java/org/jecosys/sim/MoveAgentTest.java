@@ -41,16 +41,18 @@ class MoveAgentTest {
                     sim.stepFixed(camera);
                 }
             }
-            long bytes = 0;
-            for (int i = 0; i < 10_000; i++) {
+            // ten windows of 1,000 calls (a step after each): a move that allocated would show in every one;
+            // the least is taken, as a stray allocation of the JIT or the runtime lands in one window
+            long least = Long.MAX_VALUE;
+            for (int w = 0; w < 10; w++) {
                 long before = MX.getThreadAllocatedBytes(self);
-                sim.moveAgent(player, (i % 17) * 0.25, -3);
-                bytes += MX.getThreadAllocatedBytes(self) - before;
-                if (i % 100 == 99) {
-                    sim.stepFixed(camera);
+                for (int i = 0; i < 1_000; i++) {
+                    sim.moveAgent(player, (i % 17) * 0.25, -3);
                 }
+                least = Math.min(least, MX.getThreadAllocatedBytes(self) - before);
+                sim.stepFixed(camera);
             }
-            assertEquals(0, bytes, "bytes allocated by 10,000 moveAgent calls");
+            assertEquals(0, least, "bytes allocated by 1,000 moveAgent calls (the least of ten windows)");
 
             sim.moveAgent(player, 1, 2);
             sim.moveAgent(player, 5, -6); // the latest move before the step wins
