@@ -32,7 +32,7 @@ class UnregisteredViewTest {
         return c;
     }
 
-    private static List<String> run(Simulation sim, boolean register) throws Exception {
+    private static List<String> run(boolean register) throws Exception {
         List<String> said = new CopyOnWriteArrayList<>();
         Handler handler = new Handler() {
             @Override
@@ -50,7 +50,8 @@ class UnregisteredViewTest {
         };
         Logger log = Logger.getLogger("org.jecosys.render");
         log.addHandler(handler);
-        try (GlContext gl = GlContext.headless(DebugOutput.ON);
+        try (Simulation sim = Scenes.simulation(Path.of("scenes/meadow.xml"), Progress.NONE);
+             GlContext gl = GlContext.headless(DebugOutput.ON);
              GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), 320, 180);
              SceneRenderer renderer = new SceneRenderer(gl, sim.world(), new RenderSettings())) {
             ViewCamera front = looking(0);
@@ -74,11 +75,9 @@ class UnregisteredViewTest {
 
     @Test
     void aCameraNoViewCoversIsNamedOnceAndARegisteredOneIsNot() throws Exception {
-        try (Simulation sim = Scenes.simulation(Path.of("scenes/meadow.xml"), Progress.NONE)) { // built once
-            List<String> unregistered = run(sim, false);
-            assertEquals(1, unregistered.size(), "said once: " + unregistered);
-            assertTrue(unregistered.get(0).contains("Simulation.addView"), unregistered.get(0));
-            assertEquals(List.of(), run(sim, true), "nothing said for a registered camera");
-        }
+        List<String> unregistered = run(false);
+        assertEquals(1, unregistered.size(), "said once: " + unregistered);
+        assertTrue(unregistered.get(0).contains("Simulation.addView"), unregistered.get(0));
+        assertEquals(List.of(), run(true), "nothing said for a registered camera");
     }
 }
