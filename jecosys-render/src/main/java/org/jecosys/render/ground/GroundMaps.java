@@ -30,6 +30,8 @@ final class GroundMaps implements AutoCloseable {
     private float shadowX = Float.NaN;
     private float shadowY = Float.NaN;
     private float shadowZ = Float.NaN;
+    /** Shadow maps built so far (tests). */
+    private int shadowBuilds;
 
     /**
      * Builds the contact occlusion of a world's plants and uploads it. Render thread; allocates.
@@ -75,8 +77,15 @@ final class GroundMaps implements AutoCloseable {
     }
 
     /**
+     * Cosine of the least turn of the sun, 0.25 degrees, that rebuilds the shadow map: a game's sun that
+     * moves a little every frame (a day passing) rebuilds it every so many frames, not at each one
+     * (the map is made on the CPU). The sun's disc is about half a degree across.
+     */
+    static final double RESHADE_COS = Math.cos(Math.toRadians(0.25));
+
+    /**
      * Makes sure the shadow map is of the settings' sun when shadows are on (rebuilds it when the sun
-     * moved).
+     * turned by more than a quarter of a degree since it was made).
      *
      * @return whether shadows are drawn: they are on, there are plants and the sun is high enough
      */
@@ -91,14 +100,21 @@ final class GroundMaps implements AutoCloseable {
             return false;
         }
         Lighting l = settings.lighting();
-        if (l.sunX() != shadowX || l.sunY() != shadowY || l.sunZ() != shadowZ) {
+        double turned = (double) l.sunX() * shadowX + (double) l.sunY() * shadowY + (double) l.sunZ() * shadowZ;
+        if (shadow == null || !(turned >= RESHADE_COS)) { // NaN (no map yet) rebuilds too
             shadow = SunShadow.of(world, grid, l.sunX(), l.sunY(), l.sunZ());
+            shadowBuilds++;
             shadowX = l.sunX();
             shadowY = l.sunY();
             shadowZ = l.sunZ();
             upload();
         }
         return true;
+    }
+
+    /** {@return the sun shadow maps built so far: tests} */
+    int shadowBuilds() {
+        return shadowBuilds;
     }
 
     private void upload() {
