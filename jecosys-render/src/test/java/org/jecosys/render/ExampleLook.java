@@ -267,4 +267,79 @@ public final class ExampleLook {
         }
         return new Viewer(new BlockSeries(width, height, BLOCK, means), top, (System.nanoTime() - t0) / 1e9);
     }
+
+    /** How an example's test runs the example in a child JVM on a virtual display (its own {@code run}). */
+    @FunctionalInterface
+    public interface ExampleRun {
+        /**
+         * Runs the example.
+         *
+         * @param display the virtual display
+         * @param name    the run's name (its screenshot and log)
+         * @param width   window width, pixels
+         * @param height  window height, pixels
+         * @param frames  frames of the test mode
+         * @param extra   more arguments
+         * @return the run's screenshot and what it printed
+         * @throws Exception when the run fails
+         */
+        ExampleShot run(VirtualDisplay display, String name, int width, int height, int frames, String... extra)
+                throws Exception;
+    }
+
+    /**
+     * Issue 38's sheen check for an engine example: runs the example's start view of {@code scene} for
+     * {@code frames} frames with {@code --sheen} (in a child JVM) while this JVM draws the library's viewer
+     * picture at the same camera and size ({@link #viewer}); asserts no GL error in the example and that the
+     * median temporal s.d. of 16 x 16 block luminance over the ground (below the lower of the two pictures'
+     * ground tops) is within 30% of the viewer's, and prints both with a {@code [look]} line.
+     *
+     * @param engine  the engine's name in the printed line
+     * @param out     the example's test output folder
+     * @param scene   the scene file
+     * @param width   picture width, pixels
+     * @param height  picture height, pixels
+     * @param frames  frames at 1/30 s
+     * @param example the example's run
+     * @throws Exception when a run fails
+     */
+    public static void assertSheenLikeTheViewer(String engine, Path out, String scene, int width, int height,
+                                                int frames, ExampleRun example) throws Exception {
+        Path sheen = out.resolve("sheen.bin");
+        Path ground = out.resolve("sheen-ground.png");
+        Files.createDirectories(out);
+        Files.deleteIfExists(sheen);
+        long t0 = System.nanoTime();
+        Viewer viewer;
+        ExampleShot shot;
+        try (VirtualDisplay display = VirtualDisplay.start(1024, 768)) {
+            java.util.concurrent.CompletableFuture<ExampleShot> run = java.util.concurrent.CompletableFuture.supplyAsync(
+                    () -> {
+                        try {
+                            return example.run(display, "sheen", width, height, frames, "--scene", scene,
+                                    "--start-view", "--ground-screenshot", ground.toString(), "--sheen",
+                                    sheen.toString());
+                        } catch (Exception e) {
+                            throw new IllegalStateException(e);
+                        }
+                    });
+            viewer = viewer(Path.of(scene), width, height, frames);
+            shot = run.join();
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(shot.noGlErrors(), "GL errors in the example's run");
+        BufferedImage groundOnly = javax.imageio.ImageIO.read(ground.toFile());
+        BlockSeries series = BlockSeries.read(sheen);
+        int top = Math.min(groundTop(groundOnly), viewer.top());
+        double[] e = series.sheen(top);
+        double[] v = viewer.series().sheen(top);
+        double ratio = e[0] / v[0];
+        System.out.printf("[look] %s example vs the library's viewer, meadow start view %dx%d, %d frames: median"
+                + " temporal s.d. of 16x16 block luminance over the ground (rows 0-%d) %.2f vs %.2f: ratio %.2f"
+                + " (0.7-1.3); near/middle/far %.2f/%.2f/%.2f vs %.2f/%.2f/%.2f; ground top %d (example) %d"
+                + " (viewer); %.0f s%n", engine, width, height, frames, top, e[0], v[0], ratio, e[1], e[2], e[3],
+                v[1], v[2], v[3], groundTop(groundOnly), viewer.top(), (System.nanoTime() - t0) / 1e9);
+        org.junit.jupiter.api.Assertions.assertTrue(v[0] > 0, "the viewer's picture moves in the wind: " + v[0]);
+        org.junit.jupiter.api.Assertions.assertTrue(ratio >= 0.7 && ratio <= 1.3, String.format(
+                "the example's sheen %.2f is %.2f times the viewer's %.2f, want 0.7-1.3", e[0], ratio, v[0]));
+    }
 }
