@@ -9,6 +9,7 @@ import java.util.Map;
 import org.jecosys.terrain.DistributionDef;
 import org.jecosys.world.RollingTerrain;
 import org.jecosys.world.TilePlacer;
+import org.jecosys.world.TilePlants;
 import org.jecosys.world.TileStreamer;
 
 /**
@@ -52,7 +53,7 @@ final class StreamingSection implements Section {
                 "worker s per s walked (median)", "worker s per s walked (max)", "update ms (p99)"));
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         List<Object> raw = new ArrayList<>();
-        try (TileStreamer s = new TileStreamer(placer, RADIUS, 2, 16)) {
+        try (TileStreamer<TilePlants> s = TileStreamer.of(placer, RADIUS, 2, 16)) {
             double[] x = {0};
             double[] z = {0};
             // load the start before timing, as a game's loading screen would

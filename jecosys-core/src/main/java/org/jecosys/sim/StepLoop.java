@@ -303,6 +303,20 @@ final class StepLoop {
         return fixedStep;
     }
 
+    /**
+     * Before the first step: starts the clock (the loop's and the flows') at {@code t}, for a tile of
+     * an open world that joins the others' running time ({@link WindField#startAt}). Stepping thread.
+     *
+     * @throws IllegalStateException when a step has run already
+     */
+    void startAt(double t) {
+        if (steps != 0 || primed) {
+            throw new IllegalStateException("the clock can only be set before the first step");
+        }
+        wind.startAt(t);
+        time = t;
+    }
+
     /** {@return the fixed steps run so far} */
     long steps() {
         return steps;

@@ -217,6 +217,29 @@ public final class World {
     }
 
     /**
+     * The world of one tile of an open world ({@link OpenWorld}): the tile's plants, placed already
+     * ({@code TilePlacer}), over {@code ground}, a heightfield sampled over the tile's square (centred
+     * on it). The plants keep their world coordinates; the layout holds no resource maps (uniform ones
+     * of level 1) and no distribution counts. Build time; allocates; any thread.
+     *
+     * @param plants the pre-computed species models, shared by every tile
+     * @param tile   the tile's plants
+     * @param ground the ground under the tile
+     * @return the tile's world
+     */
+    static World tile(PlantModel plants, org.jecosys.world.TilePlants tile, org.jecosys.terrain.Heightfield ground) {
+        PlantLayout.Builder b = new PlantLayout.Builder();
+        int n = tile.count();
+        for (int k = 0; k < n; k++) {
+            b.add(tile.x()[k], tile.y()[k], tile.z()[k], tile.azimuth()[k], 0f, 1, 1, tile.species()[k], -1,
+                    tile.variantSeed()[k]);
+        }
+        org.jecosys.terrain.ResourceMap full = org.jecosys.terrain.ResourceMap.uniform(ground.sizeX(), ground.sizeZ(), 2, 1);
+        PlantLayout layout = b.build(new int[0], new int[0], List.of(), full, full);
+        return new World(new Terrain(ground, full, full), plants, layout);
+    }
+
+    /**
      * One line on what building took (paper §4.1: pose tables are pre-computed at load), e.g.
      * "terrain 12 ms, pose tables of 3 species 2.5 ms, distribution of 80 plants 9 ms".
      *

@@ -8,8 +8,10 @@ import org.jecosys.math.HeightFunction;
 import org.joml.Vector3f;
 
 /**
- * A regular-grid heightfield centred on the origin over [-sizeX/2, sizeX/2] x [-sizeZ/2, sizeZ/2]
- * (paper §4.3, "a simple terrain mesh generator"). Y is up; heights in metres.
+ * A regular-grid heightfield over [cx - sizeX/2, cx + sizeX/2] x [cz - sizeZ/2, cz + sizeZ/2]
+ * (paper §4.3, "a simple terrain mesh generator"). Y is up; heights in metres. A scene's terrain is
+ * centred on the origin (cx = cz = 0); a tile of an open world ({@code sim.OpenWorld}) is centred on
+ * its own square ({@link #of(double, double, double, double, int, float[])}).
  *
  * <p>Storage is flat: {@code resolution * resolution} vertices, index {@code j * resolution + i},
  * with i along X (x = minX + i * cellX) and j along Z. Per-vertex normals are stored as three floats
@@ -30,6 +32,9 @@ public final class Heightfield implements HeightFunction {
 
     private final double sizeX;
     private final double sizeZ;
+    /** The centre, metres: 0 for a scene's terrain. */
+    private final double centreX;
+    private final double centreZ;
     private final int res;
     private final double cellX;
     private final double cellZ;
@@ -39,6 +44,12 @@ public final class Heightfield implements HeightFunction {
     private final float maxHeight;
 
     private Heightfield(double sizeX, double sizeZ, int res, float[] heights) {
+        this(0, 0, sizeX, sizeZ, res, heights);
+    }
+
+    private Heightfield(double centreX, double centreZ, double sizeX, double sizeZ, int res, float[] heights) {
+        this.centreX = centreX;
+        this.centreZ = centreZ;
         this.sizeX = sizeX;
         this.sizeZ = sizeZ;
         this.res = res;
@@ -193,6 +204,37 @@ public final class Heightfield implements HeightFunction {
         return new Heightfield(sizeX, sizeZ, resolution, heights.clone());
     }
 
+    /**
+     * A heightfield centred on (centreX, centreZ) from explicit vertex heights, as
+     * {@link #of(double, double, int, float[])}: a tile of an open world. Copies {@code heights}.
+     *
+     * @param centreX    the centre's X, metres, |centreX| &lt;= 1e9
+     * @param centreZ    the centre's Z, metres, |centreZ| &lt;= 1e9
+     * @param sizeX      extent along X, metres, in [1e-3, 100000]
+     * @param sizeZ      extent along Z, metres, in [1e-3, 100000]
+     * @param resolution vertices per side, in [2, 2049]
+     * @param heights    {@code resolution * resolution} finite heights, metres
+     * @return a new heightfield
+     * @throws IllegalArgumentException on a bad centre or size, a wrong array length or non-finite heights
+     */
+    public static Heightfield of(double centreX, double centreZ, double sizeX, double sizeZ, int resolution,
+                                 float[] heights) {
+        Require.range("centreX", centreX, -1e9, 1e9);
+        Require.range("centreZ", centreZ, -1e9, 1e9);
+        Heightfield h = of(sizeX, sizeZ, resolution, heights);
+        return new Heightfield(centreX, centreZ, sizeX, sizeZ, resolution, h.heights);
+    }
+
+    /** {@return the centre's X, metres (0 for a scene's terrain)} */
+    public double centreX() {
+        return centreX;
+    }
+
+    /** {@return the centre's Z, metres (0 for a scene's terrain)} */
+    public double centreZ() {
+        return centreZ;
+    }
+
     /** {@return the extent along X, metres} */
     public double sizeX() {
         return sizeX;
@@ -208,24 +250,24 @@ public final class Heightfield implements HeightFunction {
         return res;
     }
 
-    /** {@return the lowest X, metres (= -sizeX/2)} */
+    /** {@return the lowest X, metres (= centreX - sizeX/2)} */
     public double minX() {
-        return -sizeX / 2;
+        return centreX - sizeX / 2;
     }
 
-    /** {@return the highest X, metres (= sizeX/2)} */
+    /** {@return the highest X, metres (= centreX + sizeX/2)} */
     public double maxX() {
-        return sizeX / 2;
+        return centreX + sizeX / 2;
     }
 
-    /** {@return the lowest Z, metres (= -sizeZ/2)} */
+    /** {@return the lowest Z, metres (= centreZ - sizeZ/2)} */
     public double minZ() {
-        return -sizeZ / 2;
+        return centreZ - sizeZ / 2;
     }
 
-    /** {@return the highest Z, metres (= sizeZ/2)} */
+    /** {@return the highest Z, metres (= centreZ + sizeZ/2)} */
     public double maxZ() {
-        return sizeZ / 2;
+        return centreZ + sizeZ / 2;
     }
 
     /** {@return the lowest vertex height, metres} */
@@ -255,7 +297,9 @@ public final class Heightfield implements HeightFunction {
      * @param z world Z, metres
      */
     public boolean contains(double x, double z) {
-        return x >= -sizeX / 2 && x <= sizeX / 2 && z >= -sizeZ / 2 && z <= sizeZ / 2;
+        double u = x - centreX;
+        double v = z - centreZ;
+        return u >= -sizeX / 2 && u <= sizeX / 2 && v >= -sizeZ / 2 && v <= sizeZ / 2;
     }
 
     /**
@@ -300,8 +344,8 @@ public final class Heightfield implements HeightFunction {
      */
     @Override
     public double height(double x, double z) {
-        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
+        double u = Grid.clamp((x - centreX + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z - centreZ + sizeZ / 2) / cellZ, res - 1);
         return Grid.bilinear(heights, res, u, v);
     }
 
@@ -316,8 +360,8 @@ public final class Heightfield implements HeightFunction {
      */
     @Override
     public double slope(double x, double z) {
-        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
+        double u = Grid.clamp((x - centreX + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z - centreZ + sizeZ / 2) / cellZ, res - 1);
         int i = Math.min((int) u, res - 2);
         int j = Math.min((int) v, res - 2);
         double fu = u - i;
@@ -343,8 +387,8 @@ public final class Heightfield implements HeightFunction {
      * @return {@code dest}
      */
     public Vector3f normal(double x, double z, Vector3f dest) {
-        double u = Grid.clamp((x + sizeX / 2) / cellX, res - 1);
-        double v = Grid.clamp((z + sizeZ / 2) / cellZ, res - 1);
+        double u = Grid.clamp((x - centreX + sizeX / 2) / cellX, res - 1);
+        double v = Grid.clamp((z - centreZ + sizeZ / 2) / cellZ, res - 1);
         int i = Math.min((int) u, res - 2);
         int j = Math.min((int) v, res - 2);
         double fu = u - i;

@@ -67,6 +67,35 @@ public final class WindField {
         return time;
     }
 
+    /**
+     * Moves the clock forward to {@code t} in one jump, without the steps between: flows on a path are
+     * placed where they are at {@code t}, advected flows stay where they are, one-shot flows that have
+     * expired by then are dropped, and no switch is reported for the jump. For a part of a world that
+     * joins a running simulation later than the rest (a tile of an open world built while the others
+     * ran): its flows then blow as the others' do, since a flow's wind depends on the time, not on the
+     * steps that led to it (advected flows excepted). Stepping thread; no allocation.
+     *
+     * @param t the new time, seconds, finite and at least {@link #time()}
+     * @throws IllegalArgumentException when {@code t} is not finite or lies before {@link #time()}
+     */
+    public void startAt(double t) {
+        Require.finite("t", t);
+        if (t < time) {
+            throw new IllegalArgumentException("the wind's clock cannot go back from " + time + " s to " + t + " s");
+        }
+        time = t;
+        for (int i = 0; i < count; i++) {
+            if (flows[i] instanceof FlowBase f && f.def.motion().kind() == MotionDef.Kind.PATH) {
+                f.placeOnPath(time);
+            }
+        }
+        for (int i = count - 1; i >= 0; i--) {
+            if (oneShot[i] && flows[i].expired(time)) {
+                removeAt(i);
+            }
+        }
+    }
+
     /** {@return the number of flows held (enabled or not, active or not)} */
     public int size() {
         return count;

@@ -187,6 +187,11 @@ public final class TilePlacer {
         this.reach = neighbours <= SPARSE_NEIGHBOURS && !wholeHalo ? Math.min(halo, REACH_DIAMETERS * 2 * rMax) : halo;
     }
 
+    /** {@return the ground the plants stand on} */
+    public HeightFunction ground() {
+        return height;
+    }
+
     /** {@return the tile side, metres} */
     public double tileSize() {
         return size;

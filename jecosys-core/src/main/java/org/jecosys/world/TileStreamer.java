@@ -12,9 +12,9 @@ import java.util.concurrent.ThreadFactory;
 import org.jecosys.math.Require;
 
 /**
- * The tiles around the views (issue 39): keeps {@link TilePlants} alive for every tile whose square
- * comes within {@link #radius()} of a view, builds the missing ones with a {@link TilePlacer} on
- * worker threads, nearest first and at most {@link #budget()} started per {@link #update}, and lets a
+ * The tiles around the views: keeps a tile (its {@link TilePlants}, or whatever a {@link TileFactory}
+ * builds from them) alive for every tile whose square comes within {@link #radius()} of a view, builds
+ * the missing ones with the factory on worker threads, nearest first and at most {@link #budget()} started per {@link #update}, and lets a
  * tile go (its arrays to the garbage collector) once it is farther than the radius plus one tile from
  * every view. {@link #update} never waits for a tile: a tile finished on a worker becomes live at the
  * first update after it is done. Since a tile is a pure function of its coordinates, a tile that comes
@@ -24,18 +24,68 @@ import org.jecosys.math.Require;
  * <p>What is alive is bounded: tiles within radius + one tile of a view, about
  * {@code pi (r / size + 2)^2} per view; {@link #maxLiveTiles()} gives the bound the streamer keeps.
  *
- * <p>Threads: one thread (the stepping thread) calls {@link #update}, {@link #tile}, {@link #liveTiles}
- * and {@link #close}; the workers only run {@link TilePlacer#place}. {@link #update} allocates a
- * task and a map entry per tile started and a few small objects per call (the maps' iterators and
- * boxed keys): this is the tiles' bookkeeping, not yet the per-frame path of a streaming simulation.
+ * <p>The live tiles are also kept in a dense list in the order of their keys ({@link #live(int)}), so a
+ * caller walks them each step without an iterator; the order does not depend on when tiles arrived.
+ *
+ * <p>Threads: one thread (the stepping thread) calls {@link #update}, {@link #tile}, {@link #live},
+ * {@link #liveTiles} and {@link #close}; the workers only run the factory's {@link TileFactory#build}.
+ * {@link #update} allocates a task and a map entry per tile started and taken in, and a few small
+ * objects per call while tiles are missing (the maps' iterators and boxed keys): bookkeeping of the
+ * order of a kilobyte per tile, against the megabytes a tile holds.
+ *
+ * @param <T> what a tile is built into
  */
-public final class TileStreamer implements AutoCloseable {
-    private final TilePlacer placer;
+public final class TileStreamer<T> implements AutoCloseable {
+    /**
+     * Builds a tile on a worker thread, and counts what it holds.
+     *
+     * @param <T> what a tile is built into
+     */
+    public interface TileFactory<T> {
+        /**
+         * Builds tile (i, j): a pure function of the indices (and what the factory was made with), so a
+         * tile built twice is the same tile. Runs on a worker thread; may allocate.
+         *
+         * @param i the tile's index along X
+         * @param j the tile's index along Z
+         * @return the tile, not null
+         */
+        T build(int i, int j);
+
+        /**
+         * {@return the plants in a built tile}
+         *
+         * @param tile a tile this factory built
+         */
+        int plants(T tile);
+
+        /**
+         * Called on the stepping thread when a live tile is let go (or the streamer closes), to free
+         * what it holds beyond the garbage collector's reach. The default does nothing.
+         *
+         * @param tile a tile this factory built
+         */
+        default void release(T tile) {
+        }
+    }
+
+    private final TileFactory<T> factory;
+    private final double size;
     private final double radius;
     private final int budget;
     private final ExecutorService workers;
-    private final Map<Long, TilePlants> live = new HashMap<>();
-    private final Map<Long, Future<TilePlants>> pending = new HashMap<>();
+    private final Map<Long, T> live = new HashMap<>();
+    private final Map<Long, Future<T>> pending = new HashMap<>();
+    /** Per pending tile, the update that started it. */
+    private final Map<Long, Long> startedAt = new HashMap<>();
+    /** Updates a tile takes from its start to being live, or 0: as soon as it is built. */
+    private final int latency;
+    private long updates;
+    private long waits;
+    private long waitNanos;
+    /** The live tiles by ascending key, and their keys. */
+    private Object[] liveList = new Object[16];
+    private long[] liveKeys = new long[16];
     /** Tiles wanted and missing at the last update, nearest first (reused). */
     private long[] wanted = new long[64];
     private double[] wantedDistance = new double[64];
@@ -45,18 +95,68 @@ public final class TileStreamer implements AutoCloseable {
     private boolean closed;
 
     /**
-     * Makes a streamer. Allocates; starts {@code workers} daemon threads.
+     * A streamer of the placer's tiles' plants. Allocates; starts {@code workers} daemon threads.
      *
      * @param placer  the tiles' placement
      * @param radius  reach of a view, metres: tiles whose square comes this close are kept, &gt; 0 and at
      *                most 64 tiles
      * @param workers threads that build tiles, in [1, 64]
      * @param budget  most tiles started per {@link #update}, in [1, 1024]
+     * @return the streamer
      * @throws IllegalArgumentException when an argument is out of range
      */
-    public TileStreamer(TilePlacer placer, double radius, int workers, int budget) {
-        this.placer = Require.nonNull("placer", placer);
-        Require.range("radius", radius, 1e-3, 64 * placer.tileSize());
+    public static TileStreamer<TilePlants> of(TilePlacer placer, double radius, int workers, int budget) {
+        Require.nonNull("placer", placer);
+        return new TileStreamer<>(placer.tileSize(), new TileFactory<>() {
+            @Override
+            public TilePlants build(int i, int j) {
+                return placer.place(i, j);
+            }
+
+            @Override
+            public int plants(TilePlants tile) {
+                return tile.count();
+            }
+        }, radius, workers, budget);
+    }
+
+    /**
+     * Makes a streamer. Allocates; starts {@code workers} daemon threads.
+     *
+     * @param tileSize the tiles' side, metres, in [{@link TilePlacer#MIN_TILE_SIZE}, {@link TilePlacer#MAX_TILE_SIZE}]
+     * @param factory  builds a tile
+     * @param radius   reach of a view, metres: tiles whose square comes this close are kept, &gt; 0 and at
+     *                 most 64 tiles
+     * @param workers  threads that build tiles, in [1, 64]
+     * @param budget   most tiles started per {@link #update}, in [1, 1024]
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public TileStreamer(double tileSize, TileFactory<T> factory, double radius, int workers, int budget) {
+        this(tileSize, factory, radius, workers, budget, 0);
+    }
+
+    /**
+     * Makes a streamer whose tiles become live exactly {@code latency} updates after they were started,
+     * whatever the workers' speed: so what is live at each update depends only on the views' path,
+     * never on the number of workers or the machine's load. An update waits for a tile that is not
+     * built by then ({@link #waits()} counts it; a streamer that keeps pace never waits). Allocates;
+     * starts {@code workers} daemon threads.
+     *
+     * @param tileSize the tiles' side, metres, in [{@link TilePlacer#MIN_TILE_SIZE}, {@link TilePlacer#MAX_TILE_SIZE}]
+     * @param factory  builds a tile
+     * @param radius   reach of a view, metres: tiles whose square comes this close are kept, &gt; 0 and at
+     *                 most 64 tiles
+     * @param workers  threads that build tiles, in [1, 64]
+     * @param budget   most tiles started per {@link #update}, in [1, 1024]
+     * @param latency  updates from a tile's start to its being live, in [1, 1000]; or 0 for as soon as it
+     *                 is built (then what is live depends on the workers' speed)
+     * @throws IllegalArgumentException when an argument is out of range
+     */
+    public TileStreamer(double tileSize, TileFactory<T> factory, double radius, int workers, int budget, int latency) {
+        this.latency = Require.range("latency", latency, 0, 1000);
+        this.size = Require.range("tileSize", tileSize, TilePlacer.MIN_TILE_SIZE, TilePlacer.MAX_TILE_SIZE);
+        this.factory = Require.nonNull("factory", factory);
+        Require.range("radius", radius, 1e-3, 64 * tileSize);
         Require.range("workers", workers, 1, 64);
         this.budget = Require.range("budget", budget, 1, 1024);
         this.radius = radius;
@@ -78,16 +178,22 @@ public final class TileStreamer implements AutoCloseable {
         return budget;
     }
 
+    /** {@return the tiles' side, metres} */
+    public double tileSize() {
+        return size;
+    }
+
     /** {@return the most tiles alive at once per view: those within the radius plus one tile of it} */
     public int maxLiveTiles() {
-        int n = (int) Math.ceil((radius + placer.tileSize()) / placer.tileSize()) + 1;
+        int n = (int) Math.ceil((radius + size) / size) + 1;
         return (2 * n) * (2 * n);
     }
 
     /**
      * Brings the tiles up to date with the views: takes in the tiles finished since the last call, lets
      * go of those beyond radius + one tile of every view, and starts up to {@link #budget()} missing
-     * tiles within the radius, nearest first. Never waits. Stepping thread.
+     * tiles within the radius, nearest first. Waits only for a tile that is due (see the latency) and
+     * not built yet. Stepping thread. Allocates nothing while no tile is started, taken in or let go.
      *
      * @param viewX X of each view, metres
      * @param viewZ Z of each view, metres
@@ -99,25 +205,34 @@ public final class TileStreamer implements AutoCloseable {
             throw new IllegalStateException("the tile streamer is closed");
         }
         Require.range("views", views, 1, Math.min(viewX.length, viewZ.length));
-        collect();
-        double size = placer.tileSize();
+        updates++;
+        if (!pending.isEmpty()) {
+            collect(false);
+        }
         // let go of tiles beyond radius + one tile of every view
         double keep = radius + size;
         leaving.clear();
-        for (Long key : live.keySet()) {
-            if (distance(key, viewX, viewZ, views, size) > keep) {
-                leaving.add(key);
+        int listed = live.size();
+        for (int k = 0; k < listed; k++) {
+            if (distance(liveKeys[k], viewX, viewZ, views, size) > keep) {
+                leaving.add(liveKeys[k]);
             }
         }
         for (int i = 0; i < leaving.size(); i++) {
-            TilePlants t = live.remove(leaving.get(i));
-            livePlants -= t.count();
+            long key = leaving.get(i);
+            T t = live.remove(key);
+            removeListed(key);
+            livePlants -= factory.plants(t);
+            factory.release(t);
         }
-        for (Iterator<Map.Entry<Long, Future<TilePlants>>> it = pending.entrySet().iterator(); it.hasNext();) {
-            Map.Entry<Long, Future<TilePlants>> e = it.next();
-            if (distance(e.getKey(), viewX, viewZ, views, size) > keep) {
-                e.getValue().cancel(false);
-                it.remove();
+        if (!pending.isEmpty()) {
+            for (Iterator<Map.Entry<Long, Future<T>>> it = pending.entrySet().iterator(); it.hasNext();) {
+                Map.Entry<Long, Future<T>> e = it.next();
+                if (distance(e.getKey(), viewX, viewZ, views, size) > keep) {
+                    e.getValue().cancel(false);
+                    startedAt.remove(e.getKey());
+                    it.remove();
+                }
             }
         }
         // the missing tiles within the radius, nearest first
@@ -130,7 +245,8 @@ public final class TileStreamer implements AutoCloseable {
             for (int i = i0; i <= i1; i++) {
                 for (int j = j0; j <= j1; j++) {
                     long key = key(i, j);
-                    if (live.containsKey(key) || pending.containsKey(key) || contains(wanted, n, key)) {
+                    if (java.util.Arrays.binarySearch(liveKeys, 0, live.size(), key) >= 0
+                            || !pending.isEmpty() && pending.containsKey(key) || contains(wanted, n, key)) {
                         continue;
                     }
                     double d = distance(key, viewX, viewZ, views, size);
@@ -158,33 +274,104 @@ public final class TileStreamer implements AutoCloseable {
             long key = wanted[k];
             int ti = (int) (key >> 32);
             int tj = (int) key;
-            pending.put(key, workers.submit(() -> placer.place(ti, tj)));
+            pending.put(key, workers.submit(() -> factory.build(ti, tj)));
+            startedAt.put(key, updates);
         }
     }
 
-    /** Takes in the tiles finished on the workers. */
-    private void collect() {
-        for (Iterator<Map.Entry<Long, Future<TilePlants>>> it = pending.entrySet().iterator(); it.hasNext();) {
-            Map.Entry<Long, Future<TilePlants>> e = it.next();
-            Future<TilePlants> f = e.getValue();
-            if (!f.isDone()) {
+    /**
+     * Takes in the tiles due: those finished on the workers (latency 0), those started {@code latency}
+     * updates ago (waiting for them if need be), or every started tile when {@code all}.
+     */
+    private void collect(boolean all) {
+        for (Iterator<Map.Entry<Long, Future<T>>> it = pending.entrySet().iterator(); it.hasNext();) {
+            Map.Entry<Long, Future<T>> e = it.next();
+            Future<T> f = e.getValue();
+            if (!all && (latency == 0 ? !f.isDone() : updates - startedAt.get(e.getKey()) < latency)) {
                 continue;
             }
+            if (!f.isDone()) {
+                long t0 = System.nanoTime();
+                waitFor(f);
+                waits++;
+                waitNanos += System.nanoTime() - t0;
+            }
             it.remove();
-            TilePlants t;
+            startedAt.remove(e.getKey());
+            T t;
             try {
                 t = f.get();
             } catch (InterruptedException ex) {
                 Thread.currentThread().interrupt();
                 throw new IllegalStateException("interrupted while taking in a tile", ex);
             } catch (java.util.concurrent.ExecutionException ex) {
-                throw new IllegalStateException("placing tile " + (e.getKey() >> 32) + ", " + (int) (long) e.getKey()
+                throw new IllegalStateException("building tile " + (e.getKey() >> 32) + ", " + (int) (long) e.getKey()
                         + " failed: " + ex.getCause(), ex.getCause());
             }
             live.put(e.getKey(), t);
-            livePlants += t.count();
+            addListed(e.getKey(), t);
+            livePlants += factory.plants(t);
             built++;
         }
+    }
+
+    private void addListed(long key, T t) {
+        int n = live.size() - 1; // entries listed before this one
+        if (n == liveList.length) {
+            liveList = java.util.Arrays.copyOf(liveList, 2 * n);
+            liveKeys = java.util.Arrays.copyOf(liveKeys, 2 * n);
+        }
+        int at = n;
+        while (at > 0 && liveKeys[at - 1] > key) {
+            liveList[at] = liveList[at - 1];
+            liveKeys[at] = liveKeys[at - 1];
+            at--;
+        }
+        liveList[at] = t;
+        liveKeys[at] = key;
+    }
+
+    private void removeListed(long key) {
+        int n = live.size() + 1; // entries listed before the removal
+        int at = 0;
+        while (at < n && liveKeys[at] != key) {
+            at++;
+        }
+        System.arraycopy(liveList, at + 1, liveList, at, n - at - 1);
+        System.arraycopy(liveKeys, at + 1, liveKeys, at, n - at - 1);
+        liveList[n - 1] = null;
+    }
+
+    /**
+     * {@return live tile k, in ascending order of the tiles' keys (i, then j)} Stepping thread; no
+     * allocation.
+     *
+     * @param k in [0, {@link #liveTiles()})
+     */
+    @SuppressWarnings("unchecked")
+    public T live(int k) {
+        Require.range("k", k, 0, live.size() - 1);
+        return (T) liveList[k];
+    }
+
+    /**
+     * {@return the index along X of live tile k} Stepping thread.
+     *
+     * @param k in [0, {@link #liveTiles()})
+     */
+    public int liveI(int k) {
+        Require.range("k", k, 0, live.size() - 1);
+        return (int) (liveKeys[k] >> 32);
+    }
+
+    /**
+     * {@return the index along Z of live tile k} Stepping thread.
+     *
+     * @param k in [0, {@link #liveTiles()})
+     */
+    public int liveJ(int k) {
+        Require.range("k", k, 0, live.size() - 1);
+        return (int) liveKeys[k];
     }
 
     /**
@@ -194,17 +381,31 @@ public final class TileStreamer implements AutoCloseable {
      * @throws IllegalStateException when a tile's placement failed
      */
     public void settle() {
-        for (Future<TilePlants> f : pending.values()) {
-            try {
-                f.get();
-            } catch (InterruptedException ex) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("interrupted while waiting for tiles", ex);
-            } catch (java.util.concurrent.ExecutionException ex) {
-                throw new IllegalStateException("placing a tile failed: " + ex.getCause(), ex.getCause());
-            }
+        for (Future<T> f : pending.values()) {
+            waitFor(f);
         }
-        collect();
+        collect(true);
+    }
+
+    private static void waitFor(Future<?> f) {
+        try {
+            f.get();
+        } catch (InterruptedException ex) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while waiting for tiles", ex);
+        } catch (java.util.concurrent.ExecutionException ex) {
+            throw new IllegalStateException("building a tile failed: " + ex.getCause(), ex.getCause());
+        }
+    }
+
+    /** {@return how often an update had to wait for a tile that was due and not built yet} */
+    public long waits() {
+        return waits;
+    }
+
+    /** {@return the time updates spent waiting for tiles, nanoseconds} */
+    public long waitNanos() {
+        return waitNanos;
     }
 
     /**
@@ -213,7 +414,7 @@ public final class TileStreamer implements AutoCloseable {
      * @param i the tile's index along X
      * @param j the tile's index along Z
      */
-    public TilePlants tile(int i, int j) {
+    public T tile(int i, int j) {
         return live.get(key(i, j));
     }
 
@@ -243,7 +444,12 @@ public final class TileStreamer implements AutoCloseable {
         if (!closed) {
             closed = true;
             workers.shutdownNow();
+            for (T t : live.values()) {
+                factory.release(t);
+            }
             live.clear();
+            startedAt.clear();
+            java.util.Arrays.fill(liveList, null);
             pending.clear();
             livePlants = 0;
         }

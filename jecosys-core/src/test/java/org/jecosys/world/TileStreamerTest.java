@@ -31,7 +31,7 @@ class TileStreamerTest {
 
     @Test
     void aWalkKeepsTheTilesAroundTheViewAndLetsTheRestGo() {
-        try (TileStreamer s = new TileStreamer(placer(), RADIUS, 2, 8)) {
+        try (TileStreamer<TilePlants> s = TileStreamer.of(placer(), RADIUS, 2, 8)) {
             double[] x = {0};
             double[] z = {5};
             int maxTiles = 0;
@@ -81,8 +81,8 @@ class TileStreamerTest {
     void theTilesAreTheSameWhateverTheWorkersAndTheBudget() {
         double[] x = {20};
         double[] z = {-30};
-        try (TileStreamer one = new TileStreamer(placer(), RADIUS, 1, 1);
-             TileStreamer four = new TileStreamer(placer(), RADIUS, 4, 64)) {
+        try (TileStreamer<TilePlants> one = TileStreamer.of(placer(), RADIUS, 1, 1);
+             TileStreamer<TilePlants> four = TileStreamer.of(placer(), RADIUS, 4, 64)) {
             for (int u = 0; u < 40; u++) {
                 one.update(x, z, 1);
             }
@@ -107,16 +107,16 @@ class TileStreamerTest {
 
     @Test
     void argumentsAreChecked() {
-        assertThrows(IllegalArgumentException.class, () -> new TileStreamer(placer(), 0, 1, 1));
-        assertThrows(IllegalArgumentException.class, () -> new TileStreamer(placer(), 10, 0, 1));
-        assertThrows(IllegalArgumentException.class, () -> new TileStreamer(placer(), 10, 1, 0));
-        TileStreamer s = new TileStreamer(placer(), 10, 1, 1);
+        assertThrows(IllegalArgumentException.class, () -> TileStreamer.of(placer(), 0, 1, 1));
+        assertThrows(IllegalArgumentException.class, () -> TileStreamer.of(placer(), 10, 0, 1));
+        assertThrows(IllegalArgumentException.class, () -> TileStreamer.of(placer(), 10, 1, 0));
+        TileStreamer<TilePlants> s = TileStreamer.of(placer(), 10, 1, 1);
         s.close();
         assertThrows(IllegalStateException.class, () -> s.update(new double[] {0}, new double[] {0}, 1));
     }
 
     /** A tile within {@code within} of the view that is not alive, as "i, j", or null. */
-    private static String missingWithin(TileStreamer s, double vx, double vz, double within) {
+    private static String missingWithin(TileStreamer<TilePlants> s, double vx, double vz, double within) {
         int i0 = (int) Math.floor((vx - within) / TILE);
         int i1 = (int) Math.floor((vx + within) / TILE);
         int j0 = (int) Math.floor((vz - within) / TILE);

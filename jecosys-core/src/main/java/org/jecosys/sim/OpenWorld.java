@@ -1,0 +1,434 @@
+package org.jecosys.sim;
+
+import java.util.Arrays;
+import org.jecosys.field.ForceFieldFactory;
+import org.jecosys.math.Camera;
+import org.jecosys.math.HeightFunction;
+import org.jecosys.math.Progress;
+import org.jecosys.math.Require;
+import org.jecosys.plant.ComponentFactories;
+import org.jecosys.plant.GravityBend;
+import org.jecosys.plant.PlantModel;
+import org.jecosys.terrain.Heightfield;
+import org.jecosys.world.TilePlacer;
+import org.jecosys.world.TilePlants;
+import org.jecosys.world.TileStreamer;
+
+/**
+ * A world without an edge: plants exist only in square tiles within a radius of the views, and each
+ * live tile is a small {@link Simulation} of its own plants (paper §3–§4 unchanged inside it: its own
+ * LOD quadtree force field over the tile, so the field is tiled as the views move, the same per-node
+ * force and LOD; the dynamic-constraint spring per component). A tile is built on a tile worker
+ * ({@link TileStreamer}): placed by the {@link TilePlacer} (a pure function of the seed and the tile's
+ * coordinates, seam-free across borders), its ground sampled from the placer's height function, its
+ * plants settled at the equilibrium of the wind. It becomes live a fixed number of steps after it was
+ * started ({@link #TILE_LATENCY}), so what is live at each step depends only on the views' path, not
+ * on the number of workers or the machine's load; its clock then joins the others' ({@link
+ * org.jecosys.wind.WindField#startAt}). A tile farther than the radius plus one tile from every view
+ * is closed and let go; its trails and flattening go with it, and a tile that comes back starts at its
+ * equilibrium again. Memory is bounded by the tiles within that distance: {@link #maxLiveTiles()}.
+ *
+ * <p>Steps: each fixed step first brings the tiles up to date with the views, then steps every live
+ * tile's simulation, the tiles shared among the animation workers (a tile's result does not depend on
+ * which worker ran it, so the state of every tile is bit-identical for any number of workers).
+ *
+ * <p>Threads: one stepping thread calls {@link #step}, {@link #stepFixed}, {@link #addView},
+ * {@link #removeView}, {@link #tile(int)} and the counters; {@link #close} any thread. A step
+ * allocates nothing while no tile arrives or leaves (a view standing still or moving within its
+ * tiles); a tile arriving costs its bookkeeping on the stepping thread (its build runs on a tile
+ * worker).
+ */
+public final class OpenWorld implements AutoCloseable {
+    /** Steps from a tile's start to its being live: 8 fixed steps (a quarter of a second at 30 Hz). */
+    public static final int TILE_LATENCY = 8;
+    /** Ground samples of a tile's heightfield per metre. */
+    private static final double GROUND_SAMPLES_PER_METRE = 1;
+
+    /** A live tile: its plants' world and simulation. Read by the stepping thread and the renderer. */
+    public static final class Tile {
+        private final int i;
+        private final int j;
+        private final World world;
+        private final Simulation simulation;
+        /** Whether its clock has joined the world's (stepping thread). */
+        private boolean started;
+        /** Its views registered so far (stepping thread). */
+        private Camera[] views = new Camera[0];
+
+        private Tile(int i, int j, World world, Simulation simulation) {
+            this.i = i;
+            this.j = j;
+            this.world = world;
+            this.simulation = simulation;
+        }
+
+        /** {@return the tile's index along X: it covers [i size, (i + 1) size) metres} */
+        public int i() {
+            return i;
+        }
+
+        /** {@return the tile's index along Z} */
+        public int j() {
+            return j;
+        }
+
+        /** {@return the tile's plants and ground (plants in world coordinates)} */
+        public World world() {
+            return world;
+        }
+
+        /**
+         * {@return the tile's simulation} Its frames are what a renderer draws; stepping it is the open
+         * world's business, not the caller's.
+         */
+        public Simulation simulation() {
+            return simulation;
+        }
+    }
+
+    private final SimulationDef def;
+    private final PlantModel model;
+    private final TilePlacer placer;
+    private final TileStreamer<Tile> tiles;
+    private final WorkerPool pool;
+    private final double fixedStep;
+    private final int maxSubSteps;
+    private final Object lock = new Object();
+    /** The live tiles of the step being run, read by the workers. */
+    private final Tile[] stepTiles;
+    private volatile int stepCount;
+    private volatile Camera stepCamera;
+    private final int[] tileAnimated;
+    private Camera[] views = new Camera[0];
+    private final double[] viewX = new double[Simulation.MAX_VIEWS];
+    private final double[] viewZ = new double[Simulation.MAX_VIEWS];
+    private double accumulator;
+    private double time;
+    private long steps;
+    private long droppedSteps;
+    private long animated;
+    private volatile boolean closed;
+
+    /**
+     * Makes an open world. Pre-computes the species (paper §4.1) once for all tiles; starts the
+     * animation workers and the tile workers. Build time; allocates; any thread.
+     *
+     * @param def         the species, flows, field and animation settings and the seed; its terrain,
+     *                    distributions and placements are not used (the placer places the plants)
+     * @param placer      places each tile's plants on its ground; its species indices are {@code def}'s
+     * @param radius      reach of a view, metres: tiles whose square comes this close are live, in
+     *                    (0, 64 tile sizes]
+     * @param workers     animation workers, in [1, 256]
+     * @param tileWorkers threads that build tiles, in [1, 64]
+     * @param budget      most tiles started per step, in [1, 1024]
+     * @return the open world at time 0, with no tile yet (the first steps start them)
+     * @throws IllegalArgumentException when an argument is null or out of range
+     */
+    public static OpenWorld create(SimulationDef def, TilePlacer placer, double radius, int workers,
+                                   int tileWorkers, int budget) {
+        Require.nonNull("def", def);
+        Require.nonNull("placer", placer);
+        PlantModel model = PlantModel.build(def.species(), def.seed(), GravityBend.EARTH_GRAVITY, Progress.NONE,
+                ComponentFactories.NONE);
+        return new OpenWorld(def, model, placer, radius, workers, tileWorkers, budget);
+    }
+
+    private OpenWorld(SimulationDef def, PlantModel model, TilePlacer placer, double radius, int workers,
+                      int tileWorkers, int budget) {
+        this.def = def;
+        this.model = model;
+        this.placer = placer;
+        Require.range("workers", workers, 1, 256);
+        this.fixedStep = def.animation().fixedStep();
+        this.maxSubSteps = def.animation().maxSubSteps();
+        tiles = new TileStreamer<>(placer.tileSize(), new TileStreamer.TileFactory<>() {
+            @Override
+            public Tile build(int i, int j) {
+                return buildTile(i, j);
+            }
+
+            @Override
+            public int plants(Tile tile) {
+                return tile.world.plantCount();
+            }
+
+            @Override
+            public void release(Tile tile) {
+                tile.simulation.close();
+            }
+        }, radius, tileWorkers, budget, TILE_LATENCY);
+        int most = tiles.maxLiveTiles() * Simulation.MAX_VIEWS;
+        stepTiles = new Tile[most];
+        tileAnimated = new int[most];
+        pool = new WorkerPool("jecosys-world", workers, most, (k, worker) -> {
+            if (k < stepCount) {
+                Tile t = stepTiles[k];
+                t.simulation.loop.stepFixed(stepCamera);
+                tileAnimated[k] = t.simulation.loop.chunkAnimator.animated();
+            }
+        });
+    }
+
+    /** Builds tile (i, j) on a tile worker: its plants, its ground, its simulation. */
+    private Tile buildTile(int i, int j) {
+        TilePlants plants = placer.place(i, j);
+        double size = placer.tileSize();
+        int res = (int) Math.max(2, Math.min(257, Math.ceil(size * GROUND_SAMPLES_PER_METRE) + 1));
+        float[] h = new float[res * res];
+        HeightFunction ground = placer.ground();
+        double x0 = i * size;
+        double z0 = j * size;
+        for (int b = 0; b < res; b++) {
+            for (int a = 0; a < res; a++) {
+                h[b * res + a] = (float) ground.height(x0 + a * size / (res - 1), z0 + b * size / (res - 1));
+            }
+        }
+        Heightfield hf = Heightfield.of(x0 + size / 2, z0 + size / 2, size, size, res, h);
+        World world = World.tile(model, plants, hf);
+        return new Tile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
+    }
+
+    /**
+     * Adds {@code dt} seconds and runs the fixed steps it completes, at most the def's
+     * {@code maxSubSteps} (the rest of a long pause is dropped and counted). Stepping thread.
+     *
+     * @param dt     elapsed time, seconds, finite and &gt;= 0
+     * @param camera the viewer: its tiles are kept live and its frustum animated
+     * @return fixed steps run
+     * @throws IllegalArgumentException when {@code dt} is negative or not finite, or the camera null
+     * @throws IllegalStateException    when the world is closed
+     */
+    public int step(double dt, Camera camera) {
+        Require.nonNegative("dt", dt);
+        Require.nonNull("camera", camera);
+        accumulator += dt;
+        int n = 0;
+        while (accumulator >= fixedStep && n < maxSubSteps) {
+            stepFixed(camera);
+            accumulator -= fixedStep;
+            n++;
+        }
+        if (accumulator >= fixedStep) {
+            long drop = (long) (accumulator / fixedStep);
+            droppedSteps += drop;
+            accumulator = Math.max(0, accumulator - drop * fixedStep);
+        }
+        return n;
+    }
+
+    /**
+     * Runs one fixed step: the tiles brought up to date with the camera and the registered views (at
+     * most the budget started, those due taken in, those out of reach let go), then every live tile
+     * stepped. Stepping thread.
+     *
+     * @param camera the viewer
+     * @throws IllegalStateException when the world is closed, or building a tile failed
+     */
+    public void stepFixed(Camera camera) {
+        Require.nonNull("camera", camera);
+        synchronized (lock) {
+            if (closed) {
+                throw new IllegalStateException("the open world is closed");
+            }
+            viewX[0] = camera.x();
+            viewZ[0] = camera.z();
+            for (int v = 0; v < views.length; v++) {
+                viewX[v + 1] = views[v].x();
+                viewZ[v + 1] = views[v].z();
+            }
+            tiles.update(viewX, viewZ, 1 + views.length);
+            int n = tiles.liveTiles();
+            for (int k = 0; k < n; k++) {
+                Tile t = tiles.live(k);
+                if (!t.started) {
+                    t.simulation.loop.startAt(time);
+                    t.started = true;
+                }
+                if (t.views != views) {
+                    syncViews(t);
+                }
+                stepTiles[k] = t;
+            }
+            Arrays.fill(stepTiles, n, stepTiles.length, null);
+            stepCount = n;
+            stepCamera = camera;
+            pool.start();
+            pool.await();
+            long sum = 0;
+            for (int k = 0; k < n; k++) {
+                sum += tileAnimated[k];
+            }
+            animated = sum;
+            stepCamera = null;
+            steps++;
+            time += fixedStep;
+        }
+    }
+
+    /** Registers on tile t exactly the world's views. */
+    private void syncViews(Tile t) {
+        for (Camera v : t.views) {
+            if (!contains(views, v)) {
+                t.simulation.removeView(v);
+            }
+        }
+        for (Camera v : views) {
+            if (!contains(t.views, v)) {
+                t.simulation.addView(v);
+            }
+        }
+        t.views = views;
+    }
+
+    private static boolean contains(Camera[] list, Camera c) {
+        for (Camera v : list) {
+            if (v == c) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Follows another view (split screen, a second player, a minimap): its tiles are kept live too,
+     * and the plants it sees are animated. Stepping thread; allocates.
+     *
+     * @param view the view, read at every step
+     * @throws IllegalArgumentException when it is null or registered already
+     * @throws IllegalStateException    when {@link Simulation#MAX_VIEWS} - 1 views are registered
+     */
+    public void addView(Camera view) {
+        Require.nonNull("view", view);
+        synchronized (lock) {
+            if (contains(views, view)) {
+                throw new IllegalArgumentException("this view is already registered");
+            }
+            if (views.length >= Simulation.MAX_VIEWS - 1) {
+                throw new IllegalStateException("an open world follows at most " + (Simulation.MAX_VIEWS - 1)
+                        + " views besides the step's camera");
+            }
+            Camera[] n = Arrays.copyOf(views, views.length + 1);
+            n[views.length] = view;
+            views = n;
+        }
+    }
+
+    /**
+     * Stops following a view. Stepping thread; allocates.
+     *
+     * @param view a registered view
+     * @return whether it was registered
+     */
+    public boolean removeView(Camera view) {
+        synchronized (lock) {
+            for (int v = 0; v < views.length; v++) {
+                if (views[v] == view) {
+                    Camera[] n = new Camera[views.length - 1];
+                    System.arraycopy(views, 0, n, 0, v);
+                    System.arraycopy(views, v + 1, n, v, views.length - v - 1);
+                    views = n;
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+
+    /** {@return the live tiles} Stepping thread. */
+    public int liveTiles() {
+        return tiles.liveTiles();
+    }
+
+    /**
+     * {@return live tile k, in ascending order of (i, j)} Stepping thread; no allocation.
+     *
+     * @param k in [0, {@link #liveTiles()})
+     */
+    public Tile tile(int k) {
+        return tiles.live(k);
+    }
+
+    /** {@return the plants of the live tiles} */
+    public long livePlants() {
+        return tiles.livePlants();
+    }
+
+    /** {@return the components of the live tiles} Stepping thread; no allocation. */
+    public long liveComponents() {
+        long c = 0;
+        for (int k = 0; k < tiles.liveTiles(); k++) {
+            c += tiles.live(k).world.componentCount();
+        }
+        return c;
+    }
+
+    /** {@return the components animated in the last step, over all tiles} */
+    public long animatedComponents() {
+        return animated;
+    }
+
+    /** {@return the tiles built and taken in so far} */
+    public long builtTiles() {
+        return tiles.builtTiles();
+    }
+
+    /** {@return the tiles started and not live yet} */
+    public int pendingTiles() {
+        return tiles.pendingTiles();
+    }
+
+    /** {@return how often a step waited for a tile that was due and not built (0 while the workers keep pace)} */
+    public long tileWaits() {
+        return tiles.waits();
+    }
+
+    /** {@return the most tiles live at once per view (those within the radius plus one tile)} */
+    public int maxLiveTiles() {
+        return tiles.maxLiveTiles();
+    }
+
+    /** {@return the tiles' side, metres} */
+    public double tileSize() {
+        return placer.tileSize();
+    }
+
+    /** {@return the simulation time, seconds} */
+    public double time() {
+        return time;
+    }
+
+    /** {@return the fixed steps run} */
+    public long steps() {
+        return steps;
+    }
+
+    /** {@return the fixed steps dropped after long pauses} */
+    public long droppedSteps() {
+        return droppedSteps;
+    }
+
+    /** {@return the pre-computed species, shared by every tile} */
+    public PlantModel plants() {
+        return model;
+    }
+
+    /**
+     * Waits until every started tile is built and takes them in, live at once (a loading screen).
+     * Stepping thread.
+     */
+    public void settle() {
+        synchronized (lock) {
+            tiles.settle();
+        }
+    }
+
+    /** Stops the workers and closes every tile. Idempotent; any thread. */
+    @Override
+    public void close() {
+        closed = true;
+        synchronized (lock) {
+            pool.close();
+            tiles.close();
+        }
+    }
+}
