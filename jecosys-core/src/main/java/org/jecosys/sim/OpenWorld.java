@@ -19,11 +19,13 @@ import org.jecosys.world.TileStreamer;
  * live tile is a small {@link Simulation} of its own plants (paper §3–§4 unchanged inside it: its own
  * LOD quadtree force field over the tile, so the field is tiled as the views move, the same per-node
  * force and LOD; the dynamic-constraint spring per component). A tile is built on a tile worker
- * ({@link TileStreamer}): placed by the {@link TilePlacer} (a pure function of the seed and the tile's
- * coordinates, seam-free across borders), its ground sampled from the placer's height function, its
- * plants settled at the equilibrium of the wind. It becomes live a fixed number of steps after it was
- * started ({@link #TILE_LATENCY}), so what is live at each step depends only on the views' path, not
- * on the number of workers or the machine's load; its clock then joins the others' ({@link
+ * ({@link TileStreamer}) once it comes within the radius plus one tile of a view: placed by the
+ * {@link TilePlacer} (a pure function of the seed and the tile's coordinates, seam-free across borders),
+ * its ground sampled from the placer's height function, its plants settled at the equilibrium of the
+ * wind. It becomes live at the first step at least {@link #TILE_LATENCY} steps after its start at which
+ * it lies within the radius of a view, so what is live at each step depends only on the views' path,
+ * not on the number of workers or the machine's load (a step waits for a tile due and not yet built;
+ * {@link #tileWaits()} counts them); its clock then joins the others' ({@link
  * org.jecosys.wind.WindField#startAt}). A tile farther than the radius plus one tile from every view
  * is closed and let go; its trails and flattening go with it, and a tile that comes back starts at its
  * equilibrium again. Memory is bounded by the tiles within that distance: {@link #maxLiveTiles()}.
@@ -41,6 +43,12 @@ import org.jecosys.world.TileStreamer;
 public final class OpenWorld implements AutoCloseable {
     /** Steps from a tile's start to its being live: 8 fixed steps (a quarter of a second at 30 Hz). */
     public static final int TILE_LATENCY = 8;
+    /**
+     * The build window, nanoseconds: a tile worker starts a phase of a tile's build (its placement, its
+     * world, its simulation) only within this long after a step ended, and never while a step runs,
+     * so that building takes the frame's idle time rather than the step's cores (the per-frame budget).
+     */
+    public static final long BUILD_WINDOW_NANOS = 12_000_000L;
     /** Ground samples of a tile's heightfield per metre. */
     private static final double GROUND_SAMPLES_PER_METRE = 1;
 
@@ -108,6 +116,12 @@ public final class OpenWorld implements AutoCloseable {
     private long droppedSteps;
     private long animated;
     private volatile boolean closed;
+    /** Whether a step is running (tile workers hold their next build phase). */
+    private volatile boolean stepping;
+    /** System.nanoTime() at the end of the last step. */
+    private volatile long stepEnded = System.nanoTime();
+    /** Whether the stepping thread may wait for tiles ({@link #settle}, the tiles' update): the gate is open. */
+    private volatile boolean loading;
 
     /**
      * Makes an open world. Pre-computes the species (paper §4.1) once for all tiles; starts the
@@ -156,7 +170,7 @@ public final class OpenWorld implements AutoCloseable {
             public void release(Tile tile) {
                 tile.simulation.close();
             }
-        }, radius, tileWorkers, budget, TILE_LATENCY);
+        }, radius, placer.tileSize(), tileWorkers, budget, TILE_LATENCY);
         int most = tiles.maxLiveTiles() * Simulation.MAX_VIEWS;
         stepTiles = new Tile[most];
         tileAnimated = new int[most];
@@ -169,9 +183,25 @@ public final class OpenWorld implements AutoCloseable {
         });
     }
 
-    /** Builds tile (i, j) on a tile worker: its plants, its ground, its simulation. */
+    /**
+     * Holds a tile worker until it may start a build phase: while no step runs and within
+     * {@link #BUILD_WINDOW_NANOS} of the last step's end (or while {@link #settle} waits).
+     */
+    private void buildGate() {
+        while (!closed && !loading && (stepping || System.nanoTime() - stepEnded > BUILD_WINDOW_NANOS)) {
+            java.util.concurrent.locks.LockSupport.parkNanos(250_000L);
+            if (Thread.interrupted()) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+    }
+
+    /** Builds tile (i, j) on a tile worker: its plants, its ground, its simulation, each phase in a build window. */
     private Tile buildTile(int i, int j) {
+        buildGate();
         TilePlants plants = placer.place(i, j);
+        buildGate();
         double size = placer.tileSize();
         int res = (int) Math.max(2, Math.min(257, Math.ceil(size * GROUND_SAMPLES_PER_METRE) + 1));
         float[] h = new float[res * res];
@@ -185,6 +215,7 @@ public final class OpenWorld implements AutoCloseable {
         }
         Heightfield hf = Heightfield.of(x0 + size / 2, z0 + size / 2, size, size, res, h);
         World world = World.tile(model, plants, hf);
+        buildGate();
         return new Tile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
     }
 
@@ -236,7 +267,12 @@ public final class OpenWorld implements AutoCloseable {
                 viewX[v + 1] = views[v].x();
                 viewZ[v + 1] = views[v].z();
             }
-            tiles.update(viewX, viewZ, 1 + views.length);
+            loading = true; // the update may wait for a tile that is due: the workers must be let through
+            try {
+                tiles.update(viewX, viewZ, 1 + views.length);
+            } finally {
+                loading = false;
+            }
             int n = tiles.liveTiles();
             for (int k = 0; k < n; k++) {
                 Tile t = tiles.live(k);
@@ -252,8 +288,14 @@ public final class OpenWorld implements AutoCloseable {
             Arrays.fill(stepTiles, n, stepTiles.length, null);
             stepCount = n;
             stepCamera = camera;
-            pool.start();
-            pool.await();
+            stepping = true;
+            try {
+                pool.start();
+                pool.await();
+            } finally {
+                stepping = false;
+                stepEnded = System.nanoTime();
+            }
             long sum = 0;
             for (int k = 0; k < n; k++) {
                 sum += tileAnimated[k];
@@ -418,7 +460,12 @@ public final class OpenWorld implements AutoCloseable {
      */
     public void settle() {
         synchronized (lock) {
-            tiles.settle();
+            loading = true;
+            try {
+                tiles.settle();
+            } finally {
+                loading = false;
+            }
         }
     }
 

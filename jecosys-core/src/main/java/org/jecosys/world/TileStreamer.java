@@ -2,7 +2,6 @@ package org.jecosys.world;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
@@ -75,11 +74,15 @@ public final class TileStreamer<T> implements AutoCloseable {
     private final int budget;
     private final ExecutorService workers;
     private final Map<Long, T> live = new HashMap<>();
-    private final Map<Long, Future<T>> pending = new HashMap<>();
-    /** Per pending tile, the update that started it. */
-    private final Map<Long, Long> startedAt = new HashMap<>();
+    /** The started tiles not live yet: key, build and the update that started it (dense, unordered). */
+    private long[] pendingKeys = new long[16];
+    private Future<?>[] pendingBuilds = new Future<?>[16];
+    private long[] pendingStart = new long[16];
+    private int pending;
     /** Updates a tile takes from its start to being live, or 0: as soon as it is built. */
     private final int latency;
+    /** How much farther than the radius tiles are started, metres. */
+    private final double prefetch;
     private long updates;
     private long waits;
     private long waitNanos;
@@ -132,15 +135,17 @@ public final class TileStreamer<T> implements AutoCloseable {
      * @throws IllegalArgumentException when an argument is out of range
      */
     public TileStreamer(double tileSize, TileFactory<T> factory, double radius, int workers, int budget) {
-        this(tileSize, factory, radius, workers, budget, 0);
+        this(tileSize, factory, radius, 0, workers, budget, 0);
     }
 
     /**
-     * Makes a streamer whose tiles become live exactly {@code latency} updates after they were started,
-     * whatever the workers' speed: so what is live at each update depends only on the views' path,
-     * never on the number of workers or the machine's load. An update waits for a tile that is not
-     * built by then ({@link #waits()} counts it; a streamer that keeps pace never waits). Allocates;
-     * starts {@code workers} daemon threads.
+     * Makes a streamer that builds tiles ahead and makes them live on a fixed rule: a tile is started
+     * once its square comes within {@code radius + prefetch} of a view, and becomes live at the first
+     * update at least {@code latency} updates after its start at which its square lies within
+     * {@code radius} of a view, whatever the workers' speed: so what is live at each update depends only
+     * on the views' path, never on the number of workers or the machine's load. An update waits for a
+     * tile that is due then and not built yet ({@link #waits()} counts it; a streamer whose workers keep
+     * pace with the views never waits). Allocates; starts {@code workers} daemon threads.
      *
      * @param tileSize the tiles' side, metres, in [{@link TilePlacer#MIN_TILE_SIZE}, {@link TilePlacer#MAX_TILE_SIZE}]
      * @param factory  builds a tile
@@ -148,12 +153,15 @@ public final class TileStreamer<T> implements AutoCloseable {
      *                 most 64 tiles
      * @param workers  threads that build tiles, in [1, 64]
      * @param budget   most tiles started per {@link #update}, in [1, 1024]
-     * @param latency  updates from a tile's start to its being live, in [1, 1000]; or 0 for as soon as it
-     *                 is built (then what is live depends on the workers' speed)
+     * @param prefetch how much farther than the radius tiles are started, metres, in [0, 16 tile sizes]
+     * @param latency  fewest updates from a tile's start to its being live, in [1, 1000]; or 0 for as soon
+     *                 as it is built (then what is live depends on the workers' speed)
      * @throws IllegalArgumentException when an argument is out of range
      */
-    public TileStreamer(double tileSize, TileFactory<T> factory, double radius, int workers, int budget, int latency) {
+    public TileStreamer(double tileSize, TileFactory<T> factory, double radius, double prefetch, int workers,
+                        int budget, int latency) {
         this.latency = Require.range("latency", latency, 0, 1000);
+        this.prefetch = Require.range("prefetch", prefetch, 0, 16 * tileSize);
         this.size = Require.range("tileSize", tileSize, TilePlacer.MIN_TILE_SIZE, TilePlacer.MAX_TILE_SIZE);
         this.factory = Require.nonNull("factory", factory);
         Require.range("radius", radius, 1e-3, 64 * tileSize);
@@ -206,8 +214,8 @@ public final class TileStreamer<T> implements AutoCloseable {
         }
         Require.range("views", views, 1, Math.min(viewX.length, viewZ.length));
         updates++;
-        if (!pending.isEmpty()) {
-            collect(false);
+        if (pending > 0) {
+            collect(viewX, viewZ, views, false);
         }
         // let go of tiles beyond radius + one tile of every view
         double keep = radius + size;
@@ -225,32 +233,29 @@ public final class TileStreamer<T> implements AutoCloseable {
             livePlants -= factory.plants(t);
             factory.release(t);
         }
-        if (!pending.isEmpty()) {
-            for (Iterator<Map.Entry<Long, Future<T>>> it = pending.entrySet().iterator(); it.hasNext();) {
-                Map.Entry<Long, Future<T>> e = it.next();
-                if (distance(e.getKey(), viewX, viewZ, views, size) > keep) {
-                    e.getValue().cancel(false);
-                    startedAt.remove(e.getKey());
-                    it.remove();
-                }
+        for (int k = pending - 1; k >= 0; k--) {
+            if (distance(pendingKeys[k], viewX, viewZ, views, size) > keep + prefetch) {
+                pendingBuilds[k].cancel(false);
+                removePending(k);
             }
         }
         // the missing tiles within the radius, nearest first
         int n = 0;
         for (int v = 0; v < views; v++) {
-            int i0 = (int) Math.floor((viewX[v] - radius) / size);
-            int i1 = (int) Math.floor((viewX[v] + radius) / size);
-            int j0 = (int) Math.floor((viewZ[v] - radius) / size);
-            int j1 = (int) Math.floor((viewZ[v] + radius) / size);
+            double reach = radius + prefetch;
+            int i0 = (int) Math.floor((viewX[v] - reach) / size);
+            int i1 = (int) Math.floor((viewX[v] + reach) / size);
+            int j0 = (int) Math.floor((viewZ[v] - reach) / size);
+            int j1 = (int) Math.floor((viewZ[v] + reach) / size);
             for (int i = i0; i <= i1; i++) {
                 for (int j = j0; j <= j1; j++) {
                     long key = key(i, j);
                     if (java.util.Arrays.binarySearch(liveKeys, 0, live.size(), key) >= 0
-                            || !pending.isEmpty() && pending.containsKey(key) || contains(wanted, n, key)) {
+                            || contains(pendingKeys, pending, key) || contains(wanted, n, key)) {
                         continue;
                     }
                     double d = distance(key, viewX, viewZ, views, size);
-                    if (d > radius) {
+                    if (d > radius + prefetch) {
                         continue;
                     }
                     if (n == wanted.length) {
@@ -274,20 +279,30 @@ public final class TileStreamer<T> implements AutoCloseable {
             long key = wanted[k];
             int ti = (int) (key >> 32);
             int tj = (int) key;
-            pending.put(key, workers.submit(() -> factory.build(ti, tj)));
-            startedAt.put(key, updates);
+            if (pending == pendingKeys.length) {
+                pendingKeys = java.util.Arrays.copyOf(pendingKeys, 2 * pending);
+                pendingBuilds = java.util.Arrays.copyOf(pendingBuilds, 2 * pending);
+                pendingStart = java.util.Arrays.copyOf(pendingStart, 2 * pending);
+            }
+            pendingKeys[pending] = key;
+            pendingBuilds[pending] = workers.submit(() -> factory.build(ti, tj));
+            pendingStart[pending] = updates;
+            pending++;
         }
     }
 
     /**
-     * Takes in the tiles due: those finished on the workers (latency 0), those started {@code latency}
-     * updates ago (waiting for them if need be), or every started tile when {@code all}.
+     * Takes in the tiles due: those finished on the workers (latency 0), those started at least
+     * {@code latency} updates ago that lie within the radius of a view (waiting for them if need be), or
+     * every started tile when {@code all}.
      */
-    private void collect(boolean all) {
-        for (Iterator<Map.Entry<Long, Future<T>>> it = pending.entrySet().iterator(); it.hasNext();) {
-            Map.Entry<Long, Future<T>> e = it.next();
-            Future<T> f = e.getValue();
-            if (!all && (latency == 0 ? !f.isDone() : updates - startedAt.get(e.getKey()) < latency)) {
+    @SuppressWarnings("unchecked")
+    private void collect(double[] viewX, double[] viewZ, int views, boolean all) {
+        for (int k = pending - 1; k >= 0; k--) {
+            long key = pendingKeys[k];
+            Future<T> f = (Future<T>) pendingBuilds[k];
+            if (!all && (latency == 0 ? !f.isDone() : updates - pendingStart[k] < latency
+                    || distance(key, viewX, viewZ, views, size) > radius)) {
                 continue;
             }
             if (!f.isDone()) {
@@ -296,8 +311,7 @@ public final class TileStreamer<T> implements AutoCloseable {
                 waits++;
                 waitNanos += System.nanoTime() - t0;
             }
-            it.remove();
-            startedAt.remove(e.getKey());
+            removePending(k);
             T t;
             try {
                 t = f.get();
@@ -305,14 +319,23 @@ public final class TileStreamer<T> implements AutoCloseable {
                 Thread.currentThread().interrupt();
                 throw new IllegalStateException("interrupted while taking in a tile", ex);
             } catch (java.util.concurrent.ExecutionException ex) {
-                throw new IllegalStateException("building tile " + (e.getKey() >> 32) + ", " + (int) (long) e.getKey()
+                throw new IllegalStateException("building tile " + (key >> 32) + ", " + (int) key
                         + " failed: " + ex.getCause(), ex.getCause());
             }
-            live.put(e.getKey(), t);
-            addListed(e.getKey(), t);
+            live.put(key, t);
+            addListed(key, t);
             livePlants += factory.plants(t);
             built++;
         }
+    }
+
+    /** Removes pending entry k (the last one takes its place). */
+    private void removePending(int k) {
+        pending--;
+        pendingKeys[k] = pendingKeys[pending];
+        pendingBuilds[k] = pendingBuilds[pending];
+        pendingStart[k] = pendingStart[pending];
+        pendingBuilds[pending] = null;
     }
 
     private void addListed(long key, T t) {
@@ -381,10 +404,10 @@ public final class TileStreamer<T> implements AutoCloseable {
      * @throws IllegalStateException when a tile's placement failed
      */
     public void settle() {
-        for (Future<T> f : pending.values()) {
-            waitFor(f);
+        for (int k = 0; k < pending; k++) {
+            waitFor(pendingBuilds[k]);
         }
-        collect(true);
+        collect(null, null, 0, true);
     }
 
     private static void waitFor(Future<?> f) {
@@ -430,7 +453,7 @@ public final class TileStreamer<T> implements AutoCloseable {
 
     /** {@return the tiles started and not yet taken in} */
     public int pendingTiles() {
-        return pending.size();
+        return pending;
     }
 
     /** {@return the tiles built and taken in since the streamer was made} */
@@ -448,9 +471,9 @@ public final class TileStreamer<T> implements AutoCloseable {
                 factory.release(t);
             }
             live.clear();
-            startedAt.clear();
             java.util.Arrays.fill(liveList, null);
-            pending.clear();
+            java.util.Arrays.fill(pendingBuilds, null);
+            pending = 0;
             livePlants = 0;
         }
     }

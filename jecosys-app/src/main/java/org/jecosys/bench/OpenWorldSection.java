@@ -1,0 +1,217 @@
+package org.jecosys.bench;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryMXBean;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.SceneFiles;
+import org.jecosys.sim.CameraWalk;
+import org.jecosys.sim.OpenWorld;
+import org.jecosys.sim.Simulation;
+import org.jecosys.sim.SimulationDef;
+import org.jecosys.sim.World;
+import org.jecosys.terrain.DistributionDef;
+import org.jecosys.world.RollingTerrain;
+import org.jecosys.world.TilePlacer;
+
+/**
+ * The open world's simulation along a walk (issue 39): the meadow's species, flows, field and
+ * animation ({@code meadow.xml}) streamed in 32 m tiles within 64 m of a camera that walks straight at
+ * 10 m/s over unbounded rolling hills, 30 frames a second, 2 animation workers and 1 tile worker. Per
+ * frame the time of its fixed steps; at checkpoints the heap after a full GC, the tiles, plants and
+ * components alive, the tiles built per second and the steps that waited for a tile. Then the same
+ * cost per animated component for the meadow itself along its own camera path (2 workers), the figure
+ * the walk's is measured against. Nothing is drawn.
+ */
+final class OpenWorldSection implements Section {
+    private static final double SPEED = 10;
+    private static final double RATE = 30;
+    static final double TILE = 16;
+    static final double RADIUS = 64;
+    private final Path scenes;
+
+    OpenWorldSection(Path scenes) {
+        this.scenes = scenes;
+    }
+
+    @Override
+    public String name() {
+        return "open-world simulation along a walk";
+    }
+
+    /** The meadow's mix, about 5.7 plants per m² after the competition, on the meadow's species. */
+    static TilePlacer placer(SimulationDef def) {
+        List<DistributionDef> d = StreamingSection.meadow();
+        int[] species = new int[d.size()];
+        for (int k = 0; k < d.size(); k++) {
+            species[k] = index(def, d.get(k).species());
+        }
+        return new TilePlacer(def.seed(), TILE, d, species, RollingTerrain.gentle(def.seed()));
+    }
+
+    private static int index(SimulationDef def, String id) {
+        for (int s = 0; s < def.species().size(); s++) {
+            if (def.species().get(s).id().equals(id)) {
+                return s;
+            }
+        }
+        throw new IllegalArgumentException("the meadow has no species " + id);
+    }
+
+    @Override
+    public void run(Mode mode, Report report) throws Exception {
+        double[] checkpoints = switch (mode) {
+            case SMOKE -> new double[] {100, 200};
+            case QUICK -> new double[] {200, 400, 600};
+            case FULL -> new double[] {1000, 2500, 5000};
+        };
+        SimulationDef def = SceneFiles.parse(scenes.resolve("meadow.xml")).simulationDef();
+        TilePlacer placer = placer(def);
+        RollingTerrain ground = RollingTerrain.gentle(def.seed());
+        Table t = new Table("open-world", "Open world: the meadow's species streamed along a straight walk at 10 m/s "
+                + "(32 m tiles within 64 m, 2 animation workers, 1 tile worker, nothing drawn)",
+                List.of("distance m", "heap after GC MB", "tiles alive", "plants alive", "components alive",
+                        "tiles built per s", "step ms (median)", "step ms (p99)", "p99 / median",
+                        "ns per animated component (median)", "waits for a tile"));
+        MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
+        List<Object> raw = new ArrayList<>();
+        double walkNs;
+        try (OpenWorld w = OpenWorld.create(def, placer, RADIUS, 2, 1, 4)) {
+            ViewCamera cam = new ViewCamera();
+            cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
+            cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 1000);
+            place(cam, ground, -100);
+            // the start is loaded as a game's loading screen would load it
+            for (int k = 0; k < 256; k++) {
+                w.stepFixed(cam);
+                boolean started = w.pendingTiles() > 0;
+                w.settle();
+                if (!started) {
+                    break;
+                }
+            }
+            // a warm-up walk of 100 m in real time (the JIT, the tiles ahead), not measured
+            long warm = System.nanoTime();
+            for (int f = 0; f < 300; f++) {
+                place(cam, ground, (f + 1) * SPEED / RATE - 100);
+                warm += (long) (1e9 / RATE);
+                java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, warm - System.nanoTime()));
+                w.step(1 / RATE, cam);
+            }
+            double end = checkpoints[checkpoints.length - 1];
+            int frames = (int) Math.ceil(end / SPEED * RATE);
+            double[] stepMs = new double[frames];
+            double[] perComponent = new double[frames];
+            int used = 0;
+            int next = 0;
+            long builtBefore = w.builtTiles();
+            long waitsBefore = w.tileWaits();
+            int segment = 0;
+            double since = 0;
+            long frameNanos = (long) (1e9 / RATE);
+            long deadline = System.nanoTime();
+            for (int f = 0; f < frames; f++) {
+                double x = (f + 1) * SPEED / RATE;
+                place(cam, ground, x);
+                // real time: 30 frames a second, as a game's loop; tiles are built in the time between steps
+                deadline += frameNanos;
+                long wait = deadline - System.nanoTime();
+                if (wait > 0) {
+                    java.util.concurrent.locks.LockSupport.parkNanos(wait);
+                } else {
+                    deadline = System.nanoTime();
+                }
+                long t0 = System.nanoTime();
+                int n = w.step(1 / RATE, cam);
+                long ns = System.nanoTime() - t0;
+                if (n > 0) {
+                    stepMs[used] = ns / 1e6 / n;
+                    perComponent[used] = w.animatedComponents() > 0 ? (double) ns / n / w.animatedComponents() : 0;
+                    used++;
+                }
+                if (next < checkpoints.length && x >= checkpoints[next] - 1e-9) {
+                    System.gc();
+                    System.gc();
+                    double heap = memory.getHeapMemoryUsage().getUsed() / (1024.0 * 1024.0);
+                    double[] ms = java.util.Arrays.copyOfRange(stepMs, segment, used);
+                    double median = Stats.median(ms);
+                    double p99 = Stats.percentile(ms, 0.99);
+                    double seconds = (x - since) / SPEED;
+                    double builtPerSecond = (w.builtTiles() - builtBefore) / seconds;
+                    double nsPer = Stats.median(java.util.Arrays.copyOfRange(perComponent, segment, used));
+                    t.row(Math.round(x), heap, w.liveTiles(), w.livePlants(), w.liveComponents(), builtPerSecond,
+                            median, p99, p99 / median, nsPer, w.tileWaits() - waitsBefore);
+                    Map<String, Object> row = new LinkedHashMap<>();
+                    row.put("distance", x);
+                    row.put("heapMB", heap);
+                    row.put("tiles", w.liveTiles());
+                    row.put("plants", w.livePlants());
+                    row.put("components", w.liveComponents());
+                    row.put("tilesBuiltPerSecond", builtPerSecond);
+                    row.put("stepMedianMs", median);
+                    row.put("stepP99Ms", p99);
+                    row.put("nsPerAnimatedComponent", nsPer);
+                    row.put("waits", w.tileWaits() - waitsBefore);
+                    raw.add(row);
+                    next++;
+                    builtBefore = w.builtTiles();
+                    waitsBefore = w.tileWaits();
+                    segment = used;
+                    since = x;
+                }
+            }
+            walkNs = Stats.median(java.util.Arrays.copyOf(perComponent, used));
+            t.note("Each row: the walk's stretch since the previous row (steps, tiles built, waits), and the heap"
+                    + " after a full GC, the tiles, plants and components alive at its end. The walk runs in real time"
+                    + " (30 frames a second, as a game's loop; tiles are built in the time between steps), after a"
+                    + " loading screen and a warm-up walk of 100 m. At most " + w.maxLiveTiles() + " tiles are live"
+                    + " per view (those within the radius plus one tile). A wait is a step that found a tile due and"
+                    + " not built yet.");
+        }
+        double meadowNs = meadowNsPerComponent(def, mode);
+        t.note(String.format(java.util.Locale.ROOT, "The meadow itself (its own camera path, 2 workers): %.2f ns per "
+                + "animated component per fixed step (median); the walk's %.2f, a ratio of %.2f.", meadowNs, walkNs,
+                walkNs / meadowNs));
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("meadowNsPerAnimatedComponent", meadowNs);
+        m.put("walkNsPerAnimatedComponent", walkNs);
+        raw.add(m);
+        report.add(t);
+        report.raw("openWorld", raw);
+    }
+
+    private static void place(ViewCamera cam, RollingTerrain ground, double x) {
+        cam.setPosition(x, ground.height(x, 0) + 1.7, 0);
+    }
+
+    /** The meadow's step per animated component along its own camera path (2 workers), ns. */
+    private double meadowNsPerComponent(SimulationDef def, Mode mode) throws Exception {
+        SceneDef scene = SceneFiles.parse(scenes.resolve("meadow.xml"));
+        World world = World.build(def, scenes, 2, Progress.NONE);
+        try (Simulation sim = Simulation.of(world, def, 2)) {
+            CameraWalk walk = new CameraWalk(scene.camera(), world.terrain().heightfield(), 16 / 9.0);
+            int frames = mode == Mode.SMOKE ? 150 : 900;
+            double[] ns = new double[frames];
+            int used = 0;
+            for (int f = 0; f < 2 * frames; f++) {
+                ViewCamera cam = walk.at(f / RATE);
+                long t0 = System.nanoTime();
+                int n = sim.step(1 / RATE, cam);
+                long dt = System.nanoTime() - t0;
+                if (f >= frames && n > 0) {
+                    int animated = sim.latestFrame().componentsAnimated();
+                    if (animated > 0) {
+                        ns[used++] = (double) dt / n / animated;
+                    }
+                }
+            }
+            return Stats.median(java.util.Arrays.copyOf(ns, used));
+        }
+    }
+}
