@@ -119,6 +119,16 @@ final class FieldSampler {
     }
 
     /**
+     * Advances the wind one fixed step without sampling (a step in which no view sees a plant): the
+     * flows move and blasts expire; buffer b keeps its sample and reports no switch of the flows.
+     */
+    void advance(int b) {
+        wind.advance(fixedStep);
+        edge[b] = -1;
+        commands.releaseExpiredBlasts(wind.time());
+    }
+
+    /**
      * Writes the field's result for the wind's current time into buffer b, for the camera and the
      * first {@code count} of {@code others} (visible: seen by any; detail: the finest any asks).
      */

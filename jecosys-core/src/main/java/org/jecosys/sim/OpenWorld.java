@@ -32,7 +32,10 @@ import org.jecosys.world.TileStreamer;
  *
  * <p>Steps: each fixed step first brings the tiles up to date with the views, then steps every live
  * tile's simulation, the tiles shared among the animation workers (a tile's result does not depend on
- * which worker ran it, so the state of every tile is bit-identical for any number of workers).
+ * which worker ran it, so the state of every tile is bit-identical for any number of workers). A tile
+ * whose box no view's frustum meets, now and at the last step, only advances its clock and flows
+ * ({@link #idleTiles()}): its plants were sampled unseen at the last step, so they rest as unseen
+ * plants do and start at the wind's equilibrium when seen.
  *
  * <p>Threads: one stepping thread calls {@link #step}, {@link #stepFixed}, {@link #addView},
  * {@link #removeView}, {@link #tile(int)} and the counters; {@link #close} any thread. A step
@@ -62,6 +65,10 @@ public final class OpenWorld implements AutoCloseable {
         private boolean started;
         /** Its views registered so far (stepping thread). */
         private Camera[] views = new Camera[0];
+        /** Whether no view could see it at the last step (stepping thread). */
+        private boolean wasOutside;
+        /** Whether this step only advances its clock (set by the stepping thread before the workers run). */
+        private boolean idle;
 
         private Tile(int i, int j, World world, Simulation simulation) {
             this.i = i;
@@ -110,6 +117,11 @@ public final class OpenWorld implements AutoCloseable {
     private Camera[] views = new Camera[0];
     private final double[] viewX = new double[Simulation.MAX_VIEWS];
     private final double[] viewZ = new double[Simulation.MAX_VIEWS];
+    private final org.joml.FrustumIntersection[] frusta = new org.joml.FrustumIntersection[Simulation.MAX_VIEWS];
+    private final org.joml.Matrix4f matrix = new org.joml.Matrix4f();
+    /** The tallest plant of any species, metres. */
+    private final double tallest;
+    private int idleTiles;
     private double accumulator;
     private double time;
     private long steps;
@@ -154,6 +166,18 @@ public final class OpenWorld implements AutoCloseable {
         this.placer = placer;
         Require.range("workers", workers, 1, 256);
         this.fixedStep = def.animation().fixedStep();
+        for (int v = 0; v < frusta.length; v++) {
+            frusta[v] = new org.joml.FrustumIntersection();
+        }
+        double top = 0;
+        for (org.jecosys.plant.SpeciesDef sp : def.species()) {
+            double h = 0;
+            for (var c : sp.components()) {
+                h += c.length();
+            }
+            top = Math.max(top, h);
+        }
+        tallest = top;
         this.maxSubSteps = def.animation().maxSubSteps();
         tiles = new TileStreamer<>(placer.tileSize(), new TileStreamer.TileFactory<>() {
             @Override
@@ -177,8 +201,13 @@ public final class OpenWorld implements AutoCloseable {
         pool = new WorkerPool("jecosys-world", workers, most, (k, worker) -> {
             if (k < stepCount) {
                 Tile t = stepTiles[k];
-                t.simulation.loop.stepFixed(stepCamera);
-                tileAnimated[k] = t.simulation.loop.chunkAnimator.animated();
+                if (t.idle) {
+                    t.simulation.loop.idleStep();
+                    tileAnimated[k] = 0;
+                } else {
+                    t.simulation.loop.stepFixed(stepCamera);
+                    tileAnimated[k] = t.simulation.loop.chunkAnimator.animated();
+                }
             }
         });
     }
@@ -273,9 +302,18 @@ public final class OpenWorld implements AutoCloseable {
             } finally {
                 loading = false;
             }
+            int viewCount = 1 + views.length;
+            for (int v = 0; v < viewCount; v++) {
+                frusta[v].set((v == 0 ? camera : views[v - 1]).viewProjection(matrix), false);
+            }
             int n = tiles.liveTiles();
+            int idle = 0;
             for (int k = 0; k < n; k++) {
                 Tile t = tiles.live(k);
+                boolean outside = outsideViews(t, viewCount);
+                t.idle = outside && t.wasOutside;
+                t.wasOutside = outside;
+                idle += t.idle ? 1 : 0;
                 if (!t.started) {
                     t.simulation.loop.startAt(time);
                     t.started = true;
@@ -301,10 +339,28 @@ public final class OpenWorld implements AutoCloseable {
                 sum += tileAnimated[k];
             }
             animated = sum;
+            idleTiles = idle;
             stepCamera = null;
             steps++;
             time += fixedStep;
         }
+    }
+
+    /** Whether no view's frustum meets tile t's box (its square, from its lowest ground to its highest plus the tallest plant). */
+    private boolean outsideViews(Tile t, int viewCount) {
+        Heightfield g = t.world.terrain().heightfield();
+        float x0 = (float) g.minX();
+        float z0 = (float) g.minZ();
+        float x1 = (float) g.maxX();
+        float z1 = (float) g.maxZ();
+        float y0 = (float) g.minHeight() - 0.5f;
+        float y1 = (float) (g.maxHeight() + tallest) + 0.5f;
+        for (int v = 0; v < viewCount; v++) {
+            if (frusta[v].testAab(x0, y0, z0, x1, y1, z1)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Registers on tile t exactly the world's views. */
@@ -407,6 +463,15 @@ public final class OpenWorld implements AutoCloseable {
     /** {@return the components animated in the last step, over all tiles} */
     public long animatedComponents() {
         return animated;
+    }
+
+    /**
+     * {@return the live tiles the last step only advanced the clock of} Tiles that no view could see at
+     * this step and the last one: their plants are not animated (as unseen plants of any simulation),
+     * and their simulation's frame is not republished.
+     */
+    public int idleTiles() {
+        return idleTiles;
     }
 
     /** {@return the tiles built and taken in so far} */

@@ -220,6 +220,31 @@ final class StepLoop {
     }
 
     /**
+     * A fixed step of a simulation whose plants no view can see, nor could at the last step (an open
+     * world's tile out of every view): queued commands apply and the clock and the flows advance;
+     * nothing is sampled, animated, decided or published. The last step that ran sampled every plant
+     * as unseen, so the plants stopped following the wind then and start at the equilibrium of the wind
+     * when seen again, as in any step; the next full step animates from that sample, as it would.
+     * Stepping thread; no allocation.
+     *
+     * @throws IllegalStateException when the simulation is closed
+     */
+    void idleStep() {
+        stepLock.lock();
+        try {
+            checkOpen();
+            steppingThread = Thread.currentThread().getId();
+            commands.drain();
+            checkOpen();
+            sampler.advance(current);
+            steps++;
+            time += fixedStep;
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    /**
      * Before the first step: samples the field at t = 0 and, in CONSTRAINT mode, puts the plants
      * visible then at the equilibrium of that wind (the force each starts its first step from),
      * unless the constructor already put every plant at the equilibrium of the flows at t = 0 and

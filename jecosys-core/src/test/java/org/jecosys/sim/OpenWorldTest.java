@@ -116,6 +116,42 @@ class OpenWorldTest {
     }
 
     @Test
+    void tilesNoViewSeesOnlyKeepTimeAndWakeWhenSeen() throws Exception {
+        SimulationDef def = meadowDef();
+        try (OpenWorld w = OpenWorld.create(def, placer(def), RADIUS, 2, 1, 8)) {
+            ViewCamera c = walker(0, 3);
+            for (int s = 0; s < 60; s++) {
+                w.stepFixed(c);
+            }
+            w.settle();
+            for (int s = 0; s < 5; s++) {
+                w.stepFixed(c);
+            }
+            int idle = w.idleTiles();
+            assertTrue(idle > 0 && idle < w.liveTiles(), "the tiles behind the camera only keep time: " + idle
+                    + " of " + w.liveTiles());
+            OpenWorld.Tile behind = null;
+            for (int k = 0; k < w.liveTiles(); k++) {
+                if (w.tile(k).i() == -2 && w.tile(k).j() == 0) {
+                    behind = w.tile(k);
+                }
+            }
+            assertTrue(behind != null, "tile -2,0 is live");
+            long before = behind.simulation().inspect().stateHash();
+            for (int s = 0; s < 30; s++) {
+                w.stepFixed(c);
+            }
+            assertEquals(before, behind.simulation().inspect().stateHash(), "a tile behind the camera rests");
+            assertEquals(w.time(), behind.simulation().inspect().time(), 1e-9, "and keeps the world's time");
+            c.setOrientation(-Math.PI / 2, Math.toRadians(-10)); // turn round: look along -X
+            for (int s = 0; s < 3; s++) {
+                w.stepFixed(c);
+            }
+            assertNotEquals(before, behind.simulation().inspect().stateHash(), "the tile seen again moves");
+        }
+    }
+
+    @Test
     void everyTileIsTheSameForAnyNumberOfWorkers() throws Exception {
         SimulationDef def = meadowDef();
         List<String> one = walk(def, 1, 1);
