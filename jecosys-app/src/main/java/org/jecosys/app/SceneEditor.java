@@ -376,6 +376,6 @@ final class SceneEditor {
         ForceFieldDef f = def.field();
         ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept
         return new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),
-                def.placements(), flows, nf, def.camera(), na, nr);
+                def.placements(), flows, nf, def.camera(), na, nr, def.world());
     }
 }

@@ -153,7 +153,8 @@ final class SceneSaver {
         TerrainDef nt = new TerrainDef(t.sizeX(), t.sizeZ(), t.resolution(), t.heightScale(), t.roughness(), t.seed(),
                 move(t.heightmap(), from, to), map(t.water(), from, to), map(t.nutrients(), from, to));
         return new SceneDef(scene.version(), scene.name(), scene.seed(), nt, scene.species(), scene.distributions(),
-                scene.placements(), scene.flows(), scene.field(), scene.camera(), scene.animation(), scene.render());
+                scene.placements(), scene.flows(), scene.field(), scene.camera(), scene.animation(), scene.render(),
+                scene.world());
     }
 
     private static ResourceMapDef map(ResourceMapDef m, Path from, Path to) {

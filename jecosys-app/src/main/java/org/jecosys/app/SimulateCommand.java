@@ -98,6 +98,13 @@ final class SimulateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         SimulationDef sd = overridden(def);
+        if (def.isOpenWorld()) {
+            if (dump != null) {
+                throw new ParameterException(spec.commandLine(), "--dump needs a scene of one square: " + file
+                        + " is an open world (<world>), whose plants exist only around the camera");
+            }
+            return OpenWorldRun.run(file, def, sd, steps, threads == null ? 2 : threads, json, out, err);
+        }
         Progress progress = new ConsoleProgress(err, ConsoleProgress.stderrIsTerminal());
         Run run;
         try (Simulation sim = Simulation.create(sd, loaded.images(), threads == null ? 0 : threads, progress)) {

@@ -67,7 +67,7 @@ final class OpenWorldSection implements Section {
     @Override
     public void run(Mode mode, Report report) throws Exception {
         double[] checkpoints = switch (mode) {
-            case SMOKE -> new double[] {100, 200};
+            case SMOKE -> new double[] {20, 40};
             case QUICK -> new double[] {200, 400, 600};
             case FULL -> new double[] {1000, 2500, 5000};
         };
@@ -87,7 +87,7 @@ final class OpenWorldSection implements Section {
             ViewCamera cam = new ViewCamera();
             cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
             cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 1000);
-            place(cam, ground, -100);
+            place(cam, ground, mode == Mode.SMOKE ? -10 : -100);
             // the start is loaded as a game's loading screen would load it
             for (int k = 0; k < 256; k++) {
                 w.stepFixed(cam);
@@ -97,10 +97,11 @@ final class OpenWorldSection implements Section {
                     break;
                 }
             }
-            // a warm-up walk of 100 m in real time (the JIT, the tiles ahead), not measured
+            // a warm-up walk of 100 m in real time (the JIT, the tiles ahead), not measured; 10 m in a smoke run
             long warm = System.nanoTime();
-            for (int f = 0; f < 300; f++) {
-                place(cam, ground, (f + 1) * SPEED / RATE - 100);
+            int warmFrames = mode == Mode.SMOKE ? 30 : 300;
+            for (int f = 0; f < warmFrames; f++) {
+                place(cam, ground, (f + 1 - warmFrames) * SPEED / RATE);
                 warm += (long) (1e9 / RATE);
                 java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, warm - System.nanoTime()));
                 w.step(1 / RATE, cam);
@@ -202,7 +203,7 @@ final class OpenWorldSection implements Section {
         World world = World.build(def, scenes, 2, Progress.NONE);
         try (Simulation sim = Simulation.of(world, def, 2)) {
             CameraWalk walk = new CameraWalk(scene.camera(), world.terrain().heightfield(), 16 / 9.0);
-            int frames = mode == Mode.SMOKE ? 150 : 900;
+            int frames = mode == Mode.SMOKE ? 30 : 900;
             double[] ns = new double[frames];
             double[] ms = new double[frames];
             int used = 0;

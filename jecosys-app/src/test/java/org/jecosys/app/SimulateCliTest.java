@@ -46,6 +46,25 @@ class SimulateCliTest {
     }
 
     @Test
+    void anOpenWorldWalksItsPathWithTilesAroundTheCamera() throws Exception {
+        Path json = dir.resolve("w.json");
+        CliTest.Result one = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "90", "--threads", "1",
+                "--json", json.toString());
+        assertEquals(0, one.code(), one.err());
+        for (String k : new String[] {"(open world)", "tiles alive", "plants alive", "components alive",
+                "tiles built", "p99 ms per step", "state hash"}) {
+            assertTrue(one.out().contains(k), k + " in " + one.out());
+        }
+        assertTrue(Files.readString(json, StandardCharsets.UTF_8).contains("\"openWorld\": true"));
+        CliTest.Result three = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "90", "--threads", "3");
+        assertEquals(hash(one), hash(three), "every tile's state, whatever the workers");
+        CliTest.Result dump = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "1", "--dump",
+                dir.resolve("d.csv").toString());
+        assertEquals(2, dump.code(), dump.err());
+        assertTrue(dump.err().contains("open world"), dump.err());
+    }
+
+    @Test
     void theHashDoesNotDependOnThreadsAndTheModeAndFieldFlagsWork() {
         String one = hash(CliTest.run("simulate", "scenes/c1.xml", "--steps", "60", "--threads", "1"));
         String three = hash(CliTest.run("simulate", "scenes/c1.xml", "--steps", "60", "--threads", "3"));

@@ -38,6 +38,9 @@ class BenchSmokeTest {
         // the open world's tiles along a walk: checkpoints with the heap after GC and the tiles alive
         Table walk = r.tables().stream().filter(t -> t.id().equals("streaming")).findFirst().orElseThrow();
         assertEquals(2, walk.rows().size(), "two checkpoints in the smoke run");
+        // the open world's simulation along a walk: two checkpoints, tiles and components alive
+        Table world = r.tables().stream().filter(t -> t.id().equals("open-world")).findFirst().orElseThrow();
+        assertEquals(2, world.rows().size(), "two checkpoints of the open world's walk in the smoke run");
         for (List<Object> row : walk.rows()) {
             int tiles = ((Number) row.get(2)).intValue();
             assertTrue(tiles > 20 && tiles <= 100, "tiles alive within 100 m of the view: " + tiles);

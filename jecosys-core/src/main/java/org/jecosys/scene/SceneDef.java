@@ -33,7 +33,8 @@ import org.jecosys.wind.FlowDef;
  */
 public record SceneDef(int version, String name, long seed, TerrainDef terrain, List<SpeciesDef> species,
                        List<DistributionDef> distributions, List<PlacementDef> placements, List<FlowDef> flows,
-                       ForceFieldDef field, CameraDef camera, AnimationDef animation, RenderDef render) {
+                       ForceFieldDef field, CameraDef camera, AnimationDef animation, RenderDef render,
+                       org.jecosys.world.WorldDef world) {
     /** The one scene-format version this build reads and writes. */
     public static final int FORMAT_VERSION = 1;
 
@@ -52,6 +53,7 @@ public record SceneDef(int version, String name, long seed, TerrainDef terrain, 
      * @param camera        not null
      * @param animation     not null
      * @param render        not null
+     * @param world         the open world ({@code <world>}), or null for a scene of one square
      * @throws IllegalArgumentException on another version, a null component, a duplicate id or an
      *                                  undefined species
      */
@@ -91,6 +93,35 @@ public record SceneDef(int version, String name, long seed, TerrainDef terrain, 
                 throw new IllegalArgumentException("duplicate flow id '" + f.id() + "'");
             }
         }
+    }
+
+    /**
+     * A scene of one square (no {@code <world>}).
+     *
+     * @param version       must be {@link #FORMAT_VERSION}
+     * @param name          human-readable name, not null
+     * @param seed          master seed (any value)
+     * @param terrain       not null
+     * @param species       species with unique ids
+     * @param distributions each naming one of {@code species}
+     * @param placements    each naming one of {@code species}
+     * @param flows         flows with unique ids
+     * @param field         not null
+     * @param camera        not null
+     * @param animation     not null
+     * @param render        not null
+     * @throws IllegalArgumentException as the canonical constructor
+     */
+    public SceneDef(int version, String name, long seed, TerrainDef terrain, List<SpeciesDef> species,
+                    List<DistributionDef> distributions, List<PlacementDef> placements, List<FlowDef> flows,
+                    ForceFieldDef field, CameraDef camera, AnimationDef animation, RenderDef render) {
+        this(version, name, seed, terrain, species, distributions, placements, flows, field, camera, animation, render,
+                null);
+    }
+
+    /** {@return whether this scene is an open world (it has a {@code <world>})} */
+    public boolean isOpenWorld() {
+        return world != null;
     }
 
     /** {@return what a simulation of this scene is built from (everything but camera and render)} Allocates. */

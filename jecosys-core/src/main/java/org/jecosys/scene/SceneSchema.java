@@ -26,6 +26,7 @@ import org.jecosys.wind.ActivationDef;
 import org.jecosys.wind.FlowDef;
 import org.jecosys.wind.FlowKind;
 import org.jecosys.wind.MotionDef;
+import org.jecosys.world.WorldDef;
 
 /**
  * The scene format, version 1, as one table: every element and attribute with its type, range,
@@ -236,6 +237,23 @@ final class SceneSchema {
                 .child(resourceMap("nutrients", "nutrient"), 0, 1,
                         d -> List.of(((TerrainDef) d).nutrients()));
 
+        ElementSpec world = new ElementSpec("world", "An open world: plants grow in square tiles within a radius of "
+                + "the views, by the density-based distributions, on unbounded rolling hills; tiles behind are let "
+                + "go. The simulation streams (the renderer and the viewer do not yet: they show the terrain's "
+                + "square).")
+                .attr(num("tileSize", "metres", "A tile's side.").range(WorldDef.MIN_TILE_SIZE, WorldDef.MAX_TILE_SIZE)
+                        .def(WorldDef.DEFAULT_TILE_SIZE).get(d -> ((WorldDef) d).tileSize()))
+                .attr(num("radius", "metres", "Reach of a view: tiles whose square comes this close are live; at "
+                        + "most 64 tiles.").rangeAbove(0, WorldDef.MAX_RADIUS).def(WorldDef.DEFAULT_RADIUS)
+                        .get(d -> ((WorldDef) d).radius()))
+                .attr(num("reliefHeight", "metres", "The hills' largest height above or below 0.")
+                        .range(0, WorldDef.MAX_RELIEF_HEIGHT).def(3.0).get(d -> ((WorldDef) d).reliefHeight()))
+                .attr(num("reliefWavelength", "metres", "The size of the largest hills.")
+                        .range(1, WorldDef.MAX_RELIEF_WAVELENGTH).def(90.0).get(d -> ((WorldDef) d).reliefWavelength()))
+                .attr(integer("reliefOctaves", "Noise layers of the hills, each twice as fine and half as high.")
+                        .range(1, 12).def(4).get(d -> ((WorldDef) d).reliefOctaves()))
+                .attr(seed("Seed of the hills.", d -> ((WorldDef) d).reliefSeed()));
+
         ElementSpec species = PlantSchema.SPECIES;
         ElementSpec distribution = PlantSchema.DISTRIBUTION;
         ElementSpec plant = PlantSchema.PLANT;
@@ -333,6 +351,7 @@ final class SceneSchema {
                 .attr(AttrSpec.of("name", TEXT, "", "Human-readable name.").def("").get(d -> scene(d).name()))
                 .attr(seed("Master seed of the scene (distributions, variation).", d -> scene(d).seed()))
                 .child(terrain, 1, 1, d -> List.of(scene(d).terrain()))
+                .child(world, 0, 1, d -> scene(d).world() == null ? List.of() : List.of(scene(d).world()))
                 .child(species, 0, MAX_SPECIES, d -> scene(d).species())
                 .child(distribution, 0, MAX_DISTRIBUTIONS, d -> scene(d).distributions())
                 .child(plant, 0, MAX_PLANTS, d -> scene(d).placements())

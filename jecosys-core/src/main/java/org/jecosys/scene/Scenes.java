@@ -48,6 +48,32 @@ public final class Scenes {
     }
 
     /**
+     * The open world of a scene with a {@code <world>} ({@link SceneDef#isOpenWorld()}): its species,
+     * flows, field and animation, its distributions placed tile by tile on its hills
+     * ({@link org.jecosys.world.WorldDef#placer}), tiles within its radius of the views. No tile exists
+     * before the first steps. Build time; allocates; any thread.
+     *
+     * @param scene       a checked scene with a {@code <world>}
+     * @param workers     animation workers, in [1, 256]
+     * @param tileWorkers threads that build tiles, in [1, 64]
+     * @return the open world; the caller closes it
+     * @throws IllegalArgumentException when the scene has no {@code <world>} or an argument is out of range
+     */
+    public static org.jecosys.sim.OpenWorld openWorld(SceneDef scene, int workers, int tileWorkers) {
+        if (!scene.isOpenWorld()) {
+            throw new IllegalArgumentException("scene '" + scene.name() + "' has no <world>: it is one square, built "
+                    + "whole (Scenes.simulation)");
+        }
+        int[] speciesOf = new int[scene.distributions().size()];
+        for (int k = 0; k < speciesOf.length; k++) {
+            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
+        }
+        org.jecosys.world.TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+        return org.jecosys.sim.OpenWorld.create(scene.simulationDef(), placer, scene.world().radius(), workers,
+                tileWorkers, 4);
+    }
+
+    /**
      * The folder relative paths of {@code file} resolve against.
      *
      * @param file a scene file

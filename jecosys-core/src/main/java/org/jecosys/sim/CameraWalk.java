@@ -16,7 +16,7 @@ import org.jecosys.terrain.Heightfield;
  */
 public final class CameraWalk {
     private final CameraDef def;
-    private final Heightfield ground;
+    private final org.jecosys.math.HeightFunction ground;
     private final List<Waypoint> path;
     private final double[] cumulative;
     private final ViewCamera camera;
@@ -25,10 +25,11 @@ public final class CameraWalk {
      * A walk of {@code def}'s path over {@code ground}. Allocates.
      *
      * @param def    the scene camera: start pose, lens, path, walking speed (m/s) and loop flag
-     * @param ground the terrain the eye heights are measured from (0 outside it)
+     * @param ground the ground the eye heights are measured from: a terrain (0 outside it) or an
+     *               unbounded height function (an open world's hills)
      * @param aspect viewport width over height
      */
-    public CameraWalk(CameraDef def, Heightfield ground, double aspect) {
+    public CameraWalk(CameraDef def, org.jecosys.math.HeightFunction ground, double aspect) {
         this.def = def;
         this.ground = ground;
         this.path = def.path();
@@ -42,7 +43,7 @@ public final class CameraWalk {
     }
 
     private double height(double x, double z) {
-        return ground.contains(x, z) ? ground.height(x, z) : 0;
+        return !(ground instanceof Heightfield h) || h.contains(x, z) ? ground.height(x, z) : 0;
     }
 
     /**
