@@ -141,7 +141,7 @@ final class SceneBinder {
                     wv.num("reliefHeight"), wv.num("reliefWavelength"), wv.integer("reliefOctaves"),
                     wv.longValue("seed")));
             if (world != null) {
-                openWorld(root, wv, world, species, distributions);
+                WorldRules.check(root, wv, world, species, distributions, this::problem, () -> out.problems().isEmpty());
             }
         }
         ForceFieldDef field = field(root.child("field"));
@@ -161,51 +161,6 @@ final class SceneBinder {
         org.jecosys.world.WorldDef open = world;
         return make(root, () -> new SceneDef(root.integer("version"), root.str("name"), root.longValue("seed"),
                 terrain, species, distributions, placements, flows, field, camera, animation, render, open));
-    }
-
-    /**
-     * What an open world cannot stream: a distribution by count (tiles grow plants by density), plants
-     * placed by hand, water or nutrient limits (the hills have no resource maps), and tiles too small for
-     * the footprints and tufts (the placer's own check).
-     */
-    private void openWorld(Values root, Values w, org.jecosys.world.WorldDef world, List<SpeciesDef> species,
-                           List<DistributionDef> distributions) {
-        for (Values d : root.children("distribution")) {
-            if (d.integer("count") != -1) {
-                problem(d, "count", "attribute 'count' of <distribution>: an open world (<world>) grows plants by "
-                        + "density; use count=\"-1\" and 'density' (plants per square metre)");
-            }
-            for (String limit : new String[] {"minWater", "maxWater", "minNutrients", "maxNutrients"}) {
-                double v = d.num(limit);
-                if (limit.startsWith("min") ? v > 0 : v < 1) {
-                    problem(d, limit, "attribute '" + limit + "' of <distribution>: an open world (<world>) has no "
-                            + "water or nutrient maps; leave out the limits");
-                }
-            }
-        }
-        for (Values p : root.children("plant")) {
-            problem(p, "species", "<plant>: an open world (<world>) places no plants by hand; its tiles grow the "
-                    + "<distribution>s");
-        }
-        if (!out.problems().isEmpty() || distributions.isEmpty()) {
-            if (out.problems().isEmpty()) {
-                problem(w, "tileSize", "<world>: an open world needs at least one <distribution> to grow its tiles");
-            }
-            return;
-        }
-        int[] speciesOf = new int[distributions.size()];
-        for (int k = 0; k < speciesOf.length; k++) {
-            for (int s = 0; s < species.size(); s++) {
-                if (species.get(s).id().equals(distributions.get(k).species())) {
-                    speciesOf[k] = s;
-                }
-            }
-        }
-        try {
-            world.placer(root.longValue("seed"), distributions, speciesOf);
-        } catch (IllegalArgumentException e) {
-            problem(w, "tileSize", "<world>: " + e.getMessage());
-        }
     }
 
     /** A hand-placed plant stands on the terrain, which spans [-size/2, size/2] (as floats, like the layout). */

@@ -1,9 +1,7 @@
 package org.jecosys.sim;
 
 import java.util.Arrays;
-import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Camera;
-import org.jecosys.math.HeightFunction;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
 import org.jecosys.plant.ComponentFactories;
@@ -11,7 +9,6 @@ import org.jecosys.plant.GravityBend;
 import org.jecosys.plant.PlantModel;
 import org.jecosys.terrain.Heightfield;
 import org.jecosys.world.TilePlacer;
-import org.jecosys.world.TilePlants;
 import org.jecosys.world.TileStreamer;
 
 /**
@@ -52,8 +49,6 @@ public final class OpenWorld implements AutoCloseable {
      * so that building takes the frame's idle time rather than the step's cores (the per-frame budget).
      */
     public static final long BUILD_WINDOW_NANOS = 12_000_000L;
-    /** Ground samples of a tile's heightfield per metre. */
-    private static final double GROUND_SAMPLES_PER_METRE = 1;
 
     /** A live tile: its plants' world and simulation. Read by the stepping thread and the renderer. */
     public static final class Tile {
@@ -70,7 +65,7 @@ public final class OpenWorld implements AutoCloseable {
         /** Whether this step only advances its clock (set by the stepping thread before the workers run). */
         private boolean idle;
 
-        private Tile(int i, int j, World world, Simulation simulation) {
+        Tile(int i, int j, World world, Simulation simulation) {
             this.i = i;
             this.j = j;
             this.world = world;
@@ -128,12 +123,8 @@ public final class OpenWorld implements AutoCloseable {
     private long droppedSteps;
     private long animated;
     private volatile boolean closed;
-    /** Whether a step is running (tile workers hold their next build phase). */
-    private volatile boolean stepping;
-    /** System.nanoTime() at the end of the last step. */
-    private volatile long stepEnded = System.nanoTime();
-    /** Whether the stepping thread may wait for tiles ({@link #settle}, the tiles' update): the gate is open. */
-    private volatile boolean loading;
+    /** Builds the tiles on the tile workers, in the frame's idle time. */
+    private final TileBuilds builds;
 
     /**
      * Makes an open world. Pre-computes the species (paper §4.1) once for all tiles; starts the
@@ -179,22 +170,9 @@ public final class OpenWorld implements AutoCloseable {
         }
         tallest = top;
         this.maxSubSteps = def.animation().maxSubSteps();
-        tiles = new TileStreamer<>(placer.tileSize(), new TileStreamer.TileFactory<>() {
-            @Override
-            public Tile build(int i, int j) {
-                return buildTile(i, j);
-            }
-
-            @Override
-            public int plants(Tile tile) {
-                return tile.world.plantCount();
-            }
-
-            @Override
-            public void release(Tile tile) {
-                tile.simulation.close();
-            }
-        }, radius, placer.tileSize(), tileWorkers, budget, TILE_LATENCY);
+        builds = new TileBuilds(def, model, placer, () -> closed);
+        tiles = new TileStreamer<>(placer.tileSize(), builds, radius, placer.tileSize(), tileWorkers, budget,
+                TILE_LATENCY);
         int most = tiles.maxLiveTiles() * Simulation.MAX_VIEWS;
         stepTiles = new Tile[most];
         tileAnimated = new int[most];
@@ -210,42 +188,6 @@ public final class OpenWorld implements AutoCloseable {
                 }
             }
         });
-    }
-
-    /**
-     * Holds a tile worker until it may start a build phase: while no step runs and within
-     * {@link #BUILD_WINDOW_NANOS} of the last step's end (or while {@link #settle} waits).
-     */
-    private void buildGate() {
-        while (!closed && !loading && (stepping || System.nanoTime() - stepEnded > BUILD_WINDOW_NANOS)) {
-            java.util.concurrent.locks.LockSupport.parkNanos(250_000L);
-            if (Thread.interrupted()) {
-                Thread.currentThread().interrupt();
-                return;
-            }
-        }
-    }
-
-    /** Builds tile (i, j) on a tile worker: its plants, its ground, its simulation, each phase in a build window. */
-    private Tile buildTile(int i, int j) {
-        buildGate();
-        TilePlants plants = placer.place(i, j);
-        buildGate();
-        double size = placer.tileSize();
-        int res = (int) Math.max(2, Math.min(257, Math.ceil(size * GROUND_SAMPLES_PER_METRE) + 1));
-        float[] h = new float[res * res];
-        HeightFunction ground = placer.ground();
-        double x0 = i * size;
-        double z0 = j * size;
-        for (int b = 0; b < res; b++) {
-            for (int a = 0; a < res; a++) {
-                h[b * res + a] = (float) ground.height(x0 + a * size / (res - 1), z0 + b * size / (res - 1));
-            }
-        }
-        Heightfield hf = Heightfield.of(x0 + size / 2, z0 + size / 2, size, size, res, h);
-        World world = World.tile(model, plants, hf);
-        buildGate();
-        return new Tile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
     }
 
     /**
@@ -296,11 +238,11 @@ public final class OpenWorld implements AutoCloseable {
                 viewX[v + 1] = views[v].x();
                 viewZ[v + 1] = views[v].z();
             }
-            loading = true; // the update may wait for a tile that is due: the workers must be let through
+            builds.loading = true; // the update may wait for a tile that is due: the workers must be let through
             try {
                 tiles.update(viewX, viewZ, 1 + views.length);
             } finally {
-                loading = false;
+                builds.loading = false;
             }
             int viewCount = 1 + views.length;
             for (int v = 0; v < viewCount; v++) {
@@ -326,13 +268,13 @@ public final class OpenWorld implements AutoCloseable {
             Arrays.fill(stepTiles, n, stepTiles.length, null);
             stepCount = n;
             stepCamera = camera;
-            stepping = true;
+            builds.stepping = true;
             try {
                 pool.start();
                 pool.await();
             } finally {
-                stepping = false;
-                stepEnded = System.nanoTime();
+                builds.stepping = false;
+                builds.stepEnded = System.nanoTime();
             }
             long sum = 0;
             for (int k = 0; k < n; k++) {
@@ -525,11 +467,11 @@ public final class OpenWorld implements AutoCloseable {
      */
     public void settle() {
         synchronized (lock) {
-            loading = true;
+            builds.loading = true;
             try {
                 tiles.settle();
             } finally {
-                loading = false;
+                builds.loading = false;
             }
         }
     }

@@ -35,39 +35,6 @@ import org.jecosys.math.Require;
  * @param <T> what a tile is built into
  */
 public final class TileStreamer<T> implements AutoCloseable {
-    /**
-     * Builds a tile on a worker thread, and counts what it holds.
-     *
-     * @param <T> what a tile is built into
-     */
-    public interface TileFactory<T> {
-        /**
-         * Builds tile (i, j): a pure function of the indices (and what the factory was made with), so a
-         * tile built twice is the same tile. Runs on a worker thread; may allocate.
-         *
-         * @param i the tile's index along X
-         * @param j the tile's index along Z
-         * @return the tile, not null
-         */
-        T build(int i, int j);
-
-        /**
-         * {@return the plants in a built tile}
-         *
-         * @param tile a tile this factory built
-         */
-        int plants(T tile);
-
-        /**
-         * Called on the stepping thread when a live tile is let go (or the streamer closes), to free
-         * what it holds beyond the garbage collector's reach. The default does nothing.
-         *
-         * @param tile a tile this factory built
-         */
-        default void release(T tile) {
-        }
-    }
-
     private final TileFactory<T> factory;
     private final double size;
     private final double radius;

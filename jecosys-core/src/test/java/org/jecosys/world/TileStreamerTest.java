@@ -12,12 +12,13 @@ import org.jecosys.terrain.DistributionDef;
 import org.junit.jupiter.api.Test;
 
 /**
- * The tiles around a walking view ({@link TileStreamer}): along a straight walk of 1.5 km at 10 m/s,
+ * The tiles around a walking view ({@link TileStreamer}): along a straight walk of 2.2 km at 10 m/s,
  * 30 updates a second, the tiles alive stay within the streamer's bound and the plants alive within
  * that many tiles' worth, every tile within the radius of the view is alive once the walk has passed
  * its start (nothing missing but the ones just started), tiles far behind are let go; a tile visited,
- * left 1 km behind and visited again on the way back is the same tile, array for array, and the tiles
- * are the same with 1 and 4 workers.
+ * left 2 km behind and visited again on the way back is the same tile, array for array; the tiles are
+ * the same with 1, 2 and 8 workers; with a latency, what is live at each update is the same for 1 and
+ * 3 workers (the fixed rule of {@code sim.OpenWorld}).
  */
 class TileStreamerTest {
     private static final double TILE = 16;
@@ -37,7 +38,7 @@ class TileStreamerTest {
             int maxTiles = 0;
             long maxPlants = 0;
             TilePlants first = null;
-            int updates = 4500; // 150 s at 30 Hz: 1.5 km
+            int updates = 6600; // 220 s at 30 Hz: 2.2 km
             for (int u = 0; u <= updates; u++) {
                 x[0] = u * (10.0 / 30);
                 s.update(x, z, 1);
@@ -57,11 +58,11 @@ class TileStreamerTest {
                     assertNotNull(first);
                 }
             }
-            assertNull(s.tile(6, 0), "a tile 1.4 km behind is let go");
+            assertNull(s.tile(6, 0), "a tile 2.1 km behind is let go");
             assertTrue(maxTiles <= s.maxLiveTiles(), "tiles alive " + maxTiles + " <= " + s.maxLiveTiles());
             double perTile = 0.5 * TILE * TILE;
             assertTrue(maxPlants <= 1.3 * perTile * s.maxLiveTiles(), "plants alive " + maxPlants);
-            System.out.printf("[bench] tile streamer: 1.5 km walk, %d tiles built, at most %d alive (bound %d), at "
+            System.out.printf("[bench] tile streamer: 2.2 km walk, %d tiles built, at most %d alive (bound %d), at "
                     + "most %d plants alive%n", s.builtTiles(), maxTiles, s.maxLiveTiles(), maxPlants);
             // back to x = 100 m: the tile comes back the same
             x[0] = 100;
@@ -82,26 +83,82 @@ class TileStreamerTest {
         double[] x = {20};
         double[] z = {-30};
         try (TileStreamer<TilePlants> one = TileStreamer.of(placer(), RADIUS, 1, 1);
-             TileStreamer<TilePlants> four = TileStreamer.of(placer(), RADIUS, 4, 64)) {
+             TileStreamer<TilePlants> two = TileStreamer.of(placer(), RADIUS, 2, 3);
+             TileStreamer<TilePlants> eight = TileStreamer.of(placer(), RADIUS, 8, 64)) {
             for (int u = 0; u < 40; u++) {
                 one.update(x, z, 1);
             }
             one.settle();
-            four.update(x, z, 1);
-            four.settle();
-            assertEquals(four.liveTiles(), one.liveTiles());
+            for (TileStreamer<TilePlants> other : List.of(two, eight)) {
+                for (int u = 0; u < 20; u++) {
+                    other.update(x, z, 1);
+                }
+                other.settle();
+                assertEquals(one.liveTiles(), other.liveTiles());
+            }
             assertTrue(one.liveTiles() > 20, "tiles around the view: " + one.liveTiles());
             for (int i = -4; i <= 4; i++) {
                 for (int j = -6; j <= 2; j++) {
                     TilePlants a = one.tile(i, j);
-                    TilePlants b = four.tile(i, j);
-                    assertEquals(a == null, b == null, "tile " + i + ", " + j);
-                    if (a != null) {
-                        assertArrayEquals(a.x(), b.x());
-                        assertArrayEquals(a.variantSeed(), b.variantSeed());
+                    for (TileStreamer<TilePlants> other : List.of(two, eight)) {
+                        TilePlants b = other.tile(i, j);
+                        assertEquals(a == null, b == null, "tile " + i + ", " + j);
+                        if (a != null) {
+                            assertArrayEquals(a.x(), b.x());
+                            assertArrayEquals(a.species(), b.species());
+                            assertArrayEquals(a.variantSeed(), b.variantSeed());
+                        }
                     }
                 }
             }
+        }
+    }
+
+    /** The live tiles of a streamer, as "i,j" in its list order. */
+    private static String liveKeys(TileStreamer<TilePlants> s) {
+        StringBuilder b = new StringBuilder();
+        for (int k = 0; k < s.liveTiles(); k++) {
+            b.append(s.liveI(k)).append(',').append(s.liveJ(k)).append(' ');
+        }
+        return b.toString();
+    }
+
+    @Test
+    void withALatencyWhatIsLiveDependsOnlyOnThePath() {
+        double[] x = {0};
+        double[] z = {0};
+        TileFactory<TilePlants> f = new TileFactory<>() {
+            private final TilePlacer placer = placer();
+
+            @Override
+            public TilePlants build(int i, int j) {
+                return placer.place(i, j);
+            }
+
+            @Override
+            public int plants(TilePlants tile) {
+                return tile.count();
+            }
+        };
+        try (TileStreamer<TilePlants> one = new TileStreamer<>(TILE, f, RADIUS, TILE, 1, 2, 5);
+             TileStreamer<TilePlants> three = new TileStreamer<>(TILE, f, RADIUS, TILE, 3, 2, 5)) {
+            int started = 0;
+            for (int u = 0; u < 600; u++) { // 20 s at 30 Hz, 6 m/s: 120 m
+                x[0] = u * 0.2;
+                z[0] = u * 0.05;
+                one.update(x, z, 1);
+                three.update(x, z, 1);
+                assertEquals(liveKeys(one), liveKeys(three), "live tiles at update " + u);
+                started = Math.max(started, one.pendingTiles());
+                for (int k = 0; k < one.liveTiles(); k++) {
+                    double cx = Math.max(0, Math.max(one.liveI(k) * TILE - x[0], x[0] - (one.liveI(k) + 1) * TILE));
+                    double cz = Math.max(0, Math.max(one.liveJ(k) * TILE - z[0], z[0] - (one.liveJ(k) + 1) * TILE));
+                    assertTrue(Math.hypot(cx, cz) <= RADIUS + TILE + 1e-9, "a live tile lies within the radius "
+                            + "plus one tile");
+                }
+            }
+            assertTrue(started > 0, "tiles are started ahead of the radius");
+            assertTrue(one.liveTiles() > 10, "tiles live: " + one.liveTiles());
         }
     }
 
