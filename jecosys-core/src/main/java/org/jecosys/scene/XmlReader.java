@@ -30,13 +30,13 @@ import javax.xml.stream.XMLStreamReader;
  */
 final class XmlReader {
     /**
-     * Most elements in one scene file. The schema's own counts allow at most 276,637 (256 flows, each
+     * Most elements in one scene file. The schema's own counts allow at most 276,638 (256 flows, each
      * with a path of 1,024 waypoints, beside every other maximum), so no valid scene is refused by
      * this limit; the shipped scenes have 18 to 62.
      */
     static final int MAX_ELEMENTS = 300_000;
     /**
-     * Most attributes in one scene file, all elements together. The schema allows at most 616,009
+     * Most attributes in one scene file, all elements together. The schema allows at most 616,015
      * (every attribute of every element at the element counts' maxima); the shipped scenes have 68 to
      * 352 (xsi attributes included).
      */

@@ -288,7 +288,7 @@ public final class WindField {
         for (int i = 0; i < count; i++) {
             boolean on = flows[i].isEnabled();
             if (on != wasEnabled[i] && advanced) {
-                edge = earliest(edge, t0);
+                edge = FlowEdges.earliest(edge, t0);
             }
             wasEnabled[i] = on;
         }
@@ -312,7 +312,7 @@ public final class WindField {
             }
             flows[i].onAdvance(time, dt);
             if (wasEnabled[i]) {
-                edge = windowEdge(flows[i], t0, time, edge);
+                edge = FlowEdges.windowEdge(flows[i], t0, time, edge);
             }
         }
         lastEdge = edge;
@@ -340,30 +340,8 @@ public final class WindField {
     /** Notes that the sum changes now (a flow added or removed), once the field has been advanced. */
     private void noteSwitch() {
         if (advanced) {
-            pendingEdge = earliest(pendingEdge, time);
+            pendingEdge = FlowEdges.earliest(pendingEdge, time);
         }
-    }
-
-    private static double earliest(double a, double b) {
-        return Double.isNaN(a) ? b : Math.min(a, b);
-    }
-
-    /** The earlier of {@code edge} and an unramped opening or closing of the flow's window in (t0, t1]. */
-    private static double windowEdge(WindSource f, double t0, double t1, double edge) {
-        ActivationDef a = f instanceof FlowBase b ? b.def.activation()
-                : f instanceof AbstractWindSource u ? u.activation() : null;
-        if (a == null) {
-            return edge;
-        }
-        double start = a.start();
-        if (a.rampIn() == 0 && start > t0 && start <= t1) {
-            edge = earliest(edge, start);
-        }
-        double end = start + a.duration();
-        if (a.duration() != Double.POSITIVE_INFINITY && a.rampOut() == 0 && end > t0 && end <= t1) {
-            edge = earliest(edge, end);
-        }
-        return edge;
     }
 
     /**
