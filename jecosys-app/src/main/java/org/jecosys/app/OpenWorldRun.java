@@ -16,6 +16,7 @@ import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.Scenes;
 import org.jecosys.sim.CameraWalk;
 import org.jecosys.sim.OpenWorld;
+import org.jecosys.sim.WorldTile;
 import org.jecosys.sim.SimulationDef;
 import org.jecosys.world.WorldDef;
 
@@ -76,7 +77,7 @@ final class OpenWorldRun {
             allocated = (double) (threads.getThreadAllocatedBytes(self) - alloc0) / Math.max(1, steps - warm);
             long h = 1125899906842597L;
             for (int k = 0; k < w.liveTiles(); k++) {
-                OpenWorld.Tile t = w.tile(k);
+                WorldTile t = w.tile(k);
                 h = 31 * (31 * (31 * h + t.i()) + t.j()) + t.simulation().inspect().stateHash();
             }
             hash = h;

@@ -7,8 +7,8 @@ import org.jecosys.math.Require;
 import org.jecosys.plant.ComponentFactories;
 import org.jecosys.plant.GravityBend;
 import org.jecosys.plant.PlantModel;
-import org.jecosys.terrain.Heightfield;
 import org.jecosys.world.TilePlacer;
+import org.jecosys.wind.FlowDef;
 import org.jecosys.world.TileStreamer;
 
 /**
@@ -50,62 +50,16 @@ public final class OpenWorld implements AutoCloseable {
      */
     public static final long BUILD_WINDOW_NANOS = 12_000_000L;
 
-    /** A live tile: its plants' world and simulation. Read by the stepping thread and the renderer. */
-    public static final class Tile {
-        private final int i;
-        private final int j;
-        private final World world;
-        private final Simulation simulation;
-        /** Whether its clock has joined the world's (stepping thread). */
-        private boolean started;
-        /** Its views registered so far (stepping thread). */
-        private Camera[] views = new Camera[0];
-        /** Whether no view could see it at the last step (stepping thread). */
-        private boolean wasOutside;
-        /** Whether this step only advances its clock (set by the stepping thread before the workers run). */
-        private boolean idle;
-
-        Tile(int i, int j, World world, Simulation simulation) {
-            this.i = i;
-            this.j = j;
-            this.world = world;
-            this.simulation = simulation;
-        }
-
-        /** {@return the tile's index along X: it covers [i size, (i + 1) size) metres} */
-        public int i() {
-            return i;
-        }
-
-        /** {@return the tile's index along Z} */
-        public int j() {
-            return j;
-        }
-
-        /** {@return the tile's plants and ground (plants in world coordinates)} */
-        public World world() {
-            return world;
-        }
-
-        /**
-         * {@return the tile's simulation} Its frames are what a renderer draws; stepping it is the open
-         * world's business, not the caller's.
-         */
-        public Simulation simulation() {
-            return simulation;
-        }
-    }
-
     private final SimulationDef def;
     private final PlantModel model;
     private final TilePlacer placer;
-    private final TileStreamer<Tile> tiles;
+    private final TileStreamer<WorldTile> tiles;
     private final WorkerPool pool;
     private final double fixedStep;
     private final int maxSubSteps;
     private final Object lock = new Object();
     /** The live tiles of the step being run, read by the workers. */
-    private final Tile[] stepTiles;
+    private final WorldTile[] stepTiles;
     private volatile int stepCount;
     private volatile Camera stepCamera;
     private final int[] tileAnimated;
@@ -123,6 +77,8 @@ public final class OpenWorld implements AutoCloseable {
     private long droppedSteps;
     private long animated;
     private volatile boolean closed;
+    /** The flows added at run time. */
+    private final WorldFlows flows = new WorldFlows();
     /** Builds the tiles on the tile workers, in the frame's idle time. */
     private final TileBuilds builds;
 
@@ -174,11 +130,11 @@ public final class OpenWorld implements AutoCloseable {
         tiles = new TileStreamer<>(placer.tileSize(), builds, radius, placer.tileSize(), tileWorkers, budget,
                 TILE_LATENCY);
         int most = tiles.maxLiveTiles() * Simulation.MAX_VIEWS;
-        stepTiles = new Tile[most];
+        stepTiles = new WorldTile[most];
         tileAnimated = new int[most];
         pool = new WorkerPool("jecosys-world", workers, most, (k, worker) -> {
             if (k < stepCount) {
-                Tile t = stepTiles[k];
+                WorldTile t = stepTiles[k];
                 if (t.idle) {
                     t.simulation.loop.idleStep();
                     tileAnimated[k] = 0;
@@ -229,8 +185,9 @@ public final class OpenWorld implements AutoCloseable {
     public void stepFixed(Camera camera) {
         Require.nonNull("camera", camera);
         synchronized (lock) {
-            if (closed) {
-                throw new IllegalStateException("the open world is closed");
+            checkOpen();
+            if (flows.count() > 0) {
+                flows.expire(time, stepTiles, startedTiles());
             }
             viewX[0] = camera.x();
             viewZ[0] = camera.z();
@@ -251,17 +208,18 @@ public final class OpenWorld implements AutoCloseable {
             int n = tiles.liveTiles();
             int idle = 0;
             for (int k = 0; k < n; k++) {
-                Tile t = tiles.live(k);
-                boolean outside = outsideViews(t, viewCount);
+                WorldTile t = tiles.live(k);
+                boolean outside = t.outside(frusta, viewCount, tallest);
                 t.idle = outside && t.wasOutside;
                 t.wasOutside = outside;
                 idle += t.idle ? 1 : 0;
                 if (!t.started) {
                     t.simulation.loop.startAt(time);
+                    flows.startTile(t);
                     t.started = true;
                 }
                 if (t.views != views) {
-                    syncViews(t);
+                    t.syncViews(views);
                 }
                 stepTiles[k] = t;
             }
@@ -288,45 +246,98 @@ public final class OpenWorld implements AutoCloseable {
         }
     }
 
-    /** Whether no view's frustum meets tile t's box (its square, from its lowest ground to its highest plus the tallest plant). */
-    private boolean outsideViews(Tile t, int viewCount) {
-        Heightfield g = t.world.terrain().heightfield();
-        float x0 = (float) g.minX();
-        float z0 = (float) g.minZ();
-        float x1 = (float) g.maxX();
-        float z1 = (float) g.maxZ();
-        float y0 = (float) g.minHeight() - 0.5f;
-        float y1 = (float) (g.maxHeight() + tallest) + 0.5f;
-        for (int v = 0; v < viewCount; v++) {
-            if (frusta[v].testAab(x0, y0, z0, x1, y1, z1)) {
+    /** The started live tiles, for a change of the flows (stepping thread; no allocation). */
+    private int startedTiles() {
+        int n = 0;
+        for (int k = 0; k < tiles.liveTiles(); k++) {
+            WorldTile t = tiles.live(k);
+            if (t.started) {
+                stepTiles[n++] = t;
+            }
+        }
+        return n;
+    }
+
+    /**
+     * Adds a flow to the whole world from the next step on: every live tile and every tile that starts
+     * later holds its own instance of it (so a flow is given as a def, not as a game's own
+     * {@link org.jecosys.wind.WindSource} object). Its activation window is in the world's time. Stepping thread;
+     * allocates.
+     *
+     * @param def the flow, its id not held by the scene's flows nor by another added one
+     * @throws IllegalArgumentException when {@code def} is null or its id is taken
+     * @throws IllegalStateException    when {@link Simulation#MAX_FLOWS} flows are there, or the world is closed
+     */
+    public void addFlow(FlowDef def) {
+        synchronized (lock) {
+            checkOpen();
+            flows.add(def, Double.POSITIVE_INFINITY, stepTiles, startedTiles(), this.def);
+        }
+    }
+
+    /**
+     * Removes a flow added with {@link #addFlow} or {@link #blast} from every tile. Stepping thread.
+     *
+     * @param id the flow's id
+     * @return whether such a flow was there
+     */
+    public boolean removeFlow(String id) {
+        synchronized (lock) {
+            checkOpen();
+            int k = flows.indexOf(id);
+            if (k < 0) {
                 return false;
             }
+            flows.remove(k, stepTiles, startedTiles());
+            return true;
         }
-        return true;
     }
 
-    /** Registers on tile t exactly the world's views. */
-    private void syncViews(Tile t) {
-        for (Camera v : t.views) {
-            if (!contains(views, v)) {
-                t.simulation.removeView(v);
+    /**
+     * Moves an added flow's centre (an agent: a player, a vehicle) to (x, z) at the next step, in every
+     * tile, and in the tiles that start later. Call it every frame: the latest move before a step wins.
+     * Stepping thread; allocates nothing after the agent's first move in each tile.
+     *
+     * @param id an id given to {@link #addFlow}
+     * @param x  centre X, metres, |x| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @param z  centre Z, metres, |z| &lt;= {@link org.jecosys.math.Waypoint#MAX_COORDINATE}
+     * @throws IllegalArgumentException when no added flow has this id, or a coordinate is out of range
+     */
+    public void moveAgent(String id, double x, double z) {
+        synchronized (lock) {
+            checkOpen();
+            int k = flows.indexOf(id);
+            if (k < 0) {
+                throw new IllegalArgumentException("no flow '" + id + "' was added to the open world");
             }
+            flows.move(k, x, z, stepTiles, startedTiles());
         }
-        for (Camera v : views) {
-            if (!contains(t.views, v)) {
-                t.simulation.addView(v);
-            }
-        }
-        t.views = views;
     }
 
-    private static boolean contains(Camera[] list, Camera c) {
-        for (Camera v : list) {
-            if (v == c) {
-                return true;
-            }
+    /**
+     * A blast at (x, z) from the next step: a short radial pulse of peak {@code strength} m^2/s over
+     * {@code duration} s, in every tile (a tile that starts while it lasts gets it too), dropped once
+     * over. Stepping thread; allocates.
+     *
+     * @param id       a free flow id
+     * @param x        centre X, metres
+     * @param z        centre Z, metres
+     * @param strength peak strength, m^2/s, &gt; 0
+     * @param duration seconds, &gt; 0
+     * @throws IllegalArgumentException when a value is out of range or the id is taken
+     */
+    public void blast(String id, double x, double z, double strength, double duration) {
+        synchronized (lock) {
+            checkOpen();
+            FlowDef d = WorldFlows.blast(id, x, z, strength, duration, time);
+            flows.add(d, time + duration, stepTiles, startedTiles(), this.def);
         }
-        return false;
+    }
+
+    private void checkOpen() {
+        if (closed) {
+            throw new IllegalStateException("the open world is closed");
+        }
     }
 
     /**
@@ -340,7 +351,7 @@ public final class OpenWorld implements AutoCloseable {
     public void addView(Camera view) {
         Require.nonNull("view", view);
         synchronized (lock) {
-            if (contains(views, view)) {
+            if (WorldTile.contains(views, view)) {
                 throw new IllegalArgumentException("this view is already registered");
             }
             if (views.length >= Simulation.MAX_VIEWS - 1) {
@@ -384,7 +395,7 @@ public final class OpenWorld implements AutoCloseable {
      *
      * @param k in [0, {@link #liveTiles()})
      */
-    public Tile tile(int k) {
+    public WorldTile tile(int k) {
         return tiles.live(k);
     }
 

@@ -18,7 +18,7 @@ import org.jecosys.world.TilePlants;
  * tiles: building takes the frame's idle time, not the step's cores. The flags are written by the
  * stepping thread and read by the workers. Allocates (a tile's build).
  */
-final class TileBuilds implements TileFactory<OpenWorld.Tile> {
+final class TileBuilds implements TileFactory<WorldTile> {
     /** Ground samples of a tile's heightfield per metre. */
     private static final double GROUND_SAMPLES_PER_METRE = 1;
 
@@ -53,7 +53,7 @@ final class TileBuilds implements TileFactory<OpenWorld.Tile> {
     }
 
     @Override
-    public OpenWorld.Tile build(int i, int j) {
+    public WorldTile build(int i, int j) {
         gate();
         TilePlants plants = placer.place(i, j);
         gate();
@@ -71,16 +71,16 @@ final class TileBuilds implements TileFactory<OpenWorld.Tile> {
         Heightfield hf = Heightfield.of(x0 + size / 2, z0 + size / 2, size, size, res, h);
         World world = World.tile(model, plants, hf);
         gate();
-        return new OpenWorld.Tile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
+        return new WorldTile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
     }
 
     @Override
-    public int plants(OpenWorld.Tile tile) {
+    public int plants(WorldTile tile) {
         return tile.world().plantCount();
     }
 
     @Override
-    public void release(OpenWorld.Tile tile) {
+    public void release(WorldTile tile) {
         tile.simulation().close();
     }
 }

@@ -71,7 +71,7 @@ class OpenWorldTest {
                 w.stepFixed(walker(s * 10.0 / 30, 3));
             }
             for (int k = 0; k < w.liveTiles(); k++) {
-                OpenWorld.Tile t = w.tile(k);
+                WorldTile t = w.tile(k);
                 hashes.add(t.i() + "," + t.j() + ":" + t.simulation().inspect().stateHash());
             }
         }
@@ -90,7 +90,7 @@ class OpenWorldTest {
                 most = Math.max(most, w.liveTiles());
                 animated = Math.max(animated, w.animatedComponents());
                 for (int k = 0; k < w.liveTiles(); k++) {
-                    OpenWorld.Tile t = w.tile(k);
+                    WorldTile t = w.tile(k);
                     double dx = Math.max(0, Math.max(t.i() * TILE - x, x - (t.i() + 1) * TILE));
                     double dz = Math.max(0, Math.max(t.j() * TILE - 3, 3 - (t.j() + 1) * TILE));
                     assertTrue(Math.hypot(dx, dz) <= RADIUS + TILE + 10.0 / 30 + 1e-9,
@@ -130,7 +130,7 @@ class OpenWorldTest {
             int idle = w.idleTiles();
             assertTrue(idle > 0 && idle < w.liveTiles(), "the tiles behind the camera only keep time: " + idle
                     + " of " + w.liveTiles());
-            OpenWorld.Tile behind = null;
+            WorldTile behind = null;
             for (int k = 0; k < w.liveTiles(); k++) {
                 if (w.tile(k).i() == -2 && w.tile(k).j() == 0) {
                     behind = w.tile(k);

@@ -1,0 +1,99 @@
+package org.jecosys.sim;
+
+import org.jecosys.math.Camera;
+import org.jecosys.wind.WindSource;
+
+/**
+ * A live tile of an {@link OpenWorld}: its plants' world and simulation. Made on a tile worker, then
+ * read by the stepping thread (and a renderer on it).
+ */
+public final class WorldTile {
+    final int i;
+    final int j;
+    final World world;
+    final Simulation simulation;
+    /** Whether its clock has joined the world's (stepping thread). */
+    boolean started;
+    /** Its views registered so far (stepping thread). */
+    Camera[] views = new Camera[0];
+    /** Whether no view could see it at the last step (stepping thread). */
+    boolean wasOutside;
+    /** Whether this step only advances its clock (set by the stepping thread before the workers run). */
+    boolean idle;
+    /** Its instance of each flow added at run time, in the order of {@link WorldFlows} (stepping thread). */
+    WindSource[] handles = new WindSource[0];
+
+    WorldTile(int i, int j, World world, Simulation simulation) {
+        this.i = i;
+        this.j = j;
+        this.world = world;
+        this.simulation = simulation;
+    }
+
+    /** {@return the tile's index along X: it covers [i size, (i + 1) size) metres} */
+    public int i() {
+        return i;
+    }
+
+    /** {@return the tile's index along Z} */
+    public int j() {
+        return j;
+    }
+
+    /** {@return the tile's plants and ground (plants in world coordinates)} */
+    public World world() {
+        return world;
+    }
+
+    /**
+     * {@return the tile's simulation} Its frames are what a renderer draws; stepping it is the open
+     * world's business, not the caller's.
+     */
+    public Simulation simulation() {
+        return simulation;
+    }
+
+    /**
+     * Whether no view's frustum meets this tile's box (its square, from its lowest ground to its highest
+     * plus the tallest plant). Stepping thread; no allocation.
+     */
+    boolean outside(org.joml.FrustumIntersection[] frusta, int viewCount, double tallest) {
+        org.jecosys.terrain.Heightfield g = world.terrain().heightfield();
+        float x0 = (float) g.minX();
+        float z0 = (float) g.minZ();
+        float x1 = (float) g.maxX();
+        float z1 = (float) g.maxZ();
+        float y0 = (float) g.minHeight() - 0.5f;
+        float y1 = (float) (g.maxHeight() + tallest) + 0.5f;
+        for (int v = 0; v < viewCount; v++) {
+            if (frusta[v].testAab(x0, y0, z0, x1, y1, z1)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Registers on its simulation exactly {@code list}, the world's views. Stepping thread; allocates. */
+    void syncViews(Camera[] list) {
+        for (Camera v : views) {
+            if (!contains(list, v)) {
+                simulation.removeView(v);
+            }
+        }
+        for (Camera v : list) {
+            if (!contains(views, v)) {
+                simulation.addView(v);
+            }
+        }
+        views = list;
+    }
+
+    static boolean contains(Camera[] list, Camera c) {
+        for (Camera v : list) {
+            if (v == c) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
