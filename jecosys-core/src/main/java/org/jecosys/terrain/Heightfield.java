@@ -386,6 +386,7 @@ public final class Heightfield implements HeightFunction {
      * @param dest where to write
      * @return {@code dest}
      */
+    @Override
     public Vector3f normal(double x, double z, Vector3f dest) {
         double u = Grid.clamp((x - centreX + sizeX / 2) / cellX, res - 1);
         double v = Grid.clamp((z - centreZ + sizeZ / 2) / cellZ, res - 1);

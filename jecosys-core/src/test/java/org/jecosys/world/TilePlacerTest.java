@@ -176,6 +176,30 @@ class TilePlacerTest {
     }
 
     @Test
+    void aHeightFunctionGivesNormals() {
+        // a plane rising 0.5 m per metre along X: its normal leans back along -X
+        HeightFunction plane = (x, z) -> 0.5 * x + 2;
+        org.joml.Vector3f n = plane.normal(3, -7, new org.joml.Vector3f());
+        assertEquals(1, n.length(), 1e-6);
+        assertEquals(-0.5 / Math.sqrt(1.25), n.x, 1e-5);
+        assertEquals(1 / Math.sqrt(1.25), n.y, 1e-5);
+        assertEquals(0, n.z, 1e-6);
+        assertEquals(Math.atan(0.5), plane.slope(3, -7), 1e-6);
+        // the rolling hills' normals agree with their slope
+        HeightFunction hills = RollingTerrain.gentle(5);
+        for (int k = 0; k < 20; k++) {
+            double x = 13.7 * k;
+            double z = -9.1 * k;
+            org.joml.Vector3f h = hills.normal(x, z, new org.joml.Vector3f());
+            assertEquals(Math.cos(hills.slope(x, z)), h.y, 1e-5, "normal and slope at " + x + ", " + z);
+        }
+        // a heightfield through the interface gives its own blended vertex normals
+        Heightfield hf = Heightfield.of(10, 10, 3, new float[] {0, 1, 2, 0, 1, 2, 0, 1, 2});
+        HeightFunction f = hf;
+        assertEquals(hf.normal(1, 1, new org.joml.Vector3f()), f.normal(1, 1, new org.joml.Vector3f()));
+    }
+
+    @Test
     void aHeightfieldIsAHeightFunction() {
         float[] h = {0, 1, 2, 3, 4, 5, 6, 7, 8};
         Heightfield hf = Heightfield.of(10, 10, 3, h);
