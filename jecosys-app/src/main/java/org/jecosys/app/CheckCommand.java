@@ -43,7 +43,9 @@ final class CheckCommand implements Callable<Integer> {
             for (var d : scene.distributions()) {
                 plants += Math.max(d.count(), 0);
             }
-            out.println(s + ": ok (" + scene.species().size() + " species, " + scene.distributions().size()
+            String kind = scene.isOpenWorld() ? "an open world of " + metres(scene.world().tileSize()) + " m tiles within "
+                    + metres(scene.world().radius()) + " m, " : "";
+            out.println(s + ": ok (" + kind + scene.species().size() + " species, " + scene.distributions().size()
                     + " distributions, " + plants + " plants by count, " + scene.flows().size() + " flows)");
         }
         out.flush();
@@ -53,5 +55,10 @@ final class CheckCommand implements Callable<Integer> {
             return ExitCodes.BAD_INPUT;
         }
         return ExitCodes.OK;
+    }
+
+    /** A length as written in a scene: no trailing ".0". */
+    private static String metres(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 }

@@ -61,6 +61,7 @@ final class RenderCommand implements Callable<Integer> {
         plan.checkImages();
         plan.createFolders();
         SceneDef def = loaded.def();
+        SceneArgs.openWorldNotice(def, file, spec.commandLine().getErr());
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {

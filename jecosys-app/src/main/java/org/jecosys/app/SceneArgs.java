@@ -45,4 +45,17 @@ final class SceneArgs {
             return null;
         }
     }
+
+    /**
+     * Tells, on {@code err}, that a command that draws shows an open world's {@code <terrain>} square
+     * (the renderer does not stream tiles yet) and which command streams it. Nothing for other scenes.
+     */
+    static void openWorldNotice(org.jecosys.scene.SceneDef def, Path file, PrintWriter err) {
+        if (def.isOpenWorld()) {
+            err.println(file + " is an open world (<world>): this shows its <terrain> square grown by the same "
+                    + "distributions, since the renderer does not stream tiles yet; `jecosys simulate " + file
+                    + "` streams it");
+            err.flush();
+        }
+    }
 }

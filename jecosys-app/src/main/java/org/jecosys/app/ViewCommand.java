@@ -65,6 +65,7 @@ final class ViewCommand implements Callable<Integer> {
         }
         SceneDef def = loaded.def();
         spec.commandLine().getOut().println("Scene '" + def.name() + "' (" + scene + ") is valid.");
+        SceneArgs.openWorldNotice(def, file, spec.commandLine().getErr());
         spec.commandLine().getOut().flush();
         try {
             if (headless) {

@@ -62,6 +62,9 @@ class SimulateCliTest {
                 dir.resolve("d.csv").toString());
         assertEquals(2, dump.code(), dump.err());
         assertTrue(dump.err().contains("open world"), dump.err());
+        CliTest.Result check = CliTest.run("check", "scenes/openworld.xml");
+        assertEquals(0, check.code(), check.err());
+        assertTrue(check.out().contains("ok (an open world of 16 m tiles within 64 m, 3 species"), check.out());
     }
 
     @Test
