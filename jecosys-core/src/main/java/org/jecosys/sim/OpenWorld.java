@@ -351,16 +351,7 @@ public final class OpenWorld implements AutoCloseable {
     public void addView(Camera view) {
         Require.nonNull("view", view);
         synchronized (lock) {
-            if (WorldTile.contains(views, view)) {
-                throw new IllegalArgumentException("this view is already registered");
-            }
-            if (views.length >= Simulation.MAX_VIEWS - 1) {
-                throw new IllegalStateException("an open world follows at most " + (Simulation.MAX_VIEWS - 1)
-                        + " views besides the step's camera");
-            }
-            Camera[] n = Arrays.copyOf(views, views.length + 1);
-            n[views.length] = view;
-            views = n;
+            views = ViewLists.with(views, view, Simulation.MAX_VIEWS - 1, "an open world");
         }
     }
 
@@ -372,16 +363,9 @@ public final class OpenWorld implements AutoCloseable {
      */
     public boolean removeView(Camera view) {
         synchronized (lock) {
-            for (int v = 0; v < views.length; v++) {
-                if (views[v] == view) {
-                    Camera[] n = new Camera[views.length - 1];
-                    System.arraycopy(views, 0, n, 0, v);
-                    System.arraycopy(views, v + 1, n, v, views.length - v - 1);
-                    views = n;
-                    return true;
-                }
-            }
-            return false;
+            Camera[] v = views;
+            views = ViewLists.without(v, view);
+            return views != v;
         }
     }
 

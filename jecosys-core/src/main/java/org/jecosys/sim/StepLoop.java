@@ -266,36 +266,15 @@ final class StepLoop {
     synchronized void addView(Camera view) {
         checkOpen();
         Camera.requireFinite("view", view, new org.joml.Matrix4f());
-        Camera[] v = views;
-        for (Camera c : v) {
-            if (c == view) {
-                throw new IllegalArgumentException("this view is already registered");
-            }
-        }
-        if (v.length >= Simulation.MAX_VIEWS - 1) {
-            throw new IllegalStateException("a simulation follows at most " + Simulation.MAX_VIEWS
-                    + " views (Simulation.MAX_VIEWS): the step's camera and " + (Simulation.MAX_VIEWS - 1)
-                    + " registered ones");
-        }
-        Camera[] n = java.util.Arrays.copyOf(v, v.length + 1);
-        n[v.length] = view;
-        views = n;
+        views = ViewLists.with(views, view, Simulation.MAX_VIEWS - 1, "a simulation");
     }
 
     /** {@link Simulation#removeView}. */
     synchronized boolean removeView(Camera view) {
         checkOpen();
         Camera[] v = views;
-        for (int i = 0; i < v.length; i++) {
-            if (v[i] == view) {
-                Camera[] n = new Camera[v.length - 1];
-                System.arraycopy(v, 0, n, 0, i);
-                System.arraycopy(v, i + 1, n, i, v.length - i - 1);
-                views = n;
-                return true;
-            }
-        }
-        return false;
+        views = ViewLists.without(v, view);
+        return views != v;
     }
 
     /** {@return the views registered with {@link #addView}} */

@@ -76,24 +76,15 @@ public final class WorldTile {
     /** Registers on its simulation exactly {@code list}, the world's views. Stepping thread; allocates. */
     void syncViews(Camera[] list) {
         for (Camera v : views) {
-            if (!contains(list, v)) {
+            if (!ViewLists.contains(list, v)) {
                 simulation.removeView(v);
             }
         }
         for (Camera v : list) {
-            if (!contains(views, v)) {
+            if (!ViewLists.contains(views, v)) {
                 simulation.addView(v);
             }
         }
         views = list;
-    }
-
-    static boolean contains(Camera[] list, Camera c) {
-        for (Camera v : list) {
-            if (v == c) {
-                return true;
-            }
-        }
-        return false;
     }
 }
