@@ -21,8 +21,7 @@ import org.junit.jupiter.api.Test;
  * The open world's runtime ({@link OpenWorld}): the meadow's species streamed in tiles around a
  * walking camera. Along a walk the live tiles stay within the bound, the plants seen move in the
  * meadow's gust, tiles behind are let go; every tile's state is bit-identical for 1 and 3 animation
- * workers and 1 and 2 tile workers; a camera standing in its tiles steps allocating at most a few
- * hundred bytes now and then.
+ * workers and 1 and 2 tile workers; a camera standing in its tiles steps without allocating.
  */
 class OpenWorldTest {
     private static final double TILE = 16;
@@ -161,7 +160,7 @@ class OpenWorldTest {
     }
 
     @Test
-    void aCameraStandingInItsTilesStepsAlmostWithoutAllocating() throws Exception {
+    void aCameraStandingInItsTilesStepsWithoutAllocating() throws Exception {
         SimulationDef def = meadowDef();
         com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         try (OpenWorld w = OpenWorld.create(def, placer(def), RADIUS, 1, 1, 8)) {
@@ -172,19 +171,22 @@ class OpenWorldTest {
             w.settle(); // the tiles started ahead (within the radius plus one tile) are built and live too
             w.stepFixed(c);
             assertEquals(0, w.pendingTiles(), "every tile around the camera is live");
-            for (int s = 0; s < 200; s++) {
-                w.stepFixed(c); // warm-up: the JIT
+            for (int s = 0; s < 2000; s++) {
+                w.stepFixed(c); // warm-up: the JIT (its compile requests allocate in the stepping thread for a while)
             }
+            // the JIT's compile requests allocate in the thread that triggers them until it settles (later
+            // on a loaded machine): windows of 100 steps until one allocates nothing, 30 at most; a step that
+            // allocated by itself would fail every window
             long id = Thread.currentThread().getId();
-            long before = threads.getThreadAllocatedBytes(id);
-            for (int s = 0; s < 100; s++) {
-                w.stepFixed(c);
+            long bytes = -1;
+            for (int window = 0; window < 30 && bytes != 0; window++) {
+                long before = threads.getThreadAllocatedBytes(id);
+                for (int s = 0; s < 100; s++) {
+                    w.stepFixed(c);
+                }
+                bytes = threads.getThreadAllocatedBytes(id) - before;
             }
-            long bytes = threads.getThreadAllocatedBytes(id) - before;
-            // the open world's own part allocates nothing; the tiles' simulations still allocate a few
-            // hundred bytes now and then (a known leftover of small worlds, measured at 0 to 800 bytes a
-            // step with 31 tiles), far from the per-step allocation of a world that rebuilt anything
-            assertTrue(bytes <= 4096, "bytes allocated by 100 steps: " + bytes);
+            assertEquals(0, bytes, "bytes allocated by 100 steps");
             assertNotEquals(0, w.animatedComponents());
         }
     }
