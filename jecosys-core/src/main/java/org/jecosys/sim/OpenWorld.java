@@ -77,6 +77,8 @@ public final class OpenWorld implements AutoCloseable {
     private long droppedSteps;
     private long animated;
     private volatile boolean closed;
+    /** The thinning set with {@link #setThinning} (start, end, kept share), or null for the def's. */
+    private double[] thinning;
     /** The flows added at run time. */
     private final WorldFlows flows = new WorldFlows();
     /** Builds the tiles on the tile workers, in the frame's idle time. */
@@ -214,9 +216,7 @@ public final class OpenWorld implements AutoCloseable {
                 t.wasOutside = outside;
                 idle += t.idle ? 1 : 0;
                 if (!t.started) {
-                    t.simulation.loop.startAt(time);
-                    flows.startTile(t);
-                    t.started = true;
+                    t.start(time, flows, thinning);
                 }
                 if (t.views != views) {
                     t.syncViews(views);
@@ -331,6 +331,31 @@ public final class OpenWorld implements AutoCloseable {
             checkOpen();
             FlowDef d = WorldFlows.blast(id, x, z, strength, duration, time);
             flows.add(d, time + duration, stepTiles, startedTiles(), this.def);
+        }
+    }
+
+    /**
+     * Sets the distance thinning of the drawing in every tile, now and for the tiles that start later
+     * ({@link Simulation#setThinning}: for slow GPUs such as llvmpipe, e.g. {@link DrawQuality#LOW}'s 4 m,
+     * 16 m and 0.15). Stepping thread; allocates a command per tile.
+     *
+     * @throws IllegalArgumentException when a value is out of range
+     *
+     * @param start       where thinning starts, metres, in [0, 1e6]
+     * @param end         where the kept share reaches {@code minFraction}, metres, in [start, 1e6]
+     * @param minFraction share of plants kept at and beyond {@code end}, in [0, 1]; 1 turns thinning off
+     */
+    public void setThinning(double start, double end, double minFraction) {
+        synchronized (lock) {
+            checkOpen();
+            Require.range("start", start, 0, 1e6);
+            Require.range("end", end, start, 1e6);
+            Require.range("minFraction", minFraction, 0, 1);
+            double[] t = {start, end, minFraction};
+            for (int k = 0; k < tiles.liveTiles(); k++) {
+                tiles.live(k).simulation.setThinning(start, end, minFraction); // checks the values
+            }
+            thinning = t;
         }
     }
 

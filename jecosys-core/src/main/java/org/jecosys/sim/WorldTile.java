@@ -87,4 +87,17 @@ public final class WorldTile {
         }
         views = list;
     }
+
+    /**
+     * Joins the world at its first step: its clock set to the world's, the flows added at run time, the
+     * thinning set on the world (null: the def's). Stepping thread; allocates.
+     */
+    void start(double time, WorldFlows flows, double[] thinning) {
+        simulation.loop.startAt(time);
+        flows.startTile(this);
+        if (thinning != null) {
+            simulation.setThinning(thinning[0], thinning[1], thinning[2]);
+        }
+        started = true;
+    }
 }

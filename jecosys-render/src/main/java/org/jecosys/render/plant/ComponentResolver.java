@@ -125,6 +125,16 @@ public final class ComponentResolver implements AutoCloseable {
      */
     public ComponentResolver(GlTracker t, World world, PlantBatches batches, GlBufferTexture poseTexture,
                       int[][][] poseTexel, int components, long maxComponents, float[] slotLooks, ResolvePath path) {
+        this(t, world, batches, poseTexture, poseTexel, components, maxComponents, slotLooks, path, null);
+    }
+
+    /**
+     * As the other constructor, with the two resolve programs of {@code path} given ({@link #compile}),
+     * shared with other resolvers and not closed by this one; null compiles and owns its own.
+     */
+    ComponentResolver(GlTracker t, World world, PlantBatches batches, GlBufferTexture poseTexture,
+                      int[][][] poseTexel, int components, long maxComponents, float[] slotLooks, ResolvePath path,
+                      GlProgram[] shared) {
         this.batches = batches;
         this.path = path;
         this.poseTexture = poseTexture;
@@ -136,11 +146,7 @@ public final class ComponentResolver implements AutoCloseable {
         try {
             detach();
             for (int k = 0; k < passes.length; k++) {
-                String[] defines = k == 0 ? new String[0] : new String[] {"ATTACHED"};
-                passes[k] = new Pass(own(path == ResolvePath.COMPUTE
-                        ? GlProgram.compute(t, "plant_resolve.comp", defines)
-                        : GlProgram.captureVariant(t, "plant_resolve.vert", defines, "vRecord0", "vRecord1",
-                                "vRecord2")));
+                passes[k] = new Pass(shared != null ? shared[k] : own(compile(t, path, k)));
             }
             instances = MemoryUtil.memAllocInt(2 * Math.max(1, batches.maxInstances()));
             componentBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
@@ -254,6 +260,17 @@ public final class ComponentResolver implements AutoCloseable {
             count = p.optionalUniform("uCount");
             first = p.optionalUniform("uFirst");
         }
+    }
+
+    /**
+     * Compiles resolve program k of {@code path}: 0 for species standing on the ground, 1 with the
+     * parent walk ({@code ATTACHED}). Render thread; allocates.
+     */
+    static GlProgram compile(GlTracker t, ResolvePath path, int k) {
+        String[] defines = k == 0 ? new String[0] : new String[] {"ATTACHED"};
+        return path == ResolvePath.COMPUTE
+                ? GlProgram.compute(t, "plant_resolve.comp", defines)
+                : GlProgram.captureVariant(t, "plant_resolve.vert", defines, "vRecord0", "vRecord1", "vRecord2");
     }
 
     private <T extends AutoCloseable> T own(T resource) {

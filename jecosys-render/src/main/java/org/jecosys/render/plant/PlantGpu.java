@@ -59,6 +59,15 @@ final class PlantGpu implements AutoCloseable {
      * @throws IllegalStateException    when the world's tables do not fit this GL's buffer textures
      */
     PlantGpu(GlContext gl, World world, PlantBatches batches, ResolvePath path) {
+        this(gl, world, batches, path, null);
+    }
+
+    /**
+     * As the other constructor, with the draw and resolve programs of {@code shared} (made for this
+     * context), not closed by this set; null compiles and owns its own. Its resolve path is
+     * {@code shared}'s then.
+     */
+    PlantGpu(GlContext gl, World world, PlantBatches batches, ResolvePath path, PlantPrograms shared) {
         tracker = GlContexts.tracker(gl);
         List<SpeciesModel> models = world.plants().species();
         check(models);
@@ -66,19 +75,21 @@ final class PlantGpu implements AutoCloseable {
         long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
         long maxComponents = Math.max(1, batches.maxComponents());
         int components = Math.max(1, world.componentCount());
-        ResolvePath resolvePath = choosePath(gl, path, 4L * PlantRenderer.RECORD_FLOATS * maxComponents);
+        ResolvePath resolvePath = shared != null ? shared.path()
+                : choosePath(gl, path, 4L * PlantRenderer.RECORD_FLOATS * maxComponents);
         try {
             int maxTexels = GL11C.glGetInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
             checkTexels("pose tables", texels, Math.min(maxTexels, PlantRenderer.MAX_EXACT));
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, PlantRenderer.MAX_EXACT));
             for (int k = 0; k < programs.length; k++) {
-                programs[k] = own(PlantPasses.compile(tracker, k));
+                programs[k] = shared != null ? shared.draw(k) : own(PlantPasses.compile(tracker, k));
             }
             poseTexture = own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
                     GL_RGBA32F));
             resolver = own(new ComponentResolver(tracker, world, batches, poseTexture, poseTexel, components,
-                    maxComponents, PlantMeshes.slotLooks(models), resolvePath));
+                    maxComponents, PlantMeshes.slotLooks(models), resolvePath,
+                    shared == null ? null : shared.resolve()));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];

@@ -109,7 +109,7 @@ public final class PlantRenderer implements AutoCloseable {
      * @param world     the plants: species models (pose tables, meshes) and positions
      */
     public PlantRenderer(GlContext gl, World world) {
-        this(gl, world, null);
+        this(gl, world, (ResolvePath) null);
     }
 
     /**
@@ -124,12 +124,29 @@ public final class PlantRenderer implements AutoCloseable {
      *                                  OpenGL 4.3 and a shader storage buffer the size of the records)
      */
     public PlantRenderer(GlContext gl, World world, ResolvePath path) {
+        this(gl, world, path, null);
+    }
+
+    /**
+     * As {@link #PlantRenderer(GlContext, World)}, with its draw and resolve programs taken from
+     * {@code programs} (compiled once for this context; the caller closes them after this renderer):
+     * what an open world's tile renderers share. Render thread; allocates.
+     *
+     * @param gl       the render context, current on this thread
+     * @param world    the plants
+     * @param programs the shared programs
+     */
+    public PlantRenderer(GlContext gl, World world, PlantPrograms programs) {
+        this(gl, world, programs.path(), programs);
+    }
+
+    private PlantRenderer(GlContext gl, World world, ResolvePath path, PlantPrograms shared) {
         gl.checkThread();
         this.world = world;
         this.batches = new PlantBatches(world);
         this.view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
-        gpu = new PlantGpu(gl, world, batches, path);
+        gpu = new PlantGpu(gl, world, batches, path, shared);
         boolean[] flowers = new boolean[models.size()];
         for (int s = 0; s < flowers.length; s++) {
             flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));

@@ -1,0 +1,233 @@
+package org.jecosys.render;
+
+import static org.lwjgl.opengl.GL11C.GL_BLEND;
+import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.GL_LEQUAL;
+import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
+import static org.lwjgl.opengl.GL11C.glClear;
+import static org.lwjgl.opengl.GL11C.glClearColor;
+import static org.lwjgl.opengl.GL11C.glDepthFunc;
+import static org.lwjgl.opengl.GL11C.glDepthMask;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL11C.glScissor;
+import static org.lwjgl.opengl.GL11C.glViewport;
+
+import java.util.Arrays;
+import org.jecosys.math.Camera;
+import org.jecosys.math.Require;
+import org.jecosys.render.gl.Closing;
+import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.plant.PlantPrograms;
+import org.jecosys.render.plant.PlantRenderer;
+import org.jecosys.sim.OpenWorld;
+import org.jecosys.sim.WorldTile;
+
+/**
+ * Draws the plants of an {@link OpenWorld}'s live tiles (issue 39, a first renderer of the open world):
+ * one plant renderer per tile, all sharing the draw and resolve programs compiled once
+ * ({@link PlantPrograms}), each drawing its tile's latest frame with the camera. A tile that became
+ * live gets its renderer at a later frame, at most {@link #NEW_TILES_PER_FRAME} per frame (its
+ * per-component data uploaded then), so a frame never uploads more than a few tiles; a tile let go
+ * has its renderer closed at the next frame. The ground and the sky are the host's (a game's terrain),
+ * or, with {@link RenderSettings#clear()} on, the viewport is cleared to the horizon colour; ground
+ * cover, contact darkening and sun shadows are not drawn yet.
+ *
+ * <p>Threads: the open world's stepping thread is the render thread (a game loop that steps, then
+ * draws, on one thread with the context current); {@link #render} reads the live tiles the last step
+ * left. State contract as {@code SceneRenderer}'s: every GL state changed is put back
+ * ({@code GlStateGuard}). Allocation: a tile's renderer is made (allocating) when the tile arrives;
+ * a frame without arriving or leaving tiles allocates nothing.
+ */
+public final class OpenWorldRenderer implements AutoCloseable {
+    /** Most tile renderers made in one frame. */
+    public static final int NEW_TILES_PER_FRAME = 2;
+
+    private final GlContext gl;
+    private final OpenWorld world;
+    private final RenderSettings settings;
+    private final PlantPrograms programs;
+    private final GlStateGuard state;
+    /** The tiles drawn, and their renderers (parallel; a tile's slot is null until its renderer is made). */
+    private WorldTile[] tiles = new WorldTile[64];
+    private PlantRenderer[] renderers = new PlantRenderer[64];
+    private int count;
+    private int made;
+    private int drawn;
+    private boolean closed;
+
+    /**
+     * Compiles the shared programs. Render thread (the open world's stepping thread), context current;
+     * allocates; the GL state is put back.
+     *
+     * @param gl       the render context
+     * @param world    the open world to draw
+     * @param settings the light, haze and look (read each frame); clear and terrain as for a guest
+     */
+    public OpenWorldRenderer(GlContext gl, OpenWorld world, RenderSettings settings) {
+        gl.checkThread();
+        this.gl = gl;
+        this.world = Require.nonNull("world", world);
+        this.settings = Require.nonNull("settings", settings);
+        GlStateGuard g = new GlStateGuard();
+        g.save();
+        try {
+            g.setGuestState();
+            programs = PlantPrograms.compile(gl, null);
+        } catch (RuntimeException e) {
+            g.restore();
+            g.close();
+            throw e;
+        }
+        g.restore();
+        state = g;
+    }
+
+    /**
+     * Draws the live tiles' plants into the bound framebuffer's {@code width} x {@code height} viewport
+     * at the origin. Render thread; no allocation in a frame where no tile arrives or leaves.
+     *
+     * @param camera the viewer (the step's camera, or another view registered with the open world)
+     * @param width  viewport width, pixels, &gt; 0
+     * @param height viewport height, pixels, &gt; 0
+     */
+    public void render(Camera camera, int width, int height) {
+        gl.checkThread();
+        Require.nonNull("camera", camera);
+        Require.range("width", width, 1, 1 << 16);
+        Require.range("height", height, 1, 1 << 16);
+        if (closed) {
+            throw new IllegalStateException("the open-world renderer is closed");
+        }
+        state.save();
+        try {
+            glViewport(0, 0, width, height);
+            state.setGuestState();
+            if (settings.clear()) {
+                Lighting light = settings.lighting();
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(0, 0, width, height);
+                glClearColor(light.skyR(), light.skyG(), light.skyB(), 1f);
+                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                glDisable(GL_SCISSOR_TEST);
+            }
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LEQUAL);
+            glDepthMask(true);
+            glDisable(GL_CULL_FACE);
+            glDisable(GL_BLEND);
+            follow();
+            drawn = 0;
+            for (int k = 0; k < count; k++) {
+                PlantRenderer r = renderers[k];
+                if (r == null) {
+                    continue;
+                }
+                r.setLighting(settings.lighting());
+                r.setSheen(settings.sheen());
+                r.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
+                r.draw(tiles[k].simulation().latestFrame(), camera, height);
+                drawn++;
+            }
+        } finally {
+            state.restore();
+        }
+    }
+
+    /** Closes the renderers of tiles let go, lists the new ones and makes a few of their renderers. */
+    private void follow() {
+        int live = world.liveTiles();
+        // keep the drawn tiles that are still live, in the world's order
+        int kept = 0;
+        for (int k = 0; k < count; k++) {
+            if (isLive(tiles[k], live)) {
+                tiles[kept] = tiles[k];
+                renderers[kept] = renderers[k];
+                kept++;
+            } else if (renderers[k] != null) {
+                renderers[k].close();
+            }
+        }
+        Arrays.fill(tiles, kept, count, null);
+        Arrays.fill(renderers, kept, count, null);
+        count = kept;
+        for (int l = 0; l < live; l++) {
+            WorldTile t = world.tile(l);
+            if (indexOf(t) < 0) {
+                if (count == tiles.length) {
+                    tiles = Arrays.copyOf(tiles, 2 * count);
+                    renderers = Arrays.copyOf(renderers, 2 * count);
+                }
+                tiles[count++] = t;
+            }
+        }
+        int budget = NEW_TILES_PER_FRAME;
+        for (int k = 0; k < count && budget > 0; k++) {
+            if (renderers[k] == null) {
+                renderers[k] = new PlantRenderer(gl, tiles[k].world(), programs);
+                made++;
+                budget--;
+            }
+        }
+    }
+
+    private boolean isLive(WorldTile t, int live) {
+        for (int l = 0; l < live; l++) {
+            if (world.tile(l) == t) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private int indexOf(WorldTile t) {
+        for (int k = 0; k < count; k++) {
+            if (tiles[k] == t) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
+    /** {@return the tiles with a renderer now} */
+    public int tileRenderers() {
+        int n = 0;
+        for (int k = 0; k < count; k++) {
+            n += renderers[k] != null ? 1 : 0;
+        }
+        return n;
+    }
+
+    /** {@return the tiles drawn in the last frame} */
+    public int tilesDrawn() {
+        return drawn;
+    }
+
+    /** {@return the tile renderers made so far} */
+    public int renderersMade() {
+        return made;
+    }
+
+    /** Closes every tile renderer and the shared programs. Render thread; idempotent; GL state put back. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        state.save();
+        try {
+            for (int k = 0; k < count; k++) {
+                Closing.closeAll(renderers[k]);
+                renderers[k] = null;
+            }
+            programs.close();
+        } finally {
+            state.restore();
+            state.close();
+        }
+    }
+}
