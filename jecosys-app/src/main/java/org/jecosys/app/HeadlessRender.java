@@ -75,6 +75,14 @@ final class HeadlessRender {
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
                     boolean maps, PrintWriter log, Progress progress) throws IOException {
         SceneDef def = scene.def();
+        if (def.isOpenWorld()) {
+            if (maps) {
+                throw new IllegalArgumentException("--maps needs a scene of one square: '" + def.name()
+                        + "' is an open world, whose plants exist only around the camera");
+            }
+            OpenWorldFrames.run(def, quality, frames, out, width, height, log);
+            return;
+        }
         log.println("Building '" + def.name() + "' ...");
         log.flush();
         try (Simulation sim = Simulation.create(def.simulationDef(), scene.images(), 0, progress)) {

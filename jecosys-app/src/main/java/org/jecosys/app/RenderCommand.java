@@ -58,10 +58,13 @@ final class RenderCommand implements Callable<Integer> {
         if (loaded == null) {
             return ExitCodes.BAD_INPUT;
         }
+        SceneDef def = loaded.def();
+        if (maps && def.isOpenWorld()) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--maps needs a scene of one square: "
+                    + file + " is an open world (<world>), whose plants exist only around the camera");
+        }
         plan.checkImages();
         plan.createFolders();
-        SceneDef def = loaded.def();
-        SceneArgs.openWorldNotice(def, file, spec.commandLine().getErr());
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {

@@ -62,6 +62,16 @@ class SimulateCliTest {
                 dir.resolve("d.csv").toString());
         assertEquals(2, dump.code(), dump.err());
         assertTrue(dump.err().contains("open world"), dump.err());
+        Path frames = dir.resolve("frames");
+        CliTest.Result render = CliTest.run("render", "scenes/openworld.xml", "--frames", "2", "--out", frames.toString(),
+                "--size", "96x54");
+        assertEquals(0, render.code(), render.err());
+        assertTrue(render.out().contains("streamed along its path"), render.out());
+        assertTrue(Files.size(frames.resolve("frame-00002.png")) > 0);
+        CliTest.Result maps = CliTest.run("render", "scenes/openworld.xml", "--frames", "1", "--out", frames.toString(),
+                "--maps");
+        assertEquals(2, maps.code(), maps.err());
+        assertTrue(maps.err().contains("--maps needs a scene of one square"), maps.err());
         CliTest.Result check = CliTest.run("check", "scenes/openworld.xml");
         assertEquals(0, check.code(), check.err());
         assertTrue(check.out().contains("ok (an open world of 16 m tiles within 64 m, 3 species"), check.out());

@@ -21,6 +21,8 @@ import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
 import org.jecosys.render.gl.Closing;
 import org.jecosys.render.gl.GlStateGuard;
+import org.jecosys.render.ground.OpenGround;
+import org.jecosys.render.ground.SkyRenderer;
 import org.jecosys.render.plant.PlantPrograms;
 import org.jecosys.render.plant.PlantRenderer;
 import org.jecosys.sim.OpenWorld;
@@ -32,9 +34,10 @@ import org.jecosys.sim.WorldTile;
  * ({@link PlantPrograms}), each drawing its tile's latest frame with the camera. A tile that became
  * live gets its renderer at a later frame, at most {@link #NEW_TILES_PER_FRAME} per frame (its
  * per-component data uploaded then), so a frame never uploads more than a few tiles; a tile let go
- * has its renderer closed at the next frame. The ground and the sky are the host's (a game's terrain),
- * or, with {@link RenderSettings#clear()} on, the viewport is cleared to the horizon colour; ground
- * cover, contact darkening and sun shadows are not drawn yet.
+ * has its renderer closed at the next frame. With {@link RenderSettings#clear()} on the sky is drawn
+ * first; with {@link RenderSettings#terrain()} on each tile's ground is drawn too (its heightfield, lit
+ * in the ground cover's colour: {@code OpenGround}), else the ground is the host's (a game's terrain).
+ * Ground cover blades, contact darkening and sun shadows are not drawn yet.
  *
  * <p>Threads: the open world's stepping thread is the render thread (a game loop that steps, then
  * draws, on one thread with the context current); {@link #render} reads the live tiles the last step
@@ -50,7 +53,11 @@ public final class OpenWorldRenderer implements AutoCloseable {
     private final OpenWorld world;
     private final RenderSettings settings;
     private final PlantPrograms programs;
+    private final OpenGround ground;
+    private final SkyRenderer sky;
     private final GlStateGuard state;
+    /** Per drawn tile, its ground mesh (made with its renderer). */
+    private OpenGround.Mesh[] meshes = new OpenGround.Mesh[64];
     /** The tiles drawn, and their renderers (parallel; a tile's slot is null until its renderer is made). */
     private WorldTile[] tiles = new WorldTile[64];
     private PlantRenderer[] renderers = new PlantRenderer[64];
@@ -74,14 +81,21 @@ public final class OpenWorldRenderer implements AutoCloseable {
         this.settings = Require.nonNull("settings", settings);
         GlStateGuard g = new GlStateGuard();
         g.save();
+        PlantPrograms p = null;
+        OpenGround o = null;
         try {
             g.setGuestState();
-            programs = PlantPrograms.compile(gl, null);
+            p = PlantPrograms.compile(gl, null);
+            o = new OpenGround(gl);
+            sky = new SkyRenderer(gl);
         } catch (RuntimeException e) {
+            Closing.closeAll(o, p);
             g.restore();
             g.close();
             throw e;
         }
+        programs = p;
+        ground = o;
         g.restore();
         state = g;
     }
@@ -120,6 +134,21 @@ public final class OpenWorldRenderer implements AutoCloseable {
             glDisable(GL_CULL_FACE);
             glDisable(GL_BLEND);
             follow();
+            Lighting light = settings.lighting();
+            if (settings.clear()) {
+                glDepthMask(false);
+                sky.draw(camera, settings); // the whole picture first: the ground and plants cover it
+                glDepthMask(true);
+            }
+            if (settings.terrain()) {
+                float[] c = groundColour();
+                ground.begin(camera, light, c[0], c[1], c[2]);
+                for (int k = 0; k < count; k++) {
+                    if (meshes[k] != null) {
+                        meshes[k].draw();
+                    }
+                }
+            }
             drawn = 0;
             for (int k = 0; k < count; k++) {
                 PlantRenderer r = renderers[k];
@@ -137,6 +166,19 @@ public final class OpenWorldRenderer implements AutoCloseable {
         }
     }
 
+    /** The ground's colour: the scene's ground cover where it has one, else a meadow soil green (sRGB). */
+    private float[] groundColour() {
+        if (settings.groundCover() != null && settings.groundCover().amount() > 0) {
+            org.jecosys.math.Rgb c = settings.groundCover().colour();
+            groundColour[0] = (float) c.r();
+            groundColour[1] = (float) c.g();
+            groundColour[2] = (float) c.b();
+        }
+        return groundColour;
+    }
+
+    private final float[] groundColour = {0.29f, 0.40f, 0.20f};
+
     /** Closes the renderers of tiles let go, lists the new ones and makes a few of their renderers. */
     private void follow() {
         int live = world.liveTiles();
@@ -146,13 +188,15 @@ public final class OpenWorldRenderer implements AutoCloseable {
             if (isLive(tiles[k], live)) {
                 tiles[kept] = tiles[k];
                 renderers[kept] = renderers[k];
+                meshes[kept] = meshes[k];
                 kept++;
-            } else if (renderers[k] != null) {
-                renderers[k].close();
+            } else {
+                Closing.closeAll(renderers[k], meshes[k]);
             }
         }
         Arrays.fill(tiles, kept, count, null);
         Arrays.fill(renderers, kept, count, null);
+        Arrays.fill(meshes, kept, count, null);
         count = kept;
         for (int l = 0; l < live; l++) {
             WorldTile t = world.tile(l);
@@ -160,6 +204,7 @@ public final class OpenWorldRenderer implements AutoCloseable {
                 if (count == tiles.length) {
                     tiles = Arrays.copyOf(tiles, 2 * count);
                     renderers = Arrays.copyOf(renderers, 2 * count);
+                    meshes = Arrays.copyOf(meshes, 2 * count);
                 }
                 tiles[count++] = t;
             }
@@ -168,6 +213,7 @@ public final class OpenWorldRenderer implements AutoCloseable {
         for (int k = 0; k < count && budget > 0; k++) {
             if (renderers[k] == null) {
                 renderers[k] = new PlantRenderer(gl, tiles[k].world(), programs);
+                meshes[k] = ground.mesh(tiles[k].world().terrain().heightfield());
                 made++;
                 budget--;
             }
@@ -221,10 +267,11 @@ public final class OpenWorldRenderer implements AutoCloseable {
         state.save();
         try {
             for (int k = 0; k < count; k++) {
-                Closing.closeAll(renderers[k]);
+                Closing.closeAll(renderers[k], meshes[k]);
                 renderers[k] = null;
+                meshes[k] = null;
             }
-            programs.close();
+            Closing.closeAll(sky, ground, programs);
         } finally {
             state.restore();
             state.close();
