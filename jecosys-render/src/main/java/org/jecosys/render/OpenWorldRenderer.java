@@ -1,19 +1,6 @@
 package org.jecosys.render;
 
-import static org.lwjgl.opengl.GL11C.GL_BLEND;
-import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
-import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
-import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
-import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
-import static org.lwjgl.opengl.GL11C.GL_LEQUAL;
-import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
-import static org.lwjgl.opengl.GL11C.glClear;
-import static org.lwjgl.opengl.GL11C.glClearColor;
-import static org.lwjgl.opengl.GL11C.glDepthFunc;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
-import static org.lwjgl.opengl.GL11C.glDisable;
-import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL11C.glScissor;
 import static org.lwjgl.opengl.GL11C.glViewport;
 
 import java.util.Arrays;
@@ -120,19 +107,7 @@ public final class OpenWorldRenderer implements AutoCloseable {
         try {
             glViewport(0, 0, width, height);
             state.setGuestState();
-            if (settings.clear()) {
-                Lighting light = settings.lighting();
-                glEnable(GL_SCISSOR_TEST);
-                glScissor(0, 0, width, height);
-                glClearColor(light.skyR(), light.skyG(), light.skyB(), 1f);
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                glDisable(GL_SCISSOR_TEST);
-            }
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LEQUAL);
-            glDepthMask(true);
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_BLEND);
+            FrameStart.begin(settings, 0, 0, width, height);
             follow();
             Lighting light = settings.lighting();
             if (settings.clear()) {

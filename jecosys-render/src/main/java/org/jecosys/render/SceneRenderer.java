@@ -1,21 +1,12 @@
 package org.jecosys.render;
 
 import org.jecosys.render.gl.Closing;
-import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
-import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
-import static org.lwjgl.opengl.GL11C.GL_DEPTH_BUFFER_BIT;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
-import static org.lwjgl.opengl.GL11C.GL_LEQUAL;
-import static org.lwjgl.opengl.GL11C.glClear;
-import static org.lwjgl.opengl.GL11C.glClearColor;
-import static org.lwjgl.opengl.GL11C.glDepthFunc;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL11C.glViewport;
-import static org.lwjgl.opengl.GL11C.GL_BLEND;
 import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
-import static org.lwjgl.opengl.GL11C.glScissor;
 import static org.lwjgl.opengl.GL11C.GL_POLYGON_OFFSET_FILL;
 import static org.lwjgl.opengl.GL11C.glPolygonOffset;
 import static org.lwjgl.opengl.GL11C.glIsEnabled;
@@ -339,18 +330,7 @@ public final class SceneRenderer implements AutoCloseable {
         }
         terrain.setTint(settings.tint());
         Lighting light = settings.lighting();
-        if (settings.clear()) {
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(vx, vy, width, height);
-            glClearColor(light.skyR(), light.skyG(), light.skyB(), 1f);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            glDisable(GL_SCISSOR_TEST);
-        }
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LEQUAL);
-        glDepthMask(true);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_BLEND);
+        FrameStart.begin(settings, vx, vy, width, height);
         // near plants first: the terrain drawn after them fails the early depth test behind them (less
         // shading on a software rasteriser); the far (line) level last, blended over both
         float lx = light.sunX();
