@@ -1,0 +1,97 @@
+package org.jecosys.render;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.GlContext.DebugOutput;
+import org.jecosys.render.ImageMetrics.Img;
+import org.jecosys.render.gl.GlContexts;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.scene.SceneDef;
+import org.jecosys.scene.SceneFiles;
+import org.jecosys.sim.DrawQuality;
+import org.jecosys.sim.OpenWorld;
+import org.jecosys.sim.SimulationDef;
+import org.jecosys.world.TilePlacer;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * Issue 39, "Done when": the popping measure of {@link PoppingTest} along an open world's walk. The
+ * camera of {@code scenes/openworld.xml} walks one second at 10 m/s (30 frames, 960x540, wind off:
+ * plants at rest, thinned at the low quality as on llvmpipe), tiles arriving at the radius and their
+ * renderers made a few a frame; the largest frame-to-frame change (mean absolute difference of the
+ * whole picture) is at most 1.15x the median one, the bound the meadow's walk is held to.
+ * Tagged {@code slow} (many frames on llvmpipe): it runs in {@code mvn -B verify -Pnightly}.
+ */
+@Tag("slow")
+class OpenWorldPoppingTest {
+    private static final int W = 960;
+    private static final int H = 540;
+    private static final int FRAMES = 31;
+
+    @Test
+    void noFrameOfTheOpenWorldsWalkChangesMuchMoreThanTheOthers() throws Exception {
+        SceneDef scene = SceneFiles.parse(Path.of("scenes", "openworld.xml"));
+        int[] speciesOf = new int[scene.distributions().size()];
+        for (int k = 0; k < speciesOf.length; k++) {
+            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
+        }
+        TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+        SimulationDef d = scene.simulationDef();
+        SimulationDef still = new SimulationDef(d.terrain(), d.species(), d.distributions(), d.placements(), d.flows(),
+                d.field().withEnabled(false), d.animation(), d.seed());
+        RenderSettings settings = RenderSettings.of(scene.render());
+        settings.setClear(true);
+        settings.setTerrain(true);
+        ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
+        Img[] frames = new Img[FRAMES];
+        try (OpenWorld w = OpenWorld.create(still, placer, scene.world().radius(), 2, 1, 8);
+             GlContext gl = GlContext.headless(DebugOutput.ON);
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), W, H);
+             OpenWorldRenderer r = new OpenWorldRenderer(gl, w, settings)) {
+            DrawQuality q = DrawQuality.LOW;
+            w.setThinning(q.thinStart(), q.thinEnd(), q.thinMinFraction());
+            ViewCamera cam = new ViewCamera();
+            cam.setOrientation(scene.camera().yaw(), scene.camera().pitch());
+            cam.setLens(scene.camera().fovY(), W / (double) H, scene.camera().near(), scene.camera().far());
+            cam.setPosition(0, scene.world().relief().height(0, 0) + 1.7, 0);
+            for (int k = 0; k < 64; k++) {
+                w.stepFixed(cam);
+                boolean started = w.pendingTiles() > 0;
+                w.settle();
+                if (!started) {
+                    break;
+                }
+            }
+            fb.bind();
+            for (int k = 0; k < 256 && r.tileRenderers() < w.liveTiles(); k++) {
+                r.render(cam, W, H);
+            }
+            for (int i = 0; i < FRAMES; i++) {
+                double x = i * 10.0 / 30;
+                cam.setPosition(x, scene.world().relief().height(x, 0) + 1.7, 0);
+                w.step(1 / 30.0, cam);
+                fb.bind();
+                r.render(cam, W, H);
+                fb.resolve();
+                Screenshot.read(W, H, px);
+                frames[i] = Img.of(px, W, H);
+            }
+            GlContexts.debug(gl).check("the open world's popping test");
+            double[] lm = ImageMetrics.largestAndMedian(ImageMetrics.frameChanges(frames));
+            double ratio = lm[0] / lm[1];
+            System.out.printf("[look] open world walk: largest frame change %.3f/255, median %.3f/255, ratio %.2f"
+                    + " (<= 1.15); %d tiles live, %d tile renderers made%n", lm[0], lm[1], ratio, w.liveTiles(),
+                    r.renderersMade());
+            assertTrue(lm[1] > 0, "the walk does not move the picture");
+            assertTrue(ratio <= 1.15, String.format("largest frame-to-frame change %.3f is %.2fx the median %.3f,"
+                    + " want <= 1.15x", lm[0], ratio, lm[1]));
+        } finally {
+            MemoryUtil.memFree(px);
+        }
+    }
+}
