@@ -215,7 +215,83 @@ final class OpenWorldSection implements Section {
         }
         raw.add(m);
         report.add(t);
+        if (mode != Mode.SMOKE) {
+            report.add(frames(def, placer, ground, mode == Mode.QUICK ? 150 : 600, raw));
+        }
         report.raw("openWorld", raw);
+    }
+
+    /**
+     * The open world drawn along the same kind of walk ({@code OpenWorldRenderer}: sky, each tile's
+     * ground, the plants), 640x360 with 4 samples, on this machine's GL (thinned at the low quality on a
+     * software rasteriser, as the viewer does), one frame after the other as fast as they go: step of
+     * 1/30 s, render, glFinish. Allocates (a table).
+     */
+    private static Table frames(SimulationDef def, TilePlacer placer, RollingTerrain ground, int frames,
+                                List<Object> raw) {
+        int width = 640;
+        int height = 360;
+        double[] ms = new double[frames];
+        String renderer;
+        int made;
+        int live;
+        try (OpenWorld w = OpenWorld.create(def, placer, RADIUS, 2, 1, 4);
+             org.jecosys.render.GlContext gl = org.jecosys.render.GlContext.headless(
+                     org.jecosys.render.GlContext.DebugOutput.OFF);
+             org.jecosys.render.gl.GlFramebuffer fb = new org.jecosys.render.gl.GlFramebuffer(
+                     org.jecosys.render.gl.GlContexts.tracker(gl), width, height, 4)) {
+            renderer = gl.describe();
+            if (org.jecosys.render.ShadowPath.software(renderer)) {
+                org.jecosys.sim.DrawQuality q = org.jecosys.sim.DrawQuality.LOW;
+                w.setThinning(q.thinStart(), q.thinEnd(), q.thinMinFraction());
+            }
+            org.jecosys.render.RenderSettings settings = org.jecosys.render.RenderSettings.standalone();
+            ViewCamera cam = new ViewCamera();
+            cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
+            cam.setLens(Math.toRadians(60), width / (double) height, 0.1, 1000);
+            place(cam, ground, 0);
+            for (int k = 0; k < 256; k++) {
+                w.stepFixed(cam);
+                boolean started = w.pendingTiles() > 0;
+                w.settle();
+                if (!started) {
+                    break;
+                }
+            }
+            try (org.jecosys.render.OpenWorldRenderer r = new org.jecosys.render.OpenWorldRenderer(gl, w, settings)) {
+                fb.bind();
+                for (int k = 0; k < 256 && r.tileRenderers() < w.liveTiles(); k++) {
+                    r.render(cam, width, height); // the loading screen makes every tile's renderer
+                }
+                for (int f = 0; f < 30 + frames; f++) {
+                    place(cam, ground, (f + 1) * SPEED / RATE);
+                    long t0 = System.nanoTime();
+                    w.step(1 / RATE, cam);
+                    fb.bind();
+                    r.render(cam, width, height);
+                    org.lwjgl.opengl.GL11C.glFinish();
+                    if (f >= 30) { // the first second warms up
+                        ms[f - 30] = (System.nanoTime() - t0) / 1e6;
+                    }
+                }
+                made = r.renderersMade();
+            }
+            live = w.liveTiles();
+        }
+        double median = Stats.median(ms);
+        double p99 = Stats.percentile(ms, 0.99);
+        Table t = new Table("open-world-frames", "Open world drawn: the walk at 10 m/s, 640x360, 4 samples",
+                List.of("frames", "frame ms (median)", "frame ms (p99)", "p99 / median", "tiles alive",
+                        "tile renderers made"));
+        t.row(frames, median, p99, p99 / median, live, made);
+        t.note("GL renderer: " + renderer + ". A frame: the fixed steps of 1/30 s, the open world's renderer (sky, "
+                + "each tile's ground, the plants; at most " + org.jecosys.render.OpenWorldRenderer.NEW_TILES_PER_FRAME
+                + " tile renderers made a frame) and glFinish, one after the other; the first second not counted.");
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("frameMedianMs", median);
+        m.put("frameP99Ms", p99);
+        raw.add(m);
+        return t;
     }
 
     private static void place(ViewCamera cam, RollingTerrain ground, double x) {
