@@ -235,6 +235,8 @@ final class OpenWorldSection implements Section {
         String renderer;
         int made;
         int live;
+        long waits;
+        long waits0 = 0;
         try (OpenWorld w = OpenWorld.create(def, placer, RADIUS, 2, 1, 4);
              org.jecosys.render.GlContext gl = org.jecosys.render.GlContext.headless(
                      org.jecosys.render.GlContext.DebugOutput.OFF);
@@ -263,13 +265,14 @@ final class OpenWorldSection implements Section {
                 for (int k = 0; k < 256 && r.tileRenderers() < w.liveTiles(); k++) {
                     r.render(cam, width, height); // the loading screen makes every tile's renderer
                 }
+                waits0 = w.tileWaits();
                 for (int f = 0; f < 30 + frames; f++) {
                     place(cam, ground, (f + 1) * SPEED / RATE);
                     long t0 = System.nanoTime();
                     w.step(1 / RATE, cam);
                     fb.bind();
                     r.render(cam, width, height);
-                    org.lwjgl.opengl.GL11C.glFinish();
+                    gl.finish();
                     if (f >= 30) { // the first second warms up
                         ms[f - 30] = (System.nanoTime() - t0) / 1e6;
                     }
@@ -277,13 +280,14 @@ final class OpenWorldSection implements Section {
                 made = r.renderersMade();
             }
             live = w.liveTiles();
+            waits = w.tileWaits() - waits0;
         }
         double median = Stats.median(ms);
         double p99 = Stats.percentile(ms, 0.99);
         Table t = new Table("open-world-frames", "Open world drawn: the walk at 10 m/s, 640x360, 4 samples",
                 List.of("frames", "frame ms (median)", "frame ms (p99)", "p99 / median", "tiles alive",
-                        "tile renderers made"));
-        t.row(frames, median, p99, p99 / median, live, made);
+                        "tile renderers made", "waits for a tile"));
+        t.row(frames, median, p99, p99 / median, live, made, waits);
         t.note("GL renderer: " + renderer + ". A frame: the fixed steps of 1/30 s, the open world's renderer (sky, "
                 + "each tile's ground, the plants; at most " + org.jecosys.render.OpenWorldRenderer.NEW_TILES_PER_FRAME
                 + " tile renderers made a frame) and glFinish, one after the other; the first second not counted.");
