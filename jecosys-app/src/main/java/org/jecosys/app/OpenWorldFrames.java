@@ -49,14 +49,7 @@ final class OpenWorldFrames {
             RenderSettings settings = HeadlessRender.settings(def.render());
             // the start is loaded first, as behind a loading screen
             ViewCamera start = walk.at(0);
-            for (int k = 0; k < 256; k++) {
-                world.stepFixed(start);
-                boolean started = world.pendingTiles() > 0;
-                world.settle();
-                if (!started) {
-                    break;
-                }
-            }
+            world.load(start);
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height,
                     def.render().antialiasing());
                  OpenWorldRenderer renderer = new OpenWorldRenderer(gl, world, settings)) {

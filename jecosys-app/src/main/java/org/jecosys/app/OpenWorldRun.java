@@ -54,14 +54,7 @@ final class OpenWorldRun {
             err.flush();
             // the start is loaded first, as a game's loading screen would: the timed steps walk from there
             ViewCamera start = walk.at(0);
-            for (int k = 0; k < 256; k++) {
-                w.stepFixed(start);
-                boolean started = w.pendingTiles() > 0;
-                w.settle();
-                if (!started) {
-                    break;
-                }
-            }
+            w.load(start);
             int warm = Math.max(1, steps / 2);
             long alloc0 = 0;
             threads.getThreadAllocatedBytes(self);

@@ -91,14 +91,7 @@ final class OpenWorldSection implements Section {
             cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 1000);
             place(cam, ground, mode == Mode.SMOKE ? -5 : -100);
             // the start is loaded as a game's loading screen would load it
-            for (int k = 0; k < 256; k++) {
-                w.stepFixed(cam);
-                boolean started = w.pendingTiles() > 0;
-                w.settle();
-                if (!started) {
-                    break;
-                }
-            }
+            w.load(cam);
             // a warm-up walk of 100 m in real time (the JIT, the tiles ahead), not measured; 10 m in a smoke run
             long warm = System.nanoTime();
             int warmFrames = mode == Mode.SMOKE ? 15 : 300;
@@ -252,14 +245,7 @@ final class OpenWorldSection implements Section {
             cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
             cam.setLens(Math.toRadians(60), width / (double) height, 0.1, 1000);
             place(cam, ground, 0);
-            for (int k = 0; k < 256; k++) {
-                w.stepFixed(cam);
-                boolean started = w.pendingTiles() > 0;
-                w.settle();
-                if (!started) {
-                    break;
-                }
-            }
+            w.load(cam);
             try (org.jecosys.render.OpenWorldRenderer r = new org.jecosys.render.OpenWorldRenderer(gl, w, settings)) {
                 fb.bind();
                 for (int k = 0; k < 256 && r.tileRenderers() < w.liveTiles(); k++) {

@@ -496,6 +496,23 @@ public final class OpenWorld implements AutoCloseable {
         }
     }
 
+    /**
+     * A loading screen: fixed steps with {@code camera}, each followed by a {@link #settle}, until a step
+     * starts no tile, so every tile within reach of the views is live. Stepping thread; allocates.
+     *
+     * @param camera the viewer where the game starts
+     */
+    public void load(Camera camera) {
+        for (int k = 0; k < 256; k++) {
+            stepFixed(camera);
+            boolean started = pendingTiles() > 0;
+            settle();
+            if (!started) {
+                return;
+            }
+        }
+    }
+
     /** Stops the workers and closes every tile. Idempotent; any thread. */
     @Override
     public void close() {

@@ -59,14 +59,7 @@ class OpenWorldPoppingTest {
             cam.setOrientation(scene.camera().yaw(), scene.camera().pitch());
             cam.setLens(scene.camera().fovY(), W / (double) H, scene.camera().near(), scene.camera().far());
             cam.setPosition(0, scene.world().relief().height(0, 0) + 1.7, 0);
-            for (int k = 0; k < 64; k++) {
-                w.stepFixed(cam);
-                boolean started = w.pendingTiles() > 0;
-                w.settle();
-                if (!started) {
-                    break;
-                }
-            }
+            w.load(cam);
             fb.bind();
             for (int k = 0; k < 256 && r.tileRenderers() < w.liveTiles(); k++) {
                 r.render(cam, W, H);
