@@ -1,6 +1,7 @@
 package org.jecosys.app;
 
 import org.jecosys.math.CameraDef;
+import org.jecosys.math.HeightFunction;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.sim.CameraWalk;
 import org.jecosys.terrain.Heightfield;
@@ -15,6 +16,10 @@ import org.jecosys.terrain.Heightfield;
  * viewer and those runs see the path identically (time since P was pressed, the walk's pose copied
  * into this camera; at the end of a path that does not loop the camera stays there until P is
  * pressed again). Render thread; no allocation.
+ *
+ * <p>Over an open world ({@link #unbounded}) the ground has no edge: the camera walks anywhere over the
+ * world's hills, at most {@link #OPEN_CEILING} metres above their highest point, and H returns to the
+ * scene's camera instead of framing a square.
  */
 final class FlyCamera {
     static final double LOOK = 0.0025;
@@ -28,25 +33,81 @@ final class FlyCamera {
     /** Angle below the horizon at which the top of the view meets the far edge in {@link #frameScene}, radians. */
     static final double FRAME_TOP = Math.toRadians(8);
 
+    /** Over an open world: the highest the eye may go above the hills' highest point, metres. */
+    static final double OPEN_CEILING = 300;
+    /** Over an open world: the walking speed without Shift, Ctrl or the wheel, m/s (a brisk walk). */
+    static final double OPEN_WALK = 4;
+
     private final ViewCamera camera;
-    private final Heightfield ground;
+    private final HeightFunction ground;
     private final CameraWalk walk;
     private final boolean hasPath;
     private final double clearance;
     private final double margin;
+    /** The ground's extent (infinite over an open world), its highest point and the speed scale. */
+    private final double minX;
+    private final double maxX;
+    private final double minZ;
+    private final double maxZ;
+    private final double maxHeight;
+    private final double ceiling;
+    private final double baseSpeed;
+    private final boolean bounded;
+    /** The scene camera's pose, where H returns over an open world. */
+    private final double homeX;
+    private final double homeY;
+    private final double homeZ;
+    private final double homeYaw;
+    private final double homePitch;
     private double speed;
     private boolean playing;
     private double pathTime;
 
     FlyCamera(ViewCamera camera, CameraDef def, Heightfield ground) {
+        this(camera, def, ground, true, ground.minX(), ground.maxX(), ground.minZ(), ground.maxZ(),
+                ground.maxHeight(), Math.max(ground.sizeX(), ground.sizeZ()), walkSpeed(ground),
+                Math.min(ground.sizeX(), ground.sizeZ()));
+    }
+
+    private FlyCamera(ViewCamera camera, CameraDef def, HeightFunction ground, boolean bounded, double minX,
+                      double maxX, double minZ, double maxZ, double maxHeight, double ceiling, double baseSpeed,
+                      double small) {
         this.camera = camera;
         this.ground = ground;
+        this.bounded = bounded;
+        this.minX = minX;
+        this.maxX = maxX;
+        this.minZ = minZ;
+        this.maxZ = maxZ;
+        this.maxHeight = maxHeight;
+        this.ceiling = ceiling;
+        this.baseSpeed = baseSpeed;
         this.walk = new CameraWalk(def, ground, camera.aspect());
         this.hasPath = def.path().size() >= 2;
-        this.speed = walkSpeed(ground);
-        double small = Math.min(ground.sizeX(), ground.sizeZ());
+        this.speed = baseSpeed;
         this.clearance = Math.max(0.05, Math.min(0.3, 0.02 * small));
-        this.margin = 0.01 * small;
+        this.margin = bounded ? 0.01 * small : 0;
+        this.homeX = camera.x();
+        this.homeY = camera.y();
+        this.homeZ = camera.z();
+        this.homeYaw = camera.yaw();
+        this.homePitch = camera.pitch();
+    }
+
+    /**
+     * A camera over ground without an edge (an open world's hills): it walks anywhere, at most
+     * {@link #OPEN_CEILING} metres above {@code maxHeight}, at {@link #OPEN_WALK} m/s; H returns it to
+     * where it starts.
+     *
+     * @param camera    the camera, at its starting pose (the scene's camera over the hills)
+     * @param def       the scene's camera (its path is played with P)
+     * @param ground    the hills
+     * @param maxHeight the hills' highest point, metres
+     * @return the camera
+     */
+    static FlyCamera unbounded(ViewCamera camera, CameraDef def, HeightFunction ground, double maxHeight) {
+        return new FlyCamera(camera, def, ground, false, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, maxHeight, OPEN_CEILING, OPEN_WALK, 100);
     }
 
     /**
@@ -67,7 +128,7 @@ final class FlyCamera {
 
     /** Scales the walking speed by 1.25 per mouse-wheel step (up: faster), within [1/16, 16] times the terrain's. */
     void scaleSpeed(double steps) {
-        double base = walkSpeed(ground);
+        double base = baseSpeed;
         speed = Math.max(base / 16, Math.min(base * 16, speed * Math.pow(1.25, steps)));
     }
 
@@ -79,12 +140,13 @@ final class FlyCamera {
     /**
      * Keeps the eye over the terrain (X and Z within its bounds, less a margin of 1% of its smaller
      * side), at least {@link #clearance()} above the ground and at most the terrain's larger side
-     * above its highest point. No allocation.
+     * above its highest point (over an open world: anywhere in X and Z, at most {@link #OPEN_CEILING}
+     * above the hills). No allocation.
      */
     void clamp() {
-        double x = Math.max(ground.minX() + margin, Math.min(ground.maxX() - margin, camera.x()));
-        double z = Math.max(ground.minZ() + margin, Math.min(ground.maxZ() - margin, camera.z()));
-        double top = ground.maxHeight() + Math.max(ground.sizeX(), ground.sizeZ());
+        double x = Math.max(minX + margin, Math.min(maxX - margin, camera.x()));
+        double z = Math.max(minZ + margin, Math.min(maxZ - margin, camera.z()));
+        double top = maxHeight + ceiling;
         double y = Math.max(ground.height(x, z) + clearance, Math.min(top, camera.y()));
         if (x != camera.x() || y != camera.y() || z != camera.z()) {
             camera.setPosition(x, y, z);
@@ -94,10 +156,18 @@ final class FlyCamera {
     /**
      * Frames the whole terrain (the "frame the scene" key): stops the path, puts the eye over the
      * middle of the terrain's south edge, looking north (-Z) and down so that the far edge is just
-     * below the top of the view, high enough to see over every hill. No allocation.
+     * below the top of the view, high enough to see over every hill. Over an open world, which has no
+     * edge to frame, returns to the pose the camera started at. No allocation.
      */
     void frameScene() {
         playing = false;
+        if (!bounded) {
+            camera.setOrientation(homeYaw, homePitch);
+            camera.setPosition(homeX, homeY, homeZ);
+            clamp();
+            return;
+        }
+        Heightfield ground = (Heightfield) this.ground;
         double half = camera.fovY() / 2;
         double pitch = -(half + FRAME_TOP);
         double z = ground.maxZ() - margin;

@@ -45,17 +45,4 @@ final class SceneArgs {
             return null;
         }
     }
-
-    /**
-     * Tells, on {@code err}, that the viewer shows an open world's {@code <terrain>} square (it does not
-     * stream tiles yet) and which commands stream it. Nothing for other scenes.
-     */
-    static void openWorldNotice(org.jecosys.scene.SceneDef def, Path file, PrintWriter err) {
-        if (def.isOpenWorld()) {
-            err.println(file + " is an open world (<world>): the viewer shows its <terrain> square grown by the same "
-                    + "distributions, since it does not stream tiles yet; `jecosys render " + file + "` and `jecosys "
-                    + "simulate " + file + "` stream it");
-            err.flush();
-        }
-    }
 }

@@ -1,6 +1,7 @@
 package org.jecosys.app;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jecosys.render.GlContext;
@@ -29,11 +30,18 @@ final class ViewCommand implements Callable<Integer> {
 
     /** The usage footer: the viewer's controls ({@link ViewerControls#CONTROLS}), one per line. */
     static String[] controlsHelp() {
-        String[] out = new String[ViewerControls.CONTROLS.length + 2];
+        int n = ViewerControls.CONTROLS.length;
+        int m = OpenWorldControls.CONTROLS.length;
+        String[] out = new String[n + m + 4];
         out[0] = "";
         out[1] = "Controls in the viewer:";
-        for (int i = 0; i < ViewerControls.CONTROLS.length; i++) {
+        for (int i = 0; i < n; i++) {
             out[i + 2] = "  " + ViewerControls.CONTROLS[i];
+        }
+        out[n + 2] = "";
+        out[n + 3] = "Controls over an open world (a scene with <world>):";
+        for (int i = 0; i < m; i++) {
+            out[n + 4 + i] = "  " + OpenWorldControls.CONTROLS[i];
         }
         return out;
     }
@@ -65,7 +73,6 @@ final class ViewCommand implements Callable<Integer> {
         }
         SceneDef def = loaded.def();
         spec.commandLine().getOut().println("Scene '" + def.name() + "' (" + scene + ") is valid.");
-        SceneArgs.openWorldNotice(def, file, spec.commandLine().getErr());
         spec.commandLine().getOut().flush();
         try {
             if (headless) {
@@ -74,9 +81,18 @@ final class ViewCommand implements Callable<Integer> {
                 spec.commandLine().getOut().println("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering "
                         + frames + " frames headless to " + out.toAbsolutePath() + " instead of opening the viewer.");
                 spec.commandLine().getOut().flush();
+                if (def.isOpenWorld()) {
+                    PrintWriter log = spec.commandLine().getOut();
+                    OpenWorldFrames.run(def, quality, frames, out, def.render().width(), def.render().height(), log);
+                    return ExitCodes.OK;
+                }
                 HeadlessRender.run(loaded, quality, frames, out, def.render().width(), def.render().height(), true,
                         spec.commandLine().getOut(),
                         new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
+                return ExitCodes.OK;
+            }
+            if (def.isOpenWorld()) {
+                new OpenWorldViewer(def, quality).run();
                 return ExitCodes.OK;
             }
             new Viewer(loaded, file, quality).run(new ConsoleProgress(spec.commandLine().getErr(),
