@@ -465,6 +465,34 @@ final class ImageMetrics {
         return new double[] {v[n - 1], median};
     }
 
+    /**
+     * A pop's own measure, free of the slow drift of what the picture shows (hills, the horizon): each
+     * frame change over the median of its neighbours within {@code half} frames either side (itself
+     * left out). A plant or tile popping in makes one frame's change stand out from its neighbours';
+     * a walk over a hill raises several in a row and hardly moves this ratio.
+     *
+     * @param changes frame changes ({@link #frameChanges})
+     * @param half    neighbours each side, &gt;= 1
+     * @return per change, its ratio to its neighbours' median
+     */
+    static double[] localRatios(double[] changes, int half) {
+        double[] out = new double[changes.length];
+        double[] nb = new double[2 * half];
+        for (int i = 0; i < changes.length; i++) {
+            int n = 0;
+            for (int j = Math.max(0, i - half); j <= Math.min(changes.length - 1, i + half); j++) {
+                if (j != i) {
+                    nb[n++] = changes[j];
+                }
+            }
+            double[] v = Arrays.copyOf(nb, n);
+            Arrays.sort(v);
+            double median = n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+            out[i] = median > 0 ? changes[i] / median : 1;
+        }
+        return out;
+    }
+
     /** Frame-to-frame change of a sequence: mean absolute difference of each picture from the previous. */
     static double[] frameChanges(Img[] frames) {
         double[] d = new double[frames.length - 1];
