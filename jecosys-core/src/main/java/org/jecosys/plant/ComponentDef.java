@@ -28,11 +28,15 @@ import org.jecosys.math.Rgb;
  * @param colour       base colour
  * @param lodSegments  per species level of detail, how many segments this component uses there
  *                     (0 = not drawn at that level), each in [0, segments]
+ * @param texture      an image (PNG with alpha) drawn on the component, as the scene writes its path
+ *                     (relative to the scene's folder; read through the scene's image source), or null
+ *                     for the plain colour; mapped along the skeleton for a strip (v from base to tip,
+ *                     u across), radially for a fan; {@code colour} tints it (see {@link PlantTextures})
  */
 public record ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo,
                            int segments, double length, double baseWidth, double tipWidth, double curvature,
                            double twist, double tilt, double mass, double stiffness, double responseTime,
-                           double dragArea, Rgb colour, List<Integer> lodSegments) {
+                           double dragArea, Rgb colour, List<Integer> lodSegments, String texture) {
     /**
      * Checks the components and copies {@code lodSegments}.
      *
@@ -54,6 +58,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
      * @param dragArea     drag coefficient times area, m^2, in [0, 10]
      * @param colour       base colour, not null
      * @param lodSegments  segments drawn per level of detail, each in [0, segments]
+     * @param texture      the image drawn on it, as the scene writes its path, or null; not blank
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public ComponentDef {
@@ -80,6 +85,40 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         for (int i = 0; i < lodSegments.size(); i++) {
             Require.range("lodSegments[" + i + "]", lodSegments.get(i), 0, segments);
         }
+        if (texture != null && texture.isBlank()) {
+            throw new IllegalArgumentException("texture must not be blank (null for none)");
+        }
+    }
+
+    /**
+     * A component without a texture ({@code texture} null): its plain colour. Values as the canonical
+     * constructor's.
+     *
+     * @param id           unique within the species, not empty
+     * @param type         leaf, petal, head or stalk
+     * @param shape        strip or fan
+     * @param count        components per plant, in [1, 256]
+     * @param attachTo     id of the carrying component, or null for the ground
+     * @param segments     skeleton segments, in [1, 32]
+     * @param length       skeleton length, metres
+     * @param baseWidth    width at the base, metres
+     * @param tipWidth     width at the tip, metres
+     * @param curvature    rest curvature, radians
+     * @param twist        twist over the length, radians
+     * @param tilt         base angle from vertical, radians
+     * @param mass         kilograms
+     * @param stiffness    spring constant PC, N/m
+     * @param responseTime response time tau, seconds
+     * @param dragArea     drag coefficient times area, m^2
+     * @param colour       base colour
+     * @param lodSegments  segments drawn per level of detail
+     */
+    public ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo, int segments,
+                        double length, double baseWidth, double tipWidth, double curvature, double twist, double tilt,
+                        double mass, double stiffness, double responseTime, double dragArea, Rgb colour,
+                        List<Integer> lodSegments) {
+        this(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth, curvature, twist, tilt, mass,
+                stiffness, responseTime, dragArea, colour, lodSegments, null);
     }
 
     /** Most components of one type per plant (the scene schema's range and the API's). */
@@ -171,6 +210,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         b.dragArea = dragArea;
         b.colour = colour;
         b.lodSegments = lodSegments;
+        b.texture = texture;
         return b;
     }
 
@@ -197,6 +237,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         private double dragArea = DEFAULT_DRAG_AREA;
         private Rgb colour = DEFAULT_COLOUR;
         private List<Integer> lodSegments;
+        private String texture;
 
         private Builder(String id, ComponentType type) {
             this.id = id;
@@ -395,6 +436,18 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         }
 
         /**
+         * Sets the image drawn on the component.
+         *
+         * @param texture its path as a scene writes it (read through the scene's image source), or null
+         *                for the plain colour
+         * @return this builder
+         */
+        public Builder texture(String texture) {
+            this.texture = texture;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -427,7 +480,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
                         + " (no default in the scene schema)");
             }
             return new ComponentDef(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth,
-                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments);
+                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture);
         }
     }
 }

@@ -16,10 +16,28 @@ import org.jecosys.math.Rng;
 public final class PlantModel {
     private final List<SpeciesModel> species;
     private final long buildNanos;
+    private final PlantTextures textures;
 
-    private PlantModel(List<SpeciesModel> species, long buildNanos) {
+    private PlantModel(List<SpeciesModel> species, long buildNanos, PlantTextures textures) {
         this.species = species;
         this.buildNanos = buildNanos;
+        this.textures = textures;
+    }
+
+    /**
+     * These species with the images their components name (a renderer draws them on the components).
+     * Build time; allocates the new model (the species are shared).
+     *
+     * @param textures the prepared images ({@link PlantTextures#load}), {@link PlantTextures#NONE} for none
+     * @return a model with the same species and these textures
+     */
+    public PlantModel withTextures(PlantTextures textures) {
+        return new PlantModel(species, buildNanos, Require.nonNull("textures", textures));
+    }
+
+    /** {@return the images drawn on components; {@link PlantTextures#NONE} when none is named or loaded} */
+    public PlantTextures textures() {
+        return textures;
     }
 
     /**
@@ -79,7 +97,7 @@ public final class PlantModel {
             out.add(SpeciesModel.build(d, speciesSeed(seed, d), gravity).withComponents(components));
             progress.report("plants", i + 1, defs.size());
         }
-        return new PlantModel(List.copyOf(out), System.nanoTime() - t0);
+        return new PlantModel(List.copyOf(out), System.nanoTime() - t0, PlantTextures.NONE);
     }
 
     /**

@@ -2,6 +2,7 @@ package org.jecosys.scene;
 
 import static org.jecosys.scene.AttrType.COLOUR;
 import static org.jecosys.scene.AttrType.ID;
+import static org.jecosys.scene.AttrType.PATH;
 import static org.jecosys.scene.AttrType.INT_LIST;
 import static org.jecosys.scene.AttrType.TEXT;
 import static org.jecosys.scene.SceneSchema.INF;
@@ -140,6 +141,10 @@ final class PlantSchema {
                         .get(d -> c(d).dragArea()))
                 .attr(AttrSpec.of("colour", COLOUR, "", "Base colour.").def(ComponentDef.DEFAULT_COLOUR)
                         .get(d -> c(d).colour()))
+                .attr(AttrSpec.of("texture", PATH, "", "Image drawn on the component (PNG, alpha cuts its outline), "
+                        + "relative to the scene file, at most " + org.jecosys.plant.PlantTextures.MAX_SIDE + " pixels a "
+                        + "side: along the skeleton for a strip (bottom row at the base, top row at the tip), centred "
+                        + "for a fan; colour tints it (#ffffff: as drawn).").get(d -> c(d).texture()))
                 .attr(AttrSpec.of("lodSegments", INT_LIST, "", "Per level of detail of the species, segments used "
                         + "there (0 = not drawn); one value per lod, each at most segments.").range(0, ComponentDef.MAX_SEGMENTS)
                         .items(1, MAX_LODS).required().get(d -> c(d).lodSegments()));

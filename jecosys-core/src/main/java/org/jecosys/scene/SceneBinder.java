@@ -311,7 +311,23 @@ final class SceneBinder {
                 byXml(ComponentShape.values(), c.str("shape")), c.integer("count"), attach, c.integer("segments"),
                 c.num("length"), c.num("baseWidth"), c.num("tipWidth"), c.num("curvature"), c.num("twist"),
                 c.num("tilt"), c.num("mass"), c.num("stiffness"), c.num("responseTime"), c.num("dragArea"),
-                (Rgb) c.get("colour"), lodSegments));
+                (Rgb) c.get("colour"), lodSegments, texture(c)));
+    }
+
+    /** The component's texture, checked as an image and against {@link org.jecosys.plant.PlantTextures#MAX_SIDE}. */
+    private String texture(Values c) {
+        String path = c.str("texture");
+        int before = images.size();
+        checkFile(c, "texture", path);
+        if (images.size() > before) {
+            ImageFiles.Size size = images.get(images.size() - 1).size();
+            int most = org.jecosys.plant.PlantTextures.MAX_SIDE;
+            if (size.width() > most || size.height() > most) {
+                problem(c, "texture", "attribute 'texture' of <component>: '" + path + "' is " + size.width() + "x"
+                        + size.height() + " pixels; a texture is at most " + most + " pixels a side");
+            }
+        }
+        return path;
     }
 
     private DistributionDef distribution(Values d) {

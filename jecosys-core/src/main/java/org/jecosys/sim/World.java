@@ -161,7 +161,7 @@ public final class World {
      * {@code org.jecosys.scene.Scene#images()}, or a game's assets).
      *
      * @param def      what to build
-     * @param images   where the heightmap and resource images the def names come from
+     * @param images   where the heightmap, resource and texture images the def names come from
      * @param workers  worker threads for generation, &gt;= 1
      * @param progress receives progress of the long steps
      * @return the world
@@ -176,7 +176,7 @@ public final class World {
      * {@code distributor}, user components from {@code components}. Build time; allocates.
      *
      * @param def         what to build
-     * @param images      where the heightmap and resource images the def names come from
+     * @param images      where the heightmap, resource and texture images the def names come from
      * @param workers     worker threads for generation, &gt;= 1
      * @param progress    receives progress of the long steps
      * @param distributor places the plants ({@code new CompetitiveDistributor()} for the paper's)
@@ -201,7 +201,7 @@ public final class World {
         Terrain terrain = Terrain.build(def.terrain(), images, workers, progress);
         long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
-                progress, components);
+                progress, components).withTextures(org.jecosys.plant.PlantTextures.load(def.species(), images));
         List<String> ids = new ArrayList<>();
         for (SpeciesDef s : def.species()) {
             ids.add(s.id());

@@ -95,7 +95,7 @@ import org.lwjgl.system.MemoryUtil;
  * <li>bindings: program, vertex array, array buffer, {@code GL_TEXTURE_BUFFER}, pixel-unpack buffer,
  * transform feedback buffer (generic and index 0), on OpenGL 4.3 the shader storage buffer (generic
  * and index 0), the active texture unit and, on units 0 to {@link TextureUnits#GUARDED} - 1, the buffer texture,
- * the 2D texture and the sampler object;</li>
+ * the 2D texture and the sampler object (and the 2D array on {@link TextureUnits#PLANT_TEXTURES});</li>
  * <li>capabilities: depth test, face culling, blending, scissor test, rasteriser discard,
  * alpha-to-coverage and alpha-to-one, stencil test, polygon offset (fill, line, point: Mesa offsets
  * line primitives too), sRGB framebuffer writes,
@@ -152,6 +152,8 @@ public final class GlStateGuard implements AutoCloseable {
     private final int[] unitBufferTextures = new int[TextureUnits.GUARDED];
     private final int[] unitTextures2d = new int[TextureUnits.GUARDED];
     private final int[] unitSamplers = new int[TextureUnits.GUARDED];
+    /** The 2D-array binding of {@link TextureUnits#PLANT_TEXTURES}, the one unit the library binds an array on. */
+    private int plantTextureArray;
     private int program;
     private int vertexArray;
     private int arrayBuffer;
@@ -208,6 +210,9 @@ public final class GlStateGuard implements AutoCloseable {
             unitBufferTextures[u] = query.get(GL_TEXTURE_BINDING_BUFFER);
             unitTextures2d[u] = query.get(GL11C.GL_TEXTURE_BINDING_2D);
             unitSamplers[u] = query.get(GL_SAMPLER_BINDING);
+            if (u == TextureUnits.PLANT_TEXTURES) {
+                plantTextureArray = query.get(org.lwjgl.opengl.GL30C.GL_TEXTURE_BINDING_2D_ARRAY);
+            }
         }
         glActiveTexture(activeTexture);
         for (int i = 0; i < CAPS.length; i++) {
@@ -317,6 +322,9 @@ public final class GlStateGuard implements AutoCloseable {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_BUFFER, unitBufferTextures[u]);
             glBindTexture(GL11C.GL_TEXTURE_2D, unitTextures2d[u]);
+            if (u == TextureUnits.PLANT_TEXTURES) {
+                glBindTexture(org.lwjgl.opengl.GL30C.GL_TEXTURE_2D_ARRAY, plantTextureArray);
+            }
             glBindSampler(u, unitSamplers[u]);
         }
         glActiveTexture(activeTexture);

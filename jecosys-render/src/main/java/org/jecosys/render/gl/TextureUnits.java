@@ -9,7 +9,7 @@ package org.jecosys.render.gl;
  * its two units itself.
  *
  * <p>The per-component resolve pass reads units {@link #POSES} to {@link #BEND_GEOMETRY}; the plants'
- * draws read {@link #POSES}, {@link #RECORDS} and {@link #SUN_SHADOW}; the terrain reads
+ * draws read {@link #POSES}, {@link #RECORDS}, {@link #SUN_SHADOW} and {@link #PLANT_TEXTURES}; the terrain reads
  * {@link #GROUND_MAPS}, {@link #COVER_GRAIN}, {@link #TILE_BENDS} and {@link #SUN_SHADOW}; the ground
  * cover's blades {@link #GROUND_MAPS}, {@link #TILE_BENDS}, {@link #GROUND_HEIGHTS} and
  * {@link #SUN_SHADOW}. OpenGL 3.3 guarantees 48 combined units, so each meaning has its own.
@@ -54,12 +54,17 @@ public final class TextureUnits {
      * after {@link GlStateGuard#setGuestState()}, so a buffer texture made then is bound on a guarded unit.
      */
     public static final int UPLOAD = 15;
+    /**
+     * The images drawn on components (2D array, mipmapped, a layer per image: {@link GlTextureArray}): the
+     * plants' triangle draws. The guard puts back this unit's 2D-array binding too.
+     */
+    public static final int PLANT_TEXTURES = 16;
     /** Units {@code 0} to this - 1 are saved and put back by {@link GlStateGuard}. */
-    public static final int GUARDED = 16;
+    public static final int GUARDED = 17;
     /** The box-averaged image the framebuffer's resolve filter reads (2D), outside the guard. */
-    public static final int FILTER_IMAGE = 16;
+    public static final int FILTER_IMAGE = 17;
     /** The detail mask the framebuffer's resolve filter reads (2D), outside the guard. */
-    public static final int FILTER_DETAIL = 17;
+    public static final int FILTER_DETAIL = 18;
     /** Every unit the library uses is below this. */
-    public static final int COUNT = 18;
+    public static final int COUNT = 19;
 }

@@ -6,6 +6,7 @@ import static org.lwjgl.opengl.GL43C.GL_MAX_SHADER_STORAGE_BLOCK_SIZE;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.jecosys.plant.PlantTextures;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.ResolvePath;
@@ -13,6 +14,7 @@ import org.jecosys.render.gl.Closing;
 import org.jecosys.render.gl.GlBufferTexture;
 import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.GlProgram;
+import org.jecosys.render.gl.GlTextureArray;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
 import org.jecosys.render.gl.TextureUnits;
@@ -42,6 +44,10 @@ final class PlantGpu implements AutoCloseable {
     final GlBufferTexture poseTexture;
     /** The per-component resolve pass and its buffers. */
     final ComponentResolver resolver;
+    /** Whether components are textured: the triangle programs are compiled with {@code TEXTURED}. */
+    final boolean textured;
+    /** The images drawn on components, a layer each; null without textures. */
+    final GlTextureArray textures;
     /** Per list: its level's mesh and the mesh's index count. */
     final GlVertexArray[] vaos;
     final int[] indexCount;
@@ -65,11 +71,14 @@ final class PlantGpu implements AutoCloseable {
     /**
      * As the other constructor, with the draw and resolve programs of {@code shared} (made for this
      * context), not closed by this set; null compiles and owns its own. Its resolve path is
-     * {@code shared}'s then.
+     * {@code shared}'s then. A world with textures compiles its own draw programs (with
+     * {@code TEXTURED}) whatever is shared.
      */
     PlantGpu(GlContext gl, World world, PlantBatches batches, ResolvePath path, PlantPrograms shared) {
         tracker = GlContexts.tracker(gl);
         List<SpeciesModel> models = world.plants().species();
+        PlantTextures images = world.plants().textures();
+        textured = !images.isEmpty();
         check(models);
         int[][][] poseTexel = new int[models.size()][][];
         long texels = PlantMeshes.poseTexelLayout(models, poseTexel);
@@ -83,24 +92,28 @@ final class PlantGpu implements AutoCloseable {
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, PlantRenderer.MAX_EXACT));
             for (int k = 0; k < programs.length; k++) {
-                programs[k] = shared != null ? shared.draw(k) : own(PlantPasses.compile(tracker, k));
+                programs[k] = shared != null && !textured ? shared.draw(k) : own(PlantPasses.compile(tracker, k,
+                        textured));
             }
             poseTexture = own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
                     GL_RGBA32F));
             resolver = own(new ComponentResolver(tracker, world, batches, poseTexture, poseTexel, components,
-                    maxComponents, PlantMeshes.slotLooks(models), resolvePath,
+                    maxComponents, PlantMeshes.slotLooks(models, images), resolvePath,
                     shared == null ? null : shared.resolve()));
             int lists = batches.listCount();
             vaos = new GlVertexArray[lists];
             indexCount = new int[lists];
             for (int s = 0; s < models.size(); s++) {
                 SpeciesModel m = models.get(s);
+                int[] layers = PlantMeshes.layers(images, s, m);
                 for (int l = 0; l < m.levels(); l++) {
                     int li = batches.list(s, l);
                     indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = PlantMeshes.uploadMesh(tracker, m, m.mesh(l), owned);
+                    vaos[li] = PlantMeshes.uploadMesh(tracker, m, m.mesh(l), layers, owned);
                 }
             }
+            textures = textured ? own(new GlTextureArray(tracker, images.side(), images.layers(), images::level))
+                    : null;
         } catch (RuntimeException | Error e) {
             Closing.closeReverse(owned);
             throw e;
@@ -162,6 +175,9 @@ final class PlantGpu implements AutoCloseable {
     void bindForDraws() {
         poseTexture.bind(TextureUnits.POSES);
         resolver.bindRecords();
+        if (textures != null) {
+            textures.bind(TextureUnits.PLANT_TEXTURES);
+        }
     }
 
     /** Deletes every GL object, in reverse order of making. Render thread; idempotent. */
@@ -179,8 +195,8 @@ final class PlantGpu implements AutoCloseable {
         GlProgram[] casters = new GlProgram[PlantPasses.CASTERS];
         GlProgram[] receivers = new GlProgram[PlantPasses.CASTERS];
         for (int k = 0; k < casters.length; k++) {
-            casters[k] = own(PlantPasses.compileCaster(tracker, k));
-            receivers[k] = own(PlantPasses.compileReceiver(tracker, k));
+            casters[k] = own(PlantPasses.compileCaster(tracker, k, textured));
+            receivers[k] = own(PlantPasses.compileReceiver(tracker, k, textured));
         }
         passes.useCasters(casters, receivers);
     }
@@ -197,7 +213,7 @@ final class PlantGpu implements AutoCloseable {
             }
             GlProgram[] programs = new GlProgram[PlantPasses.CASTERS];
             for (int k = 0; k < programs.length; k++) {
-                programs[k] = own(PlantPasses.compileSplit(tracker, k, mapped == 1));
+                programs[k] = own(PlantPasses.compileSplit(tracker, k, mapped == 1, textured));
             }
             if (mapped == 0) {
                 passes.useSplit(programs);

@@ -33,8 +33,8 @@ import org.jecosys.render.gl.GlVertexArray;
  * and flowers), and the species slots' looks for the resolve pass. Render thread; allocates.
  */
 public final class PlantMeshes {
-    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach. */
-    public static final int VERTEX_FLOATS = 11;
+    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach, texture layer. */
+    public static final int VERTEX_FLOATS = 12;
     /** Vertex kinds of {@code plant_common.glsl}: a blade (leaf), a stem, a petal, a fan head. */
     public static final int BLADE = 0;
     public static final int STEM = 1;
@@ -71,9 +71,11 @@ public final class PlantMeshes {
 
     /**
      * One VAO (owning its vertex and index buffers) for a species' level: slot, point, a, b; colour,
-     * along; pose stride (3 x points of the slot's pose table, the same for every variant).
+     * along; pose stride (3 x points of the slot's pose table, the same for every variant); kind, reach
+     * and the texture layer of the vertex's component (-1: none; {@code layers[c]} for component c).
      */
-    public static GlVertexArray uploadMesh(GlTracker t, SpeciesModel m, LodMesh mesh, List<AutoCloseable> owned) {
+    public static GlVertexArray uploadMesh(GlTracker t, SpeciesModel m, LodMesh mesh, int[] layers,
+                                           List<AutoCloseable> owned) {
         int n = mesh.vertexCount();
         FloatBuffer fv = MemoryUtil.memAllocFloat(Math.max(VERTEX_FLOATS, VERTEX_FLOATS * n));
         IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
@@ -84,12 +86,13 @@ public final class PlantMeshes {
             }
             for (int v = 0; v < n; v++) {
                 int slot = mesh.vertexSlot(v);
-                ComponentDef def = m.component(m.slotComponent(slot)).def();
+                int component = m.slotComponent(slot);
+                ComponentDef def = m.component(component).def();
                 Rgb rgb = def.colour();
                 int points = m.slotPoseTable(slot, 0).points();
                 fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
                         .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
-                        .put(3 * points).put(kind(def)).put(reach[slot]);
+                        .put(3 * points).put(kind(def)).put(reach[slot]).put(layers[component]);
             }
             for (int i = 0; i < mesh.indexCount(); i++) {
                 iv.put(mesh.index(i));
@@ -106,7 +109,7 @@ public final class PlantMeshes {
             glEnableVertexAttribArray(2);
             glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
             glEnableVertexAttribArray(3);
-            glVertexAttribPointer(3, 2, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
+            glVertexAttribPointer(3, 3, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
             own(owned, GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
             glBindVertexArray(0);
             return vao;
@@ -118,25 +121,53 @@ public final class PlantMeshes {
 
     /**
      * The look of every species slot for the resolve pass, 4 floats each (colour r, g, b, vertex
-     * kind), species after species. Construction time; allocates.
+     * kind), species after species; a textured component's colour is tinted by its texture's mean (the
+     * far levels drawn as lines stand for the textured part). Construction time; allocates.
      */
-    public static float[] slotLooks(List<SpeciesModel> models) {
+    public static float[] slotLooks(List<SpeciesModel> models, org.jecosys.plant.PlantTextures textures) {
         int n = 0;
         for (SpeciesModel m : models) {
             n += m.slotCount();
         }
         float[] looks = new float[4 * Math.max(1, n)];
         int o = 0;
-        for (SpeciesModel m : models) {
+        float[] mean = {1, 1, 1};
+        for (int s = 0; s < models.size(); s++) {
+            SpeciesModel m = models.get(s);
             for (int slot = 0; slot < m.slotCount(); slot++) {
-                ComponentDef def = m.component(m.slotComponent(slot)).def();
-                looks[o++] = def.colour().r();
-                looks[o++] = def.colour().g();
-                looks[o++] = def.colour().b();
+                int c = m.slotComponent(slot);
+                ComponentDef def = m.component(c).def();
+                int layer = textures.layer(s, c);
+                if (layer >= 0) {
+                    textures.meanColour(layer, mean);
+                } else {
+                    mean[0] = 1;
+                    mean[1] = 1;
+                    mean[2] = 1;
+                }
+                looks[o++] = (float) def.colour().r() * mean[0];
+                looks[o++] = (float) def.colour().g() * mean[1];
+                looks[o++] = (float) def.colour().b() * mean[2];
                 looks[o++] = kind(def);
             }
         }
         return looks;
+    }
+
+    /**
+     * The texture layer of each component of species {@code s} (-1: none). Construction time; allocates.
+     *
+     * @param textures the world's textures
+     * @param s        the species' index
+     * @param m        the species
+     * @return per component, its layer
+     */
+    public static int[] layers(org.jecosys.plant.PlantTextures textures, int s, SpeciesModel m) {
+        int[] out = new int[m.componentCount()];
+        for (int c = 0; c < out.length; c++) {
+            out[c] = textures.layer(s, c);
+        }
+        return out;
     }
 
     /** {@return whether any component of the species is a flower part (a petal or a head)} */

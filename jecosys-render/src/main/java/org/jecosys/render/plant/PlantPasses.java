@@ -68,12 +68,24 @@ public final class PlantPasses {
      * flower parts). Render thread; allocates.
      */
     public static GlProgram compile(GlTracker t, int k) {
-        List<String> d = new ArrayList<>(2);
+        return compile(t, k, false);
+    }
+
+    /**
+     * Compiles program {@code k} as {@link #compile(GlTracker, int)}, its triangle levels reading the
+     * components' images when {@code textured} ({@code TEXTURED}: a layer per vertex, sampled along the
+     * part). Render thread; allocates.
+     */
+    public static GlProgram compile(GlTracker t, int k, boolean textured) {
+        List<String> d = new ArrayList<>(3);
         if ((k & DITHER) != 0) {
             d.add("DITHER");
         }
         if ((k & FLOWERS) != 0) {
             d.add("FLOWERS");
+        }
+        if (textured && (k & LINES) == 0) {
+            d.add("TEXTURED");
         }
         String[] defines = d.toArray(new String[0]);
         return (k & LINES) != 0
@@ -85,8 +97,19 @@ public final class PlantPasses {
      * Compiles caster program {@code k} of {@link #CASTERS} (bit 0: the dither test, bit 1: flower
      * parts): {@code plant.vert} with {@code SHADOW_CASTER}, depth only. Render thread; allocates.
      */
-    public static GlProgram compileCaster(GlTracker t, int k) {
-        return GlProgram.variant(t, "plant.vert", "plant_caster.frag", mapDefines("SHADOW_CASTER", k));
+    public static GlProgram compileCaster(GlTracker t, int k, boolean textured) {
+        return GlProgram.variant(t, "plant.vert", "plant_caster.frag", textured(mapDefines("SHADOW_CASTER", k),
+                textured));
+    }
+
+    /** The defines with {@code TEXTURED} added when {@code textured}. */
+    private static String[] textured(String[] defines, boolean textured) {
+        if (!textured) {
+            return defines;
+        }
+        String[] more = java.util.Arrays.copyOf(defines, defines.length + 1);
+        more[defines.length] = "TEXTURED";
+        return more;
     }
 
     /** The defines of a shadow-map program: {@code role}, then DITHER for bit 0 and FLOWERS for bit 1 of k. */
@@ -107,8 +130,8 @@ public final class PlantPasses {
      * parts): the triangle levels' programs with {@code SHADOW_MAP}, which read the sun's shadow map per
      * fragment. Render thread; allocates.
      */
-    public static GlProgram compileReceiver(GlTracker t, int k) {
-        return GlProgram.variant(t, "plant.vert", "plant.frag", mapDefines("SHADOW_MAP", k));
+    public static GlProgram compileReceiver(GlTracker t, int k, boolean textured) {
+        return GlProgram.variant(t, "plant.vert", "plant.frag", textured(mapDefines("SHADOW_MAP", k), textured));
     }
 
     /**
@@ -116,8 +139,8 @@ public final class PlantPasses {
      * with the shadow map read or not: the triangle levels' programs with {@code SPLIT}, which keep
      * either the opaque core of the plants or their fringe ({@code uSplit}). Render thread; allocates.
      */
-    public static GlProgram compileSplit(GlTracker t, int k, boolean shadowMap) {
-        String[] d = mapDefines("SPLIT", k);
+    public static GlProgram compileSplit(GlTracker t, int k, boolean shadowMap, boolean textured) {
+        String[] d = textured(mapDefines("SPLIT", k), textured);
         if (shadowMap) {
             String[] more = java.util.Arrays.copyOf(d, d.length + 1);
             more[d.length] = "SHADOW_MAP";

@@ -80,6 +80,7 @@ public final class PlantUniforms {
         glUniform1i(p.optionalUniform("uShadowMap"), TextureUnits.SUN_SHADOW);
         glUniform1i(p.optionalUniform("uPoses"), TextureUnits.POSES);
         glUniform1i(p.optionalUniform("uComponents"), TextureUnits.RECORDS);
+        glUniform1i(p.optionalUniform("uPlantTextures"), TextureUnits.PLANT_TEXTURES);
     }
 
     /**

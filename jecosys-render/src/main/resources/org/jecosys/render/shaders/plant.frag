@@ -34,10 +34,29 @@ in vec3 vSun;
 in vec3 vWorld;
 #include "sun_shadow.glsl"
 #endif
+#ifdef TEXTURED
+// the components' images (PlantTextures: a layer each, mipmapped with their coverage kept, the colour
+// bled under transparent texels so that no dark fringe is filtered in); the lit colour is multiplied by
+// the texel, the haze kept as it is; alpha cuts the outline (coverage under multisampling, blended at the
+// fringe without samples, a test at one half where the plants are drawn opaque)
+in vec4 vTex;
+uniform sampler2DArray uPlantTextures;
+uniform vec3 uFogColour;
+#endif
 
 void main() {
     // the soft edge (targets without samples, which blend by alpha): the outer uFeather pixels fade
     float alpha = uFeather > 0.0 ? vShade.a * clamp((1.0 - abs(vEdge.x)) * vEdge.y / uFeather, 0.0, 1.0) : vShade.a;
+#ifdef TEXTURED
+    vec4 texel = vec4(1.0);
+    if (vTex.z > -0.5) {
+        texel = texture(uPlantTextures, vec3(vTex.xy, floor(vTex.z + 0.5)));
+        if (uAlphaFloor > 0.5 && texel.a < 0.5) {
+            discard;                             // drawn opaque: the outline is a test at one half
+        }
+        alpha *= texel.a;
+    }
+#endif
 #ifdef SPLIT
     if ((alpha >= 0.996) != (uSplit < 1.5)) {
         discard;
@@ -48,12 +67,16 @@ void main() {
         discard;
     }
 #endif
+    vec3 colour = vShade.rgb;
 #ifdef SHADOW_MAP
     // the other plants' shadows (and its own), per fragment: the sun's share taken away
     vec2 shadow = sunShadowMap(vWorld);
-    fragColour = vec4(vShade.rgb - (uSunShadow.w * shadow.x * shadow.y) * vSun, max(alpha, uAlphaFloor));
-#else
-    fragColour = vec4(vShade.rgb, max(alpha, uAlphaFloor));
+    colour -= (uSunShadow.w * shadow.x * shadow.y) * vSun;
 #endif
+#ifdef TEXTURED
+    // vShade = lit (1 - h) + haze h: the image tints the lit part only
+    colour = colour * texel.rgb + (vTex.w * uFogColour) * (1.0 - texel.rgb);
+#endif
+    fragColour = vec4(colour, max(alpha, uAlphaFloor));
     fragDetail = vec4(1.0);
 }

@@ -6,6 +6,7 @@
 // parent), its bend azimuth as cosine and sine, the pose-table texel of pose k, the blend weight
 // toward k + 1, this level's dither window, and its colour variation (hue turn, brightness, patch
 // dryness). plant_common.glsl places and shades the vertex; 3 + 6 texel fetches.
+// With TEXTURED the vertex also gives plant.frag its place on the component's image.
 // Line levels use plant_line.vert instead. Compiled with SHADOW_CASTER it only places the vertex, for
 // the sun's shadow map (uViewProj is then the sun's; plant_caster.frag); with SHADOW_MAP it also passes
 // on the world position and the sun's share of the colour, and plant.frag reads the map per fragment.
@@ -26,6 +27,10 @@ out vec3 vWorld;                                 // the vertex, world: plant.fra
 #endif
 #ifdef DITHER
 flat out vec2 vKeep;                             // keep fragments with lo <= bayer < hi
+#endif
+#ifdef TEXTURED
+out vec4 vTex;                                   // u, v on the component's image, its layer (-1: none), and
+                                                 // the haze's share of vShade (plant.frag keeps it untextured)
 #endif
 
 void main() {
@@ -53,6 +58,14 @@ void main() {
     gSunLit = 0.0;
     vSun = vShade.rgb - shade(v, c2, false, fract(c1.w) * (1.0 / 0.99), vec2(c0.w, c1.z));
     vWorld = v.world;
+#endif
+#ifdef TEXTURED
+#ifdef SHADOW_CASTER
+    vTex = vec4(textureCoord(), aShape.z, 0.0);
+#else
+    float haze = clamp((v.distance - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
+    vTex = vec4(textureCoord(), aShape.z, haze * haze);
+#endif
 #endif
 #ifdef DITHER
     int keep = int(c1.w);

@@ -7,7 +7,18 @@ flat in vec2 vKeep;
 #include "dither.glsl"
 #endif
 
+#ifdef TEXTURED
+in vec4 vTex;
+uniform sampler2DArray uPlantTextures;
+#endif
+
 void main() {
+#ifdef TEXTURED
+    // a textured part casts the shadow of its image's outline
+    if (vTex.z > -0.5 && texture(uPlantTextures, vec3(vTex.xy, floor(vTex.z + 0.5))).a < 0.5) {
+        discard;
+    }
+#endif
 #ifdef DITHER
     if (dithered(vKeep)) {
         discard;

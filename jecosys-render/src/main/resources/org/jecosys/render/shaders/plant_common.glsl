@@ -23,7 +23,8 @@
 layout(location = 0) in vec4 aVertex;           // slot, point, a, b
 layout(location = 1) in vec4 aColour;           // component colour (0..1), fraction along it
 layout(location = 2) in float aStride;          // texels between poses k and k + 1 of the slot (3 x points)
-layout(location = 3) in vec2 aShape;            // kind (0 blade, 1 stem, 2 petal, 3 fan head), reach (m)
+layout(location = 3) in vec3 aShape;            // kind (0 blade, 1 stem, 2 petal, 3 fan head), reach (m),
+                                                 // the component's texture layer (-1: none)
 
 uniform mat4 uViewProj;
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
@@ -58,6 +59,16 @@ vec3 rotAxis(vec3 v, vec3 k, float t) {
     float c = cos(t);
     return v * c + cross(k, v) * sin(t) + k * dot(k, v) * (1.0 - c);
 }
+
+#ifdef TEXTURED
+// Where the vertex lies on its component's image (plant.frag samples it): on a strip u runs across from
+// the left edge (a = -1) to the right, v from the base to the tip; a fan's image is centred on its base,
+// its rim on the image's edge
+vec2 textureCoord() {
+    int kind = int(aShape.x + 0.5);
+    return kind == 3 ? 0.5 + 0.5 * aVertex.zw : vec2(0.5 + 0.5 * aVertex.z, aColour.w);
+}
+#endif
 
 // Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the
 // component's frame; (ca, sa) the bend azimuth; widen says whether thin parts are widened.
