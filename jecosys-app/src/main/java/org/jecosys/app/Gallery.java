@@ -50,6 +50,9 @@ import org.lwjgl.system.MemoryUtil;
  * <li>{@code meadow-shadowmap.png}: the close-up's view with the sun's shadows drawn by the shadow map
  *     ({@code ShadowPath.MAP}, whatever the GL): the plants shade the ground and each other as they
  *     sway (the other views take the path the GL calls for: the ground splat on llvmpipe);</li>
+ * <li>{@code textured-default.png} and {@code textured-closeup.png}: the textured meadow
+ *     ({@code scenes/textured.xml}, the project's own blade, petal and flower-head images) from its
+ *     start camera and from the close-up's place;</li>
  * <li>{@code rose-level0.png}, {@code rose-level1.png}, {@code rose-level2.png}: the rose at 1.2 m,
  *     12 m and 20 m (each distance falls in one level of detail: triangles, fewer triangles, lines),
  *     from 45 degrees, the lens narrowed so that the rose fills the picture's height at every distance;</li>
@@ -68,10 +71,11 @@ final class Gallery {
     /** The trail view's walker, m^2/s. */
     static final double WALKER_STRENGTH = 40;
     /** The scene files the gallery needs. */
-    static final List<String> SCENES = List.of("meadow.xml", "rose.xml", "c1.xml", "c2.xml", "c3.xml");
+    static final List<String> SCENES = List.of("meadow.xml", "textured.xml", "rose.xml", "c1.xml", "c2.xml", "c3.xml");
     /** Every file the gallery writes, in order. */
     static final List<String> FILES = List.of("meadow-default.png", "meadow-closeup.png", "meadow-above.png",
-            "meadow-backlit.png", "meadow-gusts.png", "meadow-trail.png", "meadow-shadowmap.png", "rose-level0.png",
+            "meadow-backlit.png", "meadow-gusts.png", "meadow-trail.png", "meadow-shadowmap.png",
+            "textured-default.png", "textured-closeup.png", "rose-level0.png",
             "rose-level1.png", "rose-level2.png", "c1.png", "c2.png", "c3.png");
 
     /** A scene file with problems (already printed). */
@@ -175,6 +179,10 @@ final class Gallery {
                     views.add(new View("rose-level" + level + ".png", camera(world.plantX(0) - d * Math.sin(a), mid,
                             world.plantZ(0) + d * Math.cos(a), a, 0, fov, aspect, 0.02, 500)));
                 }
+            }
+            case "textured.xml" -> {
+                views.add(new View("textured-default.png", ViewCamera.of(def.camera(), ground, aspect)));
+                views.add(new View("textured-closeup.png", closeUp(def, world, aspect)));
             }
             default -> views.add(new View(scene.replace(".xml", ".png"), ViewCamera.of(def.camera(), ground, aspect)));
         }

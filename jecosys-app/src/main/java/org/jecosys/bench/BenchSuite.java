@@ -31,6 +31,7 @@ public final class BenchSuite {
         s.add(new PaperScenesSection(scenes));
         s.add(new ScaleSection(scenes));
         s.add(new RenderScaleSection(scenes, quality));
+        s.add(new TextureSection(scenes));
         s.add(new StreamingSection());
         s.add(new OpenWorldSection(scenes));
         return s;

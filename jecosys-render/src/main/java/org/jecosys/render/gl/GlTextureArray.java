@@ -31,7 +31,9 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * A square RGBA8 2D array texture with its whole mip chain given level by level (the images drawn on
- * components, {@code org.jecosys.plant.PlantTextures}): trilinear filtering, clamped at the edges.
+ * components, {@code org.jecosys.plant.PlantTextures}): trilinear filtering (or bilinear in the nearest
+ * mip level, for a software rasteriser, where a trilinear fetch per fragment made the textured meadow's
+ * frame 1.34 times the plain one's at 1080p, and the nearest level 1.13 times), clamped at the edges.
  * Render thread; the constructor allocates (a native staging buffer, freed before it returns).
  */
 public final class GlTextureArray extends GlResource {
@@ -54,12 +56,13 @@ public final class GlTextureArray extends GlResource {
      * Makes and fills the texture. Puts back the active unit, its 2D-array binding and the unpack
      * alignment.
      *
-     * @param tracker counts the object
-     * @param side    texels a side of level 0, a power of two
-     * @param layers  layers, &gt;= 1
-     * @param levels  the texels of each level of each layer, levels 0 to log2(side)
+     * @param tracker   counts the object
+     * @param side      texels a side of level 0, a power of two
+     * @param layers    layers, &gt;= 1
+     * @param levels    the texels of each level of each layer, levels 0 to log2(side)
+     * @param trilinear blend the two nearest mip levels (else bilinear in the nearest one)
      */
-    public GlTextureArray(GlTracker tracker, int side, int layers, Levels levels) {
+    public GlTextureArray(GlTracker tracker, int side, int layers, Levels levels, boolean trilinear) {
         super(tracker, glGenTextures());
         if (side < 1 || Integer.bitCount(side) != 1) {
             throw new IllegalArgumentException("side must be a power of two, got " + side);
@@ -94,7 +97,8 @@ public final class GlTextureArray extends GlResource {
                 }
             }
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, count - 1);
-            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, trilinear ? GL_LINEAR_MIPMAP_LINEAR
+                    : org.lwjgl.opengl.GL11C.GL_LINEAR_MIPMAP_NEAREST);
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
             glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);

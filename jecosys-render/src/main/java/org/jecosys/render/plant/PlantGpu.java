@@ -112,8 +112,9 @@ final class PlantGpu implements AutoCloseable {
                     vaos[li] = PlantMeshes.uploadMesh(tracker, m, m.mesh(l), layers, owned);
                 }
             }
-            textures = textured ? own(new GlTextureArray(tracker, images.side(), images.layers(), images::level))
-                    : null;
+            // trilinear on a GPU; the nearest level's bilinear on a software rasteriser (GlTextureArray)
+            textures = textured ? own(new GlTextureArray(tracker, images.side(), images.layers(), images::level,
+                    !org.jecosys.render.gl.SoftwareGl.is(gl.describe()))) : null;
         } catch (RuntimeException | Error e) {
             Closing.closeReverse(owned);
             throw e;

@@ -38,7 +38,7 @@ in vec3 vWorld;
 // the components' images (PlantTextures: a layer each, mipmapped with their coverage kept, the colour
 // bled under transparent texels so that no dark fringe is filtered in); the lit colour is multiplied by
 // the texel, the haze kept as it is; alpha cuts the outline (coverage under multisampling, blended at the
-// fringe without samples, a test at one half where the plants are drawn opaque)
+// fringe without samples)
 in vec4 vTex;
 uniform sampler2DArray uPlantTextures;
 uniform vec3 uFogColour;
@@ -50,10 +50,9 @@ void main() {
 #ifdef TEXTURED
     vec4 texel = vec4(1.0);
     if (vTex.z > -0.5) {
+        // no discard here: a shader that may discard loses the early depth test on llvmpipe, and the
+        // outline is coverage (multisampled) or blended (the fringe of a target without samples)
         texel = texture(uPlantTextures, vec3(vTex.xy, floor(vTex.z + 0.5)));
-        if (uAlphaFloor > 0.5 && texel.a < 0.5) {
-            discard;                             // drawn opaque: the outline is a test at one half
-        }
         alpha *= texel.a;
     }
 #endif
