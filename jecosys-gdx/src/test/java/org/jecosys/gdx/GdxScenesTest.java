@@ -35,6 +35,8 @@ class GdxScenesTest {
         assertEquals("Tiny", scene.def().name());
         byte[] png = scene.images().read("img/ramp.png");
         assertTrue(png.length > 8 && png[1] == 'P' && png[2] == 'N' && png[3] == 'G', "the sibling image's bytes");
+        byte[] blade = scene.images().read("img/blade.png");
+        assertTrue(blade.length > 8 && blade[1] == 'P', "the leaf's texture, a sibling image too");
     }
 
     @Test
@@ -52,6 +54,7 @@ class GdxScenesTest {
         Files.createDirectories(dir.resolve("img"));
         Files.copy(Path.of(ON_DISK), dir.resolve("tiny.xml"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/ramp.png"), dir.resolve("img/ramp.png"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), dir.resolve("img/blade.png"));
         String abs = dir.resolve("tiny.xml").toString();
         checkTiny(GdxScenes.read(FILES.absolute(abs)), abs);
     }
@@ -67,8 +70,9 @@ class GdxScenesTest {
         }
         // a scene that names an image out of its folder: refused with the scene's location
         Path sub = dir.resolve("scenes");
-        Files.createDirectories(sub);
+        Files.createDirectories(sub.resolve("img"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/ramp.png"), dir.resolve("ramp.png"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), sub.resolve("img/blade.png"));
         String xml = Files.readString(Path.of(ON_DISK), StandardCharsets.UTF_8).replace("img/ramp.png", "../ramp.png");
         Files.writeString(sub.resolve("out.xml"), xml, StandardCharsets.UTF_8);
         SceneLoadException e = assertThrows(SceneLoadException.class,
@@ -81,6 +85,8 @@ class GdxScenesTest {
     void aMissingImageIsNamedWithTheScenesLocation() throws Exception {
         String xml = Files.readString(Path.of(ON_DISK), StandardCharsets.UTF_8).replace("img/ramp.png", "img/none.png");
         Files.writeString(dir.resolve("missing.xml"), xml, StandardCharsets.UTF_8);
+        Files.createDirectories(dir.resolve("img"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), dir.resolve("img/blade.png"));
         SceneLoadException e = assertThrows(SceneLoadException.class,
                 () -> GdxScenes.read(FILES.absolute(dir.resolve("missing.xml").toString())));
         assertTrue(e.getMessage().matches("(?s).*missing\\.xml:\\d+:\\d+:.*img/none\\.png.*"), e.getMessage());

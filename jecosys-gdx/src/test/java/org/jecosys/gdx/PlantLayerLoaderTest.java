@@ -43,6 +43,8 @@ class PlantLayerLoaderTest {
         assertNotNull(sim, "built by loadAsync");
         assertEquals(2, sim.inspect().workers());
         assertTrue(sim.plantCount() > 0);
+        assertEquals(1, sim.world().plants().textures().layers(), "the leaf's texture, read through the resolver");
+        assertEquals("img/blade.png", sim.world().plants().textures().path(0));
         loader.unloadAsync(null, NAME, file, p);
         assertNull(loader.pending(NAME));
         IllegalStateException closed = assertThrows(IllegalStateException.class,

@@ -39,6 +39,12 @@ class SceneAssetLoaderTest {
         assertEquals("Tiny", scene.def().name());
         byte[] png = scene.images().read("img/ramp.png");
         assertTrue(png.length > 8 && png[1] == 'P' && png[2] == 'N' && png[3] == 'G', "the sibling image's bytes");
+        // the leaf's texture comes through the asset manager too, and the world built from the scene draws it
+        assertEquals("img/blade.png", scene.def().species().get(0).components().get(0).texture());
+        org.jecosys.sim.World w = org.jecosys.sim.World.build(scene.def().simulationDef(), scene.images(), 1,
+                org.jecosys.math.Progress.NONE);
+        assertEquals(1, w.plants().textures().layers());
+        assertEquals(128, w.plants().textures().side());
     }
 
     private Path copyTiny(Path folder) throws IOException {
@@ -46,6 +52,7 @@ class SceneAssetLoaderTest {
         Files.createDirectories(folder.resolve("img"));
         Files.copy(src, folder.resolve("tiny.xml"));
         Files.copy(src.resolveSibling("img/ramp.png"), folder.resolve("img/ramp.png"));
+        Files.copy(src.resolveSibling("img/blade.png"), folder.resolve("img/blade.png"));
         return folder.resolve("tiny.xml");
     }
 
