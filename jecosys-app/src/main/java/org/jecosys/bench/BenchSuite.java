@@ -32,6 +32,7 @@ public final class BenchSuite {
         s.add(new ScaleSection(scenes));
         s.add(new RenderScaleSection(scenes, quality));
         s.add(new TextureSection(scenes));
+        s.add(new RenderPassSection(scenes));
         s.add(new StreamingSection());
         s.add(new OpenWorldSection(scenes));
         return s;

@@ -3,13 +3,8 @@ package org.jecosys.render;
 import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
 import static org.lwjgl.opengl.GL11C.glDisable;
-import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL11C.glViewport;
-import static org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
-import static org.lwjgl.opengl.GL11C.GL_POLYGON_OFFSET_FILL;
-import static org.lwjgl.opengl.GL11C.glPolygonOffset;
-import static org.lwjgl.opengl.GL11C.glIsEnabled;
 
 import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Require;
@@ -59,7 +54,7 @@ public final class SceneRenderer implements AutoCloseable {
     /** The path {@link ShadowPath#AUTO} takes on this context. */
     private ShadowPath autoShadows;
     /** The sun's shadow map, made at the first frame that draws one. */
-    private SunShadowMap shadowMap;
+    private final SunShadowPass shadowMap;
     /** The shadow map's per-frame values as the shaders read them, shared with the plants, terrain and cover. */
     private final ShadowParams shadow = new ShadowParams();
     /**
@@ -78,6 +73,8 @@ public final class SceneRenderer implements AutoCloseable {
      */
     boolean drawTerrain = true;
     boolean drawPlants = true;
+    /** The GPU timer queries of {@link #setPassTiming}; null while off. */
+    private GpuPassTimer timer;
 
     /**
      * Uploads everything static of the world, and puts back every GL state that uploading changes
@@ -109,6 +106,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.world = world;
         this.path = path;
         castReach = SunShadowMap.castReach(world);
+        shadowMap = new SunShadowPass(gl, shadow);
         build();
     }
 
@@ -236,6 +234,29 @@ public final class SceneRenderer implements AutoCloseable {
         return plants.uploadedBytes();
     }
 
+    /**
+     * Times each pass of the following frames on the GPU, or stops: with timer queries read a few frames
+     * later and only when ready, so measuring never waits; on a software rasteriser (llvmpipe, whose timer
+     * queries do not time passes) by the clock around {@code glFinish} after each pass, a diagnostic that
+     * waits. Render thread; turning it on allocates the queries, a timed frame allocates nothing.
+     *
+     * @param on whether to time the passes
+     */
+    public void setPassTiming(boolean on) {
+        gl.checkThread();
+        if (on && timer == null) {
+            timer = new GpuPassTimer(org.jecosys.render.gl.SoftwareGl.is(gl.describe()));
+        } else if (!on && timer != null) {
+            timer.close();
+            timer = null;
+        }
+    }
+
+    /** {@return the passes' GPU times so far ({@link #setPassTiming}), or null while timing is off} Render thread. */
+    public PassTimes passTimes() {
+        return timer == null ? null : timer.times();
+    }
+
     /** {@return the near ground-cover blades drawn by the last {@link #render}} */
     public int coverBlades() {
         return cover.blades();
@@ -322,6 +343,19 @@ public final class SceneRenderer implements AutoCloseable {
         if (width <= 0 || height <= 0) {
             return;
         }
+        if (timer == null) {
+            drawPasses(frame, camera, vx, vy, width, height);
+            return;
+        }
+        timer.begin();
+        try {
+            drawPasses(frame, camera, vx, vy, width, height);
+        } finally {
+            timer.end();
+        }
+    }
+
+    private void drawPasses(Frame frame, Camera camera, int vx, int vy, int width, int height) {
         state.setGuestState();
         if (settings.clear()) {
             // the library owns the whole picture: the detail mask of its own framebuffer (draw buffer 1,
@@ -337,6 +371,7 @@ public final class SceneRenderer implements AutoCloseable {
         float ly = light.sunY();
         float lz = light.sunZ();
         // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
+        mark(PassTimes.Pass.GROUND_MAPS);
         terrain.prepareShadows(settings);
         shadow.clear();
         boolean map = shadowPath() == ShadowPath.MAP && settings.shadows() > 0
@@ -346,9 +381,12 @@ public final class SceneRenderer implements AutoCloseable {
             plants.setLighting(light);
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.setSheen(settings.sheen());
+            mark(PassTimes.Pass.RESOLVE);
             plants.prepareNear(frame, camera, height);
             if (map) {
-                drawShadowMap(camera, lx, ly, lz, vx, vy, width, height);
+                mark(PassTimes.Pass.SHADOW_MAP);
+                shadowMap.draw(plants, settings, Math.min(settings.shadowReach(), castReach), camera, lx, ly, lz,
+                        vx, vy, width, height);
             }
         }
         // without samples the near plants are blended by the share of a pixel they cover, writing depth:
@@ -359,28 +397,44 @@ public final class SceneRenderer implements AutoCloseable {
             cover.prepare(frame);
         }
         if (drawPlants && !blendedNear) {
+            mark(PassTimes.Pass.NEAR_PLANTS);
             plants.drawPreparedNear();
             if (withCover) {
+                mark(PassTimes.Pass.COVER);
                 cover.draw(frame, camera, settings, terrain.maps());
             }
         }
+        mark(PassTimes.Pass.GROUND);
         drawGround(camera, settings);
         if (blendedNear) {
             if (withCover) {
+                mark(PassTimes.Pass.COVER);
                 cover.draw(frame, camera, settings, terrain.maps());
             }
+            mark(PassTimes.Pass.SKY);
             drawSky(camera, settings); // under the plants' fringe, which writes no depth
+            mark(PassTimes.Pass.NEAR_PLANTS);
             plants.drawPreparedNear();
         } else {
+            mark(PassTimes.Pass.SKY);
             drawSky(camera, settings);
         }
         if (drawPlants) {
+            mark(PassTimes.Pass.FAR_PLANTS);
             plants.drawFar();
         }
         glDisable(GL_DEPTH_TEST);
         OverlaySettings shown = settings.overlays();
         if (field != null && (shown.showField() || shown.showWind())) {
+            mark(PassTimes.Pass.OVERLAY);
             overlay.draw(field, camera, shown, vx, vy, width, height);
+        }
+    }
+
+    /** Starts timing {@code pass} on the GPU when pass timing is on ({@link #setPassTiming}). */
+    private void mark(PassTimes.Pass pass) {
+        if (timer != null) {
+            timer.next(pass);
         }
     }
 
@@ -418,38 +472,6 @@ public final class SceneRenderer implements AutoCloseable {
         return settings.shadowPath() == ShadowPath.AUTO ? autoShadows : settings.shadowPath();
     }
 
-    /**
-     * Draws the plants resolved for this frame into the sun's shadow map (made at the first call), fitted
-     * to the camera, binds it for the plants, the cover and the terrain, and sets the shaders' shadow
-     * parameters. Puts back the host's framebuffer and this frame's viewport.
-     */
-    private void drawShadowMap(Camera camera, float lx, float ly, float lz, int vx, int vy, int width, int height) {
-        if (shadowMap == null) {
-            shadowMap = new SunShadowMap(gl.tracker(), SunShadowMap.DEFAULT_SIZE);
-            shadow.setMatrix(shadowMap.placement().shadowMatrix());
-        }
-        double reach = Math.min(settings.shadowReach(), castReach);
-        shadowMap.fit(camera, lx, ly, lz, reach);
-        // a host's scissor box clips what the library draws into the host's picture, not the map
-        boolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-        glDisable(GL_SCISSOR_TEST);
-        shadowMap.map().begin();
-        // slope-scaled offset: a blade seen edge-on from the sun does not shade itself by rounding
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(2f, 4f);
-        plants.drawCasters(shadowMap);
-        glPolygonOffset(0f, 0f);
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        shadowMap.map().end();
-        if (scissor) {
-            glEnable(GL_SCISSOR_TEST);
-        }
-        glViewport(vx, vy, width, height);
-        shadowMap.map().bind(org.jecosys.render.gl.TextureUnits.SUN_SHADOW);
-        shadow.set(1f / shadowMap.map().size(), (float) shadowMap.placement().bias(), settings.shadows(),
-                (float) camera.x(), (float) camera.y(), (float) camera.z(), (float) reach);
-    }
-
     /** {@return the number of triangles submitted by the last {@link #render}: plants plus terrain} */
     public long triangles() {
         return plants.batches().triangles() + terrain.triangles();
@@ -463,9 +485,13 @@ public final class SceneRenderer implements AutoCloseable {
     /** A new context: forgets the old objects (no GL call, {@code GlTracker}) and makes them again. Allocates. */
     private void rebuild() {
         Closing.closeAll(skin, shadowMap, overlay, sky, plants, cover, terrain, state);
-        shadowMap = null;
         skin = null;
+        boolean timed = timer != null;
+        timer = null; // its queries died with the old context: forgotten, not deleted
         build();
+        if (timed) {
+            timer = new GpuPassTimer(org.jecosys.render.gl.SoftwareGl.is(gl.describe()));
+        }
     }
 
     /**
@@ -482,7 +508,8 @@ public final class SceneRenderer implements AutoCloseable {
                 state.save();
             }
             try {
-                Closing.closeAll(skin, shadowMap, overlay, sky, plants, cover, terrain);
+                Closing.closeAll(current ? timer : null, skin, shadowMap, overlay, sky, plants, cover, terrain);
+                timer = null;
             } finally {
                 if (current) {
                     state.restore();

@@ -1,0 +1,136 @@
+package org.jecosys.bench;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.jecosys.math.Progress;
+import org.jecosys.math.ViewCamera;
+import org.jecosys.render.GlContext;
+import org.jecosys.render.GlContext.DebugOutput;
+import org.jecosys.render.PassTimes;
+import org.jecosys.render.RenderSettings;
+import org.jecosys.render.SceneRenderer;
+import org.jecosys.render.gl.GlContexts;
+import org.jecosys.render.gl.GlFramebuffer;
+import org.jecosys.scene.Scene;
+import org.jecosys.scene.SceneFiles;
+import org.jecosys.scene.Scenes;
+import org.jecosys.sim.CameraWalk;
+import org.jecosys.sim.Simulation;
+
+/**
+ * Where a frame's GPU time goes (issue 42): each scene's camera walk drawn with pass timing on
+ * ({@link SceneRenderer#setPassTiming}), the median and 95th percentile of every pass, and the sum of the
+ * passes' medians against the median of the frames timed whole (every fourth). On a GPU the passes are
+ * timed by timer queries read a few frames later; on a software rasteriser by the clock around
+ * {@code glFinish} after each pass (its timer queries do not time passes).
+ */
+final class RenderPassSection implements Section {
+    private static final double DT = 1 / 30.0;
+    private final Path scenes;
+
+    RenderPassSection(Path scenes) {
+        this.scenes = scenes;
+    }
+
+    @Override
+    public String name() {
+        return "render passes";
+    }
+
+    @Override
+    public void run(Mode mode, Report report) throws Exception {
+        int width = mode == Mode.SMOKE ? 160 : 1920;
+        int height = mode == Mode.SMOKE ? 90 : 1080;
+        int frames = switch (mode) {
+            case SMOKE -> 8;
+            case QUICK -> 16;
+            case FULL -> 48;
+        };
+        List<String> files = switch (mode) {
+            case SMOKE -> List.of("c1.xml");
+            case QUICK -> List.of("meadow.xml");
+            case FULL -> List.of("meadow.xml", "large.xml");
+        };
+        List<String> headers = new ArrayList<>();
+        headers.add("scene");
+        for (PassTimes.Pass p : PassTimes.Pass.values()) {
+            headers.add(p.name().toLowerCase(Locale.ROOT).replace('_', ' ') + " ms");
+        }
+        headers.add("sum of passes ms");
+        headers.add("whole frame ms");
+        headers.add("sum / whole");
+        Table t = new Table("render-passes", String.format(Locale.ROOT, "GPU time per pass: %dx%d, each scene's "
+                + "camera walk, 4 samples, median (95th percentile)", width, height), headers);
+        String how = "";
+        try (GlContext gl = GlContext.headless(DebugOutput.OFF);
+             GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, 4)) {
+            report.glRenderer(gl.describe());
+            how = org.jecosys.render.gl.SoftwareGl.is(gl.describe())
+                    ? "the clock around glFinish after each pass (a software rasteriser: its timer queries do not"
+                    + " time passes)" : "GL_TIME_ELAPSED queries read four frames later, never waited for";
+            for (String file : files) {
+                Scene scene = SceneFiles.read(scenes.resolve(file));
+                try (Simulation sim = Scenes.simulation(scene, 0, Progress.NONE)) {
+                    RenderSettings settings = RenderSettings.of(scene.def().render());
+                    settings.setClear(true);
+                    settings.setTerrain(true);
+                    CameraWalk walk = new CameraWalk(scene.def().camera(), sim.world().terrain().heightfield(),
+                            width / (double) height);
+                    try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings)) {
+                        r.setPassTiming(true);
+                        int passes = PassTimes.Pass.values().length;
+                        double[][] per = new double[passes][frames * 2];
+                        double[] sums = new double[frames * 2];
+                        double[] wholes = new double[frames * 2];
+                        int np = 0;
+                        int nw = 0;
+                        long seenPass = 0;
+                        long seenWhole = 0;
+                        fb.bind();
+                        for (int i = 0; i < frames + 2 * 4; i++) { // 4 more frames each side: the queries' latency
+                            ViewCamera cam = walk.at(i * DT);
+                            sim.step(DT, cam);
+                            r.render(sim.latestFrame(), cam, width, height);
+                            PassTimes pt = r.passTimes();
+                            if (pt.passFrames() > seenPass && i >= 4) {
+                                for (PassTimes.Pass p : PassTimes.Pass.values()) {
+                                    per[p.ordinal()][np] = pt.nanos(p) / 1e6;
+                                }
+                                sums[np++] = pt.passSumNanos() / 1e6;
+                            }
+                            if (pt.wholeFrames() > seenWhole && i >= 4) {
+                                wholes[nw++] = pt.frameNanos() / 1e6;
+                            }
+                            seenPass = pt.passFrames();
+                            seenWhole = pt.wholeFrames();
+                        }
+                        List<Object> row = new ArrayList<>();
+                        row.add(file);
+                        double sumOfMedians = 0;
+                        for (int p = 0; p < passes; p++) {
+                            double[] v = java.util.Arrays.copyOf(per[p], np);
+                            double m = Stats.median(v);
+                            sumOfMedians += m;
+                            row.add(String.format(Locale.ROOT, "%.2f (%.2f)", m, Stats.percentile(v, 95)));
+                            report.raw("render passes / " + file + " / " + PassTimes.Pass.values()[p], v);
+                        }
+                        double whole = Stats.median(java.util.Arrays.copyOf(wholes, nw));
+                        row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
+                        row.add(String.format(Locale.ROOT, "%.2f", whole));
+                        row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
+                        t.row(row.toArray());
+                        report.raw("render passes / " + file + " / whole frame", java.util.Arrays.copyOf(wholes, nw));
+                    }
+                }
+            }
+            t.note("GL renderer: " + gl.describe() + ". Timed by " + how + ". Each pass: ground maps (the splatted"
+                    + " shadow and contact darkening, when they change), resolve (the near plants' lists, uploads and"
+                    + " per-component pass), shadow map (the shadow-map path only), near plants, cover, ground"
+                    + " (terrain), sky, far plants (line levels), overlays. Every fourth timed frame is measured whole"
+                    + " instead; the last column compares the passes' medians summed with it.");
+        }
+        report.add(t);
+    }
+}
