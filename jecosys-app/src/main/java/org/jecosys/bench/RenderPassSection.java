@@ -10,6 +10,7 @@ import org.jecosys.render.GlContext;
 import org.jecosys.render.GlContext.DebugOutput;
 import org.jecosys.render.PassTimes;
 import org.jecosys.render.RenderSettings;
+import org.jecosys.render.ResolvePath;
 import org.jecosys.render.SceneRenderer;
 import org.jecosys.render.gl.GlContexts;
 import org.jecosys.render.gl.GlFramebuffer;
@@ -70,58 +71,67 @@ final class RenderPassSection implements Section {
             how = org.jecosys.render.gl.SoftwareGl.is(gl.describe())
                     ? "the clock around glFinish after each pass (a software rasteriser: its timer queries do not"
                     + " time passes)" : "GL_TIME_ELAPSED queries read four frames later, never waited for";
+            // on a GPU both resolve paths, so that the per-pass times show what the resolve costs on each
+            boolean gpu = !org.jecosys.render.gl.SoftwareGl.is(gl.describe());
+            List<ResolvePath> paths = gpu && ResolvePath.COMPUTE.supported(gl.capabilities())
+                    ? List.of(ResolvePath.COMPUTE, ResolvePath.TRANSFORM_FEEDBACK) : List.of(ResolvePath.best(gl));
             for (String file : files) {
-                Scene scene = SceneFiles.read(scenes.resolve(file));
-                try (Simulation sim = Scenes.simulation(scene, 0, Progress.NONE)) {
-                    RenderSettings settings = RenderSettings.of(scene.def().render());
-                    settings.setClear(true);
-                    settings.setTerrain(true);
-                    CameraWalk walk = new CameraWalk(scene.def().camera(), sim.world().terrain().heightfield(),
-                            width / (double) height);
-                    try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings)) {
-                        r.setPassTiming(true);
-                        int passes = PassTimes.Pass.values().length;
-                        double[][] per = new double[passes][frames * 2];
-                        double[] sums = new double[frames * 2];
-                        double[] wholes = new double[frames * 2];
-                        int np = 0;
-                        int nw = 0;
-                        long seenPass = 0;
-                        long seenWhole = 0;
-                        fb.bind();
-                        for (int i = 0; i < frames + 2 * 4; i++) { // 4 more frames each side: the queries' latency
-                            ViewCamera cam = walk.at(i * DT);
-                            sim.step(DT, cam);
-                            r.render(sim.latestFrame(), cam, width, height);
-                            PassTimes pt = r.passTimes();
-                            if (pt.passFrames() > seenPass && i >= 4) {
-                                for (PassTimes.Pass p : PassTimes.Pass.values()) {
-                                    per[p.ordinal()][np] = pt.nanos(p) / 1e6;
+                for (ResolvePath path : paths) {
+                    Scene scene = SceneFiles.read(scenes.resolve(file));
+                    try (Simulation sim = Scenes.simulation(scene, 0, Progress.NONE)) {
+                        RenderSettings settings = RenderSettings.of(scene.def().render());
+                        settings.setClear(true);
+                        settings.setTerrain(true);
+                        CameraWalk walk = new CameraWalk(scene.def().camera(), sim.world().terrain().heightfield(),
+                                width / (double) height);
+                        try (SceneRenderer r = new SceneRenderer(gl, sim.world(), settings, path)) {
+                            r.setPassTiming(true);
+                            int passes = PassTimes.Pass.values().length;
+                            double[][] per = new double[passes][frames * 2];
+                            double[] sums = new double[frames * 2];
+                            double[] wholes = new double[frames * 2];
+                            int np = 0;
+                            int nw = 0;
+                            long seenPass = 0;
+                            long seenWhole = 0;
+                            fb.bind();
+                            // 4 frames more at each end: the queries' latency
+                            for (int i = 0; i < frames + 2 * 4; i++) {
+                                ViewCamera cam = walk.at(i * DT);
+                                sim.step(DT, cam);
+                                r.render(sim.latestFrame(), cam, width, height);
+                                PassTimes pt = r.passTimes();
+                                if (pt.passFrames() > seenPass && i >= 4) {
+                                    for (PassTimes.Pass p : PassTimes.Pass.values()) {
+                                        per[p.ordinal()][np] = pt.nanos(p) / 1e6;
+                                    }
+                                    sums[np++] = pt.passSumNanos() / 1e6;
                                 }
-                                sums[np++] = pt.passSumNanos() / 1e6;
+                                if (pt.wholeFrames() > seenWhole && i >= 4) {
+                                    wholes[nw++] = pt.frameNanos() / 1e6;
+                                }
+                                seenPass = pt.passFrames();
+                                seenWhole = pt.wholeFrames();
                             }
-                            if (pt.wholeFrames() > seenWhole && i >= 4) {
-                                wholes[nw++] = pt.frameNanos() / 1e6;
+                            List<Object> row = new ArrayList<>();
+                            row.add(file + " (" + path.name().toLowerCase(Locale.ROOT).replace('_', ' ') + ")");
+                            double sumOfMedians = 0;
+                            for (int p = 0; p < passes; p++) {
+                                double[] v = java.util.Arrays.copyOf(per[p], np);
+                                double m = Stats.median(v);
+                                sumOfMedians += m;
+                                row.add(String.format(Locale.ROOT, "%.2f (%.2f)", m, Stats.percentile(v, 95)));
+                                report.raw("render passes / " + file + " / " + path + " / "
+                                        + PassTimes.Pass.values()[p], v);
                             }
-                            seenPass = pt.passFrames();
-                            seenWhole = pt.wholeFrames();
+                            double whole = Stats.median(java.util.Arrays.copyOf(wholes, nw));
+                            row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
+                            row.add(String.format(Locale.ROOT, "%.2f", whole));
+                            row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
+                            t.row(row.toArray());
+                            report.raw("render passes / " + file + " / " + path + " / whole frame",
+                                    java.util.Arrays.copyOf(wholes, nw));
                         }
-                        List<Object> row = new ArrayList<>();
-                        row.add(file);
-                        double sumOfMedians = 0;
-                        for (int p = 0; p < passes; p++) {
-                            double[] v = java.util.Arrays.copyOf(per[p], np);
-                            double m = Stats.median(v);
-                            sumOfMedians += m;
-                            row.add(String.format(Locale.ROOT, "%.2f (%.2f)", m, Stats.percentile(v, 95)));
-                            report.raw("render passes / " + file + " / " + PassTimes.Pass.values()[p], v);
-                        }
-                        double whole = Stats.median(java.util.Arrays.copyOf(wholes, nw));
-                        row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
-                        row.add(String.format(Locale.ROOT, "%.2f", whole));
-                        row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
-                        t.row(row.toArray());
-                        report.raw("render passes / " + file + " / whole frame", java.util.Arrays.copyOf(wholes, nw));
                     }
                 }
             }
