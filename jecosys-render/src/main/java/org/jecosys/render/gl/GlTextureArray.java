@@ -108,7 +108,7 @@ public final class GlTextureArray extends GlResource {
             close();
             throw e;
         } finally {
-            MemoryUtil.memFree(staging);
+            MemoryUtil.memFree((java.nio.Buffer) staging);
             glPixelStorei(GL_UNPACK_ALIGNMENT, align);
             glBindTexture(GL_TEXTURE_2D_ARRAY, bound);
             glActiveTexture(unit);
