@@ -80,7 +80,7 @@ final class HeadlessRender {
                 throw new IllegalArgumentException("--maps needs a scene of one square: '" + def.name()
                         + "' is an open world, whose plants exist only around the camera");
             }
-            OpenWorldFrames.run(def, quality, frames, out, width, height, log);
+            OpenWorldFrames.run(scene, quality, frames, out, width, height, log);
             return;
         }
         log.println("Building '" + def.name() + "' ...");

@@ -31,11 +31,12 @@ final class OpenWorldFrames {
     private OpenWorldFrames() {
     }
 
-    static void run(SceneDef def, DrawQuality quality, int frames, Path out, int width, int height, PrintWriter log)
-            throws IOException {
+    static void run(org.jecosys.scene.Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
+                    PrintWriter log) throws IOException {
+        SceneDef def = scene.def();
         OutputFiles files = new OutputFiles();
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
-        try (OpenWorld world = Scenes.openWorld(def, 2, 1);
+        try (OpenWorld world = Scenes.openWorld(scene, 2, 1);
              GlContext gl = GlContext.headless(DebugOutput.OFF)) {
             log.println("OpenGL: " + gl.describe());
             log.printf("Open world: %s m tiles within %s m of the camera, streamed along its path%n",

@@ -50,11 +50,13 @@ import org.lwjgl.system.MemoryUtil;
  * the viewer of a scene of one square.
  */
 final class OpenWorldViewer {
+    private final org.jecosys.scene.Scene scene;
     private final SceneDef def;
     private final DrawQuality quality;
 
-    OpenWorldViewer(SceneDef def, DrawQuality quality) {
-        this.def = def;
+    OpenWorldViewer(org.jecosys.scene.Scene scene, DrawQuality quality) {
+        this.scene = scene;
+        this.def = scene.def();
         this.quality = quality;
     }
 
@@ -63,7 +65,7 @@ final class OpenWorldViewer {
         PrintWriter console = new PrintWriter(System.out, true);
         int width = def.render().width();
         int height = def.render().height();
-        try (OpenWorld world = Scenes.openWorld(def, workers(), 1);
+        try (OpenWorld world = Scenes.openWorld(scene, workers(), 1);
              GlContext gl = GlContext.windowed("JEcoSys - " + def.name() + " (open world)", width, height,
                      DebugOutput.OFF)) {
             long window = gl.window();

@@ -83,7 +83,8 @@ final class ViewCommand implements Callable<Integer> {
                 spec.commandLine().getOut().flush();
                 if (def.isOpenWorld()) {
                     PrintWriter log = spec.commandLine().getOut();
-                    OpenWorldFrames.run(def, quality, frames, out, def.render().width(), def.render().height(), log);
+                    OpenWorldFrames.run(loaded, quality, frames, out, def.render().width(), def.render().height(),
+                            log);
                     return ExitCodes.OK;
                 }
                 HeadlessRender.run(loaded, quality, frames, out, def.render().width(), def.render().height(), true,
@@ -92,7 +93,7 @@ final class ViewCommand implements Callable<Integer> {
                 return ExitCodes.OK;
             }
             if (def.isOpenWorld()) {
-                new OpenWorldViewer(def, quality).run();
+                new OpenWorldViewer(loaded, quality).run();
                 return ExitCodes.OK;
             }
             new Viewer(loaded, file, quality).run(new ConsoleProgress(spec.commandLine().getErr(),

@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Map;
 import javax.imageio.ImageIO;
 import org.jecosys.math.Require;
-import org.jecosys.terrain.ImageSource;
 
 /**
  * The images drawn on components ({@link ComponentDef#texture()}), decoded once for every renderer: each
@@ -69,12 +68,12 @@ public final class PlantTextures {
      * Reads and prepares the textures the species name. Build time; allocates.
      *
      * @param species the species, in the scene's order
-     * @param images  where the paths are read from (the scene's image source)
+     * @param images  where the paths are read from (the scene's image source: {@code images::read})
      * @return the textures; {@link #NONE} when no component names one
      * @throws IOException naming the path, when an image cannot be read or decoded, is larger than
      *                     {@link #MAX_SIDE}, or there are more than {@link #MAX_TEXTURES}
      */
-    public static PlantTextures load(List<SpeciesDef> species, ImageSource images) throws IOException {
+    public static PlantTextures load(List<SpeciesDef> species, Files images) throws IOException {
         Require.nonNull("species", species);
         Require.nonNull("images", images);
         Map<String, int[]> decoded = new LinkedHashMap<>();
@@ -110,6 +109,18 @@ public final class PlantTextures {
             byPath.put(e.getKey(), new Image(wh[0], wh[1], e.getValue()));
         }
         return of(species, byPath);
+    }
+
+    /** Where image files come from: the whole file's bytes by the path a scene writes (a scene's image source). */
+    @FunctionalInterface
+    public interface Files {
+        /**
+         * {@return the file's bytes}
+         *
+         * @param path as the scene writes it
+         * @throws IOException naming the path, when it cannot be read
+         */
+        byte[] read(String path) throws IOException;
     }
 
     /**

@@ -60,6 +60,28 @@ public final class Scenes {
      * @throws IllegalArgumentException when the scene has no {@code <world>} or an argument is out of range
      */
     public static org.jecosys.sim.OpenWorld openWorld(SceneDef scene, int workers, int tileWorkers) {
+        return openWorld(scene, workers, tileWorkers, org.jecosys.plant.PlantTextures.NONE);
+    }
+
+    /**
+     * As {@link #openWorld(SceneDef, int, int)}, with the images a loaded scene names drawn on its
+     * components ({@code <component texture>}), read from the very bytes the scene was checked with.
+     * Build time; allocates; any thread.
+     *
+     * @param scene       a loaded scene with a {@code <world>}
+     * @param workers     animation workers, in [1, 256]
+     * @param tileWorkers threads that build tiles, in [1, 64]
+     * @return the open world; the caller closes it
+     * @throws IOException              when an image cannot be decoded
+     * @throws IllegalArgumentException when the scene has no {@code <world>} or an argument is out of range
+     */
+    public static org.jecosys.sim.OpenWorld openWorld(Scene scene, int workers, int tileWorkers) throws IOException {
+        return openWorld(scene.def(), workers, tileWorkers,
+                org.jecosys.plant.PlantTextures.load(scene.def().species(), scene.images()::read));
+    }
+
+    private static org.jecosys.sim.OpenWorld openWorld(SceneDef scene, int workers, int tileWorkers,
+                                                       org.jecosys.plant.PlantTextures textures) {
         if (!scene.isOpenWorld()) {
             throw new IllegalArgumentException("scene '" + scene.name() + "' has no <world>: it is one square, built "
                     + "whole (Scenes.simulation)");
@@ -70,7 +92,7 @@ public final class Scenes {
         }
         org.jecosys.world.TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
         return org.jecosys.sim.OpenWorld.create(scene.simulationDef(), placer, scene.world().radius(), workers,
-                tileWorkers, 4);
+                tileWorkers, 4, textures);
     }
 
     /**

@@ -101,10 +101,29 @@ public final class OpenWorld implements AutoCloseable {
      */
     public static OpenWorld create(SimulationDef def, TilePlacer placer, double radius, int workers,
                                    int tileWorkers, int budget) {
+        return create(def, placer, radius, workers, tileWorkers, budget, org.jecosys.plant.PlantTextures.NONE);
+    }
+
+    /**
+     * As {@link #create(SimulationDef, TilePlacer, double, int, int, int)}, the components' images
+     * ({@link org.jecosys.plant.PlantTextures#load}) shared by every tile. Build time; allocates.
+     *
+     * @param def         the species, flows, field and animation (its terrain and distributions are not used)
+     * @param placer      the tiles' placement
+     * @param radius      how far around the views tiles are alive, metres
+     * @param workers     animation workers, in [1, 256]
+     * @param tileWorkers threads that build tiles, in [1, 64]
+     * @param budget      most tiles started per step, in [1, 1024]
+     * @param textures the prepared images the species name, {@link org.jecosys.plant.PlantTextures#NONE} for none
+     * @return the open world at time 0, with no tile yet
+     * @throws IllegalArgumentException when an argument is null or out of range
+     */
+    public static OpenWorld create(SimulationDef def, TilePlacer placer, double radius, int workers,
+                                   int tileWorkers, int budget, org.jecosys.plant.PlantTextures textures) {
         Require.nonNull("def", def);
         Require.nonNull("placer", placer);
         PlantModel model = PlantModel.build(def.species(), def.seed(), GravityBend.EARTH_GRAVITY, Progress.NONE,
-                ComponentFactories.NONE);
+                ComponentFactories.NONE).withTextures(Require.nonNull("textures", textures));
         return new OpenWorld(def, model, placer, radius, workers, tileWorkers, budget);
     }
 

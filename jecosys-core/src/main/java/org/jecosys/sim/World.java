@@ -201,7 +201,7 @@ public final class World {
         Terrain terrain = Terrain.build(def.terrain(), images, workers, progress);
         long t1 = System.nanoTime();
         PlantModel plants = PlantModel.build(def.species(), def.seed(), org.jecosys.plant.GravityBend.EARTH_GRAVITY,
-                progress, components).withTextures(org.jecosys.plant.PlantTextures.load(def.species(), images));
+                progress, components).withTextures(org.jecosys.plant.PlantTextures.load(def.species(), images::read));
         List<String> ids = new ArrayList<>();
         for (SpeciesDef s : def.species()) {
             ids.add(s.id());

@@ -118,17 +118,17 @@ class PlantTexturesTest {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         ImageIO.write(png, "png", bytes);
         List<SpeciesDef> sp = List.of(species(leaf("l", "ok.png")));
-        PlantTextures t = PlantTextures.load(sp, ImageSource.of(Map.of("ok.png", bytes.toByteArray())));
+        PlantTextures t = PlantTextures.load(sp, ImageSource.of(Map.of("ok.png", bytes.toByteArray()))::read);
         assertEquals(64, t.side());
-        assertSame(PlantTextures.NONE, PlantTextures.load(List.of(species(leaf("l", null))), ImageSource.NONE));
+        assertSame(PlantTextures.NONE, PlantTextures.load(List.of(species(leaf("l", null))), ImageSource.NONE::read));
         IOException notImage = assertThrows(IOException.class, () -> PlantTextures.load(sp,
-                ImageSource.of(Map.of("ok.png", "not a png".getBytes(java.nio.charset.StandardCharsets.UTF_8)))));
+                ImageSource.of(Map.of("ok.png", "not a png".getBytes(java.nio.charset.StandardCharsets.UTF_8)))::read));
         assertTrue(notImage.getMessage().contains("ok.png"), notImage.getMessage());
         BufferedImage big = new BufferedImage(PlantTextures.MAX_SIDE + 1, 2, BufferedImage.TYPE_INT_ARGB);
         ByteArrayOutputStream bigBytes = new ByteArrayOutputStream();
         ImageIO.write(big, "png", bigBytes);
         IOException tooBig = assertThrows(IOException.class, () -> PlantTextures.load(sp,
-                ImageSource.of(Map.of("ok.png", bigBytes.toByteArray()))));
+                ImageSource.of(Map.of("ok.png", bigBytes.toByteArray()))::read));
         assertTrue(tooBig.getMessage().contains("ok.png") && tooBig.getMessage().contains("at most"),
                 tooBig.getMessage());
     }

@@ -24,7 +24,8 @@ import org.jecosys.sim.WorldTile;
  * has its renderer closed at the next frame. With {@link RenderSettings#clear()} on the sky is drawn
  * first; with {@link RenderSettings#terrain()} on each tile's ground is drawn too (its heightfield, lit
  * in the ground cover's colour: {@code OpenGround}), else the ground is the host's (a game's terrain).
- * Ground cover blades, contact darkening and sun shadows are not drawn yet.
+ * Components draw the world's images ({@code <component texture>}: the programs and the image array are
+ * shared by every tile). Ground cover blades, contact darkening and sun shadows are not drawn yet.
  *
  * <p>Threads: the open world's stepping thread is the render thread (a game loop that steps, then
  * draws, on one thread with the context current); {@link #render} reads the live tiles the last step
@@ -72,7 +73,7 @@ public final class OpenWorldRenderer implements AutoCloseable {
         OpenGround o = null;
         try {
             g.setGuestState();
-            p = PlantPrograms.compile(gl, null);
+            p = PlantPrograms.compile(gl, null, world.plants().textures());
             o = new OpenGround(gl);
             sky = new SkyRenderer(gl);
         } catch (RuntimeException e) {

@@ -71,8 +71,8 @@ final class PlantGpu implements AutoCloseable {
     /**
      * As the other constructor, with the draw and resolve programs of {@code shared} (made for this
      * context), not closed by this set; null compiles and owns its own. Its resolve path is
-     * {@code shared}'s then. A world with textures compiles its own draw programs (with
-     * {@code TEXTURED}) whatever is shared.
+     * {@code shared}'s then. The shared programs are taken when they read textures exactly when the
+     * world has them (else this set compiles its own), and their image array with them.
      */
     PlantGpu(GlContext gl, World world, PlantBatches batches, ResolvePath path, PlantPrograms shared) {
         tracker = GlContexts.tracker(gl);
@@ -92,8 +92,8 @@ final class PlantGpu implements AutoCloseable {
             checkTexels("component records", 3 * maxComponents, maxTexels);
             checkTexels("components", components, Math.min(maxTexels, PlantRenderer.MAX_EXACT));
             for (int k = 0; k < programs.length; k++) {
-                programs[k] = shared != null && !textured ? shared.draw(k) : own(PlantPasses.compile(tracker, k,
-                        textured));
+                programs[k] = shared != null && shared.textured() == textured ? shared.draw(k)
+                        : own(PlantPasses.compile(tracker, k, textured));
             }
             poseTexture = own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
                     GL_RGBA32F));
@@ -113,8 +113,9 @@ final class PlantGpu implements AutoCloseable {
                 }
             }
             // trilinear on a GPU; the nearest level's bilinear on a software rasteriser (GlTextureArray)
-            textures = textured ? own(new GlTextureArray(tracker, images.side(), images.layers(), images::level,
-                    !org.jecosys.render.gl.SoftwareGl.is(gl.describe()))) : null;
+            textures = !textured ? null : shared != null && shared.textures() != null ? shared.textures()
+                    : own(new GlTextureArray(tracker, images.side(), images.layers(), images::level,
+                    !org.jecosys.render.gl.SoftwareGl.is(gl.describe())));
         } catch (RuntimeException | Error e) {
             Closing.closeReverse(owned);
             throw e;

@@ -23,6 +23,9 @@ public final class PlantPrograms implements AutoCloseable {
     private final GlProgram[] resolve = new GlProgram[2];
     private final ResolvePath path;
     private final List<AutoCloseable> owned = new ArrayList<>();
+    /** The components' images as one array, shared by the renderers; null without textures. */
+    private org.jecosys.render.gl.GlTextureArray textures;
+    private boolean textured;
 
     private PlantPrograms(ResolvePath path) {
         this.path = path;
@@ -36,12 +39,31 @@ public final class PlantPrograms implements AutoCloseable {
      * @return the programs
      */
     public static PlantPrograms compile(GlContext gl, ResolvePath path) {
+        return compile(gl, path, org.jecosys.plant.PlantTextures.NONE);
+    }
+
+    /**
+     * Compiles the programs for worlds whose components draw {@code textures} (the triangle programs with
+     * {@code TEXTURED}) and uploads the images once, for every renderer that takes these programs (an open
+     * world's tiles share one model). Render thread; allocates.
+     *
+     * @param gl       the render context, current on this thread
+     * @param path     the resolve path; null: the best for this context
+     * @param textures the images of the worlds to draw ({@code PlantModel.textures()}), or NONE
+     * @return the programs
+     */
+    public static PlantPrograms compile(GlContext gl, ResolvePath path, org.jecosys.plant.PlantTextures textures) {
         gl.checkThread();
         GlTracker t = GlContexts.tracker(gl);
         PlantPrograms p = new PlantPrograms(path == null ? ResolvePath.best(gl) : path);
+        p.textured = !textures.isEmpty();
         try {
             for (int k = 0; k < p.draw.length; k++) {
-                p.draw[k] = p.own(PlantPasses.compile(t, k));
+                p.draw[k] = p.own(PlantPasses.compile(t, k, p.textured));
+            }
+            if (p.textured) {
+                p.textures = p.own(new org.jecosys.render.gl.GlTextureArray(t, textures.side(), textures.layers(),
+                        textures::level, !org.jecosys.render.gl.SoftwareGl.is(gl.describe())));
             }
             for (int k = 0; k < p.resolve.length; k++) {
                 p.resolve[k] = p.own(ComponentResolver.compile(t, p.path, k));
@@ -53,9 +75,19 @@ public final class PlantPrograms implements AutoCloseable {
         return p;
     }
 
-    private GlProgram own(GlProgram program) {
-        owned.add(program);
-        return program;
+    private <T extends AutoCloseable> T own(T resource) {
+        owned.add(resource);
+        return resource;
+    }
+
+    /** {@return whether the draw programs read the components' images} */
+    boolean textured() {
+        return textured;
+    }
+
+    /** {@return the images' array shared by the renderers, or null without textures} */
+    org.jecosys.render.gl.GlTextureArray textures() {
+        return textures;
     }
 
     /** {@return the resolve path these programs run} */
