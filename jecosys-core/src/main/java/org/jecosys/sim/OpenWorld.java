@@ -137,15 +137,7 @@ public final class OpenWorld implements AutoCloseable {
         for (int v = 0; v < frusta.length; v++) {
             frusta[v] = new org.joml.FrustumIntersection();
         }
-        double top = 0;
-        for (org.jecosys.plant.SpeciesDef sp : def.species()) {
-            double h = 0;
-            for (var c : sp.components()) {
-                h += c.length();
-            }
-            top = Math.max(top, h);
-        }
-        tallest = top;
+        tallest = WorldTile.tallest(def.species());
         this.maxSubSteps = def.animation().maxSubSteps();
         builds = new TileBuilds(def, model, placer, () -> closed);
         tiles = new TileStreamer<>(placer.tileSize(), builds, radius, placer.tileSize(), tileWorkers, budget,

@@ -54,6 +54,24 @@ public final class WorldTile {
     }
 
     /**
+     * {@return the tallest any plant of these species can stand, metres: the most, over the species, of
+     * its components' lengths added up (a component on the tip of another raises it)} Build time.
+     *
+     * @param species the species
+     */
+    static double tallest(java.util.List<org.jecosys.plant.SpeciesDef> species) {
+        double top = 0;
+        for (org.jecosys.plant.SpeciesDef sp : species) {
+            double h = 0;
+            for (var c : sp.components()) {
+                h += c.length();
+            }
+            top = Math.max(top, h);
+        }
+        return top;
+    }
+
+    /**
      * Whether no view's frustum meets this tile's box (its square, from its lowest ground to its highest
      * plus the tallest plant). Stepping thread; no allocation.
      */
