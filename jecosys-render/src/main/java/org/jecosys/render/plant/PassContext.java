@@ -30,6 +30,8 @@ final class PassContext {
     /** A pixel's size at the eye and its growth per metre of distance, metres. */
     float pixelX;
     float pixelY;
+    /** The viewport's height over {@link PlantRenderer#HEAD_REFERENCE_HEIGHT}: flower parts' least size scales with it. */
+    float headScale = 1f;
     /** The frame drawn (its distance thinning). */
     Frame frame;
     /** Whether the target is multisampled: the triangle levels then keep coverage in alpha. */

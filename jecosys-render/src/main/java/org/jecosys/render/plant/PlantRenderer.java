@@ -68,6 +68,12 @@ public final class PlantRenderer implements AutoCloseable {
     public static final float DEFAULT_MIN_PIXELS = 1.75f;
     /** Default least size of a flower part, pixels. */
     public static final float DEFAULT_HEAD_PIXELS = 8.0f;
+    /**
+     * The picture height, pixels, at which flower parts are kept at least {@code headPixels} across
+     * ({@link #setThinParts}); in a picture of another height the least size scales with it, so a
+     * flower takes the same share of the view at any resolution (half the size in a picture half as high).
+     */
+    public static final int HEAD_REFERENCE_HEIGHT = 540;
     /** Default turn of flower parts toward the viewer, degrees. */
     public static final float DEFAULT_FLOWER_TILT = 45f;
 
@@ -249,11 +255,12 @@ public final class PlantRenderer implements AutoCloseable {
      * Sets how thin parts are kept visible: blades and stems are widened across the view to at
      * least {@code minPixels} (their real share of that width becomes coverage, which
      * multisampling turns into partly covered pixels), flower parts are scaled up to at least
-     * {@code headPixels} across and turned toward the viewer by {@code flowerTiltDeg}. Render
-     * thread; no allocation.
+     * {@code headPixels} across in a picture {@link #HEAD_REFERENCE_HEIGHT} pixels high (in proportion
+     * in any other: the same share of the view) and turned toward the viewer by {@code flowerTiltDeg}.
+     * Render thread; no allocation.
      *
      * @param minPixels     least width of blades and stems, pixels, in [0, 8] (0: off)
-     * @param headPixels    least size of flower parts, pixels, in [0, 32] (0: off)
+     * @param headPixels    least size of flower parts, pixels of a 540-pixel-high picture, in [0, 32] (0: off)
      * @param flowerTiltDeg turn of flower parts toward the viewer, degrees, in [0, 90]
      * @throws IllegalArgumentException when an argument is out of range
      */
@@ -380,6 +387,7 @@ public final class PlantRenderer implements AutoCloseable {
         context.setEye((float) camera.x(), (float) camera.y(), (float) camera.z());
         context.setPixel((float) (camera.viewHeightAtEye() / viewportHeight),
                 (float) (camera.viewHeightPerMetre() / viewportHeight));
+        context.headScale = viewportHeight / (float) HEAD_REFERENCE_HEIGHT;
         gpu.resolver.frame(look, context);
         gpu.resolver.resolve(look);
         context.multisampled = targetSamples > 1;

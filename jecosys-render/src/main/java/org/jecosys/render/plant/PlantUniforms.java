@@ -100,7 +100,7 @@ public final class PlantUniforms {
         glUniform3f(ambient, r.ambR, r.ambG, r.ambB);
         glUniform1f(sheen, r.sheen);
         glUniform1f(minPixels, r.minPixels);
-        glUniform1f(headPixels, r.headPixels);
+        glUniform1f(headPixels, r.headPixels * c.headScale);
         glUniform1f(flowerTilt, r.flowerTilt);
         glUniform3f(lightDir, c.lightX, c.lightY, c.lightZ);
         glUniform3f(eye, c.eyeX, c.eyeY, c.eyeZ);

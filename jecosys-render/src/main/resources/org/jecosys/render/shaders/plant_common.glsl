@@ -32,7 +32,8 @@ uniform samplerBuffer uComponents;               // RGBA32F: 3 texels per drawn 
 uniform int uSlotCount;
 uniform int uComponentBase;
 uniform float uMinPixels;                        // least width of a thin part, pixels (0: off)
-uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off)
+uniform float uHeadPixels;                       // least size of a flower part, pixels (0: off), already
+                                                 // scaled to the picture's height (PlantRenderer)
 uniform float uFlowerTilt;                       // turn of flower parts toward the viewer, radians
 uniform float uFeather;                          // soft edge of blades and stems, pixels (0: off; targets
                                                  // without samples: their ribbons grow by it and fade over
