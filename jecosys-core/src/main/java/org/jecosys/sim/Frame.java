@@ -358,6 +358,15 @@ public final class Frame {
     }
 
     /**
+     * {@return whether a step (or a tool) made this frame's draw decision: false for a frame no step has
+     * written yet, whose plants stand at rest because nothing has run} Any thread reading the frame; no
+     * allocation.
+     */
+    public boolean decided() {
+        return decided;
+    }
+
+    /**
      * Whether this frame's decision ({@link #drawLevel}, {@link #drawKeep}) was made for exactly this
      * camera (the same view-projection matrix and eye): a renderer then draws it as it is, and decides
      * for itself otherwise ({@link ViewDecision}). Any thread reading the frame; no allocation.

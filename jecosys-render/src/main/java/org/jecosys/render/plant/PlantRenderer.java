@@ -368,7 +368,8 @@ public final class PlantRenderer implements AutoCloseable {
         } else {
             view.decide(frame, camera); // any other view: decided here, every plant's state is in the frame
             batches.update(frame, view.levels(), view.keeps());
-            if (!saidStill && view.unanimated() > Math.max(STILL_PLANTS, view.drawn() / 10)) {
+            // (a frame no step has written yet, before the first fixed step, stands still for every view)
+            if (!saidStill && frame.decided() && view.unanimated() > Math.max(STILL_PLANTS, view.drawn() / 10)) {
                 saidStill = true;
                 java.util.logging.Logger.getLogger("org.jecosys.render").warning("JEcoSys: a camera draws "
                         + view.unanimated() + " of its " + view.drawn() + " plants standing still: no view of the "
