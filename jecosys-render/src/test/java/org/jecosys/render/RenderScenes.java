@@ -20,13 +20,39 @@ public final class RenderScenes {
         }
     }
 
+    /**
+     * The world of a scene, built once per test JVM and shared by the test classes that draw it (a
+     * {@code World} is immutable; the meadow takes seconds to build, and a dozen classes draw it). The
+     * last few worlds built are kept.
+     */
     public static World build(SceneDef def) {
+        synchronized (BUILT) {
+            World w = BUILT.get(def);
+            if (w != null) {
+                return w;
+            }
+        }
         try {
-            return World.build(def.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
+            World w = World.build(def.simulationDef(), Path.of("scenes"), 2, Progress.NONE);
+            synchronized (BUILT) {
+                BUILT.put(def, w);
+            }
+            return w;
         } catch (Exception e) {
             throw new IllegalStateException("cannot build " + def.name(), e);
         }
     }
+
+    /** The worlds built, by their scene: the last {@link #KEPT} (least recently used first out). */
+    private static final int KEPT = 3;
+    private static final java.util.Map<SceneDef, World> BUILT = new java.util.LinkedHashMap<>(8, 0.75f, true) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        protected boolean removeEldestEntry(java.util.Map.Entry<SceneDef, World> eldest) {
+            return size() > KEPT;
+        }
+    };
 
     static ViewCamera camera(SceneDef def, World world, int width, int height) {
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
