@@ -47,18 +47,21 @@ final class TextureSection implements Section {
             case FULL -> 15;
         };
         int perRound = 3;
-        Path folder = scenes;
+        Scene[] loaded = new Scene[2];
         String[] files = {"meadow.xml", "textured.xml"};
         if (mode == Mode.SMOKE) {
-            // seconds, not the meadow's build twice: C1 and C1 with its grass textured, in a folder of their own
-            folder = java.nio.file.Files.createTempDirectory("jecosys-textures");
-            java.nio.file.Files.createDirectories(folder.resolve("textures"));
-            java.nio.file.Files.copy(scenes.resolve("textures/grass-blade.png"),
-                    folder.resolve("textures/grass-blade.png"));
+            // seconds, not the meadow's build twice: C1, and C1 with its grass textured (read from memory)
             String c1 = java.nio.file.Files.readString(scenes.resolve("c1.xml"));
-            java.nio.file.Files.writeString(folder.resolve("meadow.xml"), c1);
-            java.nio.file.Files.writeString(folder.resolve("textured.xml"), c1.replace("colour=\"#4f8a2b\"",
-                    "colour=\"#4f8a2b\" texture=\"textures/grass-blade.png\""));
+            byte[] blade = java.nio.file.Files.readAllBytes(scenes.resolve("textures/grass-blade.png"));
+            loaded[0] = SceneFiles.read(scenes.resolve("c1.xml"));
+            loaded[1] = SceneFiles.read(new java.io.ByteArrayInputStream(c1.replace("colour=\"#4f8a2b\"",
+                    "colour=\"#4f8a2b\" texture=\"textures/grass-blade.png\"").getBytes(
+                    java.nio.charset.StandardCharsets.UTF_8)), "c1-textured.xml",
+                    org.jecosys.terrain.ImageSource.of(java.util.Map.of("textures/grass-blade.png", blade)));
+            files = new String[] {"c1.xml", "c1-textured.xml"};
+        } else {
+            loaded[0] = SceneFiles.read(scenes.resolve(files[0]));
+            loaded[1] = SceneFiles.read(scenes.resolve(files[1]));
         }
         Table t = new Table("textures", String.format(Locale.ROOT, "Textured components: the meadow with and without "
                 + "its images, %dx%d, start camera, 4 samples", width, height),
@@ -76,7 +79,7 @@ final class TextureSection implements Section {
             ViewCamera[] cams = new ViewCamera[files.length];
             try {
                 for (int k = 0; k < files.length; k++) {
-                    Scene scene = SceneFiles.read(folder.resolve(files[k]));
+                    Scene scene = loaded[k];
                     SceneDef def = scene.def();
                     sims[k] = Scenes.simulation(scene, 0, Progress.NONE);
                     cams[k] = ViewCamera.of(def.camera(), sims[k].world().terrain().heightfield().height(

@@ -28,7 +28,7 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * Issue 40, "Done when", alpha edges. <b>No dark fringe:</b> a card (a 25 cm ribbon facing the eye, 2.2 m
- * away, 960x540, 4 samples) textured with a band of colour over the middle 60% of its width, the rest
+ * away, 480x270, 4 samples) textured with a band of colour over the middle 60% of its width, the rest
  * transparent with black colour (as many exporters write it), is drawn over two plain backgrounds;
  * from the two pictures each pixel's coverage and the plant's own colour there are recovered
  * (p = c plant + (1 - c) background). Where the outline crosses a pixel (coverage 0.2 to 0.8) that
@@ -71,21 +71,30 @@ class TexturedEdgesTest {
         return World.build(scene.def().simulationDef(), scene.images(), 1, Progress.NONE);
     }
 
-    /** Luminance, 0..255, of each pixel of a picture drawn over a plain background of grey {@code bg}. */
-    private static double[] over(World world, float bg, ViewCamera cam) {
+    /** The card's pictures: 480x270, the card about 33 pixels wide. */
+    private static final int CW = 480;
+    private static final int CH = 270;
+
+    /** A picture of {@code world} with plants only, drawn over the host's background (no sky, no terrain). */
+    private static Shots guest(World world) {
         RenderSettings settings = RenderSettings.standalone();
         settings.setClear(false);
         settings.setTerrain(false);
-        ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
-        try (Shots s = new Shots(world, settings, W, H)) {
+        return new Shots(world, settings, CW, CH);
+    }
+
+    /** Luminance, 0..255, of each pixel of a picture drawn over a plain background of grey {@code bg}. */
+    private static double[] over(Shots s, World world, float bg, ViewCamera cam) {
+        ByteBuffer px = MemoryUtil.memAlloc(4 * CW * CH);
+        try {
             Frame f = TestFrames.rest(world, cam);
             s.fb.bind();
             glClearColor(bg, bg, bg, 1f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            s.renderer.render(f, cam, W, H);
+            s.renderer.render(f, cam, CW, CH);
             s.fb.resolve();
-            Pixels.read(W, H, px);
-            double[] l = new double[W * H];
+            Pixels.read(CW, CH, px);
+            double[] l = new double[CW * CH];
             for (int i = 0; i < l.length; i++) {
                 l[i] = 0.2126 * (px.get(4 * i) & 255) + 0.7152 * (px.get(4 * i + 1) & 255) + 0.0722 * (px.get(4 * i + 2) & 255);
             }
@@ -97,13 +106,21 @@ class TexturedEdgesTest {
 
     @Test
     void theOutlineOfATexturedPartHasNoDarkFringe() throws Exception {
-        ViewCamera cam = Shots.lookAt(0, 0.5, 2.2, 0, 0.5, 0, Math.toRadians(50), W / (double) H, 0.05, 100);
+        ViewCamera cam = Shots.lookAt(0, 0.5, 2.2, 0, 0.5, 0, Math.toRadians(50), CW / (double) CH, 0.05, 100);
         World cut = card("cut", true);
         World full = card("full", false);
-        double[] light = over(cut, 0.9f, cam);
-        double[] dark = over(cut, 0.1f, cam);
-        double[] opaqueLight = over(full, 0.9f, cam);
-        double[] opaqueDark = over(full, 0.1f, cam);
+        double[] light;
+        double[] dark;
+        double[] opaqueLight;
+        double[] opaqueDark;
+        try (Shots s = guest(cut)) {
+            light = over(s, cut, 0.9f, cam);
+            dark = over(s, cut, 0.1f, cam);
+        }
+        try (Shots s = guest(full)) {
+            opaqueLight = over(s, full, 0.9f, cam);
+            opaqueDark = over(s, full, 0.1f, cam);
+        }
         double bgLight = light[0];
         double bgDark = dark[0];
         double sum = 0;
@@ -123,7 +140,7 @@ class TexturedEdgesTest {
         double plain = ref / Math.max(1, n);
         System.out.printf("[look] textured card outline: %d pixels, the part's own luminance there %.1f/255, the"
                 + " opaque card's %.1f/255 (within 10)%n", n, edge, plain);
-        assertTrue(n > 200, "the outline crosses pixels: " + n);
+        assertTrue(n > 100, "the outline crosses pixels: " + n);
         assertTrue(Math.abs(edge - plain) <= 10, String.format("the outline's colour %.1f/255 against %.1f/255: a"
                 + " fringe", edge, plain));
     }
