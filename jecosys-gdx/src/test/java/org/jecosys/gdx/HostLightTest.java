@@ -86,7 +86,9 @@ class HostLightTest {
                 int[] direct = shot(layer, cam, null, target, px);
                 int[] none = shot(layer, cam, EMPTY, target, px);
                 double plantsShare = changed(hosted, none, 8);
-                assertTrue(plantsShare > 0.01, "plants in the picture (C1's tufts are sparse): " + plantsShare);
+                // flower parts keep a least size in proportion to the picture (8 px at 540 rows): at 180 rows
+                // a third of that, so C1's sparse plants cover about 0.9% of it
+                assertTrue(plantsShare > 0.005, "plants in the picture (C1's tufts are sparse): " + plantsShare);
                 assertTrue(maxDiff(hosted, direct) <= 2, "the environment's light vs the same values set directly: "
                         + maxDiff(hosted, direct));
 
