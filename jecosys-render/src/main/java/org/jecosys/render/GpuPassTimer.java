@@ -58,7 +58,9 @@ final class GpuPassTimer implements AutoCloseable {
         scratch = new long[passes];
         for (int s = 0; s < SLOTS; s++) {
             queries[s] = new int[passes + 1];
-            glGenQueries(queries[s]);
+            if (!wall) { // the clock needs no query
+                glGenQueries(queries[s]);
+            }
             used[s] = new boolean[passes];
         }
     }
@@ -190,7 +192,7 @@ final class GpuPassTimer implements AutoCloseable {
     public void close() {
         if (!closed) {
             closed = true;
-            for (int[] q : queries) {
+            for (int[] q : wall ? new int[0][] : queries) {
                 glDeleteQueries(q);
             }
         }

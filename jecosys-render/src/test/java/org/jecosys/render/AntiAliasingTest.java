@@ -28,18 +28,31 @@ class AntiAliasingTest {
     private static final int W = 960;
     private static final int H = 540;
 
+    /**
+     * The start view of a scene and the same view moved half a pixel to the right: the view (its picture
+     * and vegetation mask), the moved picture, the residual beyond a smooth shift and the plain difference.
+     */
+    record HalfPixel(Shots.View view, Img moved, double residual, double plain) {
+        static HalfPixel of(Shots s, SceneDef def, World world) {
+            ViewCamera cam = RenderScenes.camera(def, world, W, H);
+            Matrix4f proj = new Matrix4f().translation(1f / W, 0, 0).mul(cam.projection(new Matrix4f()));
+            MatrixCamera shifted = new MatrixCamera(cam.view(new Matrix4f()), proj);
+            Shots.View v = s.view(TestFrames.rest(world, cam), cam);
+            Img b = s.render(TestFrames.rest(world, shifted), shifted, true, true);
+            return new HalfPixel(v, b, ImageMetrics.halfPixelResidual(v.full(), b, v.vegetation()),
+                    ImageMetrics.meanAbsDiff(v.full(), b, v.vegetation()));
+        }
+    }
+
     @Test
     void halfAPixelOfCameraMotionChangesVegetationLittle() {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
-        ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        Matrix4f proj = new Matrix4f().translation(1f / W, 0, 0).mul(cam.projection(new Matrix4f()));
-        MatrixCamera shifted = new MatrixCamera(cam.view(new Matrix4f()), proj);
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
-            Shots.View v = s.view(TestFrames.rest(world, cam), cam);
-            Img b = s.render(TestFrames.rest(world, shifted), shifted, true, true);
-            double residual = ImageMetrics.halfPixelResidual(v.full(), b, v.vegetation());
-            double plain = ImageMetrics.meanAbsDiff(v.full(), b, v.vegetation());
+            HalfPixel h = HalfPixel.of(s, def, world);
+            Shots.View v = h.view();
+            double residual = h.residual();
+            double plain = h.plain();
             System.out.printf("[look] meadow half-pixel shift: %.2f/255 from a smooth shift over vegetation (<= 2),"
                     + " plain difference %.2f/255%n", residual, plain);
             assertTrue(residual <= 2, String.format("half a pixel of camera motion changes vegetation by %.2f/255"

@@ -11,17 +11,14 @@ import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
-import org.jecosys.math.MatrixCamera;
 import org.jecosys.math.Progress;
 import org.jecosys.math.ViewCamera;
-import org.jecosys.render.ImageMetrics.Img;
 import org.jecosys.render.gl.Pixels;
 import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.World;
-import org.joml.Matrix4f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.lwjgl.system.MemoryUtil;
@@ -149,13 +146,8 @@ class TexturedEdgesTest {
     void halfAPixelOfCameraMotionChangesTheTexturedMeadowLittle() throws Exception {
         SceneDef def = RenderScenes.load("textured.xml");
         World world = RenderScenes.build(def);
-        ViewCamera cam = RenderScenes.camera(def, world, W, H);
-        Matrix4f proj = new Matrix4f().translation(1f / W, 0, 0).mul(cam.projection(new Matrix4f()));
-        MatrixCamera shifted = new MatrixCamera(cam.view(new Matrix4f()), proj);
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
-            Shots.View v = s.view(TestFrames.rest(world, cam), cam);
-            Img b = s.render(TestFrames.rest(world, shifted), shifted, true, true);
-            double residual = ImageMetrics.halfPixelResidual(v.full(), b, v.vegetation());
+            double residual = AntiAliasingTest.HalfPixel.of(s, def, world).residual();
             System.out.printf("[look] textured meadow half-pixel shift: %.2f/255 from a smooth shift over"
                     + " vegetation (<= 2)%n", residual);
             assertTrue(residual <= 2, String.format("half a pixel of camera motion changes the textured meadow by"
