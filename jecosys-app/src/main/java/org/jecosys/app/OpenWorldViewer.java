@@ -240,7 +240,8 @@ final class OpenWorldViewer {
             ImGui.begin("hud", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
                     | ImGuiWindowFlags.NoInputs);
             ImGui.text(String.format(Locale.ROOT, "%.1f fps (sd %.1f)   walk %.1f m/s (Shift x4, Ctrl /4, wheel)"
-                    + "   at (%.0f, %.0f) m, %.2f km from the start", fps[0], fps[1], fly.speed(), c.x(), c.z(),
+                    + "   at (%.0f, %.0f) m, %.2f km from the start", fps[0], fps[1], fly.speed(), Math.rint(c.x()) + 0.0,
+                    Math.rint(c.z()) + 0.0,
                     Math.hypot(c.x() - startX, c.z() - startZ) / 1000));
             ImGui.text(String.format(Locale.ROOT, "tiles alive %d (drawn %d), being built %d, built %d, "
                             + "frames that waited for a tile %d", world.liveTiles(), renderer.tileRenderers(),
