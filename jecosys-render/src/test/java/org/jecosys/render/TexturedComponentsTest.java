@@ -102,6 +102,30 @@ class TexturedComponentsTest {
         }
     }
 
+    @Test
+    void everyProgramVariantDrawsTexturedPartsWithoutAGlError() {
+        // the sun's shadow map (caster and receiver programs) and a target without samples (the split
+        // programs), each compiled with TEXTURED, under GL debug output
+        RenderSettings settings = RenderScenes.settings(new SceneLike().def());
+        settings.setShadowPath(ShadowPath.MAP);
+        settings.setShadows(0.8f);
+        ViewCamera cam = Shots.lookAt(0, 0.55, 2.2, 0, 0.5, 0, Math.toRadians(50), 320 / 180.0, 0.05, 100);
+        try (GlContext gl = GlContext.headless(GlContext.DebugOutput.ON);
+             org.jecosys.render.gl.GlFramebuffer multi = new org.jecosys.render.gl.GlFramebuffer(
+                     org.jecosys.render.gl.GlContexts.tracker(gl), 320, 180, 4);
+             org.jecosys.render.gl.GlFramebuffer single = new org.jecosys.render.gl.GlFramebuffer(
+                     org.jecosys.render.gl.GlContexts.tracker(gl), 320, 180);
+             SceneRenderer r = new SceneRenderer(gl, world, settings)) {
+            Frame f = TestFrames.rest(world, cam);
+            multi.bind();
+            r.render(f, cam, 320, 180);
+            single.bind();
+            r.render(f, cam, 320, 180);
+            assertTrue(r.drawCalls() > 0, "the card is drawn");
+            org.jecosys.render.gl.GlContexts.debug(gl).check("textured parts in every program variant");
+        }
+    }
+
     /** Checks the bands' order and returns the tip band's mean X, pixels. */
     private static double check(Shots s, ViewCamera cam, Frame frame, String what) {
         Img with = s.render(frame, cam, true, true);
