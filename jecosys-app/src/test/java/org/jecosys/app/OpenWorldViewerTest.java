@@ -57,21 +57,8 @@ class OpenWorldViewerTest {
         return def;
     }
 
-    /** Share of the pixels in rows [y0, y1) (from the bottom) that are not sky: not clearly bluest. */
     private static double covered(ByteBuffer px, int y0, int y1) {
-        int n = 0;
-        int hit = 0;
-        for (int y = y0; y < y1; y++) {
-            for (int x = 0; x < W; x++) {
-                int i = 4 * (y * W + x);
-                int r = px.get(i) & 255;
-                int g = px.get(i + 1) & 255;
-                int b = px.get(i + 2) & 255;
-                hit += b > r + 12 && b > g + 6 ? 0 : 1;
-                n++;
-            }
-        }
-        return hit / (double) n;
+        return org.jecosys.render.SkyShare.covered(px, W, y0, y1);
     }
 
     @Test
