@@ -48,7 +48,7 @@ class SimulateCliTest {
     @Test
     void anOpenWorldWalksItsPathWithTilesAroundTheCamera() throws Exception {
         Path json = dir.resolve("w.json");
-        CliTest.Result one = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "90", "--threads", "1",
+        CliTest.Result one = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "30", "--threads", "1",
                 "--json", json.toString());
         assertEquals(0, one.code(), one.err());
         for (String k : new String[] {"(open world)", "tiles alive", "plants alive", "components alive",
@@ -56,7 +56,7 @@ class SimulateCliTest {
             assertTrue(one.out().contains(k), k + " in " + one.out());
         }
         assertTrue(Files.readString(json, StandardCharsets.UTF_8).contains("\"openWorld\": true"));
-        CliTest.Result three = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "90", "--threads", "3");
+        CliTest.Result three = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "30", "--threads", "3");
         assertEquals(hash(one), hash(three), "every tile's state, whatever the workers");
         CliTest.Result dump = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "1", "--dump",
                 dir.resolve("d.csv").toString());

@@ -20,11 +20,19 @@ class BenchSmokeTest {
     @TempDir
     Path out;
 
+    /**
+     * Every section but the render scale (its smoke alone takes 20 to 35 s on 2 cores: the meadow built and
+     * drawn on both resolve paths and five looks; {@link #renderScaleSmoke} runs it, tagged slow).
+     */
     @Test
     void smokeRunWritesAllThreeOutputs() throws Exception {
         ByteArrayOutputStream progress = new ByteArrayOutputStream();
-        Report r = BenchSuite.standard(Path.of("scenes")).run(Mode.SMOKE, out,
-                new PrintStream(progress, true, StandardCharsets.UTF_8));
+        BenchSuite suite = BenchSuite.standard(Path.of("scenes"));
+        int before = suite.sections().size();
+        suite.sections().removeIf(s -> s instanceof RenderScaleSection);
+        assertEquals(before - 1, suite.sections().size(), "the render-scale section left out");
+        Report r = suite.run(Mode.SMOKE, out, new PrintStream(progress, true, StandardCharsets.UTF_8));
+        System.out.print(progress.toString(StandardCharsets.UTF_8)); // each section's time, in the test's output
         assertEquals(List.of(), r.failures());
         String md = Files.readString(out.resolve("tables.md"));
         String json = Files.readString(out.resolve("results.json"));
@@ -45,6 +53,38 @@ class BenchSmokeTest {
             int tiles = ((Number) row.get(2)).intValue();
             assertTrue(tiles > 20 && tiles <= 100, "tiles alive within 100 m of the view: " + tiles);
         }
+        for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
+                "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
+                "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
+            assertTrue(json.contains(key), key);
+        }
+        for (String chart : new String[] {"table1.png", "table2.png", "field-scale.png", "table7.png",
+                "scale-updates.png", "scale-step.png"}) {
+            Path png = out.resolve("charts").resolve(chart);
+            assertTrue(Files.size(png) > 1000, chart);
+            assertEquals(0x89, Files.readAllBytes(png)[0] & 0xff, chart + " is a PNG");
+        }
+        assertTrue(progress.toString(StandardCharsets.UTF_8).contains("bench: [1/"));
+        for (Table t : r.tables()) {
+            for (List<Object> row : t.rows()) {
+                assertEquals(t.headers().size(), row.size(), t.id());
+            }
+        }
+    }
+
+    /** The render-scale section's smoke: the meadow on every resolve path, its fixed step and its looks. */
+    @Test
+    @org.junit.jupiter.api.Tag("slow")
+    void renderScaleSmoke() throws Exception {
+        ByteArrayOutputStream progress = new ByteArrayOutputStream();
+        BenchSuite suite = BenchSuite.standard(Path.of("scenes"));
+        suite.sections().removeIf(s -> !(s instanceof RenderScaleSection));
+        assertEquals(1, suite.sections().size(), "the render-scale section alone");
+        Report r = suite.run(Mode.SMOKE, out, new PrintStream(progress, true, StandardCharsets.UTF_8));
+        System.out.print(progress.toString(StandardCharsets.UTF_8));
+        assertEquals(List.of(), r.failures());
+        String md = Files.readString(out.resolve("tables.md"));
+        String json = Files.readString(out.resolve("results.json"));
         // render scale: the meadow on every resolve path the context runs, transform feedback always
         assertTrue(md.contains("### Render scale"), "render scale");
         assertTrue(md.contains(org.jecosys.render.ResolvePath.TRANSFORM_FEEDBACK.description()), "the 3.3 path named");
@@ -80,23 +120,6 @@ class BenchSmokeTest {
         for (List<Object> row : looks.rows()) {
             for (int c = 2; c < row.size(); c++) {
                 assertTrue(((Number) row.get(c)).doubleValue() > 0, "looks " + row.get(0) + "/" + row.get(1) + " " + c);
-            }
-        }
-        for (String key : new String[] {"\"table1\"", "\"table2\"", "\"table3\"", "\"table4\"", "\"machine\"",
-                "\"fieldScale\"", "\"precompute\"", "\"table5\"", "\"table6a\"", "\"table6b\"", "\"table7a\"",
-                "\"table7b\"", "\"scale\"", "\"paperScenes\"", "\"glRenderer\": \"llvmpipe"}) {
-            assertTrue(json.contains(key), key);
-        }
-        for (String chart : new String[] {"table1.png", "table2.png", "field-scale.png", "table7.png",
-                "scale-updates.png", "scale-step.png"}) {
-            Path png = out.resolve("charts").resolve(chart);
-            assertTrue(Files.size(png) > 1000, chart);
-            assertEquals(0x89, Files.readAllBytes(png)[0] & 0xff, chart + " is a PNG");
-        }
-        assertTrue(progress.toString(StandardCharsets.UTF_8).contains("bench: [1/"));
-        for (Table t : r.tables()) {
-            for (List<Object> row : t.rows()) {
-                assertEquals(t.headers().size(), row.size(), t.id());
             }
         }
     }
