@@ -32,11 +32,13 @@ import org.jecosys.math.Rgb;
  *                     (relative to the scene's folder; read through the scene's image source), or null
  *                     for the plain colour; mapped along the skeleton for a strip (v from base to tip,
  *                     u across), radially for a fan; {@code colour} tints it (see {@link PlantTextures})
+ * @param mesh         a glTF mesh drawn instead of the strip or fan where this component uses all its
+ *                     segments (see {@link MeshDef}), or null; with a texture it needs texture coordinates
  */
 public record ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo,
                            int segments, double length, double baseWidth, double tipWidth, double curvature,
                            double twist, double tilt, double mass, double stiffness, double responseTime,
-                           double dragArea, Rgb colour, List<Integer> lodSegments, String texture) {
+                           double dragArea, Rgb colour, List<Integer> lodSegments, String texture, MeshDef mesh) {
     /**
      * Checks the components and copies {@code lodSegments}.
      *
@@ -59,6 +61,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
      * @param colour       base colour, not null
      * @param lodSegments  segments drawn per level of detail, each in [0, segments]
      * @param texture      the image drawn on it, as the scene writes its path, or null; not blank
+     * @param mesh         the glTF mesh drawn for it, or null; with a texture, one with texture coordinates
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public ComponentDef {
@@ -88,6 +91,41 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         if (texture != null && texture.isBlank()) {
             throw new IllegalArgumentException("texture must not be blank (null for none)");
         }
+        if (texture != null && mesh != null && !mesh.geometry().hasUvs()) {
+            throw new IllegalArgumentException("mesh '" + mesh.path() + "' has no texture coordinates (TEXCOORD_0) "
+                    + "for the texture '" + texture + "'");
+        }
+    }
+
+    /**
+     * A component without a mesh. Values as the canonical constructor's.
+     *
+     * @param id           unique within the species, not empty
+     * @param type         leaf, petal, head or stalk
+     * @param shape        strip or fan
+     * @param count        components per plant, in [1, 256]
+     * @param attachTo     id of the carrying component, or null for the ground
+     * @param segments     skeleton segments, in [1, 32]
+     * @param length       skeleton length, metres
+     * @param baseWidth    width at the base, metres
+     * @param tipWidth     width at the tip, metres
+     * @param curvature    rest curvature, radians
+     * @param twist        twist over the length, radians
+     * @param tilt         base angle from vertical, radians
+     * @param mass         kilograms
+     * @param stiffness    spring constant PC, N/m
+     * @param responseTime response time tau, seconds
+     * @param dragArea     drag coefficient times area, m^2
+     * @param colour       base colour
+     * @param lodSegments  segments drawn per level of detail
+     * @param texture      the image drawn on it, or null
+     */
+    public ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo, int segments,
+                        double length, double baseWidth, double tipWidth, double curvature, double twist, double tilt,
+                        double mass, double stiffness, double responseTime, double dragArea, Rgb colour,
+                        List<Integer> lodSegments, String texture) {
+        this(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth, curvature, twist, tilt, mass,
+                stiffness, responseTime, dragArea, colour, lodSegments, texture, null);
     }
 
     /**
@@ -118,7 +156,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
                         double mass, double stiffness, double responseTime, double dragArea, Rgb colour,
                         List<Integer> lodSegments) {
         this(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth, curvature, twist, tilt, mass,
-                stiffness, responseTime, dragArea, colour, lodSegments, null);
+                stiffness, responseTime, dragArea, colour, lodSegments, null, null);
     }
 
     /** Most components of one type per plant (the scene schema's range and the API's). */
@@ -211,6 +249,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         b.colour = colour;
         b.lodSegments = lodSegments;
         b.texture = texture;
+        b.mesh = mesh;
         return b;
     }
 
@@ -238,6 +277,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         private Rgb colour = DEFAULT_COLOUR;
         private List<Integer> lodSegments;
         private String texture;
+        private MeshDef mesh;
 
         private Builder(String id, ComponentType type) {
             this.id = id;
@@ -448,6 +488,17 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         }
 
         /**
+         * Sets the glTF mesh drawn for the component where it uses all its segments.
+         *
+         * @param mesh the mesh, or null for the strip or fan
+         * @return this builder
+         */
+        public Builder mesh(MeshDef mesh) {
+            this.mesh = mesh;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -480,7 +531,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
                         + " (no default in the scene schema)");
             }
             return new ComponentDef(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth,
-                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture);
+                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture, mesh);
         }
     }
 }

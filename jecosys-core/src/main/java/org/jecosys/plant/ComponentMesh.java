@@ -32,21 +32,179 @@ import org.jecosys.math.Require;
  * enclose an area; with 1 or 2 it yields the same count of degenerate (zero-area or zero-length)
  * primitives.
  *
+ * <h2>Meshes from files</h2>
+ * {@link #fromMesh} places a glTF mesh's triangles instead ({@link MeshDef}): each vertex has a
+ * fractional point (its height along the skeleton), offsets in metres along the unit side, tangent and
+ * face normal of the skeleton there, a normal in that frame and texture coordinates
+ * ({@link #MESH_FLOATS} per vertex, {@link #meshValue}); see {@link #place} for where it goes.
+ *
  * <p>Immutable after construction; any thread; accessors do not allocate.
  */
 public final class ComponentMesh {
+    /**
+     * Floats per vertex of a mesh from a file: the fractional point, the tangent offset c (metres),
+     * u and v on the component's image (v up from the image's bottom row), and the normal's side,
+     * tangent and face-normal components.
+     */
+    public static final int MESH_FLOATS = 7;
+    /** {@link #meshValue} index: the fractional pose-table point, in [0, segments]. */
+    public static final int MESH_POINT = 0;
+    /** {@link #meshValue} index: the offset along the skeleton's unit tangent, metres. */
+    public static final int MESH_C = 1;
+    /** {@link #meshValue} index: u on the component's image. */
+    public static final int MESH_U = 2;
+    /** {@link #meshValue} index: v on the component's image, 0 at its bottom row. */
+    public static final int MESH_V = 3;
+    /** {@link #meshValue} index: the first of the normal's three components (side, tangent, face normal). */
+    public static final int MESH_NORMAL = 4;
+
     private final Primitive primitive;
     private final int[] vertexPoint;
     private final float[] vertexA;
     private final float[] vertexB;
     private final int[] indices;
+    private final float[] mesh;
 
     private ComponentMesh(Primitive primitive, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices) {
+        this(primitive, vertexPoint, vertexA, vertexB, indices, null);
+    }
+
+    private ComponentMesh(Primitive primitive, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices,
+                          float[] mesh) {
         this.primitive = primitive;
         this.vertexPoint = vertexPoint;
         this.vertexA = vertexA;
         this.vertexB = vertexB;
         this.indices = indices;
+        this.mesh = mesh;
+    }
+
+    /**
+     * The triangles of a glTF mesh placed on a component's skeleton of {@code segments} segments and
+     * {@code length} metres. {@link MeshMode#BOUND}: the mesh's height along +Y (lowest to highest
+     * vertex) spans the skeleton, so a vertex at height y gets the fractional point
+     * {@code segments (y - ymin) / (ymax - ymin)}; its X and Z, scaled by
+     * {@code length / (ymax - ymin)} and by the def's scale, are its side and face-normal offsets in
+     * metres. {@link MeshMode#RIGID}: every vertex at the tip point, X, Y and Z times the def's scale
+     * its side, tangent and face-normal offsets. Texture coordinates are the file's with v turned to
+     * run up from the image's bottom row (0 where the file has none). Build time; allocates.
+     *
+     * @param def      the mesh
+     * @param segments skeleton segments S, in [1, 32]
+     * @param length   skeleton length, metres, &gt; 0
+     * @return a triangle mesh whose vertices all refer to points in [0, S]
+     * @throws IllegalArgumentException when a bound mesh has no height along +Y
+     */
+    public static ComponentMesh fromMesh(MeshDef def, int segments, double length) {
+        Require.nonNull("def", def);
+        Require.range("segments", segments, 1, 32);
+        Require.positive("length", length);
+        MeshGeometry g = def.geometry();
+        int n = g.vertexCount();
+        float ylo = g.bound(1, false);
+        float h = g.bound(1, true) - ylo;
+        boolean bound = def.mode() == MeshMode.BOUND;
+        if (bound && !(h > 1e-9)) {
+            throw new IllegalArgumentException("mesh '" + def.path() + "' has no height along +Y to bind along the "
+                    + "skeleton");
+        }
+        double k = bound ? length / h * def.scale() : def.scale();
+        int[] vp = new int[n];
+        float[] va = new float[n];
+        float[] vb = new float[n];
+        float[] m = new float[MESH_FLOATS * n];
+        for (int v = 0; v < n; v++) {
+            float point = bound ? (float) Math.min(segments, Math.max(0, segments * (g.position(v, 1) - ylo) / h))
+                    : segments;
+            vp[v] = (int) Math.floor(point);
+            va[v] = (float) (g.position(v, 0) * k);
+            vb[v] = (float) (g.position(v, 2) * k);
+            int o = MESH_FLOATS * v;
+            m[o + MESH_POINT] = point;
+            m[o + MESH_C] = bound ? 0f : (float) (g.position(v, 1) * k);
+            m[o + MESH_U] = g.hasUvs() ? g.uv(v, 0) : 0f;
+            m[o + MESH_V] = g.hasUvs() ? 1f - g.uv(v, 1) : 0f;
+            for (int i = 0; i < 3; i++) {
+                m[o + MESH_NORMAL + i] = g.normal(v, i);
+            }
+        }
+        int[] idx = new int[3 * g.triangleCount()];
+        for (int i = 0; i < idx.length; i++) {
+            idx[i] = g.index(i);
+        }
+        return new ComponentMesh(Primitive.TRIANGLES, vp, va, vb, idx, m);
+    }
+
+    /**
+     * Where vertex {@code v} of a mesh from a file lies in the component's frame, in pose {@code pose}
+     * of {@code table} (the placement the plant shader does, on the CPU): with {@code i0} the point
+     * below its fractional point {@code q} (at most S - 1) and {@code f = q - i0}, the position
+     * {@code mix(p[i0], p[i0+1], f)}, the unit tangent along {@code p[i0+1] - p[i0]}, the unit side
+     * {@code mix(s[i0], s[i0+1], f)} (leaning to {@code s[i0]} where the tip's width is 0) made normal
+     * to the tangent, the face normal tangent x side; plus a side + c tangent + b normal. No allocation.
+     *
+     * @param table the component's pose table
+     * @param pose  pose, in [0, table.poses())
+     * @param v     a vertex of this mesh, which must be from a file
+     * @param out   receives x, y, z, metres, in the component's frame
+     * @throws IllegalStateException when this mesh is not from a file
+     */
+    public void place(PoseTable table, int pose, int v, float[] out) {
+        if (mesh == null) {
+            throw new IllegalStateException("not a mesh from a file");
+        }
+        float q = mesh[MESH_FLOATS * v + MESH_POINT];
+        int i0 = Math.min((int) Math.floor(q), table.points() - 2);
+        float f = q - i0;
+        int r0 = table.offset(pose, i0);
+        int r1 = table.offset(pose, i0 + 1);
+        double tx = table.get(r1) - table.get(r0);
+        double ty = table.get(r1 + 1) - table.get(r0 + 1);
+        double tz = table.get(r1 + 2) - table.get(r0 + 2);
+        double tl = Math.sqrt(tx * tx + ty * ty + tz * tz);
+        tx /= tl;
+        ty /= tl;
+        tz /= tl;
+        double w0 = 1 - f + 1e-3;
+        double sx = table.get(r0 + 3) * w0 + table.get(r1 + 3) * f;
+        double sy = table.get(r0 + 4) * w0 + table.get(r1 + 4) * f;
+        double sz = table.get(r0 + 5) * w0 + table.get(r1 + 5) * f;
+        double d = sx * tx + sy * ty + sz * tz;
+        sx -= d * tx;
+        sy -= d * ty;
+        sz -= d * tz;
+        double sl = Math.sqrt(sx * sx + sy * sy + sz * sz);
+        sx /= sl;
+        sy /= sl;
+        sz /= sl;
+        double nx = ty * sz - tz * sy;
+        double ny = tz * sx - tx * sz;
+        double nz = tx * sy - ty * sx;
+        double a = vertexA[v];
+        double b = vertexB[v];
+        double c = mesh[MESH_FLOATS * v + MESH_C];
+        out[0] = (float) (table.get(r0) + (table.get(r1) - table.get(r0)) * f + a * sx + c * tx + b * nx);
+        out[1] = (float) (table.get(r0 + 1) + (table.get(r1 + 1) - table.get(r0 + 1)) * f + a * sy + c * ty + b * ny);
+        out[2] = (float) (table.get(r0 + 2) + (table.get(r1 + 2) - table.get(r0 + 2)) * f + a * sz + c * tz + b * nz);
+    }
+
+    /** {@return whether this mesh's triangles come from a file ({@link #fromMesh})} */
+    public boolean fromFile() {
+        return mesh != null;
+    }
+
+    /**
+     * {@return value {@code i} of vertex {@code v} of a mesh from a file (see {@link #MESH_FLOATS})}
+     *
+     * @param v vertex, in [0, vertexCount())
+     * @param i one of the {@code MESH_*} indices, in [0, MESH_FLOATS)
+     * @throws IllegalStateException when this mesh is not from a file
+     */
+    public float meshValue(int v, int i) {
+        if (mesh == null) {
+            throw new IllegalStateException("not a mesh from a file");
+        }
+        return mesh[MESH_FLOATS * v + i];
     }
 
     /**

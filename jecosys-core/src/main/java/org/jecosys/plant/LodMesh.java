@@ -19,14 +19,20 @@ public final class LodMesh {
     private final float[] vertexA;
     private final float[] vertexB;
     private final int[] indices;
+    /** {@link ComponentMesh#MESH_FLOATS} per vertex of a mesh from a file, or null when no vertex is. */
+    private final float[] mesh;
+    private final boolean[] fromFile;
 
-    LodMesh(Primitive primitive, int[] vertexSlot, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices) {
+    LodMesh(Primitive primitive, int[] vertexSlot, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices,
+            float[] mesh, boolean[] fromFile) {
         this.primitive = primitive;
         this.vertexSlot = vertexSlot;
         this.vertexPoint = vertexPoint;
         this.vertexA = vertexA;
         this.vertexB = vertexB;
         this.indices = indices;
+        this.mesh = mesh;
+        this.fromFile = fromFile;
     }
 
     /** Concatenates the component meshes of {@code slots} slots. Build time; allocates. */
@@ -43,6 +49,13 @@ public final class LodMesh {
         float[] va = new float[vCount];
         float[] vb = new float[vCount];
         int[] idx = new int[iCount];
+        boolean any = false;
+        for (int s = 0; s < slots; s++) {
+            any |= meshOfComponent[slotComponent[s]].fromFile();
+        }
+        int mf = ComponentMesh.MESH_FLOATS;
+        float[] mesh = any ? new float[mf * vCount] : null;
+        boolean[] fromFile = new boolean[vCount];
         int v0 = 0;
         int i0 = 0;
         for (int s = 0; s < slots; s++) {
@@ -52,6 +65,14 @@ public final class LodMesh {
                 vp[v0 + v] = m.vertexPoint(v);
                 va[v0 + v] = m.vertexA(v);
                 vb[v0 + v] = m.vertexB(v);
+                if (m.fromFile()) {
+                    fromFile[v0 + v] = true;
+                    for (int i = 0; i < mf; i++) {
+                        mesh[mf * (v0 + v) + i] = m.meshValue(v, i);
+                    }
+                } else if (mesh != null) {
+                    mesh[mf * (v0 + v) + ComponentMesh.MESH_POINT] = m.vertexPoint(v);
+                }
             }
             for (int i = 0; i < m.indexCount(); i++) {
                 idx[i0 + i] = v0 + m.index(i);
@@ -59,7 +80,7 @@ public final class LodMesh {
             v0 += m.vertexCount();
             i0 += m.indexCount();
         }
-        return new LodMesh(primitive, vs, vp, va, vb, idx);
+        return new LodMesh(primitive, vs, vp, va, vb, idx, mesh, fromFile);
     }
 
     /** {@return the primitive: triangles or lines} */
@@ -98,6 +119,29 @@ public final class LodMesh {
      */
     public int vertexPoint(int v) {
         return vertexPoint[v];
+    }
+
+    /**
+     * {@return whether vertex {@code v} belongs to a mesh from a file (its values in {@link #meshValue})}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
+    public boolean vertexFromFile(int v) {
+        return fromFile[v];
+    }
+
+    /**
+     * {@return value {@code i} of vertex {@code v} ({@link ComponentMesh#MESH_FLOATS}); for a vertex not
+     * from a file: its point, and 0 for the rest}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     * @param i one of {@link ComponentMesh}'s {@code MESH_*} indices
+     */
+    public float meshValue(int v, int i) {
+        if (mesh == null) {
+            return i == ComponentMesh.MESH_POINT ? vertexPoint[v] : 0f;
+        }
+        return mesh[ComponentMesh.MESH_FLOATS * v + i];
     }
 
     /**

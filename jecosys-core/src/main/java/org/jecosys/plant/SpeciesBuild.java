@@ -173,8 +173,12 @@ final class SpeciesBuild {
             for (int l = 0; l < levels; l++) {
                 int n = d.lodSegments().get(l);
                 pts[l] = ComponentMesh.lodPoints(d.shape(), d.segments(), n);
-                ms[l] = ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n,
-                        def.lods().get(l).primitive());
+                Primitive primitive = def.lods().get(l).primitive();
+                // a mesh from a file where the component is drawn whole in triangles; its strip or fan and
+                // lines elsewhere
+                ms[l] = d.mesh() != null && n == d.segments() && primitive == Primitive.TRIANGLES
+                        ? ComponentMesh.fromMesh(d.mesh(), d.segments(), d.length())
+                        : ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n, primitive);
             }
             models[c] = new ComponentModel(d, tables[c], lengths[c], masses[c], pts, ms);
         }

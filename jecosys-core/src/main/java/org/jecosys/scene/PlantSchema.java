@@ -145,6 +145,21 @@ final class PlantSchema {
                         + "relative to the scene file, at most " + org.jecosys.plant.PlantTextures.MAX_SIDE + " pixels a "
                         + "side: along the skeleton for a strip (bottom row at the base, top row at the tip), centred "
                         + "for a fan; colour tints it (#ffffff: as drawn).").get(d -> c(d).texture()))
+                .attr(AttrSpec.of("mesh", PATH, "", "A glTF 2.0 mesh (.gltf with its buffers beside it, or .glb), relative "
+                        + "to the scene file: drawn instead of the strip or fan where the component uses all its "
+                        + "segments in triangles (its strip and lines elsewhere). Triangles only, at most "
+                        + org.jecosys.plant.MeshGeometry.MAX_VERTICES + " vertices; with a texture it needs TEXCOORD_0.")
+                        .get(d -> c(d).mesh() == null ? null : c(d).mesh().path()))
+                .attr(enumeration("meshMode", words(org.jecosys.plant.MeshMode.values(), org.jecosys.plant.MeshMode::xmlName),
+                        "How the mesh follows the skeleton: bound (its height spans the skeleton, each vertex bends "
+                        + "with it at its own height) or rigid (its origin rides the tip, +Y along the last segment).")
+                        .def(org.jecosys.plant.MeshDef.DEFAULT_MODE.xmlName())
+                        .get(d -> (c(d).mesh() == null ? org.jecosys.plant.MeshDef.DEFAULT_MODE : c(d).mesh().mode()).xmlName()))
+                .attr(num("meshScale", "", "Scale of the mesh's coordinates (metres as modelled): a rigid mesh's "
+                        + "size; a bound mesh's X and Z after its height was fitted to the length.")
+                        .range(org.jecosys.plant.MeshDef.MIN_SCALE, org.jecosys.plant.MeshDef.MAX_SCALE)
+                        .def(org.jecosys.plant.MeshDef.DEFAULT_SCALE)
+                        .get(d -> c(d).mesh() == null ? org.jecosys.plant.MeshDef.DEFAULT_SCALE : c(d).mesh().scale()))
                 .attr(AttrSpec.of("lodSegments", INT_LIST, "", "Per level of detail of the species, segments used "
                         + "there (0 = not drawn); one value per lod, each at most segments.").range(0, ComponentDef.MAX_SEGMENTS)
                         .items(1, MAX_LODS).required().get(d -> c(d).lodSegments()));

@@ -53,7 +53,12 @@ final class SceneBinder {
         this.source = source;
     }
 
-    private void problem(Values v, String attr, String message) {
+    /** {@return where the scene's files are read from, or null when the image checks are skipped} */
+    ImageSource source() {
+        return source;
+    }
+
+    void problem(Values v, String attr, String message) {
         int[] w = v.where(attr);
         out.problem(w[0], w[1], message);
     }
@@ -311,7 +316,7 @@ final class SceneBinder {
                 byXml(ComponentShape.values(), c.str("shape")), c.integer("count"), attach, c.integer("segments"),
                 c.num("length"), c.num("baseWidth"), c.num("tipWidth"), c.num("curvature"), c.num("twist"),
                 c.num("tilt"), c.num("mass"), c.num("stiffness"), c.num("responseTime"), c.num("dragArea"),
-                (Rgb) c.get("colour"), lodSegments, texture(c)));
+                (Rgb) c.get("colour"), lodSegments, texture(c), MeshFiles.mesh(this, c)));
     }
 
     /** The component's texture, checked as an image and against {@link org.jecosys.plant.PlantTextures#MAX_SIDE}. */

@@ -15,6 +15,7 @@ import org.jecosys.anim.BendGeometry;
 import java.util.List;
 import org.jecosys.math.Rgb;
 import org.jecosys.plant.ComponentDef;
+import org.jecosys.plant.ComponentMesh;
 import org.jecosys.plant.ComponentShape;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.PoseTable;
@@ -33,8 +34,12 @@ import org.jecosys.render.gl.GlVertexArray;
  * and flowers), and the species slots' looks for the resolve pass. Render thread; allocates.
  */
 public final class PlantMeshes {
-    /** Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach, texture layer. */
-    public static final int VERTEX_FLOATS = 12;
+    /**
+     * Floats per mesh vertex: slot, point, a, b; r, g, b, along; pose stride; kind, reach, texture layer;
+     * for a vertex of a glTF mesh its tangent offset, u, v and 1 (else 0, 0, 0, 0), and its normal in the
+     * skeleton's frame (point, a and b are then its fractional point and side and normal offsets in metres).
+     */
+    public static final int VERTEX_FLOATS = 19;
     /** Vertex kinds of {@code plant_common.glsl}: a blade (leaf), a stem, a petal, a fan head. */
     public static final int BLADE = 0;
     public static final int STEM = 1;
@@ -90,9 +95,15 @@ public final class PlantMeshes {
                 ComponentDef def = m.component(component).def();
                 Rgb rgb = def.colour();
                 int points = m.slotPoseTable(slot, 0).points();
-                fv.put(slot).put(mesh.vertexPoint(v)).put(mesh.vertexA(v)).put(mesh.vertexB(v))
-                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(mesh.vertexPoint(v) / (float) Math.max(1, points - 1))
-                        .put(3 * points).put(kind(def)).put(reach[slot]).put(layers[component]);
+                float point = mesh.meshValue(v, ComponentMesh.MESH_POINT);
+                fv.put(slot).put(point).put(mesh.vertexA(v)).put(mesh.vertexB(v))
+                        .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(point / (float) Math.max(1, points - 1))
+                        .put(3 * points).put(kind(def)).put(reach[slot]).put(layers[component])
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_C)).put(mesh.meshValue(v, ComponentMesh.MESH_U))
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_V)).put(mesh.vertexFromFile(v) ? 1f : 0f)
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_NORMAL))
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_NORMAL + 1))
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_NORMAL + 2));
             }
             for (int i = 0; i < mesh.indexCount(); i++) {
                 iv.put(mesh.index(i));
@@ -110,6 +121,10 @@ public final class PlantMeshes {
             glVertexAttribPointer(2, 1, GL_FLOAT, false, 4 * VERTEX_FLOATS, 32);
             glEnableVertexAttribArray(3);
             glVertexAttribPointer(3, 3, GL_FLOAT, false, 4 * VERTEX_FLOATS, 36);
+            glEnableVertexAttribArray(4);
+            glVertexAttribPointer(4, 4, GL_FLOAT, false, 4 * VERTEX_FLOATS, 48);
+            glEnableVertexAttribArray(5);
+            glVertexAttribPointer(5, 3, GL_FLOAT, false, 4 * VERTEX_FLOATS, 64);
             own(owned, GlBuffer.of(t, GL_ELEMENT_ARRAY_BUFFER, iv, GL_STATIC_DRAW));
             glBindVertexArray(0);
             return vao;

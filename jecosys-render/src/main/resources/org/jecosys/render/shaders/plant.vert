@@ -5,7 +5,8 @@
 // of the component's base (the plant's base plus its ground offset, or the animated tip of its
 // parent), its bend azimuth as cosine and sine, the pose-table texel of pose k, the blend weight
 // toward k + 1, this level's dither window, and its colour variation (hue turn, brightness, patch
-// dryness). plant_common.glsl places and shades the vertex; 3 + 6 texel fetches.
+// dryness). plant_common.glsl places and shades the vertex; 3 + 6 texel fetches (3 + 8 for a vertex of a
+// glTF mesh, placed between two points of the skeleton).
 // With TEXTURED the vertex also gives plant.frag its place on the component's image.
 // Line levels use plant_line.vert instead. Compiled with SHADOW_CASTER it only places the vertex, for
 // the sun's shadow map (uViewProj is then the sun's; plant_caster.frag); with SHADOW_MAP it also passes
@@ -40,13 +41,27 @@ void main() {
     vec4 c0 = texelFetch(uComponents, ci);       // base xyz, cos(azimuth)
     vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
     vec4 c2 = texelFetch(uComponents, ci + 2);   // cos and sin of the hue turn, brightness, patch dryness
-    int t = int(c1.x + 0.5) + point * 3;
-    int u = t + int(aStride + 0.5);
     float w = c1.y;
-    vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
-    vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
-    vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
-    Placed v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
+    int stride = int(aStride + 0.5);
+    Placed v;
+    if (aMesh.w > 0.5) {
+        // a glTF mesh's vertex: between points i0 and i0 + 1 at its fractional point (8 texel fetches)
+        int i0 = min(point, stride / 3 - 2);
+        int t = int(c1.x + 0.5) + i0 * 3;
+        int u = t + stride;
+        vec3 p0 = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
+        vec3 s0 = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
+        vec3 p1 = mix(texelFetch(uPoses, t + 3).xyz, texelFetch(uPoses, u + 3).xyz, w);
+        vec3 s1 = mix(texelFetch(uPoses, t + 4).xyz, texelFetch(uPoses, u + 4).xyz, w);
+        v = placeMesh(c0.xyz, c0.w, c1.z, p0, s0, p1, s1, aVertex.y - float(i0));
+    } else {
+        int t = int(c1.x + 0.5) + point * 3;
+        int u = t + stride;
+        vec3 p = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, u).xyz, w);
+        vec3 side = mix(texelFetch(uPoses, t + 1).xyz, texelFetch(uPoses, u + 1).xyz, w);
+        vec3 normal = mix(texelFetch(uPoses, t + 2).xyz, texelFetch(uPoses, u + 2).xyz, w);
+        v = place(c0.xyz, c0.w, c1.z, p, side, normal, true);
+    }
     gl_Position = uViewProj * vec4(v.world, 1.0);
 #ifndef SHADOW_CASTER
     // record texel 1's w: the dither window (whole part) and how far the component is bent (fraction)

@@ -25,6 +25,10 @@ layout(location = 1) in vec4 aColour;           // component colour (0..1), frac
 layout(location = 2) in float aStride;          // texels between poses k and k + 1 of the slot (3 x points)
 layout(location = 3) in vec3 aShape;            // kind (0 blade, 1 stem, 2 petal, 3 fan head), reach (m),
                                                  // the component's texture layer (-1: none)
+layout(location = 4) in vec4 aMesh;             // a vertex of a glTF mesh (w = 1; else 0): its offset along
+                                                 // the skeleton's tangent (m), u and v on the image; aVertex
+                                                 // then holds its fractional point and side and normal offsets (m)
+layout(location = 5) in vec3 aMeshNormal;       // its normal in the skeleton's frame (side, tangent, normal)
 
 uniform mat4 uViewProj;
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
@@ -66,10 +70,35 @@ vec3 rotAxis(vec3 v, vec3 k, float t) {
 // the left edge (a = -1) to the right, v from the base to the tip; a fan's image is centred on its base,
 // its rim on the image's edge
 vec2 textureCoord() {
+    if (aMesh.w > 0.5) {
+        return aMesh.yz;
+    }
     int kind = int(aShape.x + 0.5);
     return kind == 3 ? 0.5 + 0.5 * aVertex.zw : vec2(0.5 + 0.5 * aVertex.z, aColour.w);
 }
 #endif
+
+// Places a vertex of a glTF mesh (aMesh.w = 1; ComponentMesh.place does the same on the CPU): between the
+// pose-blended points p0 and p1 (with their half-width side vectors s0, s1) at the fraction f; the frame is
+// the unit tangent along p1 - p0, the side blended (leaning to s0, which is never 0: only a tip has no
+// width) and made normal to it, and their face normal; (ca, sa) the bend azimuth. Meshes keep their
+// modelled size: no widening, no turn toward the viewer.
+Placed placeMesh(vec3 base, float ca, float sa, vec3 p0, vec3 s0, vec3 p1, vec3 s1, float f) {
+    vec3 t = normalize(p1 - p0);
+    vec3 s = s0 * (1.0 - f + 1e-3) + s1 * f;
+    s = normalize(s - t * dot(s, t));
+    vec3 n = cross(t, s);
+    vec3 local = mix(p0, p1, f) + aVertex.z * s + aMesh.x * t + aVertex.w * n;
+    Placed r;
+    r.world = base + rotY(local, ca, sa);
+    r.normal = rotY(aMeshNormal.x * s + aMeshNormal.y * t + aMeshNormal.z * n, ca, sa);
+    r.cover = 1.0;
+    r.edge = vec2(0.0, 1e4);
+    r.toEye = uEye - r.world;
+    r.distance = length(r.toEye);
+    r.height = r.world.y - base.y;
+    return r;
+}
 
 // Places the vertex: p, side, normal are the pose-blended point and its half-width vectors in the
 // component's frame; (ca, sa) the bend azimuth; widen says whether thin parts are widened.
