@@ -64,19 +64,34 @@ public final class ComponentMesh {
     private final float[] vertexB;
     private final int[] indices;
     private final float[] mesh;
+    private final boolean ridesParent;
 
     private ComponentMesh(Primitive primitive, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices) {
-        this(primitive, vertexPoint, vertexA, vertexB, indices, null);
+        this(primitive, vertexPoint, vertexA, vertexB, indices, null, false);
     }
 
     private ComponentMesh(Primitive primitive, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices,
-                          float[] mesh) {
+                          float[] mesh, boolean ridesParent) {
         this.primitive = primitive;
         this.vertexPoint = vertexPoint;
         this.vertexA = vertexA;
         this.vertexB = vertexB;
         this.indices = indices;
         this.mesh = mesh;
+        this.ridesParent = ridesParent;
+    }
+
+    /**
+     * {@link #fromMesh(MeshDef, int, double, boolean)} on the component's own skeleton.
+     *
+     * @param def      the mesh
+     * @param segments skeleton segments S, in [1, 32]
+     * @param length   skeleton length, metres, &gt; 0
+     * @return a triangle mesh whose vertices all refer to points in [0, S]
+     * @throws IllegalArgumentException when a bound mesh has no height along +Y
+     */
+    public static ComponentMesh fromMesh(MeshDef def, int segments, double length) {
+        return fromMesh(def, segments, length, false);
     }
 
     /**
@@ -87,15 +102,19 @@ public final class ComponentMesh {
      * {@code length / (ymax - ymin)} and by the def's scale, are its side and face-normal offsets in
      * metres. {@link MeshMode#RIGID}: every vertex at the tip point, X, Y and Z times the def's scale
      * its side, tangent and face-normal offsets. Texture coordinates are the file's with v turned to
-     * run up from the image's bottom row (0 where the file has none). Build time; allocates.
+     * run up from the image's bottom row (0 where the file has none). A rigid mesh may ride the tip of
+     * the component it is attached to ({@code onParent}: {@code segments} are then the parent's, and the
+     * vertices refer to the parent's slot, {@link #ridesParent}), so it turns with that tip (a flower
+     * head on its stalk). Build time; allocates.
      *
      * @param def      the mesh
-     * @param segments skeleton segments S, in [1, 32]
-     * @param length   skeleton length, metres, &gt; 0
+     * @param segments skeleton segments S of the skeleton it follows (the parent's when onParent), in [1, 32]
+     * @param length   the component's skeleton length, metres, &gt; 0
+     * @param onParent whether a rigid mesh rides its parent's tip (ignored for a bound mesh)
      * @return a triangle mesh whose vertices all refer to points in [0, S]
      * @throws IllegalArgumentException when a bound mesh has no height along +Y
      */
-    public static ComponentMesh fromMesh(MeshDef def, int segments, double length) {
+    public static ComponentMesh fromMesh(MeshDef def, int segments, double length, boolean onParent) {
         Require.nonNull("def", def);
         Require.range("segments", segments, 1, 32);
         Require.positive("length", length);
@@ -132,7 +151,7 @@ public final class ComponentMesh {
         for (int i = 0; i < idx.length; i++) {
             idx[i] = g.index(i);
         }
-        return new ComponentMesh(Primitive.TRIANGLES, vp, va, vb, idx, m);
+        return new ComponentMesh(Primitive.TRIANGLES, vp, va, vb, idx, m, onParent && !bound);
     }
 
     /**
@@ -186,6 +205,14 @@ public final class ComponentMesh {
         out[0] = (float) (table.get(r0) + (table.get(r1) - table.get(r0)) * f + a * sx + c * tx + b * nx);
         out[1] = (float) (table.get(r0 + 1) + (table.get(r1 + 1) - table.get(r0 + 1)) * f + a * sy + c * ty + b * ny);
         out[2] = (float) (table.get(r0 + 2) + (table.get(r1 + 2) - table.get(r0 + 2)) * f + a * sz + c * tz + b * nz);
+    }
+
+    /**
+     * {@return whether this rigid mesh rides the tip of the component its component is attached to: its
+     * vertices refer to the parent's pose table and slot, its look stays its own component's}
+     */
+    public boolean ridesParent() {
+        return ridesParent;
     }
 
     /** {@return whether this mesh's triangles come from a file ({@link #fromMesh})} */

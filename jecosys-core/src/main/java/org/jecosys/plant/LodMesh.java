@@ -22,9 +22,11 @@ public final class LodMesh {
     /** {@link ComponentMesh#MESH_FLOATS} per vertex of a mesh from a file, or null when no vertex is. */
     private final float[] mesh;
     private final boolean[] fromFile;
+    private final int[] vertexLook;
 
     LodMesh(Primitive primitive, int[] vertexSlot, int[] vertexPoint, float[] vertexA, float[] vertexB, int[] indices,
-            float[] mesh, boolean[] fromFile) {
+            float[] mesh, boolean[] fromFile, int[] vertexLook) {
+        this.vertexLook = vertexLook;
         this.primitive = primitive;
         this.vertexSlot = vertexSlot;
         this.vertexPoint = vertexPoint;
@@ -36,7 +38,8 @@ public final class LodMesh {
     }
 
     /** Concatenates the component meshes of {@code slots} slots. Build time; allocates. */
-    static LodMesh concat(Primitive primitive, int slots, int[] slotComponent, ComponentMesh[] meshOfComponent) {
+    static LodMesh concat(Primitive primitive, int slots, int[] slotComponent, int[] slotParent,
+                          ComponentMesh[] meshOfComponent) {
         int vCount = 0;
         int iCount = 0;
         for (int s = 0; s < slots; s++) {
@@ -56,12 +59,15 @@ public final class LodMesh {
         int mf = ComponentMesh.MESH_FLOATS;
         float[] mesh = any ? new float[mf * vCount] : null;
         boolean[] fromFile = new boolean[vCount];
+        int[] look = new int[vCount];
         int v0 = 0;
         int i0 = 0;
         for (int s = 0; s < slots; s++) {
             ComponentMesh m = meshOfComponent[slotComponent[s]];
             for (int v = 0; v < m.vertexCount(); v++) {
-                vs[v0 + v] = s;
+                // a rigid mesh riding its parent's tip is placed by the parent's slot, looks like its own
+                vs[v0 + v] = m.ridesParent() && slotParent[s] >= 0 ? slotParent[s] : s;
+                look[v0 + v] = s;
                 vp[v0 + v] = m.vertexPoint(v);
                 va[v0 + v] = m.vertexA(v);
                 vb[v0 + v] = m.vertexB(v);
@@ -80,7 +86,7 @@ public final class LodMesh {
             v0 += m.vertexCount();
             i0 += m.indexCount();
         }
-        return new LodMesh(primitive, vs, vp, va, vb, idx, mesh, fromFile);
+        return new LodMesh(primitive, vs, vp, va, vb, idx, mesh, fromFile, look);
     }
 
     /** {@return the primitive: triangles or lines} */
@@ -104,7 +110,7 @@ public final class LodMesh {
     }
 
     /**
-     * {@return the slot (component instance) of vertex {@code v}}
+     * {@return the slot (component instance) whose pose and place vertex {@code v} follows}
      *
      * @param v vertex index, in [0, vertexCount())
      */
@@ -119,6 +125,16 @@ public final class LodMesh {
      */
     public int vertexPoint(int v) {
         return vertexPoint[v];
+    }
+
+    /**
+     * {@return the slot whose component gives vertex {@code v} its look (colour, kind, texture): its own
+     * slot, also for a rigid mesh placed by its parent's slot ({@link #vertexSlot})}
+     *
+     * @param v vertex index, in [0, vertexCount())
+     */
+    public int vertexLookSlot(int v) {
+        return vertexLook[v];
     }
 
     /**

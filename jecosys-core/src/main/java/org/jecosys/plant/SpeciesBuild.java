@@ -29,9 +29,9 @@ final class SpeciesBuild {
         double[][] lengths = variantLengths(cdefs, variants);
         double[][] masses = variantMasses(cdefs, variants);
         PoseTable[][] tables = restPoseTables(def, gravity, parent, variants, lengths, masses);
-        ComponentModel[] models = componentModels(def, tables, lengths, masses);
+        ComponentModel[] models = componentModels(def, tables, lengths, masses, parent);
         SlotLayout slots = new SlotLayout(cdefs, parent, def.componentsPerPlant(), def.variation().azimuth(), seed);
-        LodMesh[] meshes = plantMeshes(def, slots.component, models);
+        LodMesh[] meshes = plantMeshes(def, slots.component, slots.parent, models);
         return new SpeciesModel(def, seed, models, meshes, slots.component, slots.parent, slots.azimuth,
                 slots.baseX, slots.baseZ, slots.variantOffset, System.nanoTime() - t0);
     }
@@ -162,7 +162,7 @@ final class SpeciesBuild {
      * in the level's primitive). Build time; allocates.
      */
     private static ComponentModel[] componentModels(SpeciesDef def, PoseTable[][] tables, double[][] lengths,
-                                                    double[][] masses) {
+                                                    double[][] masses, int[] parent) {
         List<ComponentDef> cdefs = def.components();
         int levels = def.lods().size();
         ComponentModel[] models = new ComponentModel[cdefs.size()];
@@ -176,8 +176,11 @@ final class SpeciesBuild {
                 Primitive primitive = def.lods().get(l).primitive();
                 // a mesh from a file where the component is drawn whole in triangles; its strip or fan and
                 // lines elsewhere
+                // (a rigid one on an attached component rides its parent's tip)
+                boolean onParent = d.mesh() != null && d.mesh().mode() == MeshMode.RIGID && parent[c] >= 0;
                 ms[l] = d.mesh() != null && n == d.segments() && primitive == Primitive.TRIANGLES
-                        ? ComponentMesh.fromMesh(d.mesh(), d.segments(), d.length())
+                        ? ComponentMesh.fromMesh(d.mesh(), onParent ? cdefs.get(parent[c]).segments() : d.segments(),
+                                d.length(), onParent)
                         : ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n, primitive);
             }
             models[c] = new ComponentModel(d, tables[c], lengths[c], masses[c], pts, ms);
@@ -189,14 +192,14 @@ final class SpeciesBuild {
      * Per level of detail the whole-plant mesh: the meshes of the slots' component types at that
      * level, concatenated in slot order ({@link LodMesh#concat}). Build time; allocates.
      */
-    private static LodMesh[] plantMeshes(SpeciesDef def, int[] slotComponent, ComponentModel[] models) {
+    private static LodMesh[] plantMeshes(SpeciesDef def, int[] slotComponent, int[] slotParent, ComponentModel[] models) {
         LodMesh[] meshes = new LodMesh[def.lods().size()];
         for (int l = 0; l < meshes.length; l++) {
             ComponentMesh[] meshOfComponent = new ComponentMesh[models.length];
             for (int c = 0; c < models.length; c++) {
                 meshOfComponent[c] = models[c].mesh(l);
             }
-            meshes[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent,
+            meshes[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent, slotParent,
                     meshOfComponent);
         }
         return meshes;

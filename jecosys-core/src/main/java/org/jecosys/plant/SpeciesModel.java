@@ -180,7 +180,7 @@ public final class SpeciesModel {
             for (int c = 0; c < cs.length; c++) {
                 meshOfComponent[c] = cs[c].mesh(l);
             }
-            lm[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent,
+            lm[l] = LodMesh.concat(def.lods().get(l).primitive(), slotComponent.length, slotComponent, slotParent,
                     meshOfComponent);
         }
         return new SpeciesModel(def, seed, cs, lm, slotComponent, slotParent, slotAzimuth, slotBaseX, slotBaseZ,

@@ -89,22 +89,6 @@ public final class GltfFiles {
                 + "\"bufferViews\":[" + views + "],\"accessors\":[" + accessors + "]}";
     }
 
-    /** A binary .glb: the JSON chunk (the buffer without a uri) and the BIN chunk. */
-    public static byte[] glb(float[] positions, float[] normals, float[] uvs, int[] indices) {
-        byte[] json = utf8(json(positions, normals, uvs, indices, "", 4, true));
-        byte[] bin = buffer(positions, normals, uvs, indices);
-        int jl = (json.length + 3) & ~3;
-        int bl = (bin.length + 3) & ~3;
-        ByteBuffer b = ByteBuffer.allocate(12 + 8 + jl + 8 + bl).order(ByteOrder.LITTLE_ENDIAN);
-        b.putInt(0x46546C67).putInt(2).putInt(b.capacity());
-        b.putInt(jl).putInt(0x4E4F534A).put(json);
-        for (int i = json.length; i < jl; i++) {
-            b.put((byte) ' ');
-        }
-        b.putInt(bl).putInt(0x004E4942).put(bin);
-        return b.array();
-    }
-
     public static byte[] utf8(String s) {
         return s.getBytes(StandardCharsets.UTF_8);
     }

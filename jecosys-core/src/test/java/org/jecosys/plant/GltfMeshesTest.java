@@ -52,7 +52,7 @@ class GltfMeshesTest {
 
     @Test
     void readsABinaryGlb() throws IOException {
-        MeshGeometry g = GltfMeshes.read("head.glb", files(Map.of("head.glb", GltfFiles.glb(QUAD, null, UV, TWO))));
+        MeshGeometry g = GltfMeshes.read("head.glb", files(Map.of("head.glb", GltfWriter.glb(new MeshGeometry(QUAD, null, UV, TWO)))));
         assertEquals(4, g.vertexCount());
         assertEquals(2, g.triangleCount());
         assertEquals(0.5f, g.position(1, 0), 0f);

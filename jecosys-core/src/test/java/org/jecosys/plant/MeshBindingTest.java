@@ -63,7 +63,7 @@ class MeshBindingTest {
             int[] q = {2 * i, 2 * i + 1, 2 * i + 3, 2 * i, 2 * i + 3, 2 * i + 2};
             System.arraycopy(q, 0, idx, 6 * i, 6);
         }
-        Files.write(dir.resolve("leaf.glb"), GltfFiles.glb(pos, null, null, idx));
+        Files.write(dir.resolve("leaf.glb"), GltfWriter.glb(new MeshGeometry(pos, null, null, idx)));
         World w = world("mesh=\"leaf.glb\"");
         PlantComponent stripLeaf = w.plants().species().get(0).component(0);
         PlantComponent meshLeaf = w.plants().species().get(1).component(0);
@@ -99,7 +99,7 @@ class MeshBindingTest {
     @Test
     void aRigidMeshRidesTheTipAlongTheLastSegment() throws Exception {
         float[] pos = {0, 0, 0, 0.5f, 0, 0, 0, 1, 0, 0, 0, 1};
-        Files.write(dir.resolve("head.glb"), GltfFiles.glb(pos, null, null, new int[] {0, 1, 2, 0, 2, 3}));
+        Files.write(dir.resolve("head.glb"), GltfWriter.glb(new MeshGeometry(pos, null, null, new int[] {0, 1, 2, 0, 2, 3})));
         World w = world("mesh=\"head.glb\" meshMode=\"rigid\" meshScale=\"0.02\"");
         PlantComponent leaf = w.plants().species().get(1).component(0);
         PoseTable t = leaf.poseTable(0);

@@ -91,7 +91,7 @@ public final class PlantMeshes {
             }
             for (int v = 0; v < n; v++) {
                 int slot = mesh.vertexSlot(v);
-                int component = m.slotComponent(slot);
+                int component = m.slotComponent(mesh.vertexLookSlot(v)); // a head riding its stalk: its own look
                 ComponentDef def = m.component(component).def();
                 Rgb rgb = def.colour();
                 int points = m.slotPoseTable(slot, 0).points();
