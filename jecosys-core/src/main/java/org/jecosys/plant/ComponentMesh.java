@@ -160,7 +160,8 @@ public final class ComponentMesh {
      * below its fractional point {@code q} (at most S - 1) and {@code f = q - i0}, the position
      * {@code mix(p[i0], p[i0+1], f)}, the unit tangent along {@code p[i0+1] - p[i0]}, the unit side
      * {@code mix(s[i0], s[i0+1], f)} (leaning to {@code s[i0]} where the tip's width is 0) made normal
-     * to the tangent, the face normal tangent x side; plus a side + c tangent + b normal. No allocation.
+     * to the tangent, the face normal tangent x side; plus a side + c tangent + b normal (the shader then
+     * turns a flower part toward the viewer about that point, as it turns petals). No allocation.
      *
      * @param table the component's pose table
      * @param pose  pose, in [0, table.poses())

@@ -82,16 +82,27 @@ vec2 textureCoord() {
 // pose-blended points p0 and p1 (with their half-width side vectors s0, s1) at the fraction f; the frame is
 // the unit tangent along p1 - p0, the side blended (leaning to s0, which is never 0: only a tip has no
 // width) and made normal to it, and their face normal; (ca, sa) the bend azimuth. Meshes keep their
-// modelled size: no widening, no turn toward the viewer.
+// modelled size (no widening, no least size); flower parts turn toward the viewer like the petals.
 Placed placeMesh(vec3 base, float ca, float sa, vec3 p0, vec3 s0, vec3 p1, vec3 s1, float f) {
     vec3 t = normalize(p1 - p0);
     vec3 s = s0 * (1.0 - f + 1e-3) + s1 * f;
     s = normalize(s - t * dot(s, t));
     vec3 n = cross(t, s);
-    vec3 local = mix(p0, p1, f) + aVertex.z * s + aMesh.x * t + aVertex.w * n;
+    vec3 centre = base + rotY(mix(p0, p1, f), ca, sa);
+    vec3 offset = rotY(aVertex.z * s + aMesh.x * t + aVertex.w * n, ca, sa);
     Placed r;
-    r.world = base + rotY(local, ca, sa);
     r.normal = rotY(aMeshNormal.x * s + aMeshNormal.y * t + aMeshNormal.z * n, ca, sa);
+#ifdef FLOWERS
+    // a flower part (a head on its stalk) turns toward the viewer about the point it rides, as the petals do
+    vec3 v = uEye - centre;
+    float hl = length(v.xz);
+    if (int(aShape.x + 0.5) >= 2 && hl > 1e-4 && uFlowerTilt != 0.0) {
+        vec3 k = vec3(v.z, 0.0, -v.x) / hl;
+        offset = rotAxis(offset, k, uFlowerTilt);
+        r.normal = rotAxis(r.normal, k, uFlowerTilt);
+    }
+#endif
+    r.world = centre + offset;
     r.cover = 1.0;
     r.edge = vec2(0.0, 1e4);
     r.toEye = uEye - r.world;
