@@ -37,6 +37,10 @@ class GdxScenesTest {
         assertTrue(png.length > 8 && png[1] == 'P' && png[2] == 'N' && png[3] == 'G', "the sibling image's bytes");
         byte[] blade = scene.images().read("img/blade.png");
         assertTrue(blade.length > 8 && blade[1] == 'P', "the leaf's texture, a sibling image too");
+        // the flower's glTF head and its buffer came through the handle's siblings too
+        org.jecosys.plant.MeshDef head = scene.def().species().get(1).components().get(1).mesh();
+        assertEquals("img/head.gltf", head.path());
+        assertEquals(9, head.geometry().vertexCount(), "the head's vertices, read from head.bin");
     }
 
     @Test
@@ -55,6 +59,8 @@ class GdxScenesTest {
         Files.copy(Path.of(ON_DISK), dir.resolve("tiny.xml"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/ramp.png"), dir.resolve("img/ramp.png"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), dir.resolve("img/blade.png"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.gltf"), dir.resolve("img/head.gltf"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.bin"), dir.resolve("img/head.bin"));
         String abs = dir.resolve("tiny.xml").toString();
         checkTiny(GdxScenes.read(FILES.absolute(abs)), abs);
     }
@@ -73,6 +79,8 @@ class GdxScenesTest {
         Files.createDirectories(sub.resolve("img"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/ramp.png"), dir.resolve("ramp.png"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), sub.resolve("img/blade.png"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.gltf"), sub.resolve("img/head.gltf"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.bin"), sub.resolve("img/head.bin"));
         String xml = Files.readString(Path.of(ON_DISK), StandardCharsets.UTF_8).replace("img/ramp.png", "../ramp.png");
         Files.writeString(sub.resolve("out.xml"), xml, StandardCharsets.UTF_8);
         SceneLoadException e = assertThrows(SceneLoadException.class,
@@ -87,6 +95,8 @@ class GdxScenesTest {
         Files.writeString(dir.resolve("missing.xml"), xml, StandardCharsets.UTF_8);
         Files.createDirectories(dir.resolve("img"));
         Files.copy(Path.of(ON_DISK).resolveSibling("img/blade.png"), dir.resolve("img/blade.png"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.gltf"), dir.resolve("img/head.gltf"));
+        Files.copy(Path.of(ON_DISK).resolveSibling("img/head.bin"), dir.resolve("img/head.bin"));
         SceneLoadException e = assertThrows(SceneLoadException.class,
                 () -> GdxScenes.read(FILES.absolute(dir.resolve("missing.xml").toString())));
         assertTrue(e.getMessage().matches("(?s).*missing\\.xml:\\d+:\\d+:.*img/none\\.png.*"), e.getMessage());

@@ -45,6 +45,8 @@ class PlantLayerLoaderTest {
         assertTrue(sim.plantCount() > 0);
         assertEquals(1, sim.world().plants().textures().layers(), "the leaf's texture, read through the resolver");
         assertEquals("img/blade.png", sim.world().plants().textures().path(0));
+        org.jecosys.plant.LodMesh flower = sim.world().plants().species().get(1).mesh(0);
+        assertTrue(flower.vertexFromFile(flower.vertexCount() - 1), "the flower's glTF head, read through the resolver");
         loader.unloadAsync(null, NAME, file, p);
         assertNull(loader.pending(NAME));
         IllegalStateException closed = assertThrows(IllegalStateException.class,

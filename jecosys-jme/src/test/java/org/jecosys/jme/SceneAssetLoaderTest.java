@@ -45,6 +45,10 @@ class SceneAssetLoaderTest {
                 org.jecosys.math.Progress.NONE);
         assertEquals(1, w.plants().textures().layers());
         assertEquals(128, w.plants().textures().side());
+        // the flower's glTF head and its buffer came through the asset manager, and the world draws it
+        assertEquals("img/head.gltf", scene.def().species().get(1).components().get(1).mesh().path());
+        assertTrue(w.plants().species().get(1).mesh(0).vertexFromFile(w.plants().species().get(1).mesh(0).vertexCount() - 1),
+                "the head's triangles at the near level");
     }
 
     private Path copyTiny(Path folder) throws IOException {
@@ -53,6 +57,8 @@ class SceneAssetLoaderTest {
         Files.copy(src, folder.resolve("tiny.xml"));
         Files.copy(src.resolveSibling("img/ramp.png"), folder.resolve("img/ramp.png"));
         Files.copy(src.resolveSibling("img/blade.png"), folder.resolve("img/blade.png"));
+        Files.copy(src.resolveSibling("img/head.gltf"), folder.resolve("img/head.gltf"));
+        Files.copy(src.resolveSibling("img/head.bin"), folder.resolve("img/head.bin"));
         return folder.resolve("tiny.xml");
     }
 
@@ -91,7 +97,7 @@ class SceneAssetLoaderTest {
                 missing.getMessage());
         AssetLoadException bad = assertThrows(AssetLoadException.class,
                 () -> assets.loadAsset(new SceneKey("Scenes/bad.xml")));
-        assertTrue(bad.getMessage().matches("(?s)Scenes/bad\\.xml:4:\\d+:.*sizeX.*"), bad.getMessage());
+        assertTrue(bad.getMessage().matches("(?s)Scenes/bad\\.xml:5:\\d+:.*sizeX.*"), bad.getMessage());
     }
 
     /** A game's own loader for {@code .xml} assets, standing for its materials or UI files. */

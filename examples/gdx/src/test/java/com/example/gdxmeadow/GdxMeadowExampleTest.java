@@ -110,6 +110,9 @@ class GdxMeadowExampleTest {
     void theDefaultContextShowsHudGroundPlayerAndPushedPlantsWithoutGlErrors() throws Exception {
         ExampleShot shot = shot(gl20);
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("gl20.png"));
+        String log = Files.readString(OUT.resolve("gl20.log"));
+        assertTrue(log.contains("1 textures, 1 glTF meshes"), "the petal texture and the seed head's glTF file, "
+                + "through libGDX's asset manager:\n" + log);
     }
 
     @Test

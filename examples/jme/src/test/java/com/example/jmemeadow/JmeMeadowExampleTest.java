@@ -119,6 +119,9 @@ class JmeMeadowExampleTest {
     void theCoreProfileShowsHudGroundPlayerAndPushedPlantsWithoutGlErrors() throws Exception {
         ExampleShot shot = shot(core);
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("core.png"));
+        String log = Files.readString(OUT.resolve("core.log"));
+        assertTrue(log.contains("1 textures, 1 glTF meshes"), "the petal texture and the seed head's glTF file, "
+                + "through jME's asset manager:\n" + log);
     }
 
     @Test
