@@ -116,6 +116,20 @@ public final class PlantModel {
         return species;
     }
 
+    /**
+     * {@return how many component types, over all species, are drawn from glTF files ({@link MeshDef})}
+     * Any thread; no allocation.
+     */
+    public int meshComponents() {
+        int n = 0;
+        for (SpeciesModel m : species) {
+            for (int c = 0; c < m.componentCount(); c++) {
+                n += m.component(c).def().mesh() != null ? 1 : 0;
+            }
+        }
+        return n;
+    }
+
     /** {@return the total wall time of {@link #build}, nanoseconds} */
     public long buildNanos() {
         return buildNanos;

@@ -520,4 +520,27 @@ final class ImageMetrics {
             throw new IllegalArgumentException(a.width + "x" + a.height + " vs " + b.width + "x" + b.height);
         }
     }
+
+    /**
+     * The colour of {@code palette} (0xRRGGBB) whose hue is nearest the pixel's, or -1 when the pixel is
+     * duller than {@code minSaturation} or darker than {@code minValue} (HSB, 0 to 1).
+     */
+    static int nearestHue(int rgb, int[] palette, float minSaturation, float minValue) {
+        float[] hsv = java.awt.Color.RGBtoHSB((rgb >> 16) & 255, (rgb >> 8) & 255, rgb & 255, null);
+        if (hsv[1] < minSaturation || hsv[2] < minValue) {
+            return -1;
+        }
+        int best = -1;
+        double bestD = 9;
+        for (int b = 0; b < palette.length; b++) {
+            float[] h = java.awt.Color.RGBtoHSB((palette[b] >> 16) & 255, (palette[b] >> 8) & 255, palette[b] & 255, null);
+            double d = Math.abs(hsv[0] - h[0]);
+            d = Math.min(d, 1 - d);
+            if (d < bestD) {
+                bestD = d;
+                best = b;
+            }
+        }
+        return best;
+    }
 }

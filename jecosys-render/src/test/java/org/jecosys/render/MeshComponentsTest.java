@@ -154,21 +154,10 @@ class MeshComponentsTest {
                         continue;
                     }
                     plant++;
-                    float[] hsv = java.awt.Color.RGBtoHSB((p >> 16) & 255, (p >> 8) & 255, p & 255, null);
-                    if (hsv[1] < 0.5f || hsv[2] < 0.35f) {
-                        continue; // the ground darkened by the card's shadow and contact is dull; the bands are vivid
-                    }
-                    int best = 0;
-                    double bestD = 9;
-                    for (int b = 0; b < 4; b++) {
-                        float[] h = java.awt.Color.RGBtoHSB((BANDS[b] >> 16) & 255, (BANDS[b] >> 8) & 255, BANDS[b] & 255,
-                                null);
-                        double d = Math.abs(hsv[0] - h[0]);
-                        d = Math.min(d, 1 - d);
-                        if (d < bestD) {
-                            bestD = d;
-                            best = b;
-                        }
+                    // the ground darkened by the card's shadow and contact is dull; the bands are vivid
+                    int best = ImageMetrics.nearestHue(p, BANDS, 0.5f, 0.35f);
+                    if (best < 0) {
+                        continue;
                     }
                     count[best]++;
                     dist[best] += Math.hypot(x - base[0], y - base[1]);

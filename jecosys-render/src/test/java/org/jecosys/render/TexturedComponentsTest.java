@@ -142,21 +142,9 @@ class TexturedComponentsTest {
                     continue;
                 }
                 plant++;
-                float[] hsv = java.awt.Color.RGBtoHSB((a >> 16) & 255, (a >> 8) & 255, a & 255, null);
-                if (hsv[1] < 0.3f || hsv[2] < 0.15f) {
+                int best = ImageMetrics.nearestHue(a, BANDS, 0.3f, 0.15f);
+                if (best < 0) {
                     continue;
-                }
-                int best = -1;
-                double bestD = 1e9;
-                for (int b = 0; b < BANDS.length; b++) {
-                    float[] h = java.awt.Color.RGBtoHSB((BANDS[b] >> 16) & 255, (BANDS[b] >> 8) & 255, BANDS[b] & 255,
-                            null);
-                    double d = Math.abs(hsv[0] - h[0]);
-                    d = Math.min(d, 1 - d);
-                    if (d < bestD) {
-                        bestD = d;
-                        best = b;
-                    }
                 }
                 count[best]++;
                 dist[best] += Math.hypot(x - base[0], y - base[1]);

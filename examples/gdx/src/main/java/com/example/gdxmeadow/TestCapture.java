@@ -160,7 +160,7 @@ final class TestCapture {
             System.out.println(TAG + "scene " + options.scene() + ": " + game.plants().simulation().plantCount()
                     + " plants, " + game.plants().simulation().componentCount() + " components, "
                     + game.plants().simulation().world().plants().textures().layers() + " textures, "
-                    + meshes(game.plants().simulation().world()) + " glTF meshes");
+                    + game.plants().simulation().world().plants().meshComponents() + " glTF meshes");
         }
         frame++;
         if (frame < options.frames()) {
@@ -295,16 +295,5 @@ final class TestCapture {
             }
         }
         return n == 0 ? Double.NaN : sum / n;
-    }
-
-    /** The component types drawn from glTF files, read through the engine's asset manager with the scene. */
-    private static int meshes(org.jecosys.sim.World world) {
-        int n = 0;
-        for (org.jecosys.plant.SpeciesModel m : world.plants().species()) {
-            for (int c = 0; c < m.componentCount(); c++) {
-                n += m.component(c).def().mesh() != null ? 1 : 0;
-            }
-        }
-        return n;
     }
 }

@@ -87,7 +87,7 @@ final class TestCapture {
             System.out.println(TAG + "scene " + options.scene() + ": " + game.plants().simulation().plantCount()
                     + " plants, " + game.plants().simulation().componentCount() + " components, "
                     + game.plants().simulation().world().plants().textures().layers() + " textures, "
-                    + meshes(game.plants().simulation().world()) + " glTF meshes");
+                    + game.plants().simulation().world().plants().meshComponents() + " glTF meshes");
         }
         check("update");
     }
@@ -431,16 +431,5 @@ final class TestCapture {
         public void setProfiler(AppProfiler profiler) {
             // not profiled
         }
-    }
-
-    /** The component types drawn from glTF files, read through the engine's asset manager with the scene. */
-    private static int meshes(org.jecosys.sim.World world) {
-        int n = 0;
-        for (org.jecosys.plant.SpeciesModel m : world.plants().species()) {
-            for (int c = 0; c < m.componentCount(); c++) {
-                n += m.component(c).def().mesh() != null ? 1 : 0;
-            }
-        }
-        return n;
     }
 }
