@@ -235,6 +235,24 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
+     * {@return whether the plants' per-frame uploads go through a persistently mapped ring of three
+     * regions with fences (where the GL has buffer storage: 4.4, or 4.3 with {@code ARB_buffer_storage});
+     * elsewhere they re-specify streaming buffers} Render thread; no allocation.
+     */
+    public boolean uploadRing() {
+        return plants.uploadRing();
+    }
+
+    /**
+     * {@return the frames, since this renderer was made, whose upload region the GPU was still reading, so
+     * that {@link #render} waited for it: 0 unless the GPU falls more than two frames behind} Render thread;
+     * no allocation.
+     */
+    public long uploadWaits() {
+        return plants.uploadWaits();
+    }
+
+    /**
      * Times each pass of the following frames on the GPU, or stops: with timer queries read a few frames
      * later and only when ready, so measuring never waits; on a software rasteriser (llvmpipe, whose timer
      * queries do not time passes) by the clock around {@code glFinish} after each pass, a diagnostic that

@@ -22,7 +22,9 @@ import org.junit.jupiter.api.Test;
  * caller's), the bench's work counter ({@code GpuWork}, documented as waiting), the component records'
  * read-back for tests ({@code ComponentResolver.readRecords}), and the pass timer, whose query results
  * are read only after {@code GL_QUERY_RESULT_AVAILABLE} says so and whose {@code glFinish} is the
- * software rasteriser's diagnostic. A new call anywhere else fails this test with its file and line.
+ * software rasteriser's diagnostic, and the upload ring ({@code GlUploadRing}), which maps its buffer once at
+ * construction and polls a region's fence with a zero timeout (waiting, counted, only when the GPU is
+ * more than two frames behind). A new call anywhere else fails this test with its file and line.
  */
 class BlockingCallsTest {
     private static final Pattern BLOCKING = Pattern.compile("\\b(glFinish|glReadPixels|glGetQueryObject\\w*|"
@@ -34,7 +36,8 @@ class BlockingCallsTest {
             "GlContext.java", "glFinish",
             "GpuWork.java", "glGetQueryObjectui64",
             "plant/ComponentResolver.java", "glGetBufferSubData",
-            "GpuPassTimer.java", "glFinish glGetQueryObjectui64v");
+            "GpuPassTimer.java", "glFinish glGetQueryObjectui64v",
+            "gl/GlUploadRing.java", "glMapBufferRange glClientWaitSync");
 
     @Test
     void onlyTheCallsMeantToWaitWait() throws IOException {

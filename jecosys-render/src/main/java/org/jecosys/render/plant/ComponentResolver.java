@@ -37,6 +37,7 @@ import org.jecosys.sim.World;
 import org.lwjgl.system.MemoryUtil;
 import org.jecosys.render.gl.GlBuffer;
 import org.jecosys.render.gl.GlBufferTexture;
+import org.jecosys.render.gl.GlUploadRing;
 import org.jecosys.render.gl.GlProgram;
 import org.jecosys.render.gl.GlTracker;
 import org.jecosys.render.gl.GlVertexArray;
@@ -109,6 +110,15 @@ public final class ComponentResolver implements AutoCloseable {
     private int lookVersion = -1;
     private long uploadedBytes;
     private boolean closed;
+    /**
+     * Where the GL has buffer storage: the per-frame uploads (instance records, render states, list
+     * table) go through this persistently mapped ring, its parts {@link #RING_INSTANCES},
+     * {@link #RING_STATES} and {@link #RING_LISTS}; null elsewhere (re-specified streaming buffers).
+     */
+    private final GlUploadRing ring;
+    private static final int RING_INSTANCES = 0;
+    private static final int RING_STATES = 1;
+    private static final int RING_LISTS = 2;
 
     /**
      * Compiles the resolve program, uploads the static per-component data and preallocates the
@@ -158,19 +168,30 @@ public final class ComponentResolver implements AutoCloseable {
             bendTexture = own(new GlBufferTexture(t, bendBuffer, GL_RGBA32F));
             linkBuffer = own(PlantMeshes.uploadLinks(t, world));
             linkTexture = own(new GlBufferTexture(t, linkBuffer, GL_RGBA32I));
-            dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, (long) Frame.RENDER_STATE_BYTES
-                    * components));
-            dynamicTexture = own(new GlBufferTexture(t, dynamicBuffer, GL_RG32F));
-            instanceBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER,
-                    8L * Math.max(1, batches.maxInstances())));
-            instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
+            long stateBytes = (long) Frame.RENDER_STATE_BYTES * components;
+            long instanceBytes = 8L * Math.max(1, batches.maxInstances());
+            long listBytes = 4L * tableInts;
+            if (GlUploadRing.supported(org.lwjgl.opengl.GL.getCapabilities())) {
+                ring = own(new GlUploadRing(t, instanceBytes, stateBytes, listBytes));
+                dynamicBuffer = null;
+                instanceBuffer = null;
+                dynamicTexture = own(new GlBufferTexture(t, ring.id(), GL_RG32F));
+                instanceTexture = own(new GlBufferTexture(t, ring.id(), GL_RG32I));
+            } else {
+                ring = null;
+                dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, stateBytes));
+                dynamicTexture = own(new GlBufferTexture(t, dynamicBuffer, GL_RG32F));
+                instanceBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, instanceBytes));
+                instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
+            }
             pointsVao = own(new GlVertexArray(t));
             slotLookBuffer = own(PlantMeshes.uploadFloats(t, slotLooks));
             slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
             lookBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 8L * components));
             lookTexture = own(new GlBufferTexture(t, lookBuffer, GL_RG32UI));
-            listBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 4L * tableInts));
-            listTexture = own(new GlBufferTexture(t, listBuffer, GL_RGBA32I));
+            listBuffer = ring != null ? null : own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, listBytes));
+            listTexture = own(ring != null ? new GlBufferTexture(t, ring.id(), GL_RGBA32I)
+                    : new GlBufferTexture(t, listBuffer, GL_RGBA32I));
             lists = MemoryUtil.memAllocInt(tableInts);
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree((java.nio.Buffer) instances);
@@ -289,14 +310,27 @@ public final class ComponentResolver implements AutoCloseable {
      */
     public void upload(Frame frame) {
         int n = batches.writeInstances(instanceStaging);
-        instanceBuffer.orphan();
-        instanceBuffer.upload(0, instanceStaging);
         long base = MemoryUtil.memAddress0((java.nio.Buffer) frame.renderStates());
+        long states = 0;
+        if (ring != null) {
+            // straight into this frame's region of the mapped ring: no GL call, nothing re-specified
+            ring.next();
+            MemoryUtil.memCopy(MemoryUtil.memAddress(instanceStaging), MemoryUtil.memAddress(ring.view(RING_INSTANCES)),
+                    4L * instanceStaging.remaining());
+            states = MemoryUtil.memAddress(ring.view(RING_STATES));
+        } else {
+            instanceBuffer.orphan();
+            instanceBuffer.upload(0, instanceStaging);
+        }
         long bytes = 0;
         for (int i = 0, runs = batches.runs(); i < runs; i++) {
             long c0 = batches.runStart(i);
             long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
-            dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
+            if (ring != null) {
+                MemoryUtil.memCopy(base + Frame.RENDER_STATE_BYTES * c0, states + Frame.RENDER_STATE_BYTES * c0, size);
+            } else {
+                dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
+            }
             bytes += size;
         }
         uploadedBytes = 8L * n + bytes;
@@ -314,8 +348,13 @@ public final class ComponentResolver implements AutoCloseable {
             bakeLooks(look);
         }
         poseTexture.bind(TextureUnits.POSES);
-        instanceTexture.bind(TextureUnits.INSTANCES);
-        dynamicTexture.bind(TextureUnits.RENDER_STATES);
+        if (ring != null) {
+            instanceTexture.range(TextureUnits.INSTANCES, ring.id(), ring.offset(RING_INSTANCES), ring.bytes(RING_INSTANCES));
+            dynamicTexture.range(TextureUnits.RENDER_STATES, ring.id(), ring.offset(RING_STATES), ring.bytes(RING_STATES));
+        } else {
+            instanceTexture.bind(TextureUnits.INSTANCES);
+            dynamicTexture.bind(TextureUnits.RENDER_STATES);
+        }
         staticTexture.bind(TextureUnits.STATIC);
         linkTexture.bind(TextureUnits.LINKS);
         bendTexture.bind(TextureUnits.BEND_GEOMETRY);
@@ -324,6 +363,7 @@ public final class ComponentResolver implements AutoCloseable {
         detach();
         if (path == ResolvePath.COMPUTE) {
             resolveByCompute(look);
+            fenceUploads();
             return;
         }
         glEnable(GL_RASTERIZER_DISCARD);
@@ -352,6 +392,27 @@ public final class ComponentResolver implements AutoCloseable {
         }
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
         glDisable(GL_RASTERIZER_DISCARD);
+        fenceUploads();
+    }
+
+    /** The ring's region is read by the resolve pass only: fenced once its commands are issued. */
+    private void fenceUploads() {
+        if (ring != null) {
+            ring.fence();
+        }
+    }
+
+    /**
+     * {@return frames whose upload region the GPU was still reading, so that they waited for it (0 with
+     * no ring: the streaming buffers are re-specified instead)} Render thread; no allocation.
+     */
+    public long uploadWaits() {
+        return ring == null ? 0 : ring.waits();
+    }
+
+    /** {@return whether the per-frame uploads go through a persistently mapped ring (buffer storage)} */
+    public boolean uploadRing() {
+        return ring != null;
     }
 
     /** The compute path of {@link #resolve}: the list table, then at most one dispatch per variant. */
@@ -379,9 +440,15 @@ public final class ComponentResolver implements AutoCloseable {
             listInvocations[k] = invocations;
         }
         listStaging.flip();
-        listBuffer.orphan();
-        listBuffer.upload(0, listStaging);
-        listTexture.bind(TextureUnits.LIST_TABLE);
+        if (ring != null) {
+            MemoryUtil.memCopy(MemoryUtil.memAddress(listStaging), MemoryUtil.memAddress(ring.view(RING_LISTS)),
+                    4L * listStaging.remaining());
+            listTexture.range(TextureUnits.LIST_TABLE, ring.id(), ring.offset(RING_LISTS), ring.bytes(RING_LISTS));
+        } else {
+            listBuffer.orphan();
+            listBuffer.upload(0, listStaging);
+            listTexture.bind(TextureUnits.LIST_TABLE);
+        }
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
         for (int k = 0; k < passes.length; k++) {
             int count = listInvocations[k];

@@ -517,6 +517,16 @@ public final class PlantRenderer implements AutoCloseable {
         return gpu.resolver.uploadedBytes();
     }
 
+    /** {@return whether the per-frame uploads go through a mapped ring (see {@link ComponentResolver#uploadRing})} */
+    public boolean uploadRing() {
+        return gpu.resolver.uploadRing();
+    }
+
+    /** {@return frames that waited for their upload region (see {@link ComponentResolver#uploadWaits})} */
+    public long uploadWaits() {
+        return gpu.resolver.uploadWaits();
+    }
+
     /** Deletes every GL object and frees the staging memory. Render thread; idempotent. */
     @Override
     public void close() {
