@@ -403,7 +403,8 @@ final class SceneBinder {
                 numOr(f, "noiseFrequency", FlowDef.DEFAULT_NOISE_FREQUENCY),
                 f.values.containsKey("seed") ? f.longValue("seed") : FlowDef.DEFAULT_SEED,
                 numOr(f, "gustStrength", FlowDef.DEFAULT_GUST_STRENGTH),
-                numOr(f, "turbulence", FlowDef.DEFAULT_TURBULENCE)));
+                numOr(f, "turbulence", FlowDef.DEFAULT_TURBULENCE),
+                numOr(f, "gustStretch", FlowDef.DEFAULT_GUST_STRETCH)));
     }
 
     private static double numOr(Values v, String name, double fallback) {

@@ -195,6 +195,10 @@ final class SceneSchema {
             e.attr(num("turbulence", "", "Relative strength of small eddies a quarter of the gust size; 0 for "
                     + "none.").range(0, FlowDef.MAX_TURBULENCE).def(FlowDef.DEFAULT_TURBULENCE)
                     .get(d -> f(d).turbulence()));
+            e.attr(num("gustStretch", "", "How many times longer a gust is across the wind than along it: 1 for "
+                    + "round gusts; 3 to 5 for the bands of bent, bright blades that run over a field with the wind.")
+                    .range(1, FlowDef.MAX_GUST_STRETCH).def(FlowDef.DEFAULT_GUST_STRETCH)
+                    .get(d -> f(d).gustStretch()));
         }
         e.child(path("A scripted path the centre walks along.", MotionDef.DEFAULT_PATH_SPEED,
                         MotionDef.DEFAULT_PATH_LOOP, false,

@@ -28,11 +28,14 @@ import org.jecosys.math.Waypoint;
  *                        (0.5: the speed varies by up to about half the mean)
  * @param turbulence      GUST: relative strength of the small eddies (a quarter of the gust size),
  *                        dimensionless; 0 for none
+ * @param gustStretch     GUST: how many times longer a gust is across the wind than along it, dimensionless;
+ *                        1 (the default) for round gusts; above 1 the gusts are bands across the wind that
+ *                        run with it, as wind over grass shows them
  */
 public record FlowDef(String id, FlowKind kind, boolean enabled, double x, double z, double strength,
                       double direction, double coreRadius, double influenceRadius, ActivationDef activation,
                       MotionDef motion, double noiseScale, double noiseFrequency, long seed, double gustStrength,
-                      double turbulence) {
+                      double turbulence, double gustStretch) {
     /**
      * Checks the components.
      *
@@ -53,6 +56,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
      * @param seed            any value
      * @param gustStrength    dimensionless, in [0, {@link #MAX_GUST_STRENGTH}]
      * @param turbulence      dimensionless, in [0, {@link #MAX_TURBULENCE}]
+     * @param gustStretch     dimensionless, in [1, {@link #MAX_GUST_STRETCH}]
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public FlowDef {
@@ -76,7 +80,40 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         }
         Require.range("gustStrength", gustStrength, 0, MAX_GUST_STRENGTH);
         Require.range("turbulence", turbulence, 0, MAX_TURBULENCE);
+        Require.range("gustStretch", gustStretch, 1, MAX_GUST_STRETCH);
     }
+
+    /**
+     * A flow with round gusts ({@link #gustStretch()} 1). Values as the canonical constructor's.
+     *
+     * @param id              not empty
+     * @param kind            not null
+     * @param enabled         whether it starts enabled
+     * @param x               centre X, metres
+     * @param z               centre Z, metres
+     * @param strength        m/s or m^2/s
+     * @param direction       radians
+     * @param coreRadius      metres
+     * @param influenceRadius metres, or +Infinity
+     * @param activation      not null
+     * @param motion          not null
+     * @param noiseScale      metres
+     * @param noiseFrequency  Hz or drops per second per m^2
+     * @param seed            any value
+     * @param gustStrength    dimensionless
+     * @param turbulence      dimensionless
+     */
+    public FlowDef(String id, FlowKind kind, boolean enabled, double x, double z, double strength, double direction,
+                   double coreRadius, double influenceRadius, ActivationDef activation, MotionDef motion,
+                   double noiseScale, double noiseFrequency, long seed, double gustStrength, double turbulence) {
+        this(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius, activation, motion, noiseScale,
+                noiseFrequency, seed, gustStrength, turbulence, DEFAULT_GUST_STRETCH);
+    }
+
+    /** Default {@link #gustStretch()}: round gusts (dimensionless). */
+    public static final double DEFAULT_GUST_STRETCH = 1;
+    /** Largest {@link #gustStretch()} (dimensionless). */
+    public static final double MAX_GUST_STRETCH = 10;
 
     /** Default {@link #gustStrength()}: gusts vary the speed by up to about half the mean (dimensionless). */
     public static final double DEFAULT_GUST_STRENGTH = 0.5;
@@ -198,7 +235,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         return new Builder(id, kind).enabled(enabled).centre(x, z).strength(strength).direction(direction)
                 .coreRadius(coreRadius).influenceRadius(influenceRadius).activation(activation).motion(motion)
                 .noiseScale(noiseScale).noiseFrequency(noiseFrequency).seed(seed).gustStrength(gustStrength)
-                .turbulence(turbulence);
+                .turbulence(turbulence).gustStretch(gustStretch);
     }
 
     /**
@@ -226,6 +263,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         private long seed = DEFAULT_SEED;
         private double gustStrength = DEFAULT_GUST_STRENGTH;
         private double turbulence = DEFAULT_TURBULENCE;
+        private double gustStretch = DEFAULT_GUST_STRETCH;
 
         private Builder(String id, FlowKind kind) {
             this.id = id;
@@ -442,6 +480,17 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
         }
 
         /**
+         * Sets how many times longer a GUST flow's gusts are across the wind than along it.
+         *
+         * @param gustStretch dimensionless, in [1, {@link FlowDef#MAX_GUST_STRETCH}]; 1 for round gusts
+         * @return this builder
+         */
+        public Builder gustStretch(double gustStretch) {
+            this.gustStretch = gustStretch;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -459,7 +508,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
             }
             return new FlowDef(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius,
                     new ActivationDef(start, duration, rampIn, rampOut), motion, noiseScale, noiseFrequency, seed,
-                    gustStrength, turbulence);
+                    gustStrength, turbulence, gustStretch);
         }
     }
 }

@@ -16,7 +16,9 @@ import org.joml.Vector2d;
  *   u  = U (1 + A n1 + T m1) + |U| (A n2 + T m2) perp(U^)      perp(U^) = U^ turned +90 degrees (-U^z, U^x)
  * </pre>
  * The second octave (eddies a quarter of the gust size, changing twice as fast) is skipped when T is
- * 0, which gives the gusts of earlier versions exactly. Deterministic for a seed; a pure function of
+ * 0, which gives the gusts of earlier versions exactly. With a stretch k = gustStretch above 1, the
+ * gusts' pattern (n1, n2) is read at (q . U^, q . perp(U^) / k) instead of q: bands k times longer
+ * across the wind than along it, running with it (the eddies stay round); k = 1 reads q as before. Deterministic for a seed; a pure function of
  * position and time; |u| &lt;= |U| (1 + sqrt(2) (A + T)). Centre and influence radius are unused.
  * Single owner thread; no allocation after construction.
  */
@@ -33,6 +35,10 @@ public final class GustFlow extends FlowBase {
     private final long seed;
     private final double amplitude;
     private final double turbulence;
+    /** 1 / gustStretch, and the wind's unit heading; the pattern is stretched across it when below 1. */
+    private final double invStretch;
+    private final double hx;
+    private final double hz;
 
     /**
      * A gust flow from its def (kind GUST). Allocates.
@@ -52,6 +58,9 @@ public final class GustFlow extends FlowBase {
         seed = def.seed();
         amplitude = def.gustStrength();
         turbulence = def.turbulence();
+        invStretch = 1.0 / def.gustStretch();
+        hx = Math.cos(def.direction());
+        hz = Math.sin(def.direction());
     }
 
     /**
@@ -81,8 +90,14 @@ public final class GustFlow extends FlowBase {
         double qx = (x - ux * time) * invScale;
         double qz = (z - uz * time) * invScale;
         double ft = freq * time;
-        double along = 1 + amplitude * Noise.value3(seed, qx, qz, ft);
-        double across = amplitude * Noise.value3(seed + 1, qx, qz, ft);
+        double gx = qx;
+        double gz = qz;
+        if (invStretch < 1) {
+            gx = qx * hx + qz * hz;                   // along the wind
+            gz = (qz * hx - qx * hz) * invStretch;    // across it, stretched
+        }
+        double along = 1 + amplitude * Noise.value3(seed, gx, gz, ft);
+        double across = amplitude * Noise.value3(seed + 1, gx, gz, ft);
         if (turbulence > 0) {
             double ex = qx / EDDY_SCALE;
             double ez = qz / EDDY_SCALE;
