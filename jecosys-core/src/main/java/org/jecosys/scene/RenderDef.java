@@ -45,10 +45,11 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      *                      toward its pale, sky-lit side, in [0, 2]; 0 turns it off
      * @param shadows       strength of the plants' sun shadows on the ground: the share of the sun's direct
      *                      light a fully shadowed point loses, in [0, 1]; 0 (the default) turns them off
+     * @param clouds        how much of the sky fair-weather clouds cover, in [0, 1]; 0 (the default): a clear sky
      */
     public record Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
                         Rgb ambient, double contactShadow, double fogStart, double fogEnd, double sheen,
-                        double shadows) {
+                        double shadows, double clouds) {
         /** Largest sun azimuth magnitude, degrees (the Def holds radians). */
         public static final double MAX_AZIMUTH_DEGREES = 360;
         /** Largest sun elevation, degrees (the Def holds radians). */
@@ -74,9 +75,11 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          * @param fogEnd        metres, in (fogStart, 100000]
          * @param sheen         in [0, 2]
          * @param shadows       in [0, 1]
+         * @param clouds        in [0, 1]
          * @throws IllegalArgumentException when a component is null or out of range
          */
         public Light {
+            Require.range("clouds", clouds, 0, 1);
             Require.range("sheen", sheen, 0, MAX_SHEEN);
             Require.range("shadows", shadows, 0, 1);
             Require.degrees("sunAzimuth", sunAzimuth, -MAX_AZIMUTH_DEGREES, MAX_AZIMUTH_DEGREES);
@@ -94,10 +97,31 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
         }
 
         /**
+         * A clear sky ({@link #clouds()} 0). Values as the canonical constructor's.
+         *
+         * @param sunAzimuth    radians
+         * @param sunElevation  radians
+         * @param sunColour     not null
+         * @param sunIntensity  in [0, 4]
+         * @param skyZenith     not null
+         * @param ambient       not null
+         * @param contactShadow in [0, 1]
+         * @param fogStart      metres
+         * @param fogEnd        metres, above fogStart
+         * @param sheen         in [0, 2]
+         * @param shadows       in [0, 1]
+         */
+        public Light(double sunAzimuth, double sunElevation, Rgb sunColour, double sunIntensity, Rgb skyZenith,
+                     Rgb ambient, double contactShadow, double fogStart, double fogEnd, double sheen, double shadows) {
+            this(sunAzimuth, sunElevation, sunColour, sunIntensity, skyZenith, ambient, contactShadow, fogStart, fogEnd,
+                    sheen, shadows, 0);
+        }
+
+        /**
          * The defaults: the sun at azimuth 135 degrees, elevation 50 degrees (high, behind and to the left
          * of a camera looking along -Z, as the scenes' start cameras do), warm white at intensity 0.8, a
          * deeper blue zenith, a cool ambient of about 0.45, contact shadow 0.5, haze from 20 m to 150 m,
-         * the wind's sheen at 1 and no sun shadows.
+         * the wind's sheen at 1, no sun shadows and a clear sky.
          */
         public static final Light DEFAULT = new Light(Math.toRadians(135), Math.toRadians(50),
                 new Rgb(1f, 0.95f, 0.85f), 0.8, new Rgb(0.30f, 0.50f, 0.85f), new Rgb(0.42f, 0.46f, 0.52f), 0.5,

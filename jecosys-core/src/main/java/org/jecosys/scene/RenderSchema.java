@@ -51,7 +51,10 @@ final class RenderSchema {
                         .range(0, RenderDef.Light.MAX_SHEEN).def(ld.sheen()).get(d -> li.apply(d).sheen()))
                 .attr(num("shadows", "", "Strength of the plants' sun shadows on the ground: the share of the sun's "
                         + "direct light a fully shadowed point loses (the plants at rest, from the sun's direction; "
-                        + "0 turns them off).").range(0, 1).def(ld.shadows()).get(d -> li.apply(d).shadows()));
+                        + "0 turns them off).").range(0, 1).def(ld.shadows()).get(d -> li.apply(d).shadows()))
+                .attr(num("clouds", "", "How much of the sky fair-weather clouds cover, lit by the sun and thinning "
+                        + "into the haze at the horizon (0 for a clear sky).").range(0, 1).def(ld.clouds())
+                        .get(d -> li.apply(d).clouds()));
         RenderDef.Patches pd = RenderDef.Patches.DEFAULT;
         ElementSpec patches = new ElementSpec("patches", "Large healthy/dry colour patches over the ground and "
                 + "the plants, from seeded noise (presentation only).")

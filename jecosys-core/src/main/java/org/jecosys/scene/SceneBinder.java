@@ -474,7 +474,7 @@ final class SceneBinder {
         RenderDef.Light light = lv == null ? RenderDef.Light.DEFAULT : make(lv, () -> new RenderDef.Light(
                 lv.num("sunAzimuth"), lv.num("sunElevation"), (Rgb) lv.get("sunColour"), lv.num("sunIntensity"),
                 (Rgb) lv.get("skyZenith"), (Rgb) lv.get("ambient"), lv.num("contactShadow"), lv.num("fogStart"),
-                lv.num("fogEnd"), lv.num("sheen"), lv.num("shadows")));
+                lv.num("fogEnd"), lv.num("sheen"), lv.num("shadows"), lv.num("clouds")));
         Values pv = r.child("patches");
         RenderDef.Patches patches = pv == null ? RenderDef.Patches.DEFAULT : make(pv, () -> new RenderDef.Patches(
                 pv.num("scale"), pv.num("strength"), pv.integer("seed")));

@@ -47,6 +47,7 @@ public final class Lighting {
     private float sunZ;
     private float fogStart = 20;
     private float fogEnd = 150;
+    private float clouds;
 
     /**
      * A scene file's default light: a light blue horizon (the haze colour) and a deeper blue zenith,
@@ -389,6 +390,24 @@ public final class Lighting {
         sunZ = other.sunZ;
         fogStart = other.fogStart;
         fogEnd = other.fogEnd;
+        clouds = other.clouds;
+    }
+
+    /**
+     * Sets how much of the sky fair-weather clouds cover ({@code <light clouds>}): drawn by the sky pass,
+     * lit by the sun, thinning into the haze at the horizon. No allocation.
+     *
+     * @param cover in [0, 1]; 0 for a clear sky
+     * @throws IllegalArgumentException when out of range
+     */
+    public void setClouds(float cover) {
+        Require.range("clouds", cover, 0, 1);
+        clouds = cover;
+    }
+
+    /** {@return how much of the sky clouds cover, in [0, 1]} */
+    public float clouds() {
+        return clouds;
     }
 
     private static void checkLight(String name, float r, float g, float b) {

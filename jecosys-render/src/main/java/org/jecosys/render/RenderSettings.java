@@ -104,6 +104,7 @@ public final class RenderSettings {
         s.lighting.setAmbient(l.ambient());
         s.setContactShadow((float) l.contactShadow());
         s.lighting.setFog((float) l.fogStart(), (float) l.fogEnd());
+        s.lighting.setClouds((float) l.clouds());
         s.setSheen((float) l.sheen());
         s.setShadows((float) l.shadows());
         s.setPatches((float) def.patches().scale(), (float) def.patches().strength(), def.patches().seed());

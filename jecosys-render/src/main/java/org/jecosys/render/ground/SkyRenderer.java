@@ -35,6 +35,7 @@ public final class SkyRenderer implements AutoCloseable {
     private final int uZenith;
     private final int uSunDir;
     private final int uSunColour;
+    private final int uClouds;
     private boolean closed;
 
     /**
@@ -60,6 +61,7 @@ public final class SkyRenderer implements AutoCloseable {
         uZenith = program.uniform("uZenith");
         uSunDir = program.uniform("uSunDir");
         uSunColour = program.uniform("uSunColour");
+        uClouds = program.uniform("uClouds");
     }
 
     /**
@@ -79,6 +81,7 @@ public final class SkyRenderer implements AutoCloseable {
         glUniform3f(uZenith, l.zenithR(), l.zenithG(), l.zenithB());
         glUniform3f(uSunDir, l.sunX(), l.sunY(), l.sunZ());
         glUniform3f(uSunColour, l.sunR() * k, l.sunG() * k, l.sunB() * k);
+        org.lwjgl.opengl.GL20C.glUniform1f(uClouds, l.clouds());
         vao.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
