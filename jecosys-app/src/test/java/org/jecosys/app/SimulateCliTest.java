@@ -56,8 +56,7 @@ class SimulateCliTest {
             assertTrue(one.out().contains(k), k + " in " + one.out());
         }
         assertTrue(Files.readString(json, StandardCharsets.UTF_8).contains("\"openWorld\": true"));
-        CliTest.Result three = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "30", "--threads", "3");
-        assertEquals(hash(one), hash(three), "every tile's state, whatever the workers");
+        // the same tiles whatever the workers: OpenWorldTest (1 and 3 animation workers, 1 and 2 tile workers)
         CliTest.Result dump = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "1", "--dump",
                 dir.resolve("d.csv").toString());
         assertEquals(2, dump.code(), dump.err());

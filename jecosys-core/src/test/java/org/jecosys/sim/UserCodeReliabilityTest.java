@@ -33,8 +33,12 @@ import org.junit.jupiter.api.Test;
  */
 @Tag("reliability")
 class UserCodeReliabilityTest {
-    /** Trials per worker count and kind of fault (the issue asks for 200). */
-    static final int TRIALS = Integer.getInteger("jecosys.userCode.trials", 200);
+    /**
+     * Trials per worker count and kind of fault: 100 in the default run (the whole test run must stay
+     * under 6 minutes on 2 cores); the issue that asked for this test asked 200, which
+     * {@code -Djecosys.userCode.trials=200} runs.
+     */
+    static final int TRIALS = Integer.getInteger("jecosys.userCode.trials", 100);
     /** Far beyond any step of the fixture: past it, a thread is hung. */
     private static final long HANG_MILLIS = 20_000;
     /** What close() may take once the step that threw has returned. */

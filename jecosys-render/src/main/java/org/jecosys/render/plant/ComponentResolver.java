@@ -81,10 +81,8 @@ public final class ComponentResolver implements AutoCloseable {
     private final GlBufferTexture bendTexture;
     private final GlBuffer linkBuffer;
     private final GlBufferTexture linkTexture;
-    private final GlBuffer dynamicBuffer;
-    private final GlBufferTexture dynamicTexture;
-    private final GlBuffer instanceBuffer;
-    private final GlBufferTexture instanceTexture;
+    /** The per-frame bytes: instance records, render states, the list table (a mapped ring or streaming buffers). */
+    private final ResolverUploads uploads;
     private final GlVertexArray pointsVao;
     private final IntBuffer instanceStaging;
     private final int[] slotBase;
@@ -96,8 +94,6 @@ public final class ComponentResolver implements AutoCloseable {
     private final int[] listInvocations = new int[2];
     /** The list table of the compute path (8 ints per non-empty list), staged and uploaded per frame. */
     private final IntBuffer listStaging;
-    private final GlBuffer listBuffer;
-    private final GlBufferTexture listTexture;
     /** Invocations per compute work group ({@code local_size_x} of {@code plant_resolve.comp}). */
     private static final int GROUP = 64;
     /** Most invocations in one dispatch: 65535 groups, the least every 4.3 context allows. */
@@ -110,15 +106,6 @@ public final class ComponentResolver implements AutoCloseable {
     private int lookVersion = -1;
     private long uploadedBytes;
     private boolean closed;
-    /**
-     * Where the GL has buffer storage: the per-frame uploads (instance records, render states, list
-     * table) go through this persistently mapped ring, its parts {@link #RING_INSTANCES},
-     * {@link #RING_STATES} and {@link #RING_LISTS}; null elsewhere (re-specified streaming buffers).
-     */
-    private final GlUploadRing ring;
-    private static final int RING_INSTANCES = 0;
-    private static final int RING_STATES = 1;
-    private static final int RING_LISTS = 2;
 
     /**
      * Compiles the resolve program, uploads the static per-component data and preallocates the
@@ -168,30 +155,14 @@ public final class ComponentResolver implements AutoCloseable {
             bendTexture = own(new GlBufferTexture(t, bendBuffer, GL_RGBA32F));
             linkBuffer = own(PlantMeshes.uploadLinks(t, world));
             linkTexture = own(new GlBufferTexture(t, linkBuffer, GL_RGBA32I));
-            long stateBytes = (long) Frame.RENDER_STATE_BYTES * components;
-            long instanceBytes = 8L * Math.max(1, batches.maxInstances());
-            long listBytes = 4L * tableInts;
-            if (GlUploadRing.supported(org.lwjgl.opengl.GL.getCapabilities())) {
-                ring = own(new GlUploadRing(t, instanceBytes, stateBytes, listBytes));
-                dynamicBuffer = null;
-                instanceBuffer = null;
-                dynamicTexture = own(new GlBufferTexture(t, ring.id(), GL_RG32F));
-                instanceTexture = own(new GlBufferTexture(t, ring.id(), GL_RG32I));
-            } else {
-                ring = null;
-                dynamicBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, stateBytes));
-                dynamicTexture = own(new GlBufferTexture(t, dynamicBuffer, GL_RG32F));
-                instanceBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, instanceBytes));
-                instanceTexture = own(new GlBufferTexture(t, instanceBuffer, GL_RG32I));
-            }
+            uploads = new ResolverUploads(t, 8L * Math.max(1, batches.maxInstances()),
+                    (long) Frame.RENDER_STATE_BYTES * components, 4L * tableInts,
+                    GlUploadRing.supported(org.lwjgl.opengl.GL.getCapabilities()), owned);
             pointsVao = own(new GlVertexArray(t));
             slotLookBuffer = own(PlantMeshes.uploadFloats(t, slotLooks));
             slotLookTexture = own(new GlBufferTexture(t, slotLookBuffer, GL_RGBA32F));
             lookBuffer = own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, 8L * components));
             lookTexture = own(new GlBufferTexture(t, lookBuffer, GL_RG32UI));
-            listBuffer = ring != null ? null : own(GlBuffer.dynamic(t, GL_TEXTURE_BUFFER, listBytes));
-            listTexture = own(ring != null ? new GlBufferTexture(t, ring.id(), GL_RGBA32I)
-                    : new GlBufferTexture(t, listBuffer, GL_RGBA32I));
             lists = MemoryUtil.memAllocInt(tableInts);
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree((java.nio.Buffer) instances);
@@ -310,29 +281,7 @@ public final class ComponentResolver implements AutoCloseable {
      */
     public void upload(Frame frame) {
         int n = batches.writeInstances(instanceStaging);
-        long base = MemoryUtil.memAddress0((java.nio.Buffer) frame.renderStates());
-        long states = 0;
-        if (ring != null) {
-            // straight into this frame's region of the mapped ring: no GL call, nothing re-specified
-            ring.next();
-            MemoryUtil.memCopy(MemoryUtil.memAddress(instanceStaging), MemoryUtil.memAddress(ring.view(RING_INSTANCES)),
-                    4L * instanceStaging.remaining());
-            states = MemoryUtil.memAddress(ring.view(RING_STATES));
-        } else {
-            instanceBuffer.orphan();
-            instanceBuffer.upload(0, instanceStaging);
-        }
-        long bytes = 0;
-        for (int i = 0, runs = batches.runs(); i < runs; i++) {
-            long c0 = batches.runStart(i);
-            long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
-            if (ring != null) {
-                MemoryUtil.memCopy(base + Frame.RENDER_STATE_BYTES * c0, states + Frame.RENDER_STATE_BYTES * c0, size);
-            } else {
-                dynamicBuffer.upload(Frame.RENDER_STATE_BYTES * c0, base + Frame.RENDER_STATE_BYTES * c0, size);
-            }
-            bytes += size;
-        }
+        long bytes = uploads.upload(instanceStaging, frame, batches);
         uploadedBytes = 8L * n + bytes;
     }
 
@@ -348,13 +297,7 @@ public final class ComponentResolver implements AutoCloseable {
             bakeLooks(look);
         }
         poseTexture.bind(TextureUnits.POSES);
-        if (ring != null) {
-            instanceTexture.range(TextureUnits.INSTANCES, ring.id(), ring.offset(RING_INSTANCES), ring.bytes(RING_INSTANCES));
-            dynamicTexture.range(TextureUnits.RENDER_STATES, ring.id(), ring.offset(RING_STATES), ring.bytes(RING_STATES));
-        } else {
-            instanceTexture.bind(TextureUnits.INSTANCES);
-            dynamicTexture.bind(TextureUnits.RENDER_STATES);
-        }
+        uploads.bind();
         staticTexture.bind(TextureUnits.STATIC);
         linkTexture.bind(TextureUnits.LINKS);
         bendTexture.bind(TextureUnits.BEND_GEOMETRY);
@@ -395,11 +338,9 @@ public final class ComponentResolver implements AutoCloseable {
         fenceUploads();
     }
 
-    /** The ring's region is read by the resolve pass only: fenced once its commands are issued. */
+    /** The uploads are read by the resolve pass only: a ring's region is fenced once its commands are issued. */
     private void fenceUploads() {
-        if (ring != null) {
-            ring.fence();
-        }
+        uploads.fence();
     }
 
     /**
@@ -407,12 +348,12 @@ public final class ComponentResolver implements AutoCloseable {
      * no ring: the streaming buffers are re-specified instead)} Render thread; no allocation.
      */
     public long uploadWaits() {
-        return ring == null ? 0 : ring.waits();
+        return uploads.waits();
     }
 
     /** {@return whether the per-frame uploads go through a persistently mapped ring (buffer storage)} */
     public boolean uploadRing() {
-        return ring != null;
+        return uploads.ring();
     }
 
     /** The compute path of {@link #resolve}: the list table, then at most one dispatch per variant. */
@@ -440,15 +381,7 @@ public final class ComponentResolver implements AutoCloseable {
             listInvocations[k] = invocations;
         }
         listStaging.flip();
-        if (ring != null) {
-            MemoryUtil.memCopy(MemoryUtil.memAddress(listStaging), MemoryUtil.memAddress(ring.view(RING_LISTS)),
-                    4L * listStaging.remaining());
-            listTexture.range(TextureUnits.LIST_TABLE, ring.id(), ring.offset(RING_LISTS), ring.bytes(RING_LISTS));
-        } else {
-            listBuffer.orphan();
-            listBuffer.upload(0, listStaging);
-            listTexture.bind(TextureUnits.LIST_TABLE);
-        }
+        uploads.lists(listStaging);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, componentBuffer.id());
         for (int k = 0; k < passes.length; k++) {
             int count = listInvocations[k];
