@@ -157,6 +157,9 @@ public final class MeadowGame implements AutoCloseable {
         }
         sim = s;
         gl = GlContext.current(DebugOutput.OFF);
+        // on a software rasteriser (llvmpipe) far plants are thinned, as the viewer and the engine adapters do
+        // (it says so once); a GPU keeps the scene's own setting
+        org.jecosys.render.SoftwareQuality.apply(gl, sim, null);
         plants = new SceneRenderer(gl, sim.world(), new RenderSettings());
         Heightfield terrain = sim.world().terrain().heightfield();
         passes = new GamePasses(terrain, 96);
