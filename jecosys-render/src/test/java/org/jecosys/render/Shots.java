@@ -79,6 +79,25 @@ final class Shots implements AutoCloseable {
     }
 
     private double[] distance(Frame frame, Camera camera, boolean plants) {
+        double[] p = points(frame, camera, plants);
+        double[] d = new double[width * height];
+        for (int i = 0; i < d.length; i++) {
+            d[i] = Double.isNaN(p[3 * i]) ? Double.POSITIVE_INFINITY : Math.sqrt(
+                    sq(p[3 * i] - camera.x()) + sq(p[3 * i + 1] - camera.y()) + sq(p[3 * i + 2] - camera.z()));
+        }
+        return d;
+    }
+
+    private static double sq(double v) {
+        return v * v;
+    }
+
+    /**
+     * The world point each pixel shows (x, y, z per pixel, rows from the bottom; NaN where the sky is), from
+     * the depth buffer of a render with the plants on or off. The horizon skirt lies just inside the far
+     * plane along its ray. Allocates.
+     */
+    double[] points(Frame frame, Camera camera, boolean plants) {
         depthFb.bind();
         renderer.drawPlants = plants;
         try {
@@ -93,22 +112,25 @@ final class Shots implements AutoCloseable {
             gl.debug().check("reading depth");
             Matrix4f inv = camera.viewProjection(new Matrix4f()).invert();
             org.joml.Vector3f p = new org.joml.Vector3f();
-            double[] d = new double[width * height];
+            double[] out = new double[3 * width * height];
             for (int y = 0; y < height; y++) {
                 for (int x = 0; x < width; x++) {
                     int i = y * width + x;
                     float z = depth.get(i);
                     if (z >= 1f) {
-                        d[i] = Double.POSITIVE_INFINITY;
+                        out[3 * i] = Double.NaN;
+                        out[3 * i + 1] = Double.NaN;
+                        out[3 * i + 2] = Double.NaN;
                         continue;
                     }
                     inv.transformProject((float) (2 * (x + 0.5) / width - 1), (float) (2 * (y + 0.5) / height - 1),
                             2 * z - 1, p);
-                    d[i] = Math.sqrt((p.x - camera.x()) * (p.x - camera.x()) + (p.y - camera.y()) * (p.y - camera.y())
-                            + (p.z - camera.z()) * (p.z - camera.z()));
+                    out[3 * i] = p.x;
+                    out[3 * i + 1] = p.y;
+                    out[3 * i + 2] = p.z;
                 }
             }
-            return d;
+            return out;
         } finally {
             MemoryUtil.memFree((java.nio.Buffer) depth);
         }

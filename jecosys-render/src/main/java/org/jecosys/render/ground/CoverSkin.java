@@ -139,7 +139,7 @@ public final class CoverSkin implements AutoCloseable {
         boolean shadows = terrain.prepareShadows(settings);
         program.use();
         boolean sheen = settings.sheen() > 0;
-        surface.set(camera, settings, shadow, shadows, true, sheen);
+        surface.set(camera, settings, shadow, shadows, true, sheen, 0f); // the skin stays on the terrain's square
         Heightfield h = blades.heightfield();
         glUniform1f(uEdge, (float) Math.max(settings.groundCover().spread(), 2 * Math.max(h.cellX(), h.cellZ())));
         if (sheen) {

@@ -51,12 +51,13 @@ final class CoverUniforms {
      * @param settings the cover, the sheen's strength, the light
      * @param withCover whether the cover is drawn (amount 0 otherwise)
      * @param withSheen whether the sheen is drawn (a bend map is bound; strength 0 otherwise)
+     * @param beyond    the cover level beyond the terrain's square (the cover map's mean), in [0, 1]
      */
-    void set(RenderSettings settings, boolean withCover, boolean withSheen) {
+    void set(RenderSettings settings, boolean withCover, boolean withSheen, float beyond) {
         RenderDef.GroundCover gc = settings.groundCover();
         Lighting l = settings.lighting();
         float k = l.sunIntensity();
-        glUniform4f(cover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), 0f);
+        glUniform4f(cover, withCover ? (float) gc.amount() : 0f, 1f / GRAIN_TILE, (float) gc.height(), beyond);
         glUniform1f(sheen, withSheen ? settings.sheen() : 0f);
         glUniform3f(sheenLight, 0.35f * l.skyR() * (l.ambientR() + 0.5f * l.sunR() * k),
                 0.35f * l.skyG() * (l.ambientG() + 0.5f * l.sunG() * k),

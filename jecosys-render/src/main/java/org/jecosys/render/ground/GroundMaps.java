@@ -58,6 +58,30 @@ final class GroundMaps implements AutoCloseable {
     }
 
     /**
+     * {@return the cover map's mean level, in [0, 1]: what the ground beyond the terrain's square shows
+     * (the map's rim, clamped, would smear into streaks toward the horizon); 0 before the map is built}
+     * No allocation.
+     */
+    float meanCoverLevel() {
+        if (coverLevel == null || coverLevel.length == 0) {
+            return 0f;
+        }
+        if (coverMeanOf != coverLevel) {
+            double sum = 0;
+            for (float v : coverLevel) {
+                sum += v;
+            }
+            coverMean = (float) (sum / coverLevel.length);
+            coverMeanOf = coverLevel;
+        }
+        return coverMean;
+    }
+
+    private float coverMean;
+    /** The map {@link #coverMean} was taken over. */
+    private float[] coverMeanOf;
+
+    /**
      * Makes sure the cover map matches the settings' ground cover (rebuilds it when its spread changed).
      *
      * @return whether there is cover to draw: it is enabled and there are plants

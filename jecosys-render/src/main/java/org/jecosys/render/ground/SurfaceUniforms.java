@@ -48,13 +48,13 @@ final class SurfaceUniforms implements AutoCloseable {
      * @param withSheen whether the sheen is drawn (a bend map is bound)
      */
     void set(Camera camera, RenderSettings settings, ShadowParams shadow, boolean shadows, boolean withCover,
-             boolean withSheen) {
+             boolean withSheen, float coverBeyond) {
         glUniformMatrix4fv(uViewProj, false, camera.viewProjection(viewProj).get(matrix));
         glUniform3f(uEye, (float) camera.x(), (float) camera.y(), (float) camera.z());
         ground.set(settings);
         ground.setShadowMap(shadow);
         glUniform1f(uShadows, shadows ? settings.shadows() : 0f);
-        cover.set(settings, withCover, withSheen);
+        cover.set(settings, withCover, withSheen, coverBeyond);
     }
 
     /** Frees the matrix buffer. Idempotent. */

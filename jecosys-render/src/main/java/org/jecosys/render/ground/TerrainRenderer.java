@@ -349,7 +349,7 @@ public final class TerrainRenderer implements AutoCloseable {
         boolean shadows = maps.prepareShadows(settings);
         program.use();
         boolean sheen = withCover && bendMap != null && settings.sheen() > 0;
-        surface.set(camera, settings, shadow, shadows, withCover, sheen);
+        surface.set(camera, settings, shadow, shadows, withCover, sheen, maps.meanCoverLevel());
         if (sheen) {
             bendMap.bind(TextureUnits.TILE_BENDS);
         }

@@ -3,7 +3,8 @@
 // of blade tips at two scales (a mipmapped tile, so it fades to its mean with distance instead of
 // shimmering), drier in the dry patches, and the wind's sheen rolling over it from the plants' bends.
 uniform sampler2D uGrain;                        // the cover's grain tile, repeating
-uniform vec4 uCover;                             // amount (0: none), 1 / grain tile (1/m), -, -
+uniform vec4 uCover;                             // amount (0: none), 1 / grain tile (1/m), height (m), the level
+                                                 // beyond the terrain (the cover map's mean; terrain only)
 uniform vec3 uCoverColour;
 uniform vec3 uCoverDry;
 uniform sampler2D uBend;                         // the plants' mean bend per tile (CoverBlades), signed bytes

@@ -25,10 +25,11 @@ layout(location = 1) out vec4 fragDetail;
 
 void main() {
     vec2 uv = vUvDry.xy;
-    // the map is clamped at its edges: beyond the terrain (the horizon skirt) the cover goes on as at
-    // the rim, but nothing darkens the ground
+    // beyond the terrain (the horizon skirt) nothing darkens the ground and the cover goes on at the map's
+    // mean level (uCover.w), still in the wind: the clamped rim would smear into streaks that sway
     vec3 maps = texture(uOcclusion, uv).rgb;
     bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    float level = inside ? maps.g : uCover.w;
     float occlusion = inside ? maps.r : 0.0;
     // the splatted shadows, or the shadow map where it reaches (with the plants as they sway)
     vec2 map = sunShadowMap(vWorld);
@@ -36,12 +37,12 @@ void main() {
     vec3 albedo = vSoil;
     if (uCover.x > 0.0) {
         // the cover over the soil; thin cover lets the soil show through its gaps
-        vec4 cover = groundCover(vWorld.xz, vUvDry.z, uCover.x * maps.g);
+        vec4 cover = groundCover(vWorld.xz, vUvDry.z, uCover.x * level);
         albedo = mix(vSoil, cover.rgb, cover.a);
     }
     vec3 lit = albedo * (vLight + vSunLight * (1.0 - shadow)) * (1.0 - uContactShadow * occlusion);
-    if (uSheen > 0.0) {
-        lit = coverSheen(lit, vWorld, uEye, uCover.x * maps.g);
+    if (uSheen > 0.0 && inside) {
+        lit = coverSheen(lit, vWorld, uEye, uCover.x * level);
     }
     // haze (squared ramp), the plants' formula, so plants and ground fade alike
     float fog = clamp((distance(uEye, vWorld) - uFogStart) / max(uFogEnd - uFogStart, 1e-3), 0.0, 1.0);
