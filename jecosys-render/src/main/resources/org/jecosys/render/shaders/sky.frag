@@ -46,7 +46,9 @@ vec2 clouds(vec3 dir, float cosSun) {
 void main() {
     vec3 dir = normalize(vMid.xyz / vMid.w - vNear.xyz / vNear.w);
     float up = clamp(dir.y, 0.0, 1.0);
-    vec3 sky = mix(uHorizon, uZenith, sqrt(up));
+    // 1 - (1 - up)^2: quick toward the zenith colour as the square root was, but with a finite slope at the
+    // horizon (the square root's infinite one made a bright seam a few rows above it)
+    vec3 sky = mix(uHorizon, uZenith, up * (2.0 - up));
     float c = max(dot(dir, uSunDir), 0.0);
     // broad forward scattering, stronger near the horizon, and a tight glow around the disc; powers by
     // squaring (pow is exp and log in a software rasteriser)
