@@ -19,7 +19,9 @@ import org.junit.jupiter.api.Test;
  * clearly more than the same thinned frame drawn without the widening. Measured on the meadow as it was
  * when this was asked for: its far level drawn as lines and no ground cover (the shipped meadow draws
  * its far plants as triangles over the ground cover, which keeps the far field's weight by itself).
+ * Tagged slow (it builds that older meadow of its own): {@code mvn -B verify -Pnightly} runs it.
  */
+@org.junit.jupiter.api.Tag("slow")
 class ThinningLookTest {
     private static final int W = 480;
     private static final int H = 270;

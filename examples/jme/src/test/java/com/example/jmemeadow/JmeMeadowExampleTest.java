@@ -57,8 +57,6 @@ class JmeMeadowExampleTest {
     static void startTheRuns() throws Exception {
         runs = Executors.newFixedThreadPool(5);
         core = start("core", 640, 360, 40, "--renderer", "core");
-        compat = start("compat", 640, 360, 40, "--renderer", "compat");
-        coreNoGamma = start("core-no-gamma", 640, 360, 40, "--renderer", "core", "--no-gamma");
         restarted = start("core-restart", 640, 360, 40, "--renderer", "core", "--restart-at", "10",
                 "--graphics-debug");
         startView = start("start-view", START_W, START_H, 3, "--scene", MEADOW, "--start-view",
@@ -71,6 +69,24 @@ class JmeMeadowExampleTest {
             runs.shutdownNow();
         }
         DISPLAYS.forEach(VirtualDisplay::close);
+    }
+
+    /**
+     * The compatibility-profile run and the run without gamma correction, started when a test first asks
+     * (their tests are tagged slow: the default run leaves them to the nightly one).
+     */
+    private static synchronized Future<ExampleShot> compat() throws Exception {
+        if (compat == null) {
+            compat = start("compat", 640, 360, 40, "--renderer", "compat");
+        }
+        return compat;
+    }
+
+    private static synchronized Future<ExampleShot> coreNoGamma() throws Exception {
+        if (coreNoGamma == null) {
+            coreNoGamma = start("core-no-gamma", 640, 360, 40, "--renderer", "core", "--no-gamma");
+        }
+        return coreNoGamma;
     }
 
     /** Starts a run on a display of its own. */
@@ -125,8 +141,9 @@ class JmeMeadowExampleTest {
     }
 
     @Test
+    @org.junit.jupiter.api.Tag("slow")
     void theCompatibilityProfileShowsTheSame() throws Exception {
-        ExampleShot shot = shot(compat);
+        ExampleShot shot = shot(compat());
         assertEquals(List.of(), shot.problems(), "see " + OUT.resolve("compat.png"));
     }
 
@@ -185,8 +202,9 @@ class JmeMeadowExampleTest {
      * to without, lies in [1, 1.8] and the three ratios agree within 0.4.
      */
     @Test
+    @org.junit.jupiter.api.Tag("slow")
     void gammaCorrectionKeepsThePlantsColours() throws Exception {
-        ExampleShot linear = shot(coreNoGamma);
+        ExampleShot linear = shot(coreNoGamma());
         ExampleShot gamma = shot(core);
         int[] a = linear.median(ExampleShot::plant, linear.plants(), 4);
         int[] b = gamma.median(ExampleShot::plant, gamma.plants(), 4);
