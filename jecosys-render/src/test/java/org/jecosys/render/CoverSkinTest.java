@@ -247,6 +247,7 @@ class CoverSkinTest {
     }
 
     @Test
+    @org.junit.jupiter.api.Tag("slow") // 7 s; the skin's hiding the game's ground stays in the default run
     void theSkinShowsTheCoverOfTheLibrarysTerrain() {
         // the same view with the library's own terrain: the skin carries its cover's colour, grain and shading
         ViewCamera cam = RenderScenes.camera(def, world, W, H);
