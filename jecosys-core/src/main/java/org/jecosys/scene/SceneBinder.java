@@ -67,7 +67,7 @@ final class SceneBinder {
      * Runs a Def constructor; a check it makes that the schema missed is reported at the attribute
      * its message names first (e.g. "maxAltitude must be ..."), else at the element.
      */
-    private <T> T make(Values v, Supplier<T> ctor) {
+    <T> T make(Values v, Supplier<T> ctor) {
         try {
             return ctor.get();
         } catch (IllegalArgumentException e) {
@@ -218,7 +218,7 @@ final class SceneBinder {
                 image));
     }
 
-    private void checkFile(Values v, String attr, String path) {
+    void checkFile(Values v, String attr, String path) {
         if (path == null || source == null) {
             return;
         }
@@ -270,7 +270,7 @@ final class SceneBinder {
         }
         List<ComponentDef> components = new ArrayList<>();
         for (Values c : compValues) {
-            ComponentDef def = component(c, compIds, lodValues.size());
+            ComponentDef def = ComponentBinder.component(this, c, compIds, lodValues.size());
             if (def != null) {
                 components.add(def);
             }
@@ -282,57 +282,6 @@ final class SceneBinder {
         String name = s.str("name").isEmpty() ? s.str("id") : s.str("name");
         return make(s, () -> new SpeciesDef(s.str("id"), name, s.integer("poses"), s.num("maxBend"), components,
                 lods, variation, new TrailDef(s.num("recovery"), s.num("flattenAt"))));
-    }
-
-    @SuppressWarnings("unchecked")
-    private ComponentDef component(Values c, Set<String> compIds, int lodCount) {
-        String attach = c.str("attachTo");
-        if (attach != null && (!compIds.contains(attach) || attach.equals(c.str("id")))) {
-            List<String> others = new ArrayList<>(compIds);
-            others.remove(c.str("id"));
-            others.sort(null);
-            problem(c, "attachTo", "attribute 'attachTo' of <component>: '" + attach
-                    + "' is not another component of this species" + Names.didYouMean(attach, others)
-                    + (others.isEmpty() ? "" : "; components: " + String.join(", ", others)));
-            return null;
-        }
-        List<Integer> lodSegments = (List<Integer>) c.get("lodSegments");
-        if (lodSegments == null) {
-            return null;
-        }
-        if (lodSegments.size() != lodCount) {
-            problem(c, "lodSegments", "attribute 'lodSegments' of <component>: " + lodSegments.size()
-                    + " values given; the species has " + lodCount + " <lod> elements, one value each");
-            return null;
-        }
-        for (int v : lodSegments) {
-            if (v > c.integer("segments")) {
-                problem(c, "lodSegments", "attribute 'lodSegments' of <component>: " + v + " exceeds segments="
-                        + c.integer("segments"));
-                return null;
-            }
-        }
-        return make(c, () -> new ComponentDef(c.str("id"), byXml(ComponentType.values(), c.str("type")),
-                byXml(ComponentShape.values(), c.str("shape")), c.integer("count"), attach, c.integer("segments"),
-                c.num("length"), c.num("baseWidth"), c.num("tipWidth"), c.num("curvature"), c.num("twist"),
-                c.num("tilt"), c.num("mass"), c.num("stiffness"), c.num("responseTime"), c.num("dragArea"),
-                (Rgb) c.get("colour"), lodSegments, texture(c), MeshFiles.mesh(this, c)));
-    }
-
-    /** The component's texture, checked as an image and against {@link org.jecosys.plant.PlantTextures#MAX_SIDE}. */
-    private String texture(Values c) {
-        String path = c.str("texture");
-        int before = images.size();
-        checkFile(c, "texture", path);
-        if (images.size() > before) {
-            ImageFiles.Size size = images.get(images.size() - 1).size();
-            int most = org.jecosys.plant.PlantTextures.MAX_SIDE;
-            if (size.width() > most || size.height() > most) {
-                problem(c, "texture", "attribute 'texture' of <component>: '" + path + "' is " + size.width() + "x"
-                        + size.height() + " pixels; a texture is at most " + most + " pixels a side");
-            }
-        }
-        return path;
     }
 
     private DistributionDef distribution(Values d) {
