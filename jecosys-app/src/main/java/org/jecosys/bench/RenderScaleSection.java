@@ -66,7 +66,7 @@ final class RenderScaleSection implements Section {
                 "frame ms (median)", "frame ms (p90)", "ms per fixed step", "render-thread CPU ms", "of which lists and records, Java ms",
                 "2nd view: decision, lists and records, Java ms", "KiB uploaded / frame", "plant draw calls",
                 "VS invocations / frame", "FS invocations / frame", "primitives / frame", "fragments / pixel",
-                "path"));
+                "path", "upload ring waits"));
         Map<String, Object> raw = new LinkedHashMap<>();
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         Table stepOnlyTable = null;
@@ -122,7 +122,10 @@ final class RenderScaleSection implements Section {
                     + " invocations / (width x height). Uploads: 8 bytes per component of the drawn plants'"
                     + " range (its deviation D, X and Z, written by the animation workers) plus 8 bytes per drawn"
                     + " plant and level. Plant draw calls: the instanced draws of the plants (per species and level,"
-                    + " one for the plants drawn whole and one for those in a transition band). Each scene runs on"
+                    + " one for the plants drawn whole and one for those in a transition band). Upload ring waits:"
+                    + " the frames of the whole run (warm-up included) that found their region of the persistently"
+                    + " mapped upload ring still read by the GPU and waited (\"no ring\" without buffer storage)."
+                    + " Each scene runs on"
                     + " every resolve path the context supports, the one a renderer takes by itself first." + skipped);
             // in the same context: a second headless context in one process after the first was closed
             // drew nothing on NVIDIA's EGL (every count 0)
@@ -313,7 +316,8 @@ final class RenderScaleSection implements Section {
                 Stats.percentile(frameMs, 0.9), Stats.median(stepMs), Stats.median(cpuMs),
                 Stats.median(javaMs), Stats.median(secondMs), Stats.median(uploaded), (long) Stats.median(draws),
                 (long) Stats.median(vertices), (long) Stats.median(fragments), (long) Stats.median(primitives),
-                Stats.median(fragments) / ((double) width * height), r.resolvePath().description());
+                Stats.median(fragments) / ((double) width * height), r.resolvePath().description(),
+                r.uploadRing() ? Long.toString(r.uploadWaits()) : "no ring");
         Map<String, Object> series = new LinkedHashMap<>();
         series.put("frameMs", frameMs);
         series.put("stepMs", stepMs);
@@ -326,6 +330,7 @@ final class RenderScaleSection implements Section {
         series.put("vertexInvocations", vertices);
         series.put("fragmentInvocations", fragments);
         series.put("primitives", primitives);
+        series.put("uploadRingWaits", r.uploadRing() ? r.uploadWaits() : -1L);
         raw.put(def.name() + " / " + r.resolvePath().name(), series);
     }
 }
