@@ -34,6 +34,7 @@ import org.junit.jupiter.api.Test;
  * others may show fewer (a head partly behind another at almost its distance, or turned grey away from
  * the light and the eye); in the default view none may.
  */
+@org.junit.jupiter.api.Tag("slow") // 11-13 s; mvn -B verify -Pnightly runs it (FlowerSizeTest keeps flower heads in the default run)
 class FlowerHeadsTest {
     private static final int W = 960;
     private static final int H = 540;
