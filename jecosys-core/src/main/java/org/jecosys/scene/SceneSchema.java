@@ -2,7 +2,6 @@ package org.jecosys.scene;
 
 import static org.jecosys.scene.AttrType.ANGLE;
 import static org.jecosys.scene.AttrType.BOOL;
-import static org.jecosys.scene.AttrType.COLOUR;
 import static org.jecosys.scene.AttrType.DOUBLE;
 import static org.jecosys.scene.AttrType.DOUBLE_LIST;
 import static org.jecosys.scene.AttrType.ENUM;

@@ -10,8 +10,6 @@ import static org.lwjgl.opengl.GL20C.glUniform1f;
 import static org.lwjgl.opengl.GL20C.glUniform1i;
 import static org.lwjgl.opengl.GL20C.glUseProgram;
 import static org.lwjgl.opengl.GL30C.GL_RASTERIZER_DISCARD;
-import static org.lwjgl.opengl.GL30C.GL_RG32F;
-import static org.lwjgl.opengl.GL30C.GL_RG32I;
 import static org.lwjgl.opengl.GL30C.GL_RG32UI;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
 import static org.lwjgl.opengl.GL30C.GL_RGBA32I;
