@@ -13,7 +13,7 @@ import org.jecosys.math.Rgb;
  * @param type         leaf, petal, head or stalk
  * @param shape        how primitives are generated from the skeleton
  * @param count        how many of this component a plant has, in [1, 256]
- * @param attachTo     id of the component at whose tip these sit (e.g. petals on a stalk), or null for the ground
+ * @param attachTo     id of the component that carries these (petals on a stalk: see attachAt), or null for the ground
  * @param segments     skeleton segments (points = segments + 1), in [1, 32]
  * @param length       skeleton length, metres, in (0, 10]
  * @param baseWidth    width at the base, metres, in (0, 1]
@@ -34,11 +34,16 @@ import org.jecosys.math.Rgb;
  *                     u across), radially for a fan; {@code colour} tints it (see {@link PlantTextures})
  * @param mesh         a glTF mesh drawn instead of the strip or fan where this component uses all its
  *                     segments (see {@link MeshDef}), or null; with a texture it needs texture coordinates
+ * @param attachAt     where along the carrying component these sit, as a share of its skeleton, in (0, 1]:
+ *                     1 its tip (petals, a flower head), less a point on the way up (leaves on a flower
+ *                     stalk); the base snaps to the nearest skeleton point, at least the first above the
+ *                     base ({@link #attachPoint}); 1 when attachTo is null
  */
 public record ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo,
                            int segments, double length, double baseWidth, double tipWidth, double curvature,
                            double twist, double tilt, double mass, double stiffness, double responseTime,
-                           double dragArea, Rgb colour, List<Integer> lodSegments, String texture, MeshDef mesh) {
+                           double dragArea, Rgb colour, List<Integer> lodSegments, String texture, MeshDef mesh,
+                           double attachAt) {
     /**
      * Checks the components and copies {@code lodSegments}.
      *
@@ -62,6 +67,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
      * @param lodSegments  segments drawn per level of detail, each in [0, segments]
      * @param texture      the image drawn on it, as the scene writes its path, or null; not blank
      * @param mesh         the glTF mesh drawn for it, or null; with a texture, one with texture coordinates
+     * @param attachAt     share of the carrier's skeleton where it sits, in [1e-3, 1]; 1 on the ground
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public ComponentDef {
@@ -84,6 +90,11 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         Require.range("responseTime", responseTime, MIN_RESPONSE_TIME, MAX_RESPONSE_TIME);
         Require.range("dragArea", dragArea, 0, MAX_DRAG_AREA);
         Require.nonNull("colour", colour);
+        Require.range("attachAt", attachAt, MIN_ATTACH_AT, 1);
+        if (attachTo == null && attachAt != 1) {
+            throw new IllegalArgumentException("attachAt " + attachAt + " needs attachTo (a component on the ground "
+                    + "stands at its base)");
+        }
         lodSegments = List.copyOf(Require.nonNull("lodSegments", lodSegments));
         for (int i = 0; i < lodSegments.size(); i++) {
             Require.range("lodSegments[" + i + "]", lodSegments.get(i), 0, segments);
@@ -98,7 +109,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
     }
 
     /**
-     * A component without a mesh. Values as the canonical constructor's.
+     * A component at its carrier's tip ({@code attachAt} 1). Values as the canonical constructor's.
      *
      * @param id           unique within the species, not empty
      * @param type         leaf, petal, head or stalk
@@ -119,44 +130,25 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
      * @param colour       base colour
      * @param lodSegments  segments drawn per level of detail
      * @param texture      the image drawn on it, or null
+     * @param mesh         the glTF mesh drawn for it, or null
      */
     public ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo, int segments,
                         double length, double baseWidth, double tipWidth, double curvature, double twist, double tilt,
                         double mass, double stiffness, double responseTime, double dragArea, Rgb colour,
-                        List<Integer> lodSegments, String texture) {
+                        List<Integer> lodSegments, String texture, MeshDef mesh) {
         this(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth, curvature, twist, tilt, mass,
-                stiffness, responseTime, dragArea, colour, lodSegments, texture, null);
+                stiffness, responseTime, dragArea, colour, lodSegments, texture, mesh, 1);
     }
 
     /**
-     * A component without a texture ({@code texture} null): its plain colour. Values as the canonical
-     * constructor's.
+     * {@return the skeleton point of the carrier ({@code carrierSegments} segments) this component's
+     * base sits on: {@code round(attachAt carrierSegments)}, at least 1; the tip for attachAt 1}
+     * Any thread; no allocation.
      *
-     * @param id           unique within the species, not empty
-     * @param type         leaf, petal, head or stalk
-     * @param shape        strip or fan
-     * @param count        components per plant, in [1, 256]
-     * @param attachTo     id of the carrying component, or null for the ground
-     * @param segments     skeleton segments, in [1, 32]
-     * @param length       skeleton length, metres
-     * @param baseWidth    width at the base, metres
-     * @param tipWidth     width at the tip, metres
-     * @param curvature    rest curvature, radians
-     * @param twist        twist over the length, radians
-     * @param tilt         base angle from vertical, radians
-     * @param mass         kilograms
-     * @param stiffness    spring constant PC, N/m
-     * @param responseTime response time tau, seconds
-     * @param dragArea     drag coefficient times area, m^2
-     * @param colour       base colour
-     * @param lodSegments  segments drawn per level of detail
+     * @param carrierSegments the carrying component's skeleton segments, in [1, 32]
      */
-    public ComponentDef(String id, ComponentType type, ComponentShape shape, int count, String attachTo, int segments,
-                        double length, double baseWidth, double tipWidth, double curvature, double twist, double tilt,
-                        double mass, double stiffness, double responseTime, double dragArea, Rgb colour,
-                        List<Integer> lodSegments) {
-        this(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth, curvature, twist, tilt, mass,
-                stiffness, responseTime, dragArea, colour, lodSegments, null, null);
+    public int attachPoint(int carrierSegments) {
+        return Math.max(1, Math.min(carrierSegments, (int) Math.round(attachAt * carrierSegments)));
     }
 
     /** Most components of one type per plant (the scene schema's range and the API's). */
@@ -189,6 +181,8 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
     public static final double MIN_RESPONSE_TIME = 1e-3;
     /** Longest response time tau, seconds. */
     public static final double MAX_RESPONSE_TIME = 10;
+    /** Smallest {@link #attachAt()}: a thousandth of the carrier's skeleton. */
+    public static final double MIN_ATTACH_AT = 1e-3;
     /** Largest drag area, m^2. */
     public static final double MAX_DRAG_AREA = 10;
 
@@ -250,6 +244,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         b.lodSegments = lodSegments;
         b.texture = texture;
         b.mesh = mesh;
+        b.attachAt = attachAt;
         return b;
     }
 
@@ -278,6 +273,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         private List<Integer> lodSegments;
         private String texture;
         private MeshDef mesh;
+        private double attachAt = 1;
 
         private Builder(String id, ComponentType type) {
             this.id = id;
@@ -307,13 +303,24 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
         }
 
         /**
-         * Sets the component at whose tip these sit.
+         * Sets the component that carries these (at its tip unless {@link #attachAt} says otherwise).
          *
          * @param attachTo another component's id, or null for the ground
          * @return this builder
          */
         public Builder attachTo(String attachTo) {
             this.attachTo = attachTo;
+            return this;
+        }
+
+        /**
+         * Sets where along the carrier these sit (see {@link ComponentDef#attachAt()}).
+         *
+         * @param attachAt share of the carrier's skeleton, in [1e-3, 1]; 1 (the default) its tip
+         * @return this builder
+         */
+        public Builder attachAt(double attachAt) {
+            this.attachAt = attachAt;
             return this;
         }
 
@@ -531,7 +538,8 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
                         + " (no default in the scene schema)");
             }
             return new ComponentDef(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth,
-                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture, mesh);
+                    curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture, mesh,
+                    attachAt);
         }
     }
 }

@@ -14,7 +14,8 @@ public enum MeshMode {
     /**
      * Rigid, riding a skeleton's tip: the mesh's origin sits on the tip, its +Y along the last segment,
      * +X along the side and +Z along the face normal there; it turns with the tip and keeps its shape.
-     * On a component attached to another ({@code attachTo}) it rides that parent's tip (a flower head
+     * On a component attached to another ({@code attachTo}) it rides the parent's point it sits on, the tip unless
+     * {@code attachAt} says otherwise (a flower head
      * on its stalk); on a component on the ground, its own tip.
      */
     RIGID("rigid");

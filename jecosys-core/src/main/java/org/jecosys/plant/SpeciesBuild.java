@@ -143,14 +143,18 @@ final class SpeciesBuild {
 
     /**
      * The load at the tip of one instance of component type {@code c} in variant {@code v}, kg: the
-     * masses (in variant v) of all instances of the types attached to it, shared among c's
-     * instances. No allocation.
+     * masses (in variant v) of all instances of the types attached to it, each times the share of c's
+     * skeleton where it sits (its snapped {@link ComponentDef#attachPoint}: the tip mass with the same
+     * moment about c's base; exactly the mass at the tip), shared among c's instances. No allocation.
      */
     private static double tipMass(List<ComponentDef> cdefs, int[] parent, double[][] masses, int c, int v) {
         double tipMass = 0;
         for (int ch = 0; ch < parent.length; ch++) {
             if (parent[ch] == c) {
-                tipMass += masses[ch][v] * cdefs.get(ch).count() / cdefs.get(c).count();
+                int segments = cdefs.get(c).segments();
+                int point = cdefs.get(ch).attachPoint(segments);
+                double share = point == segments ? 1 : (double) point / segments;
+                tipMass += masses[ch][v] * share * cdefs.get(ch).count() / cdefs.get(c).count();
             }
         }
         return tipMass;
@@ -176,10 +180,11 @@ final class SpeciesBuild {
                 Primitive primitive = def.lods().get(l).primitive();
                 // a mesh from a file where the component is drawn whole in triangles; its strip or fan and
                 // lines elsewhere
-                // (a rigid one on an attached component rides its parent's tip)
+                // (a rigid one on an attached component rides the parent's point it sits on)
                 boolean onParent = d.mesh() != null && d.mesh().mode() == MeshMode.RIGID && parent[c] >= 0;
                 ms[l] = d.mesh() != null && n == d.segments() && primitive == Primitive.TRIANGLES
-                        ? ComponentMesh.fromMesh(d.mesh(), onParent ? cdefs.get(parent[c]).segments() : d.segments(),
+                        ? ComponentMesh.fromMesh(d.mesh(),
+                                onParent ? d.attachPoint(cdefs.get(parent[c]).segments()) : d.segments(),
                                 d.length(), onParent)
                         : ComponentMesh.build(d.shape(), d.tipWidth() == 0, d.segments(), n, primitive);
             }

@@ -15,19 +15,21 @@ import org.jecosys.math.Rng;
  * -1 on the ground), an azimuth offset about Y within the plant (ground leaves follow the golden
  * angle {@code j * 2.39996}, other instances are spread evenly, {@code 2 pi j / count}), a base offset
  * in the ground plane (ground instances of a multi-instance type sit on a small phyllotaxis disc of
- * radius {@code 0.5 baseWidth sqrt(j + 0.5)}; attached ones sit at the parent's tip) and a variant
+ * radius {@code 0.5 baseWidth sqrt(j + 0.5)}; attached ones sit on a point of the parent, its tip by
+ * default: {@link #slotAttachPoint}) and a variant
  * offset {@code j}: slot {@code s} of a plant of variant {@code v} uses shape variant
  * {@code (v + slotVariantOffset(s)) mod variants}, so the leaves of one tuft differ (with size classes,
  * cyclically within the plant's class: {@link VariationDef#slotVariant}); a variation's
  * {@link VariationDef#azimuth()} moves each ground instance of a multi-instance type off the even
  * spread by a seeded offset. Attached
- * components follow their parent's tip position but keep their own world-upright frame, so they
+ * components follow the position of their parent's attach point but keep their own world-upright frame, so they
  * stay above the ground like their parent.
  *
  * <h2>Variants</h2>
  * {@code variation.variants()} variants; variant {@code v} of component type {@code c} is
  * {@link ComponentVariant#sample}{@code (variation, seed, v, c)}. A parent's gravity tip load in
- * variant {@code v} is the mass of its attached components in variant {@code v}, shared among its
+ * variant {@code v} is the mass of its attached components in variant {@code v}, each weighted by its
+ * {@link ComponentDef#attachAt} (the tip mass with the same moment about the base), shared among its
  * instances. A plant picks its variant and rest azimuth from its own seed ({@link #variantFor},
  * {@link #restAzimuthFor}).
  *
@@ -276,12 +278,25 @@ public final class SpeciesModel {
     }
 
     /**
-     * {@return the parent slot whose tip carries a slot, or -1 on the ground}
+     * {@return the parent slot that carries a slot, or -1 on the ground}
      *
      * @param slot slot index, in [0, slotCount())
      */
     public int slotParent(int slot) {
         return slotParent[slot];
+    }
+
+    /**
+     * {@return the skeleton point of its parent slot that an attached slot's base sits on (the parent's
+     * tip, its segment count, unless the component's {@link ComponentDef#attachAt} is below 1), or -1 on
+     * the ground} Any thread; no allocation.
+     *
+     * @param slot slot index, in [0, slotCount())
+     */
+    public int slotAttachPoint(int slot) {
+        int parent = slotParent[slot];
+        return parent < 0 ? -1 : components[slotComponent[slot]].def().attachPoint(
+                components[slotComponent[parent]].def().segments());
     }
 
     /**

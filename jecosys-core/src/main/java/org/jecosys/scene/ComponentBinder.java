@@ -31,6 +31,11 @@ final class ComponentBinder {
                     + (others.isEmpty() ? "" : "; components: " + String.join(", ", others)));
             return null;
         }
+        if (attach == null && c.num("attachAt") != 1) {
+            binder.problem(c, "attachAt", "attribute 'attachAt' of <component>: " + c.num("attachAt") + " needs attachTo "
+                    + "(the component it sits on); a component on the ground stands at its base");
+            return null;
+        }
         List<Integer> lodSegments = (List<Integer>) c.get("lodSegments");
         if (lodSegments == null) {
             return null;
@@ -51,7 +56,7 @@ final class ComponentBinder {
                 SceneBinder.byXml(ComponentShape.values(), c.str("shape")), c.integer("count"), attach, c.integer("segments"),
                 c.num("length"), c.num("baseWidth"), c.num("tipWidth"), c.num("curvature"), c.num("twist"),
                 c.num("tilt"), c.num("mass"), c.num("stiffness"), c.num("responseTime"), c.num("dragArea"),
-                (Rgb) c.get("colour"), lodSegments, texture(binder, c), MeshFiles.mesh(binder, c)));
+                (Rgb) c.get("colour"), lodSegments, texture(binder, c), MeshFiles.mesh(binder, c), c.num("attachAt")));
     }
 
     /** The component's texture, checked as an image and against {@link org.jecosys.plant.PlantTextures#MAX_SIDE}. */

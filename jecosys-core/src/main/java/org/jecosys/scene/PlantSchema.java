@@ -106,8 +106,12 @@ final class PlantSchema {
                         .get(d -> c(d).shape().xmlName()))
                 .attr(integer("count", "How many a plant has.").range(1, ComponentDef.MAX_COUNT).def(ComponentDef.DEFAULT_COUNT)
                         .get(d -> c(d).count()))
-                .attr(AttrSpec.of("attachTo", ID, "", "Id of the component at whose tip these sit; absent for the "
-                        + "ground.").get(d -> c(d).attachTo()))
+                .attr(AttrSpec.of("attachTo", ID, "", "Id of the component that carries these (at its tip unless "
+                        + "attachAt says otherwise); absent for the ground.").get(d -> c(d).attachTo()))
+                .attr(num("attachAt", "", "Where along the carrier (attachTo) these sit, as a share of its skeleton: 1 "
+                        + "its tip (petals, a head), less a point on the way up (leaves on a flower stalk), snapped to "
+                        + "the nearest skeleton point above the base. Only with attachTo.")
+                        .range(ComponentDef.MIN_ATTACH_AT, 1).def(1.0).get(d -> c(d).attachAt()))
                 .attr(integer("segments", "Skeleton segments (points = segments + 1).").range(1, ComponentDef.MAX_SEGMENTS)
                         .required()
                         .get(d -> c(d).segments()))

@@ -36,9 +36,9 @@ final class XmlReader {
      */
     static final int MAX_ELEMENTS = 300_000;
     /**
-     * Most attributes in one scene file, all elements together. The schema allows at most 624,464
+     * Most attributes in one scene file, all elements together. The schema allows at most 626,512
      * (every attribute of every element at the element counts' maxima); the shipped scenes have 68 to
-     * 352 (xsi attributes included).
+     * 448 (xsi attributes included).
      */
     static final int MAX_ATTRIBUTES = 700_000;
     /**

@@ -97,7 +97,7 @@ class SpeciesModelTest {
     @Test
     void noGravityBuildIsStraightPlusOwnCurvature() {
         ComponentDef c = new ComponentDef("blade", ComponentType.LEAF, ComponentShape.STRIP, 1, null, 4, 0.4,
-                0.01, 0.01, 0, 0, 0, 1e-3, 0.2, 0.3, 0.001, new Rgb(0, 1, 0), List.of(4));
+                0.01, 0.01, 0, 0, 0, 1e-3, 0.2, 0.3, 0.001, new Rgb(0, 1, 0), List.of(4), null, null);
         SpeciesDef def = new SpeciesDef("s", "s", 8, 1.0, List.of(c),
                 List.of(new LodDef(Double.POSITIVE_INFINITY, Primitive.TRIANGLES)), VariationDef.NONE, TrailDef.NONE);
         PoseTable t = SpeciesModel.build(def, 0, 0.0).component(0).poseTable(0);

@@ -149,7 +149,7 @@ class XmlLimitsTest {
     void theLimitsAreAboveTheSchemasMaximaAndFarAboveTheShippedScenes() throws Exception {
         long[] schema = schemaMaxima(SceneSchema.ROOT);
         assertEquals(276_638, schema[0], "the schema's most elements, as the limit's doc says");
-        assertEquals(624_464, schema[1], "the schema's most attributes, as the limit's doc says");
+        assertEquals(626_512, schema[1], "the schema's most attributes, as the limit's doc says");
         assertTrue(SceneFiles.MAX_ELEMENTS >= schema[0] && SceneFiles.MAX_ATTRIBUTES >= schema[1]);
         int scenes = 0;
         try (DirectoryStream<Path> shipped = Files.newDirectoryStream(Path.of("scenes"), "*.xml")) {
@@ -158,7 +158,7 @@ class XmlLimitsTest {
                 XmlNode root = new XmlReader(f.toString(), new String(bytes, StandardCharsets.UTF_8), bytes.length,
                         Runtime.getRuntime().maxMemory()).read();
                 long[] n = count(root);
-                assertTrue(n[0] <= 100 && n[1] <= 400, f + ": " + n[0] + " elements, " + n[1] + " attributes");
+                assertTrue(n[0] <= 100 && n[1] <= 600, f + ": " + n[0] + " elements, " + n[1] + " attributes");
                 scenes++;
             }
         }

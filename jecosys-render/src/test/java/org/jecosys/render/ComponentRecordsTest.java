@@ -13,7 +13,10 @@ import java.nio.FloatBuffer;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.jecosys.math.ViewCamera;
+import org.jecosys.plant.ComponentDef;
 import org.jecosys.plant.PoseTable;
+import org.jecosys.plant.SpeciesDef;
+import org.jecosys.scene.SceneDef;
 import org.jecosys.plant.SpeciesModel;
 import org.jecosys.sim.DrawDecision;
 import org.jecosys.sim.Frame;
@@ -54,7 +57,7 @@ abstract class ComponentRecordsTest {
 
     @BeforeAll
     void build() {
-        world = RenderScenes.build(RenderScenes.load("c1.xml"));
+        world = RenderScenes.build(leavesUpTheStalk(RenderScenes.load("c1.xml")));
         models = world.plants().species();
         poseTexel = new int[models.size()][][];
         PlantRenderer.poseTexelLayout(models, poseTexel); // the pose buffer's layout as the renderer uploads it
@@ -82,6 +85,25 @@ abstract class ComponentRecordsTest {
         batches = renderer.batches();
         rec = org.lwjgl.system.MemoryUtil.memAllocFloat(F * batches.components());
         renderer.readRecords(rec);
+    }
+
+    /**
+     * C1 with flower C's two leaves carried half-way up its stalk ({@code attachAt} 0.5: point 4 of 8)
+     * instead of standing on the ground, so children sit on a parent's tip (petals, heads) and on a point
+     * on the way up.
+     */
+    static SceneDef leavesUpTheStalk(SceneDef c1) {
+        List<SpeciesDef> species = new java.util.ArrayList<>();
+        for (SpeciesDef s : c1.species()) {
+            List<ComponentDef> cs = new java.util.ArrayList<>();
+            for (ComponentDef c : s.components()) {
+                cs.add(s.id().equals("flowerC") && c.id().equals("leaf")
+                        ? c.toBuilder().attachTo("stalk").attachAt(0.5).build() : c);
+            }
+            species.add(new SpeciesDef(s.id(), s.name(), s.poses(), s.maxBend(), cs, s.lods(), s.variation(), s.trail()));
+        }
+        return new SceneDef(c1.version(), c1.name(), c1.seed(), c1.terrain(), species, c1.distributions(),
+                c1.placements(), c1.flows(), c1.field(), c1.camera(), c1.animation(), c1.render(), c1.world());
     }
 
     /** The light of these pictures: the sun high and to the side, haze from 25 m to 160 m. */
@@ -185,6 +207,7 @@ abstract class ComponentRecordsTest {
     @Test
     void rootsStandOnTheirPlantAndChildrenOnTheirParentsAnimatedTip() {
         int children = 0;
+        int midway = 0;
         Vector3f a = new Vector3f();
         Vector3f b = new Vector3f();
         for (int li = 0; li < batches.listCount(); li++) {
@@ -208,28 +231,30 @@ abstract class ComponentRecordsTest {
                     } else {
                         // the parent's record: its base, plus its last point at (k, w) turned by its azimuth
                         children++;
+                        midway += m.slotAttachPoint(slot) < m.slotPoseTable(parent, 0).points() - 1 ? 1 : 0;
                         int q = record(li, i, parent);
                         PoseTable pt = m.slotPoseTable(parent, world.plantVariant(p));
                         int first = poseTexel[world.plantSpecies(p)][m.slotComponent(parent)]
                                 [m.slotVariant(parent, world.plantVariant(p))];
                         int k = ((int) rec.get(q + 4) - first) / (3 * pt.points());
                         float w = rec.get(q + 5);
-                        int last = pt.points() - 1;
-                        pt.position(k, last, a).lerp(pt.position(k + 1, last, b), w);
+                        int at = m.slotAttachPoint(slot);
+                        pt.position(k, at, a).lerp(pt.position(k + 1, at, b), w);
                         float c = rec.get(q + 3);
                         float sn = rec.get(q + 6);
                         ex = rec.get(q) + a.x * c - a.z * sn;
                         ey = rec.get(q + 1) + a.y;
                         ez = rec.get(q + 2) + a.x * sn + a.z * c;
                     }
-                    String at = "plant " + p + " slot " + slot;
-                    assertEquals(ex, rec.get(r), 2e-5, at + " x");
-                    assertEquals(ey, rec.get(r + 1), 2e-5, at + " y");
-                    assertEquals(ez, rec.get(r + 2), 2e-5, at + " z");
+                    String where = "plant " + p + " slot " + slot;
+                    assertEquals(ex, rec.get(r), 2e-5, where + " x");
+                    assertEquals(ey, rec.get(r + 1), 2e-5, where + " y");
+                    assertEquals(ez, rec.get(r + 2), 2e-5, where + " z");
                 }
             }
         }
         assertTrue(children > 50, "C1's flowers put heads and petals on their stalks: " + children);
+        assertTrue(midway > 10, "flower C's leaves sit half-way up its stalks: " + midway);
     }
 
     @Test

@@ -49,7 +49,7 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
      */
     static Footprint of(SpeciesModel model, int variant, double shearX, double shearZ) {
         int slots = model.slotCount();
-        double[][] base = new double[slots][];
+        double[][][] points = new double[slots][][];
         int count = 1;
         for (int s = 0; s < slots; s++) {
             count += model.slotPoseTable(s, variant).points();
@@ -61,11 +61,13 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
         for (int s = 0; s < slots; s++) {
             PoseTable t = model.slotPoseTable(s, variant);
             int parent = model.slotParent(s);
-            double[] b = parent < 0 ? new double[] {model.slotBaseX(s), 0, model.slotBaseZ(s)} : base[parent];
+            // a slot's children stand on its point they attach to; parents come before their children
+            double[] b = parent < 0 ? new double[] {model.slotBaseX(s), 0, model.slotBaseZ(s)}
+                    : points[parent][model.slotAttachPoint(s)];
             double az = model.slotAzimuth(s);
             double c = Math.cos(az);
             double sn = Math.sin(az);
-            double[] tip = null;
+            points[s] = new double[t.points()][];
             for (int k = 0; k < t.points(); k++) {
                 t.position(0, k, q);
                 double x = b[0] + q.x * c - q.z * sn;
@@ -74,10 +76,8 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
                 xs[n] = x + y * shearX;
                 zs[n] = z + y * shearZ;
                 n++;
-                tip = new double[] {x, y, z};
+                points[s][k] = new double[] {x, y, z};
             }
-            // a slot's children stand on its tip; parents come before their children
-            base[s] = tip == null ? b : tip;
         }
         double[][] hull = hull(xs, zs, n);
         double area = 0;

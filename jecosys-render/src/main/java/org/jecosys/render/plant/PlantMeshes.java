@@ -313,8 +313,9 @@ public final class PlantMeshes {
 
     /**
      * Static links for the resolve pass, one RGBA32I texel per component: its parent component (-1
-     * for a root), the texels between two poses of its table (3 per point), the texel offset of its
-     * tip point in a pose (where its children attach), and its pose count.
+     * for a root), the texels between two poses of its table (3 per point), the texel offset within a
+     * pose of its parent's point it sits on ({@link SpeciesModel#slotAttachPoint}; a root's own tip),
+     * and its pose count.
      */
     public static GlBuffer uploadLinks(GlTracker t, World world) {
         int n = Math.max(1, world.componentCount());
@@ -330,7 +331,8 @@ public final class PlantMeshes {
                     int parent = m.slotParent(slot);
                     b.put(o, parent < 0 ? -1 : first + parent);
                     b.put(o + 1, 3 * pt.points());
-                    b.put(o + 2, 3 * (pt.points() - 1));
+                    // where it sits on its parent (texel offset within a parent pose); a ground slot's own tip
+                    b.put(o + 2, 3 * (parent < 0 ? pt.points() - 1 : m.slotAttachPoint(slot)));
                     b.put(o + 3, pt.poses());
                 }
             }

@@ -8,7 +8,8 @@
 // and Z, two floats, as the simulation's workers wrote them), and static per-component data uploaded
 // once (the base of a root component, the pose texel of its table, its parent, stride, tip and pose
 // count; its bend geometry: rest lean, length and pose scale). D becomes pose coordinate and azimuth
-// here as the CPU's BendGeometry makes them (see "Bend" in AnimationState), to float rounding. The base of an attached component is its parent's animated tip, which follows its
+// here as the CPU's BendGeometry makes them (see "Bend" in AnimationState), to float rounding. The base of an attached component is the animated point of its parent it sits on (the tip unless
+// its attachAt says otherwise), which follows its
 // own parent, up to 4 deep; the variant compiled without ATTACHED, for species whose components all
 // stand on the ground (most grasses), leaves that walk out.
 //
@@ -23,7 +24,8 @@ uniform isamplerBuffer uInstances;               // RG32I: first component, dith
 uniform samplerBuffer uDynamic;                  // RG32F: deviation D (X, Z), metres
 uniform samplerBuffer uBend;                     // RGBA32F: rest lean L (X, Z), metres; length, metres; pose scale
 uniform samplerBuffer uStatic;                   // RGBA32F: root base xyz (world), texel of pose 0
-uniform isamplerBuffer uLinks;                   // RGBA32I: parent component or -1, texels per pose, tip, poses
+uniform isamplerBuffer uLinks;                   // RGBA32I: parent component or -1, texels per pose, the texel
+                                                 // offset of the parent's point it sits on (its tip on the ground), poses
 uniform samplerBuffer uPoses;                    // RGBA32F: 3 texels per point (position, side, normal)
 #ifdef LIST_TABLE
 // the compute form resolves many lists in one dispatch: each invocation sets these from its list
@@ -103,10 +105,11 @@ void resolveComponent(int index, out vec4 record0, out vec4 record1, out vec4 re
             break;
         }
         int parent = link.x;
+        int at = link.z;                         // the parent's point this one sits on, x 3 texels
         st = texelFetch(uStatic, parent);
         link = texelFetch(uLinks, parent);
         Pose pp = pose(parent, link, st.w);
-        int t = pp.texel + link.z;
+        int t = pp.texel + at;
         vec3 tip = mix(texelFetch(uPoses, t).xyz, texelFetch(uPoses, t + link.y).xyz, pp.w);
         base += vec3(tip.x * pp.c - tip.z * pp.s, tip.y, tip.x * pp.s + tip.z * pp.c);
     }
