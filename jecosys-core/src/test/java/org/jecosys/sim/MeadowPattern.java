@@ -55,6 +55,85 @@ final class MeadowPattern {
                 z[i++] = w.plantZ(p);
             }
         }
+        return clarkEvans(x, z, w, window);
+    }
+
+    /**
+     * Tussocks: the plants of the given species joined into one where two stand within {@code join}
+     * metres of each other (transitively), each group at the mean of its plants' positions; {x, z}.
+     */
+    static float[][] tussocks(World w, java.util.Set<Integer> species, double join) {
+        int n = w.plantCount();
+        int[] id = new int[n];
+        float[] x = new float[n];
+        float[] z = new float[n];
+        int m = 0;
+        for (int p = 0; p < n; p++) {
+            if (species.contains(w.plantSpecies(p))) {
+                x[m] = w.plantX(p);
+                z[m] = w.plantZ(p);
+                id[m] = m;
+                m++;
+            }
+        }
+        var hf = w.terrain().heightfield();
+        int gx = (int) Math.ceil(hf.sizeX() / join) + 1;
+        int gz = (int) Math.ceil(hf.sizeZ() / join) + 1;
+        int[] head = new int[gx * gz];
+        int[] next = new int[m];
+        Arrays.fill(head, -1);
+        for (int i = 0; i < m; i++) {
+            int b = bucket(x[i], hf.minX(), join, gx) + gx * bucket(z[i], hf.minZ(), join, gz);
+            next[i] = head[b];
+            head[b] = i;
+        }
+        for (int i = 0; i < m; i++) {
+            int bi = bucket(x[i], hf.minX(), join, gx);
+            int bj = bucket(z[i], hf.minZ(), join, gz);
+            for (int j = Math.max(0, bj - 1); j <= Math.min(gz - 1, bj + 1); j++) {
+                for (int a = Math.max(0, bi - 1); a <= Math.min(gx - 1, bi + 1); a++) {
+                    for (int q = head[j * gx + a]; q >= 0; q = next[q]) {
+                        if (q > i && Math.hypot(x[q] - x[i], z[q] - z[i]) < join) {
+                            int ri = root(id, i);
+                            int rq = root(id, q);
+                            id[Math.max(ri, rq)] = Math.min(ri, rq);
+                        }
+                    }
+                }
+            }
+        }
+        double[] sx = new double[m];
+        double[] sz = new double[m];
+        int[] c = new int[m];
+        int groups = 0;
+        for (int i = 0; i < m; i++) {
+            int r = root(id, i);
+            groups += c[r] == 0 ? 1 : 0;
+            sx[r] += x[i];
+            sz[r] += z[i];
+            c[r]++;
+        }
+        float[][] out = new float[2][groups];
+        for (int i = 0, g = 0; i < m; i++) {
+            if (c[i] > 0) {
+                out[0][g] = (float) (sx[i] / c[i]);
+                out[1][g++] = (float) (sz[i] / c[i]);
+            }
+        }
+        return out;
+    }
+
+    private static int root(int[] id, int i) {
+        while (id[i] != i) {
+            id[i] = id[id[i]];
+            i = id[i];
+        }
+        return i;
+    }
+
+    /** The Clark–Evans ratio of the points (x, z) over w's terrain in square windows (see the class comment). */
+    static ClarkEvans clarkEvans(float[] x, float[] z, World w, double window) {
+        int n = x.length;
         var hf = w.terrain().heightfield();
         double minX = hf.minX();
         double minZ = hf.minZ();
@@ -156,7 +235,8 @@ final class MeadowPattern {
             double top = 0;
             for (int s = 0; s < m.slotCount(); s++) {
                 PoseTable t = m.slotPoseTable(s, w.plantVariant(p));
-                double base = m.slotParent(s) < 0 ? 0 : tipHeight(m, m.slotParent(s), w.plantVariant(p), v);
+                double base = m.slotParent(s) < 0 ? 0
+                        : pointHeight(m, m.slotParent(s), m.slotAttachPoint(s), w.plantVariant(p), v);
                 for (int k = 0; k < t.points(); k++) {
                     top = Math.max(top, base + t.position(0, k, v).y);
                 }
@@ -166,11 +246,24 @@ final class MeadowPattern {
         return out;
     }
 
-    /** Height of a slot's rest tip above the plant's base, metres: its parents' tips below it added. */
-    private static double tipHeight(SpeciesModel m, int slot, int variant, Vector3f v) {
+    /** Height of a slot's highest rest point above the plant's base, metres (its carriers' points added). */
+    static double slotTop(SpeciesModel m, int slot, int variant) {
+        Vector3f v = new Vector3f();
         PoseTable t = m.slotPoseTable(slot, variant);
-        double y = t.position(0, t.points() - 1, v).y;
-        return m.slotParent(slot) < 0 ? y : y + tipHeight(m, m.slotParent(slot), variant, v);
+        double base = m.slotParent(slot) < 0 ? 0
+                : pointHeight(m, m.slotParent(slot), m.slotAttachPoint(slot), variant, v);
+        double top = 0;
+        for (int k = 0; k < t.points(); k++) {
+            top = Math.max(top, base + t.position(0, k, v).y);
+        }
+        return top;
+    }
+
+    /** Height of a slot's rest point {@code k} above the plant's base, metres: its parents' points below it added. */
+    private static double pointHeight(SpeciesModel m, int slot, int k, int variant, Vector3f v) {
+        double y = m.slotPoseTable(slot, variant).position(0, k, v).y;
+        return m.slotParent(slot) < 0 ? y
+                : y + pointHeight(m, m.slotParent(slot), m.slotAttachPoint(slot), variant, v);
     }
 
     /** {mean, standard deviation} of values. */
