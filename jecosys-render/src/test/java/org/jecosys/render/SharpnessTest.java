@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
  * The assertions hold today's figures (fine detail 0.25 of the reference or more, contrast 8 or more),
  * so that the picture does not get softer unnoticed; the issue's targets are not met yet (see the printed
  * line). They conflict with issue 13's half-pixel residual ({@link AntiAliasingTest}, at most 2/255) for
- * any one-frame resolve filter: measured on this view with {@code GlFramebuffer.setResolveFilter}, fine
+ * any one-frame resolve filter: measured on this view (under the meadow's earlier, flatter light) with {@code GlFramebuffer.setResolveFilter}, fine
  * detail / near / middle contrast / residual were 40.7 / 23.7 / 18.2 / 5.97 for the plain average (0),
  * 24.5 / 19.5 / 15.2 / 3.89 for 0.5, 11.2 / 16.3 / 13.0 / 2.44 for 1 and 6.8 / 13.8 / 11.4 / 1.77 for the
  * default 2 (the supersampled reference: 21.4, 20.5, 15.9); sharpening mixes (negative weights on the
