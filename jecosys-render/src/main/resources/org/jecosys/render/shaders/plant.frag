@@ -9,7 +9,9 @@
 // Compiled with SHADOW_MAP (the sun's shadow map is drawn) it takes the sun's share away where the map
 // says the fragment is in shadow.
 in vec4 vShade;
-noperspective in vec2 vEdge;
+noperspective in vec2 vEdge;                     // side (-1 to 1), drawn half width in pixels (negative:
+                                                 // not a blade)
+const float MIDRIB = 0.3;                       // a blade's middle this much lighter, its edges darker
 uniform float uAlphaFloor;
 uniform float uFeather;
 #ifdef SPLIT
@@ -46,7 +48,8 @@ uniform vec3 uFogColour;
 
 void main() {
     // the soft edge (targets without samples, which blend by alpha): the outer uFeather pixels fade
-    float alpha = uFeather > 0.0 ? vShade.a * clamp((1.0 - abs(vEdge.x)) * vEdge.y / uFeather, 0.0, 1.0) : vShade.a;
+    float alpha = uFeather > 0.0 ? vShade.a * clamp((1.0 - abs(vEdge.x)) * abs(vEdge.y) / uFeather, 0.0, 1.0)
+            : vShade.a;
 #ifdef TEXTURED
     vec4 texel = vec4(1.0);
     if (vTex.z > -0.5) {
@@ -67,6 +70,10 @@ void main() {
     }
 #endif
     vec3 colour = vShade.rgb;
+    // a blade's midrib: lighter along its middle, darker toward its edges (the mean across it kept), where
+    // the blade is drawn wide enough to show it (fading in between 3 and 8 pixels across, so thin far
+    // blades do not flicker)
+    colour *= 1.0 + MIDRIB * clamp((vEdge.y - 1.5) / 2.5, 0.0, 1.0) * (1.0 - 2.0 * abs(vEdge.x));
 #ifdef SHADOW_MAP
     // the other plants' shadows (and its own), per fragment: the sun's share taken away
     vec2 shadow = sunShadowMap(vWorld);

@@ -50,7 +50,8 @@ struct Placed {
     vec3 toEye;                                  // eye - vertex
     float distance;                              // |toEye|
     float cover;                                 // share of the drawn width the real part covers
-    vec2 edge;                                   // side (-1 to 1) and the drawn half width, pixels
+    vec2 edge;                                   // side (-1 to 1) and the drawn half width, pixels;
+                                                 // the width negative for all but a blade (no midrib)
     float height;                                // height above the component's base, metres
 };
 
@@ -104,7 +105,7 @@ Placed placeMesh(vec3 base, float ca, float sa, vec3 p0, vec3 s0, vec3 p1, vec3 
 #endif
     r.world = centre + offset;
     r.cover = 1.0;
-    r.edge = vec2(0.0, 1e4);
+    r.edge = vec2(0.0, -1e4);
     r.toEye = uEye - r.world;
     r.distance = length(r.toEye);
     r.height = r.world.y - base.y;
@@ -130,7 +131,7 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
     float pix = uPixelScale.x + d * uPixelScale.y;
     Placed r;
     r.cover = 1.0;
-    r.edge = vec2(0.0, 1e4);
+    r.edge = vec2(0.0, -1e4);
 #ifdef FLOWERS
     if (kind >= 2) {
         vec3 rel = pw + a * sw + b * nw;
@@ -181,11 +182,13 @@ Placed place(vec3 base, float ca, float sa, vec3 p, vec3 side, vec3 normal, bool
             r.cover = clamp(seen / least, 0.0, 1.0);
             drawn = max(least, seen);
         }
+        // the side and the drawn half width in pixels, negative for a stem (plant.frag: a blade's midrib)
+        r.edge = vec2(a, (kind == 0 ? drawn : -drawn) / pix);
         if (widen && uFeather > 0.0) {
             // half the feather outward on each side: the fade then keeps the ribbon's weight
             float extra = 0.5 * uFeather * pix;
             world += a * extra * across;
-            r.edge = vec2(a, (drawn + extra) / pix);
+            r.edge = vec2(a, (kind == 0 ? drawn + extra : -(drawn + extra)) / pix);
         }
         r.world = world;
     }
