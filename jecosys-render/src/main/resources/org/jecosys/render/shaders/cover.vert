@@ -2,7 +2,8 @@
 // Near ground cover (CoverBlades): one triangle per blade, made from gl_VertexID and the tile instance
 // alone. Blade b of a tile stands at a point of a low-discrepancy sequence offset by the tile's hash
 // (evenly spread, never in rows), with its height, lean, facing, width and shade from hashes of the
-// tile and b; it stands on the heightfield (bilinear in the heights buffer), grows only where the
+// tile and b, its form (fine blade, broad low leaf or dry thatch lying down) from another, its stand's
+// height from value noise on the metre scale; it stands on the heightfield (bilinear in the heights buffer), grows only where the
 // cover map has cover, leans further where the plants of its tile are bent by the wind (the bend map),
 // and shrinks away beyond the tile's blade count and toward the cover's reach, where the ground's own
 // cover colour takes over. Lit by plant_light.glsl's model (darker at the base, light through the
@@ -42,6 +43,9 @@ float groundHeight(vec2 xz) {
     return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
 }
 
+const float BROAD_SHARE = 0.16;                  // of the blades, broad low leaves
+const float THATCH_SHARE = 0.14;                 // of the blades, dry thatch lying on the ground
+
 void main() {
     int blade = gl_VertexID / 3;
     int corner = gl_VertexID - 3 * blade;
@@ -61,8 +65,15 @@ void main() {
     float cover = uBlade.y * maps.g;
     vec3 base = vec3(xz.x, groundHeight(xz), xz.y);
     float d = distance(base, uEye);
+    // a sward, not a carpet: stands taller and shorter on the metre scale (mean about 1), and three forms,
+    // by the blade's hash: most are fine blades; some broad low leaves (as plantain or clover); some dry
+    // thatch lying on the ground
+    float stand = 0.3 + 1.4 * valueNoise(xz * 0.7, uPatchSeed + 4099);
+    float form = hash(tile.x, tile.y, s + 2 + 8 * 4099);
+    bool broad = form < BROAD_SHARE;
+    bool thatch = !broad && form < BROAD_SHARE + THATCH_SHARE;
     float h = uBlade.x * (0.55 + 0.9 * hash(tile.x, tile.y, s + 1)) * smoothstep(0.05, 0.5, cover) * keep
-            * (1.0 - smoothstep(0.7 * uReach, uReach, d));
+            * (1.0 - smoothstep(0.7 * uReach, uReach, d)) * stand * (broad ? 0.45 : (thatch ? 1.6 : 1.0));
     if (h <= 1e-4) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         vColour = vec3(0.0);
@@ -73,17 +84,20 @@ void main() {
     vec2 lean = (0.15 + 0.5 * hash(tile.x, tile.y, s + 3)) * vec2(cos(restAz), sin(restAz));
     vec2 bend = (textureLod(uBend, (xz - uBendMap.xy) * uBendMap.zw, 0.0).rg * 255.0 - 128.0) * (1.6 / 127.0);
     lean += bend * (0.8 + 0.4 * hash(tile.x, tile.y, s + 4));
-    float angle = min(length(lean), 1.4);
+    float angle = thatch ? 1.1 + 0.3 * hash(tile.x, tile.y, s + 3) : min(length(lean) * (broad ? 2.2 : 1.0), 1.4);
     vec2 dir = angle > 1e-4 ? lean / length(lean) : vec2(1.0, 0.0);
     vec3 tip = base + h * vec3(sin(angle) * dir.x, cos(angle), sin(angle) * dir.y);
     float face = 6.2831853 * hash(tile.x, tile.y, s + 5);
     vec3 side = vec3(cos(face), 0.0, sin(face));
     // wider far away, where fewer blades are drawn (the count falls as 1 / d^2 beyond a third of the reach)
-    float width = (0.004 + 0.006 * hash(tile.x, tile.y, s + 6)) * max(1.0, 3.0 * d / uReach);
+    float width = (0.004 + 0.006 * hash(tile.x, tile.y, s + 6)) * max(1.0, 3.0 * d / uReach) * (broad ? 4.0 : (thatch ? 1.5 : 1.0));
     vec3 p = corner == 2 ? tip : base + side * (corner == 0 ? -0.5 : 0.5) * width;
     gl_Position = uViewProj * vec4(p, 1.0);
     float dry = clamp(uPatch.y * patchLevel(xz) * 1.3 + (hash(tile.x, tile.y, s + 7) - 0.6) * 0.5, 0.0, 1.0);
+    dry = thatch ? 1.0 : dry;
     vec3 albedo = mix(uCoverColour, uCoverDry, dry) * (0.8 + 0.4 * hash(tile.x, tile.y, s + 1 + 8 * 4099));
+    albedo *= broad ? vec3(0.6, 0.92, 1.15) : (thatch ? vec3(1.3, 1.2, 1.0) : vec3(1.0));  // broad leaves a deeper,
+                                                                             // bluer green, thatch pale straw
     albedo *= 1.0 - uContactShadow * maps.r * (corner == 2 ? 0.3 : 1.0);
     vec3 toEye = uEye - p;
     float along = corner == 2 ? 1.0 : 0.0;
