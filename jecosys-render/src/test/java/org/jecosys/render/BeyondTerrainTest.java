@@ -27,11 +27,7 @@ class BeyondTerrainTest {
         SceneDef def = RenderScenes.load("meadow.xml");
         World world = RenderScenes.build(def);
         Heightfield hf = world.terrain().heightfield();
-        double cx = hf.minX() + hf.sizeX() / 2;
-        double cz = hf.minZ() + hf.sizeZ() / 2;
-        double gy = hf.height(cx, cz);
-        ViewCamera cam = Shots.lookAt(cx, gy + 15, cz + 10, cx, gy, cz - 30, Math.toRadians(50), W / (double) H, 0.05,
-                1000);
+        ViewCamera cam = Shots.fromAbove(hf, W, H);
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             double[] p = s.points(TestFrames.wind(world, 0, cam), cam, false);
             boolean[] beyond = new boolean[W * H];

@@ -162,6 +162,17 @@ final class Shots implements AutoCloseable {
         return new double[] {(v.x / v.w + 1) * 0.5 * width, (v.y / v.w + 1) * 0.5 * height, v.w};
     }
 
+    /**
+     * 15 m up and oblique: over the middle of the terrain, 10 m back along +Z, looking at the ground 30 m
+     * ahead (issue 41's view from above; 50 degrees high, near 0.05 m, far 1000 m).
+     */
+    static ViewCamera fromAbove(org.jecosys.terrain.Heightfield hf, int width, int height) {
+        double cx = hf.minX() + hf.sizeX() / 2;
+        double cz = hf.minZ() + hf.sizeZ() / 2;
+        double gy = hf.height(cx, cz);
+        return lookAt(cx, gy + 15, cz + 10, cx, gy, cz - 30, Math.toRadians(50), width / (double) height, 0.05, 1000);
+    }
+
     /** A camera at an eye point looking at a target point, with the given lens. */
     static ViewCamera lookAt(double ex, double ey, double ez, double tx, double ty, double tz, double fovY,
                              double aspect, double near, double far) {

@@ -121,10 +121,7 @@ class WindSheenTest {
         int bx = W / BLOCK;
         int by = H / BLOCK;
         double[][] series = new double[bx * by][frames];
-        int[] prev = null;
-        int[] prevDelta = null;
-        long changing = 0;
-        long reversing = 0;
+        Reversals reversals = new Reversals(2);
         int top;
         int[] pairPixels = new int[0];
         double[][] pairSeries = new double[0][];
@@ -173,20 +170,7 @@ class WindSheenTest {
                         series[j * bx + i][f] = sum / (BLOCK * BLOCK);
                     }
                 }
-                if (prev != null) {
-                    int[] delta = new int[W * H];
-                    for (int k = 0; k < delta.length; k++) {
-                        delta[k] = luma[k] - prev[k];
-                        if (prevDelta != null && Math.abs(prevDelta[k]) > 2) {
-                            changing++;
-                            if (Math.abs(delta[k]) > 2 && Integer.signum(delta[k]) != Integer.signum(prevDelta[k])) {
-                                reversing++;
-                            }
-                        }
-                    }
-                    prevDelta = delta;
-                }
-                prev = luma;
+                reversals.add(luma);
             }
         }
         double[] medians = new double[3];
@@ -221,7 +205,7 @@ class WindSheenTest {
                 peakLag = lag;
             }
         }
-        return new Run(medians, changing == 0 ? 0 : reversing / (double) changing, peakLag,
+        return new Run(medians, reversals.share(), peakLag,
                 peakLag < 0 ? 0 : corr[peakLag], corr[0], gustSpeed, t1 - t0, n);
     }
 
