@@ -122,21 +122,38 @@ class BladeShadingTest {
         return new double[] {world.plantX(0) + x * c - z * s, world.plantY(0) + y, world.plantZ(0) + x * s + z * c};
     }
 
-    /** Luma of the plant pixel where a world point projects, NaN off screen or where no plant shows. */
+    /**
+     * Luma of the plant pixel where a world point projects, NaN off screen or where no plant shows. A thin
+     * part under two pixels wide may fall just beside the pixel its centre line projects into: where that
+     * pixel shows no plant, the pixel of the 3x3 around it that differs most from the empty render is taken.
+     */
     private static double luma(Img plants, Img empty, ViewCamera cam, double[] p) {
         double[] px = Shots.project(cam, p[0], p[1], p[2], W, H);
         if (px == null) {
             return Double.NaN;
         }
-        int x = (int) px[0];
-        int y = (int) px[1];
-        if (x < 0 || y < 0 || x >= W || y >= H) {
-            return Double.NaN;
+        int x0 = (int) px[0];
+        int y0 = (int) px[1];
+        if (x0 >= 0 && y0 >= 0 && x0 < W && y0 < H && ImageMetrics.differ(plants.at(x0, y0), empty.at(x0, y0))) {
+            return ImageMetrics.luma(plants.at(x0, y0));
         }
-        int a = plants.at(x, y);
-        if (!ImageMetrics.differ(a, empty.at(x, y))) {
-            return Double.NaN;
+        int best = -1;
+        int most = -1;
+        for (int y = y0 - 1; y <= y0 + 1; y++) {
+            for (int x = x0 - 1; x <= x0 + 1; x++) {
+                if (x < 0 || y < 0 || x >= W || y >= H) {
+                    continue;
+                }
+                int a = plants.at(x, y);
+                int e = empty.at(x, y);
+                int d = Math.abs(ImageMetrics.r(a) - ImageMetrics.r(e)) + Math.abs(ImageMetrics.g(a) - ImageMetrics.g(e))
+                        + Math.abs(ImageMetrics.b(a) - ImageMetrics.b(e));
+                if (ImageMetrics.differ(a, e) && d > most) {
+                    most = d;
+                    best = a;
+                }
+            }
         }
-        return ImageMetrics.luma(a);
+        return most < 0 ? Double.NaN : ImageMetrics.luma(best);
     }
 }

@@ -256,8 +256,8 @@ public final class PlantPasses {
     /**
      * Sets this frame's uniforms on every program: the camera, light and haze, the size of a pixel
      * ({@code x + distance * y} metres), the frame's distance thinning and whether the target is
-     * multisampled (then the triangle levels keep coverage in alpha for alpha-to-coverage; else they
-     * write alpha 1). No allocation.
+     * multisampled (then no soft edge: the samples smooth the outline). Coverage is kept in alpha, for
+     * blending or alpha-to-coverage. No allocation.
      */
     void frame(PlantLook look, PassContext context) {
         float alphaFloor = 0f; // coverage in alpha: to samples when multisampled, blended otherwise

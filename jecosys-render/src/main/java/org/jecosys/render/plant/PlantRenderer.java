@@ -100,6 +100,8 @@ public final class PlantRenderer implements AutoCloseable {
     private boolean saidStill;
     /** Band plants are drawn whole below this many samples per pixel ({@link #setWholePlantsBelow}). */
     private int wholePlantsBelow = 2;
+    /** Whether multisampled targets blend thin parts too ({@link #setBlendOnSamples}). */
+    private boolean blendOnSamples = true;
 
     /**
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
@@ -434,15 +436,32 @@ public final class PlantRenderer implements AutoCloseable {
      * ground before them then, so their thin edges blend over it} Render thread; no allocation.
      */
     public boolean blendsNear() {
-        return !context.multisampled;
+        return !context.multisampled || blendOnSamples;
+    }
+
+    /**
+     * How a multisampled target gets the share of a pixel a thin part covers. On (the default) as on a
+     * target without samples: an opaque core writes depth, and the thin parts and far lines blend by the
+     * share they cover over what is there, each on the samples its geometry covers; the plants then
+     * weigh in the picture what they cover, whether the target has samples or not ({@link #blendsNear()}
+     * is then true: draw the ground first). Off, the GL's alpha-to-coverage: every part with the same
+     * share takes the same samples, so thin parts overlapping in a pixel count once (on llvmpipe a
+     * 4-sample meadow then weighs about a quarter less than the truth); the plants go first, before
+     * the ground, and hide it from the depth test. Render thread; no allocation.
+     *
+     * @param on whether to blend thin parts on multisampled targets
+     */
+    public void setBlendOnSamples(boolean on) {
+        blendOnSamples = on;
     }
 
     /**
      * The second half of {@link #drawNear}: draws the triangle (near) levels the last
-     * {@link #prepareNear} resolved, writing depth. Multisampled, the share of a pixel a thin part
-     * covers goes to samples (alpha-to-coverage) and the plants are opaque; without samples it blends
-     * the part over what is there ({@link #blendsNear()}), so a blade narrower than a pixel weighs what
-     * it covers rather than a whole pixel. Render thread; no allocation.
+     * {@link #prepareNear} resolved: an opaque core writing depth, then the thin parts blended by the
+     * share of a pixel they cover over what is there, on the samples their geometry covers when
+     * multisampled ({@link #blendsNear()}: draw the ground first), so a blade narrower than a pixel
+     * weighs what it covers rather than a whole pixel. With {@link #setBlendOnSamples} off, a
+     * multisampled target gets alpha-to-coverage and opaque plants instead. Render thread; no allocation.
      */
     public void drawPreparedNear() {
         if (!pending) {
@@ -450,7 +469,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         passes.shadow(look);
         gpu.bindForDraws();
-        if (context.multisampled) {
+        if (context.multisampled && !blendOnSamples) {
             // coverage to samples, and alpha 1 stored (alpha-to-one): plants are opaque
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
@@ -486,7 +505,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         pending = false;
         gpu.bindForDraws();
-        if (context.multisampled) {
+        if (context.multisampled && !blendOnSamples) {
             // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
             glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
             glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);

@@ -86,8 +86,8 @@ public final class PlantUniforms {
     /**
      * Sets the per-frame values on the program in use: view, eye, light, fog, the pixel's size
      * ({@code pixelX + distance * pixelY} metres) and the frame's distance thinning from the context,
-     * the look's light, and the least alpha written (1 when not multisampled, so plants are opaque; 0
-     * for alpha-to-coverage). No allocation.
+     * the look's light, and the least alpha written (0: the coverage in alpha, for blending or
+     * alpha-to-coverage). No allocation.
      */
     void frame(PlantLook r, PassContext c, float alphaFloorValue) {
         glUniform1f(alphaFloor, alphaFloorValue);

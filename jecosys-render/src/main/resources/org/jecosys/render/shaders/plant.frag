@@ -3,9 +3,9 @@
 // L + 1 the complementary ones, so the switch is gradual. Only plants in a band are drawn with the
 // test (compiled with DITHER); the others are drawn by the variant without it, which never
 // discards, so the rasteriser can test depth before shading. Colour arrives lit and fogged from
-// the vertex shader; alpha is the share of the drawn width the real part covers, used by
-// alpha-to-coverage when multisampling (which then stores alpha 1: alpha-to-one); otherwise the plants
-// are drawn opaque and uAlphaFloor = 1 writes alpha 1, so a host's screenshot sees opaque plants.
+// the vertex shader; alpha is the share of the drawn width the real part covers: the thin parts blend by
+// it (SPLIT), with or without samples, or, where the renderer is told to, alpha-to-coverage turns it
+// into samples (and stores alpha 1: alpha-to-one).
 // Compiled with SHADOW_MAP (the sun's shadow map is drawn) it takes the sun's share away where the map
 // says the fragment is in shadow.
 in vec4 vShade;

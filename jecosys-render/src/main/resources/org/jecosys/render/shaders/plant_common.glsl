@@ -5,7 +5,7 @@
 //   kept share (at most 4 times; uThin), so a thinned meadow keeps most of its coverage;
 // - thin parts stay at least uMinPixels wide: a ribbon narrower than that on screen is widened
 //   across the view, and the share of the widened ribbon the real one covers goes out as coverage
-//   (alpha-to-coverage under multisampling);
+//   (blended by it, on the samples the ribbon covers under multisampling);
 // - stems face the camera (a ribbon turned about its own axis toward the eye), so they never vanish
 //   edge-on;
 // - flower parts (petals, heads) turn toward the viewer about their base by uFlowerTilt and are
