@@ -1,14 +1,5 @@
 package org.jecosys.render.plant;
 
-import static org.lwjgl.opengl.GL11C.GL_BLEND;
-import static org.lwjgl.opengl.GL11C.GL_ONE;
-import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
-import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
-import static org.lwjgl.opengl.GL11C.glDepthMask;
-import static org.lwjgl.opengl.GL11C.glDisable;
-import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
-import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
 
 import java.nio.FloatBuffer;
 import java.util.List;
@@ -100,8 +91,8 @@ public final class PlantRenderer implements AutoCloseable {
     private boolean saidStill;
     /** Band plants are drawn whole below this many samples per pixel ({@link #setWholePlantsBelow}). */
     private int wholePlantsBelow = 2;
-    /** Whether multisampled targets blend thin parts too ({@link #setBlendOnSamples}). */
-    private boolean blendOnSamples = true;
+    /** How partial coverage goes on the target: blended (core, fringe) or alpha-to-coverage. */
+    private final CoverageDraws coverage;
 
     /**
      * Uploads pose tables and meshes, and preallocates the per-frame buffers. Render thread;
@@ -167,6 +158,7 @@ public final class PlantRenderer implements AutoCloseable {
             // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
             // use here alive past its deletion
             passes = new PlantPasses(gpu.programs, flowers);
+            coverage = new CoverageDraws();
         } catch (RuntimeException | Error e) {
             MemoryUtil.memFree((java.nio.Buffer) mat);
             if (q != null) {
@@ -431,12 +423,13 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * {@return whether the last {@link #prepareNear} found a target without multisampling, where
-     * {@link #drawPreparedNear} blends the near plants by the share of a pixel they cover: draw the
-     * ground before them then, so their thin edges blend over it} Render thread; no allocation.
+     * {@return whether {@link #drawPreparedNear} blends the near plants' thin parts by the share of a
+     * pixel they cover on the target the last {@link #prepareNear} found (always, unless
+     * {@link #setBlendOnSamples} is off and the target is multisampled): draw the ground before them then,
+     * so their thin parts blend over it} Render thread; no allocation.
      */
     public boolean blendsNear() {
-        return !context.multisampled || blendOnSamples;
+        return coverage.blends(context);
     }
 
     /**
@@ -452,7 +445,7 @@ public final class PlantRenderer implements AutoCloseable {
      * @param on whether to blend thin parts on multisampled targets
      */
     public void setBlendOnSamples(boolean on) {
-        blendOnSamples = on;
+        coverage.setBlendOnSamples(on);
     }
 
     /**
@@ -469,29 +462,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         passes.shadow(look);
         gpu.bindForDraws();
-        if (context.multisampled && !blendOnSamples) {
-            // coverage to samples, and alpha 1 stored (alpha-to-one): plants are opaque
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-            passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-            glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            return;
-        }
-        if (!passes.hasSplit()) {
-            gpu.compileSplit(passes);
-            passes.frame(look, context); // this frame's values onto the new programs
-            passes.shadow(look);
-        }
-        glEnable(GL_BLEND);
-        // colour blended by coverage; alpha composited "over": opaque over an opaque target. The opaque
-        // core writes depth; the fringe (soft edges, thin parts) only blends, so it hides nothing
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        passes.drawTrianglesSplit(true, batches, gpu.vaos, gpu.indexCount, look, levelMask);
-        glDepthMask(false);
-        passes.drawTrianglesSplit(false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
-        glDepthMask(true);
-        glDisable(GL_BLEND);
+        coverage.near(context, gpu, passes, batches, look, levelMask);
     }
 
     /**
@@ -505,22 +476,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         pending = false;
         gpu.bindForDraws();
-        if (context.multisampled && !blendOnSamples) {
-            // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-            passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-            glDisable(GL13C.GL_SAMPLE_ALPHA_TO_ONE);
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            return;
-        }
-        glEnable(GL_BLEND);
-        // colour blended by coverage; alpha composited "over" (a + d (1 - a)): opaque over an opaque target
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(false);
-        passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-        glDepthMask(true);
-        glDisable(GL_BLEND);
+        coverage.far(context, gpu, passes, batches, look, levelMask);
     }
 
     /**
