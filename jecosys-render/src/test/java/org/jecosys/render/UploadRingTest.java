@@ -66,8 +66,10 @@ class UploadRingTest {
                         long a0 = threads.getCurrentThreadAllocatedBytes();
                         r.render(f, cam, W, H);
                         long a1 = threads.getCurrentThreadAllocatedBytes();
-                        if (i == 29) {
-                            allocated = a1 - a0;
+                        if (i >= 20) {
+                            // the least of the last ten frames: a frame that allocates does so every time,
+                            // while code the JIT has not compiled yet may allocate what it later keeps in registers
+                            allocated = allocated < 0 ? a1 - a0 : Math.min(allocated, a1 - a0);
                         }
                         gl.finish();
                     }

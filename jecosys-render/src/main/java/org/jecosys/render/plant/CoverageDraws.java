@@ -1,6 +1,9 @@
 package org.jecosys.render.plant;
 
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
+import static org.lwjgl.opengl.GL11C.GL_LEQUAL;
+import static org.lwjgl.opengl.GL11C.GL_LESS;
+import static org.lwjgl.opengl.GL11C.glDepthFunc;
 import static org.lwjgl.opengl.GL11C.GL_ONE;
 import static org.lwjgl.opengl.GL11C.GL_ONE_MINUS_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
@@ -17,14 +20,30 @@ import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
  * samples, in two passes for the triangle levels (an opaque core writing depth, then the fringe that only
  * blends, so a faint edge never hides what is behind it) and one blended pass for the line levels; or,
  * on a multisampled target where blending on samples is off, the GL's alpha-to-coverage with opaque
- * plants. Render thread; no allocation.
+ * plants.
+ *
+ * <p>Without samples the two passes use the split programs, which discard what is not theirs. With
+ * samples both use the ordinary programs, which never discard (a software rasteriser then tests depth
+ * before shading): the core's pass cuts alpha to 0 or 1 ({@code uCoreCut}) and writes it through
+ * alpha-to-coverage, so only the core reaches the samples; the fringe's pass blends with a strict depth
+ * test, which the core's fragments, at exactly the depth they wrote (the same programs and inputs), fail.
+ * On llvmpipe at 1920x1080 that makes the meadow's near plants about 15% cheaper than the split
+ * programs, with the same picture. Render thread; no allocation.
  */
 final class CoverageDraws {
+    /** The least alpha of the opaque core (the split programs' threshold, plant.frag). */
+    private static final float CORE = 0.996f;
     private boolean blendOnSamples = true;
+    private boolean coreCut = true;
 
     /** Sets whether multisampled targets blend thin parts too (else alpha-to-coverage). */
     void setBlendOnSamples(boolean on) {
         blendOnSamples = on;
+    }
+
+    /** Sets whether multisampled targets draw the core with the alpha cut (else the split programs). */
+    void setCoreCut(boolean on) {
+        coreCut = on;
     }
 
     /** {@return whether the near plants are blended for a target as {@code c} describes} */
@@ -41,6 +60,27 @@ final class CoverageDraws {
             passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
             glDisable(GL_SAMPLE_ALPHA_TO_ONE);
             glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            return;
+        }
+        if (c.multisampled && coreCut) {
+            // the core: alpha cut to 0 or 1, to samples by alpha-to-coverage, depth written, no discard
+            passes.setCoreCut(CORE);
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+            passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
+            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            passes.setCoreCut(0f);
+            // the fringe: blended, depth tested but not written; the core's own fragments, at exactly the
+            // depth they wrote (the same programs), fail the strict test and are not blended again
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(false);
+            glDepthFunc(GL_LESS);
+            passes.drawTrianglesAgain(batches, gpu.vaos, gpu.indexCount, look, levelMask);
+            glDepthFunc(GL_LEQUAL);
+            glDepthMask(true);
+            glDisable(GL_BLEND);
             return;
         }
         if (!passes.hasSplit()) {

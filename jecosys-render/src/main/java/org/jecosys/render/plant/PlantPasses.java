@@ -337,6 +337,42 @@ public final class PlantPasses {
         }
     }
 
+    /**
+     * Sets the alpha at or above which the triangle levels' programs write a fragment as opaque and below
+     * which they write nothing, through alpha-to-coverage: the core's pass on a multisampled target
+     * ({@code uCoreCut}, plant.frag); 0 turns it off. No allocation.
+     *
+     * @param cut in [0, 1]
+     */
+    public void setCoreCut(float cut) {
+        setCoreCut(passes, cut);
+        setCoreCut(receivers, cut);
+    }
+
+    private static void setCoreCut(PlantUniforms[] programs, float cut) {
+        if (programs != null) {
+            for (PlantUniforms u : programs) {
+                if (u.coreCut >= 0) {
+                    u.program.use();
+                    glUniform1f(u.coreCut, cut);
+                }
+            }
+        }
+    }
+
+    /**
+     * As {@link #drawTriangles}, drawn a second time in a frame (the fringe's pass after the core's), so not
+     * counted again by {@link #draws()} and {@link #instances()}. No allocation.
+     */
+    public void drawTrianglesAgain(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                                   int levelMask) {
+        int draws0 = draws;
+        long instances0 = instances;
+        drawTriangles(batches, vaos, indexCount, look, levelMask);
+        draws = draws0;
+        instances = instances0;
+    }
+
     /** As {@link #drawTriangles}, the line levels' lists. No allocation. */
     public void drawLines(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
                           int levelMask) {

@@ -449,6 +449,19 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
+     * On a multisampled target that blends thin parts ({@link #setBlendOnSamples}), how the two passes
+     * of the near plants keep the core and the fringe apart: on (the default), the ordinary programs,
+     * the core's alpha cut to 0 or 1 through alpha-to-coverage, the fringe behind a strict depth test,
+     * with no discard (cheaper on a software rasteriser); off, the split programs, as on a target
+     * without samples. The picture is the same. Render thread; no allocation.
+     *
+     * @param on whether to cut the core's alpha rather than use the split programs
+     */
+    public void setCoreCut(boolean on) {
+        coverage.setCoreCut(on);
+    }
+
+    /**
      * The second half of {@link #drawNear}: draws the triangle (near) levels the last
      * {@link #prepareNear} resolved: an opaque core writing depth, then the thin parts blended by the
      * share of a pixel they cover over what is there, on the samples their geometry covers when

@@ -43,6 +43,8 @@ public final class PlantUniforms {
     public final int thin;
     public final int sheen;
     public final int alphaFloor;
+    /** The core's pass: alpha cut to 0 or 1 at this ({@code uCoreCut}; 0: off). */
+    public final int coreCut;
     /** The soft edge of blades and stems, pixels ({@code uFeather}). */
     public final int feather;
     /** Which part a split program keeps: 1 the opaque core, 2 the fringe ({@code uSplit}). */
@@ -73,6 +75,7 @@ public final class PlantUniforms {
         sheen = p.optionalUniform("uSheen");
         alphaFloor = p.optionalUniform("uAlphaFloor");
         feather = p.optionalUniform("uFeather");
+        coreCut = p.optionalUniform("uCoreCut");
         split = p.optionalUniform("uSplit");
         sunShadow = p.optionalUniform("uSunShadow");
         shadowMatrix = p.optionalUniform("uShadowMatrix");

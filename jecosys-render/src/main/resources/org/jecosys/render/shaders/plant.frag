@@ -13,6 +13,9 @@ noperspective in vec2 vEdge;                     // side (-1 to 1), drawn half w
                                                  // not a blade)
 const float MIDRIB = 0.3;                       // a blade's middle this much lighter, its edges darker
 uniform float uAlphaFloor;
+// > 0: the opaque core's pass on a multisampled target: alpha becomes 1 at or above it and 0 below, so
+// that alpha-to-coverage writes the core only (no discard: the depth test can run before shading)
+uniform float uCoreCut;
 uniform float uFeather;
 #ifdef SPLIT
 // targets without samples draw the near plants twice: their opaque core writing depth (uSplit 1), then
@@ -57,6 +60,11 @@ void main() {
         // outline is coverage (multisampled) or blended (the fringe of a target without samples)
         texel = texture(uPlantTextures, vec3(vTex.xy, floor(vTex.z + 0.5)));
         alpha *= texel.a;
+    }
+#endif
+#ifndef SPLIT
+    if (uCoreCut > 0.0) {
+        alpha = alpha >= uCoreCut ? 1.0 : 0.0;
     }
 #endif
 #ifdef SPLIT
