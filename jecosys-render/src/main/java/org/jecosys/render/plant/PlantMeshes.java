@@ -86,8 +86,10 @@ public final class PlantMeshes {
         IntBuffer iv = MemoryUtil.memAllocInt(Math.max(1, mesh.indexCount()));
         try {
             float[] reach = new float[m.slotCount()];
+            float[] halfWidth = new float[m.slotCount()];
             for (int slot = 0; slot < reach.length; slot++) {
                 reach[slot] = reach(m.slotPoseTable(slot, 0));
+                halfWidth[slot] = widestHalf(m, slot);
             }
             for (int v = 0; v < n; v++) {
                 int slot = mesh.vertexSlot(v);
@@ -99,7 +101,9 @@ public final class PlantMeshes {
                 fv.put(slot).put(point).put(mesh.vertexA(v)).put(mesh.vertexB(v))
                         .put(rgb.r()).put(rgb.g()).put(rgb.b()).put(point / (float) Math.max(1, points - 1))
                         .put(3 * points).put(kind(def)).put(reach[slot]).put(layers[component])
-                        .put(mesh.meshValue(v, ComponentMesh.MESH_C)).put(mesh.meshValue(v, ComponentMesh.MESH_U))
+                        // a glTF vertex's offset along the skeleton; any other: the slot's widest half width
+                        .put(mesh.vertexFromFile(v) ? mesh.meshValue(v, ComponentMesh.MESH_C) : halfWidth[slot])
+                        .put(mesh.meshValue(v, ComponentMesh.MESH_U))
                         .put(mesh.meshValue(v, ComponentMesh.MESH_V)).put(mesh.vertexFromFile(v) ? 1f : 0f)
                         .put(mesh.meshValue(v, ComponentMesh.MESH_NORMAL))
                         .put(mesh.meshValue(v, ComponentMesh.MESH_NORMAL + 1))
@@ -213,6 +217,25 @@ public final class PlantMeshes {
             double p = Math.sqrt(sq(table.get(o)) + sq(table.get(o + 1)) + sq(table.get(o + 2)));
             double w = Math.sqrt(sq(table.get(o + 3)) + sq(table.get(o + 4)) + sq(table.get(o + 5)));
             most = Math.max(most, p + w);
+        }
+        return (float) most;
+    }
+
+    /**
+     * {@return the widest half width of a slot's part, metres, over every shape variant, pose and point}
+     * (plant.vert leaves a part out of the core's pass where even that is thinner than the least width).
+     */
+    static float widestHalf(SpeciesModel m, int slot) {
+        double most = 0;
+        for (int variant = 0; variant < m.variants(); variant++) {
+            PoseTable t = m.slotPoseTable(slot, variant);
+            int poses = t.poses();
+            for (int pose = 0; pose < poses; pose++) {
+                for (int j = 0; j < t.points(); j++) {
+                    int o = pose * t.points() * PoseTable.STRIDE + j * PoseTable.STRIDE;
+                    most = Math.max(most, Math.sqrt(sq(t.get(o + 3)) + sq(t.get(o + 4)) + sq(t.get(o + 5))));
+                }
+            }
         }
         return (float) most;
     }

@@ -62,6 +62,9 @@ public final class PlantPasses {
     private final PassContext caster = new PassContext();
     private int draws;
     private long instances;
+    /** What the last {@link #drawTrianglesCore} counted, taken back by the {@link #drawTrianglesAgain} after it. */
+    private int coreDraws;
+    private long coreInstances;
 
     /**
      * Compiles program {@code k} of {@link #COUNT} (bit 0: the dither test, bit 1: line levels, bit 2:
@@ -361,16 +364,31 @@ public final class PlantPasses {
     }
 
     /**
-     * As {@link #drawTriangles}, drawn a second time in a frame (the fringe's pass after the core's), so not
-     * counted again by {@link #draws()} and {@link #instances()}. No allocation.
+     * As {@link #drawTriangles}, the core's pass of a multisampled target; what it counts is taken back by
+     * the fringe's pass after it ({@link #drawTrianglesAgain}), so that each list counts once. No
+     * allocation.
      */
-    public void drawTrianglesAgain(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
-                                   int levelMask) {
+    public void drawTrianglesCore(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                                  int levelMask) {
         int draws0 = draws;
         long instances0 = instances;
         drawTriangles(batches, vaos, indexCount, look, levelMask);
-        draws = draws0;
-        instances = instances0;
+        coreDraws = draws - draws0;
+        coreInstances = instances - instances0;
+    }
+
+    /**
+     * As {@link #drawTriangles}, drawn a second time in a frame (the fringe's pass after
+     * {@link #drawTrianglesCore}), so that {@link #draws()} and {@link #instances()} count each list once.
+     * No allocation.
+     */
+    public void drawTrianglesAgain(PlantBatches batches, GlVertexArray[] vaos, int[] indexCount, PlantLook look,
+                                   int levelMask) {
+        drawTriangles(batches, vaos, indexCount, look, levelMask);
+        draws -= coreDraws;
+        instances -= coreInstances;
+        coreDraws = 0;
+        coreInstances = 0;
     }
 
     /** As {@link #drawTriangles}, the line levels' lists. No allocation. */

@@ -15,6 +15,10 @@
 #include "plant_common.glsl"
 
 #ifndef SHADOW_CASTER
+uniform float uCoreCut;                          // > 0: the core's pass (plant.frag); parts without a core left out
+#endif
+
+#ifndef SHADOW_CASTER
 out vec4 vShade;                                 // rgb: lit and fogged per vertex; a: the share of the
                                                  // drawn width the part covers (one varying: a software
                                                  // rasteriser sets up each varying of each primitive)
@@ -42,6 +46,20 @@ void main() {
     vec4 c1 = texelFetch(uComponents, ci + 1);   // texel of pose k, w, sin(azimuth), dither window
     vec4 c2 = texelFetch(uComponents, ci + 2);   // cos and sin of the hue turn, brightness, patch dryness
     float w = c1.y;
+#ifndef SHADOW_CASTER
+    if (uCoreCut > 0.0 && aShape.x < 1.5 && aMesh.w < 0.5 && uMinPixels > 0.0) {
+        // the core's pass (CoverageDraws): a blade or stem whose widest half width (aMesh.x), widened as
+        // the thinning widens it, is under the least half width wherever it reaches (aShape.y from its
+        // base) has no core: every vertex of it goes outside the view, before any pose or light work
+        float d = length(uEye - c0.xyz);
+        float reach = 1.5 * aShape.y;
+        float least = 0.5 * uMinPixels * (uPixelScale.x + max(d - reach, 0.0) * uPixelScale.y);
+        if (aMesh.x * thinWiden(d + reach) < uCoreCut * least) {
+            gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+            return;
+        }
+    }
+#endif
     int stride = int(aStride + 0.5);
     Placed v;
     if (aMesh.w > 0.5) {
