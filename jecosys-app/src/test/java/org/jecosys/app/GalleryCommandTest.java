@@ -12,12 +12,17 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code jecosys gallery}: every view is written, at the asked size, and shows more than one colour. */
+/**
+ * {@code jecosys gallery}: every view is written, at the asked size, and shows more than one colour
+ * (tagged slow: it builds every gallery scene, about 25 s under CI, so it runs with {@code -Pnightly};
+ * the default run keeps the flag checks).
+ */
 class GalleryCommandTest {
     @TempDir
     Path dir;
 
     @Test
+    @org.junit.jupiter.api.Tag("slow")
     void writesEveryViewAtTheAskedSize() throws Exception {
         Path out = dir.resolve("gallery");
         CliTest.Result r = CliTest.run("gallery", "--out", out.toString(), "--size", "160x90");
