@@ -48,7 +48,7 @@ class SimulateCliTest {
     @Test
     void anOpenWorldWalksItsPathWithTilesAroundTheCamera() throws Exception {
         Path json = dir.resolve("w.json");
-        CliTest.Result one = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "30", "--threads", "1",
+        CliTest.Result one = CliTest.run("simulate", "scenes/openworld.xml", "--steps", "12", "--threads", "1",
                 "--json", json.toString());
         assertEquals(0, one.code(), one.err());
         for (String k : new String[] {"(open world)", "tiles alive", "plants alive", "components alive",

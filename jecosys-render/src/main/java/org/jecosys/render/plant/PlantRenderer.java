@@ -281,9 +281,9 @@ public final class PlantRenderer implements AutoCloseable {
     }
 
     /**
-     * {@return the number of instanced draw calls issued by the last {@link #draw}} On a target without
-     * samples the near lists are drawn a second time for their fringe ({@link #drawPreparedNear}), not
-     * counted here.
+     * {@return the number of instanced draw calls issued by the last {@link #draw}} Where thin parts are
+     * blended ({@link #blendsNear()}) the near lists are drawn a second time for their fringe
+     * ({@link #drawPreparedNear}), not counted here.
      */
     public int drawCalls() {
         return passes.draws();
