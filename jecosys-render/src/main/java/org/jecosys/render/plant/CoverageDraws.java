@@ -57,32 +57,27 @@ final class CoverageDraws {
     void near(PassContext c, PlantGpu gpu, PlantPasses passes, PlantBatches batches, PlantLook look, int levelMask) {
         if (!blends(c)) {
             // coverage to samples, and alpha 1 stored (alpha-to-one): plants are opaque
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+            coverageToSamples(true);
             passes.drawTriangles(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            coverageToSamples(false);
             return;
         }
         if (c.multisampled && coreCut) {
             // the core: alpha cut to 0 or 1, to samples by alpha-to-coverage, depth written, no discard
             passes.setCoreCut(CORE);
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+            coverageToSamples(true);
             passes.drawTrianglesCore(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            coverageToSamples(false);
             passes.setCoreCut(0f);
             // the fringe: blended, depth tested but not written; the core's own fragments, at exactly the
             // depth they wrote (the same programs), fail the strict test and are not blended again
-            glEnable(GL_BLEND);
-            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            blendByCoverage(true);
             glDepthMask(false);
             glDepthFunc(GL_LESS);
             passes.drawTrianglesAgain(batches, gpu.vaos, gpu.indexCount, look, levelMask);
             glDepthFunc(GL_LEQUAL);
             glDepthMask(true);
-            glDisable(GL_BLEND);
+            blendByCoverage(false);
             return;
         }
         if (!passes.hasSplit()) {
@@ -90,34 +85,52 @@ final class CoverageDraws {
             passes.frame(look, c); // this frame's values onto the new programs
             passes.shadow(look);
         }
-        glEnable(GL_BLEND);
-        // colour blended by coverage; alpha composited "over": opaque over an opaque target. The opaque
-        // core writes depth; the fringe (soft edges, thin parts) only blends, so it hides nothing
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        // the opaque core writes depth; the fringe (soft edges, thin parts) only blends, so it hides nothing
+        blendByCoverage(true);
         passes.drawTrianglesSplit(true, batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(false);
         passes.drawTrianglesSplit(false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(true);
-        glDisable(GL_BLEND);
+        blendByCoverage(false);
     }
 
     /** Draws the prepared line levels. */
     void far(PassContext c, PlantGpu gpu, PlantPasses passes, PlantBatches batches, PlantLook look, int levelMask) {
         if (!blends(c)) {
             // multisampled: coverage to samples, as the triangle levels, depth written, alpha 1 stored
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+            coverageToSamples(true);
             passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
-            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            coverageToSamples(false);
             return;
         }
-        glEnable(GL_BLEND);
-        // colour blended by coverage; alpha composited "over" (a + d (1 - a)): opaque over an opaque target
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        blendByCoverage(true);
         glDepthMask(false);
         passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(true);
-        glDisable(GL_BLEND);
+        blendByCoverage(false);
+    }
+
+    /** Turns alpha-to-coverage with alpha-to-one (plants opaque, coverage to samples) on or off. */
+    private static void coverageToSamples(boolean on) {
+        if (on) {
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+        } else {
+            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        }
+    }
+
+    /**
+     * Turns blending by coverage on or off: colour blended by alpha, alpha composited "over"
+     * (a + d (1 - a)), so plants stay opaque over an opaque target.
+     */
+    private static void blendByCoverage(boolean on) {
+        if (on) {
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        } else {
+            glDisable(GL_BLEND);
+        }
     }
 }
