@@ -27,7 +27,8 @@ import org.jecosys.world.TilePlacer;
  * frame the time of its fixed steps; at checkpoints the heap after a full GC, the tiles, plants and
  * components alive, the tiles built per second and the steps that waited for a tile. Then the same
  * cost per animated component for the meadow itself along its own camera path (2 workers), the figure
- * the walk's is measured against. Nothing is drawn.
+ * the walk's is measured against. Beside each step's wall time its CPU time ({@link StepClock}), and
+ * after the walk a fixed kernel paced the same way: the machine's own spread. Nothing is drawn.
  */
 final class OpenWorldSection implements Section {
     private static final double SPEED = 10;
@@ -80,12 +81,14 @@ final class OpenWorldSection implements Section {
                 + "2 animation workers, 1 tile worker, nothing drawn)", TILE, radius),
                 List.of("distance m", "heap after GC MB", "tiles alive", "plants alive", "components alive",
                         "tiles built per s", "step ms (median)", "step ms (p99)", "p99 / median",
-                        "ns per animated component (median)", "waits for a tile"));
+                        "step CPU p99 / median", "ns per animated component (median)", "waits for a tile"));
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         List<Object> raw = new ArrayList<>();
         double walkNs;
         double[] standing = null;
+        double[] floor = null;
         try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4)) {
+            StepClock clock = new StepClock("jecosys-world-");
             ViewCamera cam = new ViewCamera();
             cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
             cam.setLens(Math.toRadians(60), 16.0 / 9, 0.1, 1000);
@@ -104,6 +107,7 @@ final class OpenWorldSection implements Section {
             double end = checkpoints[checkpoints.length - 1];
             int frames = (int) Math.ceil(end / SPEED * RATE);
             double[] stepMs = new double[frames];
+            double[] cpuMs = new double[frames];
             double[] perComponent = new double[frames];
             int used = 0;
             int next = 0;
@@ -124,11 +128,14 @@ final class OpenWorldSection implements Section {
                 } else {
                     deadline = System.nanoTime();
                 }
+                long c0 = clock.cpuNanos();
                 long t0 = System.nanoTime();
                 int n = w.step(1 / RATE, cam);
                 long ns = System.nanoTime() - t0;
+                long cpu = clock.cpuNanos() - c0;
                 if (n > 0) {
                     stepMs[used] = ns / 1e6 / n;
+                    cpuMs[used] = cpu / 1e6 / n;
                     perComponent[used] = w.animatedComponents() > 0 ? (double) ns / n / w.animatedComponents() : 0;
                     used++;
                 }
@@ -139,11 +146,13 @@ final class OpenWorldSection implements Section {
                     double[] ms = java.util.Arrays.copyOfRange(stepMs, segment, used);
                     double median = Stats.median(ms);
                     double p99 = Stats.percentile(ms, 0.99);
+                    double[] cpus = java.util.Arrays.copyOfRange(cpuMs, segment, used);
+                    double cpuRatio = Stats.percentile(cpus, 0.99) / Stats.median(cpus);
                     double seconds = (x - since) / SPEED;
                     double builtPerSecond = (w.builtTiles() - builtBefore) / seconds;
                     double nsPer = Stats.median(java.util.Arrays.copyOfRange(perComponent, segment, used));
                     t.row(Math.round(x), heap, w.liveTiles(), w.livePlants(), w.liveComponents(), builtPerSecond,
-                            median, p99, p99 / median, nsPer, w.tileWaits() - waitsBefore);
+                            median, p99, p99 / median, cpuRatio, nsPer, w.tileWaits() - waitsBefore);
                     Map<String, Object> row = new LinkedHashMap<>();
                     row.put("distance", x);
                     row.put("heapMB", heap);
@@ -153,6 +162,7 @@ final class OpenWorldSection implements Section {
                     row.put("tilesBuiltPerSecond", builtPerSecond);
                     row.put("stepMedianMs", median);
                     row.put("stepP99Ms", p99);
+                    row.put("stepCpuP99OverMedian", cpuRatio);
                     row.put("nsPerAnimatedComponent", nsPer);
                     row.put("waits", w.tileWaits() - waitsBefore);
                     raw.add(row);
@@ -174,15 +184,21 @@ final class OpenWorldSection implements Section {
                 // the same world with the camera standing where the walk ended: no tile arrives, the same plants
                 // are animated at every step; what its steps spread by is the machine's, not the streaming's
                 double[] stand = new double[600];
+                double[] standCpu = new double[stand.length];
                 long next2 = System.nanoTime();
                 for (int f = 0; f < stand.length; f++) {
                     next2 += frameNanos;
                     java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, next2 - System.nanoTime()));
+                    long c0 = clock.cpuNanos();
                     long t0 = System.nanoTime();
                     int n = Math.max(1, w.step(1 / RATE, cam));
                     stand[f] = (System.nanoTime() - t0) / 1e6 / n;
+                    standCpu[f] = (clock.cpuNanos() - c0) / 1e6 / n;
                 }
-                standing = new double[] {Stats.median(stand), Stats.percentile(stand, 0.99)};
+                standing = new double[] {Stats.median(stand), Stats.percentile(stand, 0.99),
+                        Stats.percentile(standCpu, 0.99) / Stats.median(standCpu)};
+                // then the machine's own spread for a step of that length, paced the same way
+                floor = StepClock.floor(standing[0], RATE, stand.length);
             }
         }
         Map<String, Object> m = new LinkedHashMap<>();
@@ -190,9 +206,18 @@ final class OpenWorldSection implements Section {
         if (standing != null) {
             t.note(String.format(java.util.Locale.ROOT, "The camera then stood still where the walk ended for 20 s in "
                     + "real time (no tile arriving, the same plants animated at every step): step %.2f ms median, "
-                    + "%.2f ms p99 (%.2f times).", standing[0], standing[1], standing[1] / standing[0]));
+                    + "%.2f ms p99 (%.2f times; its CPU time %.2f times).", standing[0], standing[1],
+                    standing[1] / standing[0], standing[2]));
+            t.note(String.format(java.util.Locale.ROOT, "The machine's own spread: a fixed arithmetic kernel of about"
+                    + " that step's length, on one thread, paced the same way for 20 s (parked between runs):"
+                    + " %.2f ms median, %.2f ms p99 (%.2f times). The step's CPU time (the stepping thread and the"
+                    + " animation pool's, summed) leaves out the time a thread waited to run; its ratio is the"
+                    + " library's own spread.", floor[0], floor[1], floor[1] / floor[0]));
             m.put("standingStepMedianMs", standing[0]);
             m.put("standingStepP99Ms", standing[1]);
+            m.put("standingStepCpuP99OverMedian", standing[2]);
+            m.put("floorMedianMs", floor[0]);
+            m.put("floorP99Ms", floor[1]);
         }
         if (mode == Mode.SMOKE) {
             t.note("A smoke run walks a few metres within a radius of " + radius + " m and does not step the meadow "
