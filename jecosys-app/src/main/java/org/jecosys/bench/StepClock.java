@@ -8,8 +8,8 @@ import java.util.Arrays;
  * <ul>
  * <li>{@link #cpuNanos()}: the CPU time of the stepping thread and of the animation pool's threads
  * (found once by name), summed. It leaves out the time a thread waited to run (a virtual CPU parked by
- * its host, a thread woken late), which a wall clock counts; what it spreads by is the step's own
- * work: content, tile arrivals, the collector's pauses are in neither, its barriers in both.</li>
+ * its host, a thread woken late), which a wall clock counts, and a collector's pause; what it spreads
+ * by is the step's own work (its content, tile arrivals) and its workers' spinning at the barrier.</li>
  * <li>{@link #floor}: a fixed arithmetic kernel of about a step's length, paced like the walk (one
  * period of the rate, the thread parked in between). Its 99th percentile over its median is the
  * machine's own for any step of that length: there is nothing in the kernel to spread.</li>
@@ -27,6 +27,7 @@ final class StepClock {
      * The calling thread and the live threads whose names start with {@code poolPrefix}.
      *
      * @param poolPrefix the animation pool's thread-name prefix
+     * @throws IllegalStateException when no such thread is alive: the clock would count the caller only
      */
     StepClock(String poolPrefix) {
         long[] found = new long[64];
@@ -37,12 +38,10 @@ final class StepClock {
                 found[n++] = t.getId();
             }
         }
+        if (n == 1) {
+            throw new IllegalStateException("no live thread is named " + poolPrefix + "...: its CPU time would be left out");
+        }
         ids = Arrays.copyOf(found, n);
-    }
-
-    /** Threads counted, the stepping thread included. */
-    int threads() {
-        return ids.length;
     }
 
     /** CPU nanoseconds used so far by the counted threads (a thread that ended counts 0). */
