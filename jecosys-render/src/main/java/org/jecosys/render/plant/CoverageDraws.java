@@ -37,6 +37,8 @@ final class CoverageDraws {
     private static final float CORE = 0.996f;
     private boolean blendOnSamples = true;
     private boolean coreCut = true;
+    /** {@code uCoreCut} of the fringe's pass: parts that are all core are left out. */
+    private static final float FRINGE = -1f;
 
     /** Sets whether multisampled targets blend thin parts too (else alpha-to-coverage). */
     void setBlendOnSamples(boolean on) {
@@ -68,9 +70,10 @@ final class CoverageDraws {
             coverageToSamples(true);
             passes.drawTrianglesCore(batches, gpu.vaos, gpu.indexCount, look, levelMask);
             coverageToSamples(false);
-            passes.setCoreCut(0f);
             // the fringe: blended, depth tested but not written; the core's own fragments, at exactly the
-            // depth they wrote (the same programs), fail the strict test and are not blended again
+            // depth they wrote (the same programs), fail the strict test and are not blended again; parts
+            // that are all core (flower parts, meshes) are left out in the vertex shader (plant.vert)
+            passes.setCoreCut(FRINGE);
             blendByCoverage(true);
             glDepthMask(false);
             glDepthFunc(GL_LESS);
@@ -78,6 +81,7 @@ final class CoverageDraws {
             glDepthFunc(GL_LEQUAL);
             glDepthMask(true);
             blendByCoverage(false);
+            passes.setCoreCut(0f);
             return;
         }
         if (!passes.hasSplit()) {

@@ -15,7 +15,8 @@
 #include "plant_common.glsl"
 
 #ifndef SHADOW_CASTER
-uniform float uCoreCut;                          // > 0: the core's pass (plant.frag); parts without a core left out
+uniform float uCoreCut;                          // > 0: the core's pass (plant.frag); parts without a core left out;
+                                                 // < 0: the fringe's pass; parts without a fringe left out
 #endif
 
 #ifndef SHADOW_CASTER
@@ -58,6 +59,20 @@ void main() {
             gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
             return;
         }
+    }
+    // the fringe's pass: a flower part and a glTF mesh cover all of their drawn area (no widening, alpha 1
+    // everywhere, no image to cut it), so their fragments all lie in the core the pass before wrote
+    // and would fail the strict depth test: left out before any pose or light work
+    bool whole = aMesh.w > 0.5;
+#ifdef FLOWERS
+    whole = whole || aShape.x > 1.5;
+#endif
+#ifdef TEXTURED
+    whole = whole && aShape.z < -0.5;
+#endif
+    if (uCoreCut < 0.0 && whole) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
     }
 #endif
     int stride = int(aStride + 0.5);
