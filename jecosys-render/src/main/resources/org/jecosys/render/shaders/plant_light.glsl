@@ -69,7 +69,7 @@ vec3 windSheen(vec3 lit, float bend, vec2 dir, vec3 toEye) {
     toward *= 0.8 + 0.8 * g * g * g;
     float b = clamp(6.0 * bend, 0.0, 1.0);
     vec3 pale = lit * 1.25 + 0.35 * uFogColour * (uAmbient + 0.5 * uSunColour);
-    return mix(lit, pale, clamp(uSheen * b * toward, 0.0, 1.0));
+    return mix(lit, pale, clamp(1.3 * uSheen * b * toward, 0.0, 1.0));
 }
 
 // c lit at a point with surface normal (not normalised; 0: none), height metres above its part's
