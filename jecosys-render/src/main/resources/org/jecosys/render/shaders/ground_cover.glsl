@@ -42,5 +42,5 @@ vec3 coverSheen(vec3 lit, vec3 p, vec3 eye, float level) {
     float g = 1.0 - abs(view.y) / max(length(view), 1e-6);
     toward *= 0.8 + 0.8 * g * g * g;
     float k = uSheen * clamp(6.0 * bent * (1.0 / 1.2), 0.0, 1.0) * toward * clamp(level * 1.5, 0.0, 1.0);
-    return mix(lit, lit * 1.25 + uSheenLight, clamp(1.4 * k, 0.0, 1.0));
+    return mix(lit, lit * 1.25 + uSheenLight, clamp(1.4 * k, 0.0, 1.0)); // 1.4: as the plants' 1.3
 }

@@ -69,6 +69,8 @@ vec3 windSheen(vec3 lit, float bend, vec2 dir, vec3 toEye) {
     toward *= 0.8 + 0.8 * g * g * g;
     float b = clamp(6.0 * bend, 0.0, 1.0);
     vec3 pale = lit * 1.25 + 0.35 * uFogColour * (uAmbient + 0.5 * uSunColour);
+    // 1.3: at sheen 1 a gust shows in the middle and far field (block luma s.d. >= 4/255, WindSheenTest)
+    // now that the thin parts blend by their true coverage
     return mix(lit, pale, clamp(1.3 * uSheen * b * toward, 0.0, 1.0));
 }
 
