@@ -2,8 +2,6 @@ package org.jecosys.render;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.lang.reflect.Field;
-import java.lang.reflect.Method;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.World;
@@ -27,9 +25,7 @@ import org.junit.jupiter.api.Tag;
  * leave the sky colour), each placed on the terrain by its ray; mean luma of ground pixels within
  * 0.2 m of a plant base against those farther than 1 m from every base.
  *
- * <p>The sun direction is read from the renderer: {@code RenderSettings.sunX()/sunY()/sunZ()} when they
- * exist, else SceneRenderer's constants LX, LY, LZ (today's fixed sun), by reflection so this test
- * keeps working when the settings arrive.
+ * <p>The sun direction is the renderer's: {@code RenderSettings.lighting()}.
  * Tagged {@code slow} (many frames of the whole meadow on llvmpipe): it runs in
  * {@code mvn -B verify -Pnightly}, not in the default run.
  */
@@ -229,33 +225,10 @@ class LightingLooksTest {
         }
     }
 
-    /**
-     * The unit direction toward the sun the renderer lights with: {@code settings().sunX/Y/Z()} when
-     * RenderSettings has them, else SceneRenderer's constants LX, LY, LZ.
-     */
+    /** The unit direction toward the sun the renderer lights with ({@code RenderSettings.lighting()}). */
     static double[] sunDirection(SceneRenderer r) {
-        try {
-            RenderSettings st = r.settings();
-            Method mx = RenderSettings.class.getMethod("sunX");
-            Method my = RenderSettings.class.getMethod("sunY");
-            Method mz = RenderSettings.class.getMethod("sunZ");
-            return normal(((Number) mx.invoke(st)).doubleValue(), ((Number) my.invoke(st)).doubleValue(),
-                    ((Number) mz.invoke(st)).doubleValue());
-        } catch (NoSuchMethodException e) {
-            try {
-                return normal(constant("LX"), constant("LY"), constant("LZ"));
-            } catch (ReflectiveOperationException f) {
-                throw new IllegalStateException("no sun direction in RenderSettings or SceneRenderer", f);
-            }
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException("cannot read the sun direction", e);
-        }
-    }
-
-    private static double constant(String name) throws ReflectiveOperationException {
-        Field f = SceneRenderer.class.getDeclaredField(name);
-        f.setAccessible(true);
-        return f.getFloat(null);
+        Lighting l = r.settings().lighting();
+        return normal(l.sunX(), l.sunY(), l.sunZ());
     }
 
     private static double[] normal(double x, double y, double z) {
