@@ -117,17 +117,7 @@ class GustsFromAboveTest {
                     t0 = sim.latestFrame().time();
                 }
                 Img img = s.render(sim.latestFrame(), cam, true, true);
-                for (int j = 0; j < by; j++) {
-                    for (int i = 0; i < bx; i++) {
-                        double sum = 0;
-                        for (int y = j * BLOCK; y < (j + 1) * BLOCK; y++) {
-                            for (int x = i * BLOCK; x < (i + 1) * BLOCK; x++) {
-                                sum += ImageMetrics.luma(img.at(x, y));
-                            }
-                        }
-                        blocks[j * bx + i][f] = sum / (BLOCK * BLOCK);
-                    }
-                }
+                ImageMetrics.blockLuma(img, BLOCK, blocks, f);
                 for (int k = 0; k < lattice.count; k++) {
                     values[k][f] = window3(img, lattice.px[k], lattice.py[k]);
                 }

@@ -286,6 +286,26 @@ final class ImageMetrics {
         return new double[] {h, max == 0 ? 0 : d / max, max / 255};
     }
 
+    /**
+     * Writes the mean luma of each {@code block} x {@code block} tile of img (row-major from the bottom
+     * left, {@code width / block} per row, whole tiles only) into {@code series[tile][frame]}.
+     */
+    static void blockLuma(Img img, int block, double[][] series, int frame) {
+        int bx = img.width() / block;
+        int by = img.height() / block;
+        for (int j = 0; j < by; j++) {
+            for (int i = 0; i < bx; i++) {
+                double sum = 0;
+                for (int y = j * block; y < (j + 1) * block; y++) {
+                    for (int x = i * block; x < (i + 1) * block; x++) {
+                        sum += luma(img.at(x, y));
+                    }
+                }
+                series[j * bx + i][frame] = sum / (block * block);
+            }
+        }
+    }
+
     /** Population standard deviation; exactly 0 when every value is the same (no rounding left over). */
     static double sd(double[] v) {
         boolean same = true;

@@ -159,17 +159,7 @@ class WindSheenTest {
                         luma[y * W + x] = (int) Math.round(ImageMetrics.luma(img.at(x, y)));
                     }
                 }
-                for (int j = 0; j < by; j++) {
-                    for (int i = 0; i < bx; i++) {
-                        double sum = 0;
-                        for (int y = j * BLOCK; y < (j + 1) * BLOCK; y++) {
-                            for (int x = i * BLOCK; x < (i + 1) * BLOCK; x++) {
-                                sum += ImageMetrics.luma(img.at(x, y));
-                            }
-                        }
-                        series[j * bx + i][f] = sum / (BLOCK * BLOCK);
-                    }
-                }
+                ImageMetrics.blockLuma(img, BLOCK, series, f);
                 reversals.add(luma);
             }
         }
