@@ -23,7 +23,8 @@ import org.jecosys.math.Require;
  * {@link #settle} does the same for the wind at a given time (the simulation's first sample, at
  * t = 0), and {@link #resetToRest} puts plants at rest as a state that does follow (STATIC mode).
  * The mapping from D to the outputs lives in {@link BendGeometry}; the spring runs, their state and
- * their step in {@code SpringRuns}.
+ * their step in {@code SpringRuns}; the step of a plant range ({@link #animate}) in {@code RangeUpdate};
+ * the checks of the constructors' arrays in {@code StateArrays}.
  *
  * <h2>Update order</h2>
  * At construction the components of each plant are cut into <em>spring runs</em> ({@link SpringRuns}):
@@ -66,6 +67,8 @@ public final class AnimationState implements AnimationView {
     private final float[] plantCompliance;
     /** Per plant its force, whether it follows the wind, and the CONSTRAINT update ({@link PlantSprings}). */
     private final PlantSprings springs;
+    /** The step of a plant range: levels, then the mode's update ({@link #animate}). */
+    private final RangeUpdate ranges;
     /** Per plant, incremented whenever its deviations may have changed (an update, a reset). */
     private final long[] plantVersion;
     /** The flattening of plants whose species leave trails, or null when none does ({@link #useTrails}). */
@@ -146,47 +149,24 @@ public final class AnimationState implements AnimationView {
                           byte[] response, float[] compliance) {
         this.kinds = Require.nonNull("kinds", kinds);
         plants = Require.nonNull("plantSpecies", plantSpecies).length;
-        if (firstComponent.length != plants + 1 || plantX.length != plants || plantY.length != plants
-                || plantZ.length != plants) {
-            throw new IllegalArgumentException("firstComponent must hold plants + 1 = " + (plants + 1)
-                    + " values and plantX/Y/Z plants = " + plants);
-        }
-        components = componentKind.length;
-        if (geometry.componentCount() != components || firstComponent[plants] != components) {
-            throw new IllegalArgumentException("the bend geometry and firstComponent[plants] must match the "
-                    + components + " components");
-        }
+        // the checks in this order, so that a bad input gets the same message whatever else is wrong
+        components = StateArrays.components(plants, firstComponent, plantX, plantY, plantZ, componentKind, geometry);
         this.plantSpecies = plantSpecies.clone();
         this.firstComponent = firstComponent.clone();
         levels = new PlantLevels(lodEdges, plantSpecies, plantX, plantY, plantZ);
         lod = levels.bands;
-        for (int p = 0; p < plants; p++) {
-            if (firstComponent[p + 1] < firstComponent[p]) {
-                throw new IllegalArgumentException("firstComponent must not decrease, at plant " + p);
-            }
-        }
-        kind = new short[components];
-        for (int c = 0; c < components; c++) {
-            kind[c] = (short) Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
-        }
+        StateArrays.checkAscending(firstComponent, plants);
+        kind = StateArrays.kinds(kinds, componentKind);
         this.geometry = geometry;
         byte[] plantResponse = new byte[plants];
         plantCompliance = new float[plants];
-        if ((response != null && response.length != plants) || (compliance != null && compliance.length != plants)) {
-            throw new IllegalArgumentException("response and compliance must hold one value per plant (" + plants
-                    + ")");
-        }
-        for (int p = 0; p < plants; p++) {
-            plantResponse[p] = (byte) (response == null ? SpringKinds.NOMINAL_VARIANT
-                    : Require.range("response[" + p + "]", response[p], 0, SpringKinds.RESPONSE_VARIANTS - 1));
-            plantCompliance[p] = compliance == null ? 1f
-                    : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
-        }
+        StateArrays.variation(response, compliance, plantResponse, plantCompliance);
         runs = new SpringRuns(kinds, kind, this.firstComponent, plantCompliance);
         dev = runs.compDev;
         scattered = new ScatteredState(plants, components);
         plantVersion = new long[plants];
         springs = new PlantSprings(kinds, runs, scattered, plantVersion, plantResponse);
+        ranges = new RangeUpdate(kinds, levels, runs, scattered, springs, kind, this.firstComponent, plantVersion);
         resetToRest(0, plants);
         java.util.Arrays.fill(springs.live, false);
     }
@@ -306,13 +286,7 @@ public final class AnimationState implements AnimationView {
      * @param end   one past the last plant reset; {@code first <= end}
      */
     public void resetToRest(int first, int end) {
-        for (int p = first; p < end; p++) {
-            springs.rest(p);
-        }
-        runs.rest(runs.plantRun[first], runs.plantRun[end]);
-        if (trails != null) {
-            trails.clear(first, end);
-        }
+        springs.restRange(first, end);
     }
 
     /**
@@ -329,14 +303,7 @@ public final class AnimationState implements AnimationView {
      * @return plants settled
      */
     public int settle(int first, int end, AnimationStep step) {
-        int settled = 0;
-        for (int p = first; p < end; p++) {
-            if (step.visible[p]) {
-                springs.settle(p, step.windX[p], step.windZ[p]);
-                settled++;
-            }
-        }
-        return settled;
+        return springs.settleVisible(first, end, step);
     }
 
     /** Largest wind component the spring takes, m/s: far beyond any real wind, and |u|^2 stays finite. */
@@ -367,45 +334,7 @@ public final class AnimationState implements AnimationView {
      * @return components updated
      */
     public int animate(int first, int end, AnimationStep step) {
-        final AnimationMode mode = step.mode;
-        final boolean[] visible = step.visible;
-        final double eyeX = step.eyeX;
-        final double eyeY = step.eyeY;
-        final double eyeZ = step.eyeZ;
-        final int views = step.views;
-        // one view (or only the eye): its level-of-detail metric once, not per plant
-        final double scale2 = views == 0 ? 1 : step.viewScale2[0];
-        final double fixed2 = views == 0 ? -1 : step.viewFixed2[0];
-        // a range whose plants all take one level per species (step.bounds): no distance per plant
-        byte[] table = null;
-        if (views <= 1 && step.bounds != null) {
-            if (step.speciesLevel == null || step.speciesLevel.length != levels.species()) {
-                step.speciesLevel = new byte[levels.species()];
-            }
-            if (levels.uniform(step.bounds, step.boundsAt, eyeX, eyeY, eyeZ, scale2, fixed2, step.speciesLevel)) {
-                table = step.speciesLevel;
-            }
-        }
-        int updated = 0;
-        for (int p = first; p < end; p++) {
-            int l = table != null ? levels.assign(p, table)
-                    : views <= 1 ? levels.update(p, eyeX, eyeY, eyeZ, scale2, fixed2) : levels.update(p, step);
-            if (!visible[p]) {
-                springs.live[p] = false; // its state stops following the wind: it starts afresh when seen again
-                continue;
-            }
-            if (mode != AnimationMode.RANDOM) {
-                continue; // STATIC: nothing moves; CONSTRAINT: below
-            }
-            plantVersion[p]++;
-            updated += scattered.randomise(p, firstComponent[p], firstComponent[p + 1], 1 << l, runs, kind,
-                    kinds.lodMask, kinds.length, step.rng);
-            springs.live[p] = false;
-        }
-        if (mode == AnimationMode.CONSTRAINT) {
-            updated = springs.update(first, end, levels, step);
-        }
-        return updated;
+        return ranges.animate(first, end, step);
     }
 
     /** The plants' levels of detail (this package's tests). */
@@ -527,17 +456,7 @@ public final class AnimationState implements AnimationView {
 
     /** The plant of component c (binary search; not for per-frame use on every component). */
     public int plantOf(int c) {
-        int lo = 0;
-        int hi = plants - 1;
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (firstComponent[mid] <= c) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo;
+        return StateArrays.plantOf(firstComponent, plants, c);
     }
 
     /** Level of detail plant p was last animated at. */

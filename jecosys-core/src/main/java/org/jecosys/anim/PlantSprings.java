@@ -5,7 +5,8 @@ package org.jecosys.anim;
  * "Update order" there): per plant the force {@code P = |u| u} of its last update, whether its
  * state follows the wind, its response variant, and the update that drives its spring runs
  * ({@link SpringRuns}) from the force of the last update to that of the wind now, through its
- * flattening when its species leaves trails ({@link Trails}). A caller touches only its own plants,
+ * flattening when its species leaves trails ({@link Trails}); and the resets that put plants at rest
+ * or at the equilibrium of a wind. A caller touches only its own plants,
  * so disjoint plant ranges may run at once. Built once (allocates); nothing else allocates.
  */
 final class PlantSprings {
@@ -57,6 +58,37 @@ final class PlantSprings {
         live[p] = true;
         scattered.scattered[p] = false;
         version[p]++;
+    }
+
+    /**
+     * Puts plants {@code first .. end-1} and their spring runs at rest, with no remembered force and no
+     * flattening, as a state that follows the wind ({@link AnimationState#resetToRest}).
+     */
+    void restRange(int first, int end) {
+        for (int p = first; p < end; p++) {
+            rest(p);
+        }
+        runs.rest(runs.plantRun[first], runs.plantRun[end]);
+        if (trails != null) {
+            trails.clear(first, end);
+        }
+    }
+
+    /**
+     * Puts the visible plants of {@code first .. end-1} at the equilibrium of the step's wind, remembered
+     * as their force ({@link AnimationState#settle}); other plants are not touched.
+     *
+     * @return plants settled
+     */
+    int settleVisible(int first, int end, AnimationStep step) {
+        int settled = 0;
+        for (int p = first; p < end; p++) {
+            if (step.visible[p]) {
+                settle(p, step.windX[p], step.windZ[p]);
+                settled++;
+            }
+        }
+        return settled;
     }
 
     /** Puts plant p at the equilibrium of wind (ux, uz), m/s, remembered as its force; it then follows the wind. */
