@@ -1,7 +1,6 @@
 package org.jecosys.plant;
 
 import java.util.List;
-import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 
 /**
@@ -71,41 +70,9 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public ComponentDef {
-        Require.nonNull("id", id);
-        if (id.isEmpty()) {
-            throw new IllegalArgumentException("id must not be empty");
-        }
-        Require.nonNull("type", type);
-        Require.nonNull("shape", shape);
-        Require.range("count", count, 1, MAX_COUNT);
-        Require.range("segments", segments, 1, MAX_SEGMENTS);
-        Require.range("length", length, MIN_LENGTH, MAX_LENGTH);
-        Require.range("baseWidth", baseWidth, MIN_WIDTH, MAX_WIDTH);
-        Require.range("tipWidth", tipWidth, 0, MAX_WIDTH);
-        Require.degrees("curvature", curvature, -MAX_CURVATURE_DEGREES, MAX_CURVATURE_DEGREES);
-        Require.degrees("twist", twist, -MAX_TWIST_DEGREES, MAX_TWIST_DEGREES);
-        Require.degrees("tilt", tilt, 0, MAX_TILT_DEGREES);
-        Require.range("mass", mass, MIN_MASS, MAX_MASS);
-        Require.range("stiffness", stiffness, MIN_STIFFNESS, MAX_STIFFNESS);
-        Require.range("responseTime", responseTime, MIN_RESPONSE_TIME, MAX_RESPONSE_TIME);
-        Require.range("dragArea", dragArea, 0, MAX_DRAG_AREA);
-        Require.nonNull("colour", colour);
-        Require.range("attachAt", attachAt, MIN_ATTACH_AT, 1);
-        if (attachTo == null && attachAt != 1) {
-            throw new IllegalArgumentException("attachAt " + attachAt + " needs attachTo (a component on the ground "
-                    + "stands at its base)");
-        }
-        lodSegments = List.copyOf(Require.nonNull("lodSegments", lodSegments));
-        for (int i = 0; i < lodSegments.size(); i++) {
-            Require.range("lodSegments[" + i + "]", lodSegments.get(i), 0, segments);
-        }
-        if (texture != null && texture.isBlank()) {
-            throw new IllegalArgumentException("texture must not be blank (null for none)");
-        }
-        if (texture != null && mesh != null && !mesh.geometry().hasUvs()) {
-            throw new IllegalArgumentException("mesh '" + mesh.path() + "' has no texture coordinates (TEXCOORD_0) "
-                    + "for the texture '" + texture + "'");
-        }
+        lodSegments = ComponentDefChecks.check(id, type, shape, count, attachTo, segments, length, baseWidth,
+                tipWidth, curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture,
+                mesh, attachAt);
     }
 
     /**
@@ -474,11 +441,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
          * @return this builder
          */
         public Builder lodSegments(int... lodSegments) {
-            List<Integer> l = new java.util.ArrayList<>(lodSegments.length);
-            for (int v : lodSegments) {
-                l.add(v);
-            }
-            this.lodSegments = l;
+            this.lodSegments = ComponentDefChecks.list(lodSegments);
             return this;
         }
 
@@ -514,29 +477,7 @@ public record ComponentDef(String id, ComponentType type, ComponentShape shape, 
          * @throws IllegalArgumentException when a value is out of range (see {@link ComponentDef})
          */
         public ComponentDef build() {
-            List<String> missing = new java.util.ArrayList<>();
-            if (segments < 0) {
-                missing.add("segments");
-            }
-            if (Double.isNaN(length)) {
-                missing.add("length");
-            }
-            if (Double.isNaN(baseWidth)) {
-                missing.add("baseWidth");
-            }
-            if (Double.isNaN(mass)) {
-                missing.add("mass");
-            }
-            if (Double.isNaN(stiffness)) {
-                missing.add("stiffness");
-            }
-            if (lodSegments == null) {
-                missing.add("lodSegments");
-            }
-            if (!missing.isEmpty()) {
-                throw new IllegalStateException("component '" + id + "': set " + String.join(", ", missing)
-                        + " (no default in the scene schema)");
-            }
+            ComponentDefChecks.requireSet(id, segments, length, baseWidth, mass, stiffness, lodSegments);
             return new ComponentDef(id, type, shape, count, attachTo, segments, length, baseWidth, tipWidth,
                     curvature, twist, tilt, mass, stiffness, responseTime, dragArea, colour, lodSegments, texture, mesh,
                     attachAt);
