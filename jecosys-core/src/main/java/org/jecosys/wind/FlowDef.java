@@ -60,27 +60,8 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
      * @throws IllegalArgumentException when a component is null, empty or out of range
      */
     public FlowDef {
-        Require.nonNull("id", id);
-        if (id.isEmpty()) {
-            throw new IllegalArgumentException("id must not be empty");
-        }
-        Require.nonNull("kind", kind);
-        Require.range("x", x, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
-        Require.range("z", z, -Waypoint.MAX_COORDINATE, Waypoint.MAX_COORDINATE);
-        Require.range("strength", strength, kind == FlowKind.VORTEX ? -MAX_STRENGTH : 0, MAX_STRENGTH);
-        Require.degrees("direction", direction, -MAX_DIRECTION_DEGREES, MAX_DIRECTION_DEGREES);
-        Require.range("coreRadius", coreRadius, MIN_CORE_RADIUS, MAX_CORE_RADIUS);
-        Require.aboveOrInfinite("influenceRadius", influenceRadius, 0, MAX_INFLUENCE_RADIUS);
-        Require.nonNull("activation", activation);
-        Require.nonNull("motion", motion);
-        Require.range("noiseScale", noiseScale, MIN_NOISE_SCALE, MAX_NOISE_SCALE);
-        Require.above("noiseFrequency", noiseFrequency, 0, MAX_NOISE_FREQUENCY);
-        if (kind == FlowKind.RAIN && influenceRadius == Double.POSITIVE_INFINITY) {
-            throw new IllegalArgumentException("a rain flow needs a finite influenceRadius (the radius of the rain disc)");
-        }
-        Require.range("gustStrength", gustStrength, 0, MAX_GUST_STRENGTH);
-        Require.range("turbulence", turbulence, 0, MAX_TURBULENCE);
-        Require.range("gustStretch", gustStretch, 1, MAX_GUST_STRETCH);
+        FlowDefChecks.check(id, kind, x, z, strength, direction, coreRadius, influenceRadius, activation, motion,
+                noiseScale, noiseFrequency, gustStrength, turbulence, gustStretch);
     }
 
     /**
@@ -499,13 +480,7 @@ public record FlowDef(String id, FlowKind kind, boolean enabled, double x, doubl
          *                                  {@link ActivationDef})
          */
         public FlowDef build() {
-            if (Double.isNaN(strength)) {
-                throw new IllegalStateException("flow '" + id + "': set the strength (no default in the scene schema)");
-            }
-            if (kind == FlowKind.RAIN && !influenceSet) {
-                throw new IllegalStateException("flow '" + id + "': a RAIN flow needs its influenceRadius (the rain "
-                        + "disc; no default in the scene schema)");
-            }
+            FlowDefChecks.requireSet(id, kind, strength, influenceSet);
             return new FlowDef(id, kind, enabled, x, z, strength, direction, coreRadius, influenceRadius,
                     new ActivationDef(start, duration, rampIn, rampOut), motion, noiseScale, noiseFrequency, seed,
                     gustStrength, turbulence, gustStretch);
