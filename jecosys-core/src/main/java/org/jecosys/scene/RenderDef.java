@@ -1,6 +1,5 @@
 package org.jecosys.scene;
 
-import org.jecosys.math.Require;
 import org.jecosys.math.Rgb;
 
 /**
@@ -79,21 +78,8 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          * @throws IllegalArgumentException when a component is null or out of range
          */
         public Light {
-            Require.range("clouds", clouds, 0, 1);
-            Require.range("sheen", sheen, 0, MAX_SHEEN);
-            Require.range("shadows", shadows, 0, 1);
-            Require.degrees("sunAzimuth", sunAzimuth, -MAX_AZIMUTH_DEGREES, MAX_AZIMUTH_DEGREES);
-            Require.degrees("sunElevation", sunElevation, 0, MAX_ELEVATION_DEGREES);
-            Require.nonNull("sunColour", sunColour);
-            Require.range("sunIntensity", sunIntensity, 0, MAX_INTENSITY);
-            Require.nonNull("skyZenith", skyZenith);
-            Require.nonNull("ambient", ambient);
-            Require.range("contactShadow", contactShadow, 0, 1);
-            Require.range("fogStart", fogStart, 0, MAX_FOG);
-            Require.range("fogEnd", fogEnd, 0, MAX_FOG);
-            if (!(fogEnd > fogStart)) {
-                throw new IllegalArgumentException("fogEnd must be > fogStart (" + fogStart + "), got " + fogEnd);
-            }
+            RenderDefChecks.light(sunAzimuth, sunElevation, sunColour, sunIntensity, skyZenith, ambient, contactShadow,
+                    fogStart, fogEnd, sheen, shadows, clouds);
         }
 
         /**
@@ -151,8 +137,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          * @throws IllegalArgumentException when a component is out of range
          */
         public Patches {
-            Require.range("scale", scale, MIN_SCALE, MAX_SCALE);
-            Require.range("strength", strength, 0, 1);
+            RenderDefChecks.patches(scale, strength);
         }
 
         /** The defaults: 12 m patches at strength 0.3, seed 1. */
@@ -215,13 +200,7 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
          * @throws IllegalArgumentException when a component is null or out of range
          */
         public GroundCover {
-            Require.range("amount", amount, 0, 1);
-            Require.range("height", height, MIN_HEIGHT, MAX_HEIGHT);
-            Require.range("density", density, 0, MAX_DENSITY);
-            Require.range("reach", reach, 0, MAX_REACH);
-            Require.range("spread", spread, MIN_SPREAD, MAX_SPREAD);
-            Require.nonNull("colour", colour);
-            Require.nonNull("dryColour", dryColour);
+            RenderDefChecks.groundCover(amount, height, density, reach, spread, colour, dryColour);
         }
 
         /** {@return whether there is any cover to draw ({@link #amount()} above 0)} */
@@ -303,18 +282,8 @@ public record RenderDef(int width, int height, Rgb sky, double lodTransition, Ti
      * @throws IllegalArgumentException when a component is null or out of range
      */
     public RenderDef {
-        Require.range("width", width, 16, 8192);
-        Require.range("height", height, 16, 8192);
-        Require.nonNull("sky", sky);
-        Require.range("lodTransition", lodTransition, 0, 10);
-        Require.nonNull("terrainTint", terrainTint);
-        Require.nonNull("light", light);
-        Require.nonNull("patches", patches);
-        Require.nonNull("groundCover", groundCover);
-        if (antialiasing != 1 && antialiasing != 2 && antialiasing != 4 && antialiasing != 8) {
-            throw new IllegalArgumentException("antialiasing must be 1, 2, 4 or 8 samples per pixel, got "
-                    + antialiasing);
-        }
+        RenderDefChecks.render(width, height, sky, lodTransition, terrainTint, light, patches, antialiasing,
+                groundCover);
     }
 
     /**
