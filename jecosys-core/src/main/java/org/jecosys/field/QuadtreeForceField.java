@@ -300,13 +300,7 @@ public final class QuadtreeForceField implements ForceField {
         float cz = centZ[n];
         int[] probe = neighbours.probes();
         if (!sameCut) {
-            // the node at the middle of each edge, just outside (a centroid is a function of the tree alone)
-            double ex = 1e-4 * (t.maxX[n] - t.minX[n]);
-            double ez = 1e-4 * (t.maxZ[n] - t.minZ[n]);
-            probe[o] = neighbour(t.maxX[n] + ex, cz);
-            probe[o + 1] = neighbour(t.minX[n] - ex, cz);
-            probe[o + 2] = neighbour(cx, t.maxZ[n] + ez);
-            probe[o + 3] = neighbour(cx, t.minZ[n] - ez);
+            neighbours.lookUp(t, n, o, cx, cz, stamp, rep, current);
         }
         NodeGradient g = fit;
         g.clear();
@@ -324,28 +318,6 @@ public final class QuadtreeForceField implements ForceField {
             gradZX[n] = (float) g.zx;
             gradZZ[n] = (float) g.zz;
         }
-    }
-
-    /** The effective node of the last update holding ground point (x, z), metres, or -1 (outside, invisible). */
-    private int neighbour(double x, double z) {
-        Quadtree t = tree;
-        if (!(x >= t.minX[0] && x <= t.maxX[0] && z >= t.minZ[0] && z <= t.maxZ[0])) {
-            return -1;
-        }
-        int m = 0;
-        while (stamp[m] == current) {
-            if (rep[m] >= 0) {
-                return rep[m];
-            }
-            int fc = t.firstChild[m];
-            if (fc < 0) {
-                return -1;
-            }
-            float mx = (t.minX[m] + t.maxX[m]) * 0.5f;
-            float mz = (t.minZ[m] + t.maxZ[m]) * 0.5f;
-            m = fc + (x >= mx ? 1 : 0) + (z >= mz ? 2 : 0);
-        }
-        return -1;
     }
 
     /** Makes the next update look every edge neighbour up again (tests: the reuse changes nothing). */
