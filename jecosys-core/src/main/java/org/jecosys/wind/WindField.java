@@ -10,6 +10,7 @@ import org.joml.Vector2d;
  * along their paths or with the other flows (advection), and manages runtime flows for games:
  * agents (a flow attached to a moving entity), blasts, rain showers and a game's own
  * {@link WindSource} implementations, which are summed, switched and advanced like the built-ins.
+ * The sums over the flows of some kinds (the gusts, the flows that flatten) are in {@code FlowSums}.
  *
  * <p>Switches: the sum of the flows jumps when a flow is added, removed, enabled or disabled, or when
  * its activation window opens or closes without a ramp. {@link #advance} reports the earliest such
@@ -395,13 +396,7 @@ public final class WindField {
      * @return m/s, &gt;= 0
      */
     public double eddySpeed() {
-        double s = 0;
-        for (int i = 0; i < count; i++) {
-            if (flows[i] instanceof GustFlow g) {
-                s += g.eddySpeed(time);
-            }
-        }
-        return s;
+        return FlowSums.eddySpeed(flows, count, time);
     }
 
     /**
@@ -414,21 +409,7 @@ public final class WindField {
      * @return {@code dest}
      */
     public Vector2d gustTravel(Vector2d dest) {
-        double sx = 0;
-        double sz = 0;
-        double sw = 0;
-        for (int i = 0; i < count; i++) {
-            if (flows[i] instanceof GustFlow g) {
-                double w = g.weight(time);
-                if (w > 0) {
-                    g.travel(dest);
-                    sx += w * dest.x;
-                    sz += w * dest.y;
-                    sw += w;
-                }
-            }
-        }
-        return sw > 0 ? dest.set(sx / sw, sz / sw) : dest.set(0, 0);
+        return FlowSums.gustTravel(flows, count, time, dest);
     }
 
     /**
@@ -449,13 +430,7 @@ public final class WindField {
      * Owner thread; no allocation.
      */
     public int flatteningCount() {
-        int n = 0;
-        for (int i = 0; i < count; i++) {
-            if (flattens(flows[i].kind()) && flows[i].weight(time) > 0) {
-                n++;
-            }
-        }
-        return n;
+        return FlowSums.flatteningCount(flows, count, time);
     }
 
     /**
@@ -469,23 +444,7 @@ public final class WindField {
      * @return {@code dest}
      */
     public Vector2d flatteningVelocity(double x, double z, Vector2d dest) {
-        double sx = 0;
-        double sz = 0;
-        Vector2d t = tmp;
-        for (int i = 0; i < count; i++) {
-            WindSource f = flows[i];
-            if (!flattens(f.kind())) {
-                continue;
-            }
-            if (f instanceof FlowBase b) {
-                b.velocity(x, z, time, t);
-            } else {
-                f.velocity(x, z, time, t);
-            }
-            sx += t.x;
-            sz += t.y;
-        }
-        return dest.set(sx, sz);
+        return FlowSums.flatteningVelocity(flows, count, time, x, z, tmp, dest);
     }
 
     /** {@return the number of flows enabled and inside their activation window now (weight &gt; 0)} No allocation. */
