@@ -1,6 +1,5 @@
 package org.jecosys.sim;
 
-import java.util.Arrays;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
@@ -32,7 +31,8 @@ import org.jecosys.world.TileStreamer;
  * which worker ran it, so the state of every tile is bit-identical for any number of workers). A tile
  * whose box no view's frustum meets, now and at the last step, only advances its clock and flows
  * ({@link #idleTiles()}): its plants were sampled unseen at the last step, so they rest as unseen
- * plants do and start at the wind's equilibrium when seen.
+ * plants do and start at the wind's equilibrium when seen. The step's tiles and the workers that step
+ * them are kept in {@code TileSteps}.
  *
  * <p>Threads: one stepping thread calls {@link #step}, {@link #stepFixed}, {@link #addView},
  * {@link #removeView}, {@link #tile(int)} and the counters; {@link #close} any thread. A step
@@ -54,22 +54,12 @@ public final class OpenWorld implements AutoCloseable {
     private final PlantModel model;
     private final TilePlacer placer;
     private final TileStreamer<WorldTile> tiles;
-    private final WorkerPool pool;
+    /** The live tiles of a step and the animation workers that step them. */
+    private final TileSteps tileSteps;
     private final double fixedStep;
     private final int maxSubSteps;
     private final Object lock = new Object();
-    /** The live tiles of the step being run, read by the workers. */
-    private final WorldTile[] stepTiles;
-    private volatile int stepCount;
-    private volatile Camera stepCamera;
-    private final int[] tileAnimated;
     private Camera[] views = new Camera[0];
-    private final double[] viewX = new double[Simulation.MAX_VIEWS];
-    private final double[] viewZ = new double[Simulation.MAX_VIEWS];
-    private final org.joml.FrustumIntersection[] frusta = new org.joml.FrustumIntersection[Simulation.MAX_VIEWS];
-    private final org.joml.Matrix4f matrix = new org.joml.Matrix4f();
-    /** The tallest plant of any species, metres. */
-    private final double tallest;
     private int idleTiles;
     private double accumulator;
     private double time;
@@ -134,29 +124,12 @@ public final class OpenWorld implements AutoCloseable {
         this.placer = placer;
         Require.range("workers", workers, 1, 256);
         this.fixedStep = def.animation().fixedStep();
-        for (int v = 0; v < frusta.length; v++) {
-            frusta[v] = new org.joml.FrustumIntersection();
-        }
-        tallest = WorldTile.tallest(def.species());
+        double tallest = WorldTile.tallest(def.species());
         this.maxSubSteps = def.animation().maxSubSteps();
         builds = new TileBuilds(def, model, placer, () -> closed);
         tiles = new TileStreamer<>(placer.tileSize(), builds, radius, placer.tileSize(), tileWorkers, budget,
                 TILE_LATENCY);
-        int most = tiles.maxLiveTiles() * Simulation.MAX_VIEWS;
-        stepTiles = new WorldTile[most];
-        tileAnimated = new int[most];
-        pool = new WorkerPool("jecosys-world", workers, most, (k, worker) -> {
-            if (k < stepCount) {
-                WorldTile t = stepTiles[k];
-                if (t.idle) {
-                    t.simulation.loop.idleStep();
-                    tileAnimated[k] = 0;
-                } else {
-                    t.simulation.loop.stepFixed(stepCamera);
-                    tileAnimated[k] = t.simulation.loop.chunkAnimator.animated();
-                }
-            }
-        });
+        tileSteps = new TileSteps(tiles.maxLiveTiles() * Simulation.MAX_VIEWS, workers, tallest);
     }
 
     /**
@@ -200,73 +173,21 @@ public final class OpenWorld implements AutoCloseable {
         synchronized (lock) {
             checkOpen();
             if (flows.count() > 0) {
-                flows.expire(time, stepTiles, startedTiles());
+                flows.expire(time, tileSteps.tiles, tileSteps.started(tiles));
             }
-            viewX[0] = camera.x();
-            viewZ[0] = camera.z();
-            for (int v = 0; v < views.length; v++) {
-                viewX[v + 1] = views[v].x();
-                viewZ[v + 1] = views[v].z();
-            }
+            int viewCount = tileSteps.viewsAt(camera, views);
             builds.loading = true; // the update may wait for a tile that is due: the workers must be let through
             try {
-                tiles.update(viewX, viewZ, 1 + views.length);
+                tiles.update(tileSteps.viewX, tileSteps.viewZ, viewCount);
             } finally {
                 builds.loading = false;
             }
-            int viewCount = 1 + views.length;
-            for (int v = 0; v < viewCount; v++) {
-                frusta[v].set((v == 0 ? camera : views[v - 1]).viewProjection(matrix), false);
-            }
-            int n = tiles.liveTiles();
-            int idle = 0;
-            for (int k = 0; k < n; k++) {
-                WorldTile t = tiles.live(k);
-                boolean outside = t.outside(frusta, viewCount, tallest);
-                t.idle = outside && t.wasOutside;
-                t.wasOutside = outside;
-                idle += t.idle ? 1 : 0;
-                if (!t.started) {
-                    t.start(time, flows, thinning);
-                }
-                if (t.views != views) {
-                    t.syncViews(views);
-                }
-                stepTiles[k] = t;
-            }
-            Arrays.fill(stepTiles, n, stepTiles.length, null);
-            stepCount = n;
-            stepCamera = camera;
-            builds.stepping = true;
-            try {
-                pool.start();
-                pool.await();
-            } finally {
-                builds.stepping = false;
-                builds.stepEnded = System.nanoTime();
-            }
-            long sum = 0;
-            for (int k = 0; k < n; k++) {
-                sum += tileAnimated[k];
-            }
-            animated = sum;
+            int idle = tileSteps.gather(tiles, camera, views, time, flows, thinning);
+            animated = tileSteps.run(camera, builds);
             idleTiles = idle;
-            stepCamera = null;
             steps++;
             time += fixedStep;
         }
-    }
-
-    /** The started live tiles, for a change of the flows (stepping thread; no allocation). */
-    private int startedTiles() {
-        int n = 0;
-        for (int k = 0; k < tiles.liveTiles(); k++) {
-            WorldTile t = tiles.live(k);
-            if (t.started) {
-                stepTiles[n++] = t;
-            }
-        }
-        return n;
     }
 
     /**
@@ -282,7 +203,7 @@ public final class OpenWorld implements AutoCloseable {
     public void addFlow(FlowDef def) {
         synchronized (lock) {
             checkOpen();
-            flows.add(def, Double.POSITIVE_INFINITY, stepTiles, startedTiles(), this.def);
+            flows.add(def, Double.POSITIVE_INFINITY, tileSteps.tiles, tileSteps.started(tiles), this.def);
         }
     }
 
@@ -299,7 +220,7 @@ public final class OpenWorld implements AutoCloseable {
             if (k < 0) {
                 return false;
             }
-            flows.remove(k, stepTiles, startedTiles());
+            flows.remove(k, tileSteps.tiles, tileSteps.started(tiles));
             return true;
         }
     }
@@ -321,7 +242,7 @@ public final class OpenWorld implements AutoCloseable {
             if (k < 0) {
                 throw new IllegalArgumentException("no flow '" + id + "' was added to the open world");
             }
-            flows.move(k, x, z, stepTiles, startedTiles());
+            flows.move(k, x, z, tileSteps.tiles, tileSteps.started(tiles));
         }
     }
 
@@ -341,7 +262,7 @@ public final class OpenWorld implements AutoCloseable {
         synchronized (lock) {
             checkOpen();
             FlowDef d = WorldFlows.blast(id, x, z, strength, duration, time);
-            flows.add(d, time + duration, stepTiles, startedTiles(), this.def);
+            flows.add(d, time + duration, tileSteps.tiles, tileSteps.started(tiles), this.def);
         }
     }
 
@@ -529,7 +450,7 @@ public final class OpenWorld implements AutoCloseable {
     public void close() {
         closed = true;
         synchronized (lock) {
-            pool.close();
+            tileSteps.close();
             tiles.close();
         }
     }
