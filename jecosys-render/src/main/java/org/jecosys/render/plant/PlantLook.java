@@ -1,6 +1,9 @@
 package org.jecosys.render.plant;
 
+import java.util.List;
 import org.jecosys.math.Require;
+import org.jecosys.plant.SpeciesModel;
+import org.jecosys.plant.VariationDef;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.ground.ShadowParams;
 
@@ -42,6 +45,17 @@ public final class PlantLook {
     /** No variation and no patches for {@code species} species. Allocates. */
     public PlantLook(int species) {
         variation = new float[3 * species];
+    }
+
+    /**
+     * Sets each species' colour variation from its def, species s from {@code models.get(s)}: the hue and
+     * dry tips as they are, the brightness spread at most 1 ({@link #setVariation}). Build time.
+     */
+    void setVariations(List<SpeciesModel> models) {
+        for (int s = 0; s < models.size(); s++) {
+            VariationDef v = models.get(s).def().variation();
+            setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
+        }
     }
 
     public void setVariation(int s, float hueDeg, float value, float dryTips) {

@@ -189,6 +189,15 @@ public final class PlantMeshes {
         return out;
     }
 
+    /** {@return per species of {@code models}, in order, whether it has flower parts ({@link #hasFlowerParts})} */
+    static boolean[] flowerParts(List<SpeciesModel> models) {
+        boolean[] flowers = new boolean[models.size()];
+        for (int s = 0; s < flowers.length; s++) {
+            flowers[s] = hasFlowerParts(models.get(s));
+        }
+        return flowers;
+    }
+
     /** {@return whether any component of the species is a flower part (a petal or a head)} */
     public static boolean hasFlowerParts(SpeciesModel m) {
         for (int slot = 0; slot < m.slotCount(); slot++) {

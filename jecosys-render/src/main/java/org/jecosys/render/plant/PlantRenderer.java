@@ -1,25 +1,19 @@
 package org.jecosys.render.plant;
 
-
 import java.nio.FloatBuffer;
 import java.util.List;
 import org.jecosys.math.Camera;
 import org.jecosys.math.Require;
 import org.jecosys.plant.SpeciesModel;
-import org.jecosys.plant.VariationDef;
 import org.jecosys.render.GlContext;
 import org.jecosys.render.Lighting;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.ResolvePath;
-import org.jecosys.render.gl.GlInts;
 import org.jecosys.render.ground.ShadowParams;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.sim.Frame;
 import org.jecosys.sim.ViewDecision;
 import org.jecosys.sim.World;
-import org.joml.Matrix4f;
-import org.lwjgl.opengl.GL13C;
-import org.lwjgl.system.MemoryUtil;
 
 /**
  * Draws every plant of a {@link World} from a {@link Frame} (paper §4.1-4.2; see also
@@ -45,7 +39,9 @@ import org.lwjgl.system.MemoryUtil;
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
  * The GL objects and their upload layout live in {@code PlantGpu}, the per-component uploads and the
  * resolve pass in {@code ComponentResolver}, which this renderer owns and closes; the draw programs'
- * variants and the draws in {@code PlantPasses}; what a frame's passes share in a {@code PassContext}.
+ * variants and the draws in {@code PlantPasses}; what a frame's passes share in a {@code PassContext};
+ * the camera and target the near plants are prepared for (the decision for another camera) in
+ * {@code NearView}.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
@@ -71,12 +67,9 @@ public final class PlantRenderer implements AutoCloseable {
     private final World world;
     private final PlantBatches batches;
     private final PlantGpu gpu;
-    private final FloatBuffer matrix;
-    private final Matrix4f viewProj = new Matrix4f();
-    /** The decision for a camera the frame's own decision was not made for (another view, a cut). */
-    private final ViewDecision view;
+    /** The camera and target the near plants are prepared for: their decision and view values. */
+    private final NearView near;
     private final PlantPasses passes;
-    private final GlInts query;
     private final PlantLook look;
     /** The last {@link #prepareNear}'s view, light, haze, pixel size and frame, for the passes after it. */
     private final PassContext context;
@@ -84,13 +77,6 @@ public final class PlantRenderer implements AutoCloseable {
     /** For the bench's breakdown only: bit l set = draw level l (lists are still uploaded). */
     private int levelMask = ~0;
     private boolean closed;
-
-    /** Plants a camera may draw unanimated before {@link #prepareNear} says so (the field's one-step lag). */
-    static final int STILL_PLANTS = 50;
-    /** Whether a camera no view covers was reported (once per renderer). */
-    private boolean saidStill;
-    /** Band plants are drawn whole below this many samples per pixel ({@link #setWholePlantsBelow}). */
-    private int wholePlantsBelow = 2;
     /** How partial coverage goes on the target: blended (core, fringe) or alpha-to-coverage. */
     private final CoverageDraws coverage;
 
@@ -143,39 +129,29 @@ public final class PlantRenderer implements AutoCloseable {
         gl.checkThread();
         this.world = world;
         this.batches = new PlantBatches(world);
-        this.view = new ViewDecision(world);
+        ViewDecision view = new ViewDecision(world);
         List<SpeciesModel> models = world.plants().species();
         gpu = new PlantGpu(gl, world, batches, path, shared);
-        boolean[] flowers = new boolean[models.size()];
-        for (int s = 0; s < flowers.length; s++) {
-            flowers[s] = PlantMeshes.hasFlowerParts(models.get(s));
-        }
-        FloatBuffer mat = null;
-        GlInts q = null;
+        boolean[] flowers = PlantMeshes.flowerParts(models);
+        NearView n = null;
         try {
-            mat = MemoryUtil.memAllocFloat(16);
-            q = new GlInts();
+            n = new NearView(view);
             // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
             // use here alive past its deletion
             passes = new PlantPasses(gpu.programs, flowers);
             coverage = new CoverageDraws();
         } catch (RuntimeException | Error e) {
-            MemoryUtil.memFree((java.nio.Buffer) mat);
-            if (q != null) {
-                q.close();
+            if (n != null) {
+                n.close();
             }
             gpu.close();
             throw e;
         }
-        matrix = mat;
-        query = q;
+        near = n;
         context = new PassContext();
-        context.viewProj = matrix;
+        context.viewProj = near.matrix;
         look = new PlantLook(models.size());
-        for (int s = 0; s < models.size(); s++) {
-            VariationDef v = models.get(s).def().variation();
-            look.setVariation(s, (float) v.hue(), (float) Math.min(1, v.value()), (float) v.dryTips());
-        }
+        look.setVariations(models);
     }
 
     /** {@return the path the per-component pass runs on, for the HUD and reports} */
@@ -320,7 +296,7 @@ public final class PlantRenderer implements AutoCloseable {
      * @param minSamples in [0, 64]
      */
     public void setWholePlantsBelow(int minSamples) {
-        wholePlantsBelow = Require.range("minSamples", minSamples, 0, 64);
+        near.wholePlantsBelow = Require.range("minSamples", minSamples, 0, 64);
     }
 
     /**
@@ -355,21 +331,8 @@ public final class PlantRenderer implements AutoCloseable {
                     + world.componentCount());
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
-        int targetSamples = query.get(GL13C.GL_SAMPLES);
-        batches.setWholePlants(targetSamples < wholePlantsBelow);
-        if (frame.decidedFor(camera, viewProj)) {
-            batches.update(frame); // the step's own decision, made by the workers for this very camera
-        } else {
-            view.decide(frame, camera); // any other view: decided here, every plant's state is in the frame
-            batches.update(frame, view.levels(), view.keeps());
-            // (a frame no step has written yet, before the first fixed step, stands still for every view)
-            if (!saidStill && frame.decided() && view.unanimated() > Math.max(STILL_PLANTS, view.drawn() / 10)) {
-                saidStill = true;
-                java.util.logging.Logger.getLogger("org.jecosys.render").warning("JEcoSys: a camera draws "
-                        + view.unanimated() + " of its " + view.drawn() + " plants standing still: no view of the "
-                        + "simulation sees them; register the camera with Simulation.addView (said once)");
-            }
-        }
+        int targetSamples = near.target(batches);
+        near.decide(frame, camera, batches);
         passes.resetCounts();
         pending = batches.instances() > 0;
         context.frame = frame;
@@ -377,12 +340,7 @@ public final class PlantRenderer implements AutoCloseable {
             return;
         }
         gpu.resolver.upload(frame);
-        camera.viewProjection(viewProj);
-        viewProj.get(matrix);
-        context.setEye((float) camera.x(), (float) camera.y(), (float) camera.z());
-        context.setPixel((float) (camera.viewHeightAtEye() / viewportHeight),
-                (float) (camera.viewHeightPerMetre() / viewportHeight));
-        context.headScale = viewportHeight / (float) HEAD_REFERENCE_HEIGHT;
+        near.setCamera(camera, viewportHeight, context);
         gpu.resolver.frame(look, context);
         gpu.resolver.resolve(look);
         context.multisampled = targetSamples > 1;
@@ -523,8 +481,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         closed = true;
         gpu.close();
-        MemoryUtil.memFree((java.nio.Buffer) matrix);
-        query.close();
+        near.close();
     }
 
     /** {@return the pose buffer's layout, see {@link PlantMeshes#poseTexelLayout}} (tests and benchmarks) */
