@@ -4,7 +4,6 @@ import org.jecosys.render.gl.Closing;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glViewport;
-import static org.lwjgl.opengl.GL11C.glDepthMask;
 
 import org.jecosys.field.FieldDebugView;
 import org.jecosys.math.Require;
@@ -18,7 +17,6 @@ import org.jecosys.render.ground.SunShadow;
 import org.jecosys.render.ground.ShadowParams;
 import org.jecosys.render.ground.SunShadowMap;
 import org.jecosys.render.ground.CoverBlades;
-import org.jecosys.render.ground.CoverSkin;
 import org.jecosys.render.ground.TerrainRenderer;
 import org.jecosys.render.overlay.FieldOverlay;
 import org.jecosys.render.plant.PlantRenderer;
@@ -31,8 +29,10 @@ import org.jecosys.render.ResolvePath;
  * {@link #render(Frame, Camera)}). With sun shadows on the {@link ShadowPath#MAP} path it first draws
  * the plants resolved for the view into the sun's shadow map (SunShadowMap), which the plants, the
  * ground cover and the terrain then read. Owns the sky, terrain, ground-cover (blades and skin),
- * plant, shadow-map and overlay renderers. Render thread only; {@link #render} allocates nothing in the steady state (changing the
- * tint or LOD band re-uploads or rebuilds once).
+ * plant, shadow-map and overlay renderers (the ground and sky passes are drawn by {@code GroundPass}, the
+ * shadow map by {@code SunShadowPass}; the pass timing is kept by {@code PassTiming}). Render thread only;
+ * {@link #render} allocates nothing in the steady state (changing the tint or LOD band re-uploads or
+ * rebuilds once).
  *
  * <p>A new context: each {@link #render} first asks {@link GlContext#follow()} whether the host
  * replaced its context (jMonkeyEngine's {@code app.restart()}); if so it forgets the old objects
@@ -44,8 +44,8 @@ public final class SceneRenderer implements AutoCloseable {
     private final World world;
     private TerrainRenderer terrain;
     private CoverBlades cover;
-    /** The cover over a host's own ground (terrain off), made at the first frame that draws it. */
-    private CoverSkin skin;
+    /** The ground and sky passes, with the cover's skin over a host's own ground. */
+    private final GroundPass ground;
     private PlantRenderer plants;
     private SkyRenderer sky;
     private FieldOverlay overlay;
@@ -73,8 +73,8 @@ public final class SceneRenderer implements AutoCloseable {
      */
     boolean drawTerrain = true;
     boolean drawPlants = true;
-    /** The GPU timer queries of {@link #setPassTiming}; null while off. */
-    private GpuPassTimer timer;
+    /** The GPU timer queries of {@link #setPassTiming}, while on. */
+    private final PassTiming timing;
 
     /**
      * Uploads everything static of the world, and puts back every GL state that uploading changes
@@ -107,6 +107,8 @@ public final class SceneRenderer implements AutoCloseable {
         this.path = path;
         castReach = SunShadowMap.castReach(world);
         shadowMap = new SunShadowPass(gl, shadow);
+        ground = new GroundPass(gl, shadow);
+        timing = new PassTiming(gl);
         build();
     }
 
@@ -171,27 +173,7 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     static {
-        org.jecosys.render.internal.SceneParts.grant(new org.jecosys.render.internal.SceneParts.Access() {
-            @Override
-            public PlantRenderer plants(SceneRenderer r) {
-                return r.plants;
-            }
-
-            @Override
-            public TerrainRenderer terrain(SceneRenderer r) {
-                return r.terrain;
-            }
-
-            @Override
-            public CoverBlades cover(SceneRenderer r) {
-                return r.cover;
-            }
-
-            @Override
-            public FieldOverlay overlay(SceneRenderer r) {
-                return r.overlay;
-            }
-        });
+        org.jecosys.render.internal.SceneParts.grant(new ScenePartsAccess());
     }
 
     /** The plant renderer (internal: {@code SceneParts}; its batches hold the per-frame counters). */
@@ -262,17 +244,12 @@ public final class SceneRenderer implements AutoCloseable {
      */
     public void setPassTiming(boolean on) {
         gl.checkThread();
-        if (on && timer == null) {
-            timer = new GpuPassTimer(org.jecosys.render.gl.SoftwareGl.is(gl.describe()));
-        } else if (!on && timer != null) {
-            timer.close();
-            timer = null;
-        }
+        timing.set(on);
     }
 
     /** {@return the passes' GPU times so far ({@link #setPassTiming}), or null while timing is off} Render thread. */
     public PassTimes passTimes() {
-        return timer == null ? null : timer.times();
+        return timing.times();
     }
 
     /** {@return the near ground-cover blades drawn by the last {@link #render}} */
@@ -361,15 +338,15 @@ public final class SceneRenderer implements AutoCloseable {
         if (width <= 0 || height <= 0) {
             return;
         }
-        if (timer == null) {
+        if (!timing.on()) {
             drawPasses(frame, camera, vx, vy, width, height);
             return;
         }
-        timer.begin();
+        timing.begin();
         try {
             drawPasses(frame, camera, vx, vy, width, height);
         } finally {
-            timer.end();
+            timing.end();
         }
     }
 
@@ -389,7 +366,7 @@ public final class SceneRenderer implements AutoCloseable {
         float ly = light.sunY();
         float lz = light.sunZ();
         // the ground maps first, so the cover blades and the terrain of this frame read the same shadows
-        mark(PassTimes.Pass.GROUND_MAPS);
+        timing.mark(PassTimes.Pass.GROUND_MAPS);
         terrain.prepareShadows(settings);
         shadow.clear();
         boolean map = shadowPath() == ShadowPath.MAP && settings.shadows() > 0
@@ -399,10 +376,10 @@ public final class SceneRenderer implements AutoCloseable {
             plants.setLighting(light);
             plants.setPatches(settings.patchScale(), settings.patchStrength(), settings.patchSeed());
             plants.setSheen(settings.sheen());
-            mark(PassTimes.Pass.RESOLVE);
+            timing.mark(PassTimes.Pass.RESOLVE);
             plants.prepareNear(frame, camera, height);
             if (map) {
-                mark(PassTimes.Pass.SHADOW_MAP);
+                timing.mark(PassTimes.Pass.SHADOW_MAP);
                 shadowMap.draw(plants, settings, Math.min(settings.shadowReach(), castReach), camera, lx, ly, lz,
                         vx, vy, width, height);
             }
@@ -415,70 +392,37 @@ public final class SceneRenderer implements AutoCloseable {
             cover.prepare(frame);
         }
         if (drawPlants && !blendedNear) {
-            mark(PassTimes.Pass.NEAR_PLANTS);
+            timing.mark(PassTimes.Pass.NEAR_PLANTS);
             plants.drawPreparedNear();
             if (withCover) {
-                mark(PassTimes.Pass.COVER);
+                timing.mark(PassTimes.Pass.COVER);
                 cover.draw(frame, camera, settings, terrain.maps());
             }
         }
-        mark(PassTimes.Pass.GROUND);
-        drawGround(camera, settings);
+        timing.mark(PassTimes.Pass.GROUND);
+        ground.drawGround(camera, settings, terrain, cover, drawTerrain, drawPlants);
         if (blendedNear) {
             if (withCover) {
-                mark(PassTimes.Pass.COVER);
+                timing.mark(PassTimes.Pass.COVER);
                 cover.draw(frame, camera, settings, terrain.maps());
             }
-            mark(PassTimes.Pass.SKY);
-            drawSky(camera, settings); // under the plants' fringe, which writes no depth
-            mark(PassTimes.Pass.NEAR_PLANTS);
+            timing.mark(PassTimes.Pass.SKY);
+            GroundPass.drawSky(sky, camera, settings); // under the plants' fringe, which writes no depth
+            timing.mark(PassTimes.Pass.NEAR_PLANTS);
             plants.drawPreparedNear();
         } else {
-            mark(PassTimes.Pass.SKY);
-            drawSky(camera, settings);
+            timing.mark(PassTimes.Pass.SKY);
+            GroundPass.drawSky(sky, camera, settings);
         }
         if (drawPlants) {
-            mark(PassTimes.Pass.FAR_PLANTS);
+            timing.mark(PassTimes.Pass.FAR_PLANTS);
             plants.drawFar();
         }
         glDisable(GL_DEPTH_TEST);
         OverlaySettings shown = settings.overlays();
         if (field != null && (shown.showField() || shown.showWind())) {
-            mark(PassTimes.Pass.OVERLAY);
+            timing.mark(PassTimes.Pass.OVERLAY);
             overlay.draw(field, camera, shown, vx, vy, width, height);
-        }
-    }
-
-    /** Starts timing {@code pass} on the GPU when pass timing is on ({@link #setPassTiming}). */
-    private void mark(PassTimes.Pass pass) {
-        if (timer != null) {
-            timer.next(pass);
-        }
-    }
-
-    /** The sky where nothing is drawn yet (depth still 1), when the settings clear; before any blended plants. */
-    private void drawSky(Camera camera, RenderSettings settings) {
-        if (settings.clear()) {
-            glDepthMask(false);
-            this.sky.draw(camera, settings);
-            glDepthMask(true);
-        }
-    }
-
-    /** The library's terrain, or the cover skin over a host's ground, as the settings ask. */
-    private void drawGround(Camera camera, RenderSettings settings) {
-        if (drawTerrain && settings.terrain()) {
-            if (drawPlants) {
-                terrain.draw(camera, settings);
-            } else {
-                terrain.drawBare(camera, settings); // the ground as it is without the vegetation
-            }
-        } else if (drawPlants && !settings.terrain() && settings.coverSkin() && terrain.prepareCover(settings)) {
-            if (skin == null) {
-                skin = new CoverSkin(gl, terrain, cover);
-                skin.useShadowMap(shadow);
-            }
-            skin.draw(camera, settings); // the cover over the host's own ground
         }
     }
 
@@ -502,14 +446,10 @@ public final class SceneRenderer implements AutoCloseable {
 
     /** A new context: forgets the old objects (no GL call, {@code GlTracker}) and makes them again. Allocates. */
     private void rebuild() {
-        Closing.closeAll(skin, shadowMap, overlay, sky, plants, cover, terrain, state);
-        skin = null;
-        boolean timed = timer != null;
-        timer = null; // its queries died with the old context: forgotten, not deleted
+        Closing.closeAll(ground, shadowMap, overlay, sky, plants, cover, terrain, state);
+        boolean timed = timing.forget(); // its queries died with the old context: forgotten, not deleted
         build();
-        if (timed) {
-            timer = new GpuPassTimer(org.jecosys.render.gl.SoftwareGl.is(gl.describe()));
-        }
+        timing.set(timed);
     }
 
     /**
@@ -526,8 +466,8 @@ public final class SceneRenderer implements AutoCloseable {
                 state.save();
             }
             try {
-                Closing.closeAll(current ? timer : null, skin, shadowMap, overlay, sky, plants, cover, terrain);
-                timer = null;
+                Closing.closeAll(current ? timing : null, ground, shadowMap, overlay, sky, plants, cover, terrain);
+                timing.forget();
             } finally {
                 if (current) {
                     state.restore();
