@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Issue 41's wind measure as the issue states it: the meadow in its own wind seen from 15 m up and
- * oblique (the camera of {@link FromAboveFlickerTest}), 150 frames at 480x270, one fixed step each.
+ * oblique (the camera of {@link FromAboveFlickerTest}), 150 frames at 480x270, 1/30 s of wind each.
  * <ul>
  * <li><b>Strength</b>: the temporal s.d. of the mean luma of 16x16 blocks (at least half vegetation
  * standing on the terrain: not the ground beyond it),
@@ -40,12 +40,18 @@ import org.junit.jupiter.api.Test;
  * delayed by a lag; its peak gives a speed, which the issue asks within 20% of the mean wind's (taken
  * as the gusts' travel speed the simulation reports, {@code WindField.gustTravel}).</li>
  * </ul>
- * One frame is one fixed step (1/60 s), as in {@link WindSheenTest}: 150 frames are 2.5 s of wind. The
- * assertions hold what the picture shows today (middle 5.25/255, far 2.93, least second 1.37, across
- * 1.55 times along with the wind 60 degrees off the view, travel 6.32 m/s against 4.00), with a margin,
- * so that it does not get weaker unnoticed; the issue's figures are not met, and the printed line gives
- * each against the issue's. Tagged {@code slow} (150 frames
- * of the whole meadow): it runs in {@code mvn -B verify -Pnightly}.
+ * One frame is 1/30 s of wind, as the render command draws them ({@code ./jecosys render}: its
+ * HeadlessRender.FRAME_DT): 150 frames are the 5 s over which the issue saw "pale mottles drift like
+ * cloud shadows". (Until the meadow's wind was retuned this test stepped 1/60 s per frame, as
+ * {@link WindSheenTest} does, and so watched only 2.5 s.) With the meadow's wind as shipped (gusts
+ * 7 m along the wind and 6 times that across it, gustStrength 1, turbulence 0.45) it reads middle
+ * 9.91/255, far 8.40, bands 3.72 times longer across than along with the wind 60 degrees off the view
+ * (the across length reaches the lattice's 10 m limit), travel 4.29 m/s against 4.00 (+7%): issue 41's
+ * figures, which the assertions hold. Within 1 s windows it reads 1.42/255 at least (the first second,
+ * while the plants, settled at their equilibrium in the wind at t = 0 and still, pick up speed; the median window 2.28), short of
+ * the issue's 3: that assertion holds today's figure with a margin, and the printed line gives it
+ * against the issue's. Tagged {@code slow} (150 frames of the whole meadow): it runs in
+ * {@code mvn -B verify -Pnightly}.
  */
 @Tag("slow")
 class GustsFromAboveTest {
@@ -60,6 +66,8 @@ class GustsFromAboveTest {
     /** Metres between a point and its downwind partner in the travel measure. */
     private static final double TRAVEL = 2.0;
     private static final int MAX_LAG = 60;
+    /** Scene seconds between frames: the render command's (its HeadlessRender.FRAME_DT). */
+    private static final double FRAME_DT = 1.0 / 30;
 
     @Test
     void gustsRunOverTheMeadowAsBandsSeenFromFifteenMetresUp() {
@@ -112,7 +120,7 @@ class GustsFromAboveTest {
             values = new double[lattice.count][FRAMES];
             double t0 = 0;
             for (int f = 0; f < FRAMES; f++) {
-                sim.stepFixed(cam);
+                sim.step(FRAME_DT, cam);
                 if (f == 0) {
                     t0 = sim.latestFrame().time();
                 }
@@ -129,10 +137,14 @@ class GustsFromAboveTest {
         for (int band = 1; band <= 2; band++) {
             middleFar[band - 1] = medianSd(blocks, veg, bx, by, bandRows[band], bandRows[band + 1], 0, FRAMES);
         }
-        double leastSecond = Double.POSITIVE_INFINITY;
+        double[] seconds = new double[FRAMES - second + 1];
         for (int w = 0; w + second <= FRAMES; w++) {
-            leastSecond = Math.min(leastSecond, medianSd(blocks, veg, bx, by, bandRows[1], bandRows[3], w, w + second));
+            seconds[w] = medianSd(blocks, veg, bx, by, bandRows[1], bandRows[3], w, w + second);
         }
+        double leastSecond = Arrays.stream(seconds).min().orElse(0);
+        double[] sortedSeconds = seconds.clone();
+        Arrays.sort(sortedSeconds);
+        double medianSecond = sortedSeconds[sortedSeconds.length / 2];
         for (double[] v : values) {
             double mean = Arrays.stream(v).average().orElse(0);
             for (int f = 0; f < FRAMES; f++) {
@@ -157,22 +169,22 @@ class GustsFromAboveTest {
         }
         double seen = peak > 0 ? TRAVEL / (peak * dt) : Double.POSITIVE_INFINITY;
         System.out.printf(Locale.ROOT, "[look] gusts from 15 m up, %d frames at %dx%d: block luma s.d. middle %.2f, far"
-                        + " %.2f (issue 41 asks >= 8); least over 1 s windows %.2f (asks >= 3); %d ground points: pattern"
+                        + " %.2f (issue 41 asks >= 8); least over 1 s windows %.2f (asks >= 3; median window %.2f); %d ground points: pattern"
                         + " half-correlation length along the wind %.2f m, across %.2f m (ratio %.2f, asks >= 2; wind %.0f deg"
                         + " from the view's direction); 2 m downwind correlates best %d frames later (%.3f; %.3f at lag"
                         + " 0): %.2f m/s against %.2f m/s (%+.0f%%, asks within 20%%)%n",
-                FRAMES, W, H, middleFar[0], middleFar[1], leastSecond, lattice.count, along, across, across / along,
+                FRAMES, W, H, middleFar[0], middleFar[1], leastSecond, medianSecond, lattice.count, along, across, across / along,
                 windAngle, peak, best, atZero, seen, speed, 100 * (seen / speed - 1));
         assertTrue(lattice.count >= 500, "ground points seen in the middle and far field: " + lattice.count);
-        // today's figures (middle 5.25, far 2.93, 1 s 1.37, ratio 1.55, +58%) with a margin: the issue's are not met
-        assertTrue(middleFar[0] >= 2.5 && middleFar[1] >= 1.5, "the wind shows in the middle and far field: "
+        // issue 41's figures where they are met (middle, far, bands, travel); every second: today's 1.42 with a margin
+        assertTrue(middleFar[0] >= 8 && middleFar[1] >= 8, "the wind shows in the middle and far field (>= 8/255): "
                 + Arrays.toString(middleFar));
-        assertTrue(leastSecond >= 0.6, "every second shows the wind: " + leastSecond);
-        assertTrue(across >= 1.2 * along, "gust patterns longer across the wind than along it: " + across + " vs "
-                + along + " m");
+        assertTrue(leastSecond >= 1.2, "every second shows the wind: " + leastSecond);
+        assertTrue(across >= 2 * along, "gust patterns at least twice as long across the wind as along it: " + across
+                + " vs " + along + " m");
         assertTrue(peak > 0 && best >= atZero + 0.03, "the pattern travels downwind: peak at " + peak
                 + " frames, " + best + " against " + atZero + " at lag 0");
-        assertTrue(seen >= 0.5 * speed && seen <= 2 * speed, "it travels at " + seen + " m/s, the gusts at " + speed);
+        assertTrue(Math.abs(seen / speed - 1) <= 0.2, "it travels at " + seen + " m/s, the gusts at " + speed);
     }
 
     /**
