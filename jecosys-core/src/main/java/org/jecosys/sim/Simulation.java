@@ -18,39 +18,8 @@ import org.jecosys.wind.WindSource;
  * force field (§3), the dynamic-constraint animation of every component (§4.2) on worker threads,
  * and the published frames the renderer reads. See the package documentation for a game loop.
  *
- * <h2>Stepping</h2>
- * {@link #step(double, Camera)} adds real time to an accumulator and runs as many fixed steps
- * ({@link AnimationDef#fixedStep()}) as it holds, at most {@link AnimationDef#maxSubSteps()}; the
- * backlog beyond that is dropped (the meadow slows down rather than spiral). One fixed step:
- * <ol>
- * <li>the queued commands (flows, agents, mode, field, LOD) are applied;</li>
- * <li>the workers animate fixed chunks of plants ({@code ChunkAnimator}) from the force field's result
- * for the end of this step, writing the back frame;</li>
- * <li>at the same time the stepping thread advances the wind clock and updates the force field for
- * the end of the <em>next</em> step (visibility and LOD from the camera given now), so the field and
- * the animation run concurrently (§5.1) without either waiting for the other's data, then helps with
- * the chunks left. Visibility thus follows the camera one fixed step late. With N workers, N - 1
- * pool threads and the stepping thread animate; with 1, the stepping thread does everything;</li>
- * <li>the frame is published (triple buffering, {@link FrameExchange}).</li>
- * </ol>
- * With the field off ({@link #setFieldEnabled}) no flow is evaluated and no culling is done: every
- * plant is visible and feels no wind (paper Table 6's "Force field disabled").
- *
- * <h2>Start</h2>
- * In CONSTRAINT mode with the paper's field on, the constructor puts every plant at the equilibrium
- * of the flows at its position at t = 0 (one evaluation per plant, once), so the frames before the
- * first step already show the meadow in the wind. The first step samples the field at t = 0 as well (the
- * force its spring update starts from; when the plants were not settled at construction, the plants
- * it sees are settled on it), then for the end of the step as usual. A plant that comes into view
- * later starts at the equilibrium of the wind it then feels ({@code AnimationState}). When the flows
- * switch within a step (a window opens or closes, a flow is added, removed or switched:
- * {@link WindField#lastEdge}), that step's spring update changes the force at the sub-interval
- * boundary of the switch instead of spreading it over the step ({@code SpringKinds.prepare}).
- *
- * <h2>Determinism</h2>
- * Chunks are fixed by the world (about {@value #CHUNK_COMPONENTS} components each), random mode uses
- * one random stream per chunk, and nothing sums floating-point values across chunks, so the state
- * (see {@link Inspection#stateHash()}) is bit-identical for any number of workers.
+ * <p>How a step runs, how the meadow starts in the wind and why the state is the same for any number
+ * of workers: the package documentation ("How a simulation steps", "Start", "Determinism").
  *
  * <h2>Threads</h2>
  * <ul>
@@ -118,7 +87,7 @@ public final class Simulation implements AutoCloseable {
      *                 ({@link ImageSource#folder})
      * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (the package documentation's "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read
      */
     public static Simulation create(SimulationDef def, Path baseDir, int workers, Progress progress)
@@ -135,7 +104,7 @@ public final class Simulation implements AutoCloseable {
      * @param images   where the heightmap and resource images come from
      * @param workers  animation workers, in [0, 256]; 0 keeps the def's setting
      * @param progress receives the long generation steps
-     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (the package documentation's "Start"); the caller closes it
      * @throws IOException when an image of the def cannot be read or decoded
      */
     public static Simulation create(SimulationDef def, ImageSource images, int workers, Progress progress)
@@ -153,7 +122,7 @@ public final class Simulation implements AutoCloseable {
      * @param world   the world, built from {@code def} (e.g. {@link World#build})
      * @param def     what the world was built from: flows, field and animation settings
      * @param workers animation workers in [0, 256]; 0 keeps the def's setting
-     * @return the simulation at time 0, in the wind of t = 0 (see "Start"); the caller closes it
+     * @return the simulation at time 0, in the wind of t = 0 (the package documentation's "Start"); the caller closes it
      */
     public static Simulation of(World world, SimulationDef def, int workers) {
         return of(world, def, workers, ForceFieldFactory.QUADTREE);
@@ -171,7 +140,7 @@ public final class Simulation implements AutoCloseable {
      * @param workers animation workers in [0, 256]; 0 keeps the def's setting (whose 0 means the
      *                available processors)
      * @param fields  builds the force field, called once on this thread
-     * @return the simulation at time 0, in the wind of t = 0 (see "Start")
+     * @return the simulation at time 0, in the wind of t = 0 (the package documentation's "Start")
      * @throws IllegalArgumentException on null arguments, a bad worker count, or a field that does
      *                                  not hold exactly the world's plants
      */

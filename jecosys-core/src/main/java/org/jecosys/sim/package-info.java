@@ -40,5 +40,43 @@
  * Reading the state: {@code sim.inspect().state()} is a read-only {@code AnimationView}; {@code latestFrame()}
  * is what one render thread reads (a second thread calling it is refused); any other thread copies
  * frames with {@code copyLatestFrame(frame)}. Frames are never torn.
+ *
+ * <h2>How a simulation steps</h2>
+ * {@link org.jecosys.sim.Simulation#step(double, org.jecosys.math.Camera)} adds real time to an
+ * accumulator and runs as many fixed steps ({@link org.jecosys.anim.AnimationDef#fixedStep()}) as it
+ * holds, at most {@link org.jecosys.anim.AnimationDef#maxSubSteps()}; the backlog beyond that is
+ * dropped (the meadow slows down rather than spiral). One fixed step:
+ * <ol>
+ * <li>the queued commands (flows, agents, mode, field, LOD) are applied;</li>
+ * <li>the workers animate fixed chunks of plants ({@code ChunkAnimator}) from the force field's result
+ * for the end of this step, writing the back frame;</li>
+ * <li>at the same time the stepping thread advances the wind clock and updates the force field for
+ * the end of the <em>next</em> step (visibility and LOD from the camera given now), so the field and
+ * the animation run concurrently (§5.1) without either waiting for the other's data, then helps with
+ * the chunks left. Visibility thus follows the camera one fixed step late. With N workers, N - 1
+ * pool threads and the stepping thread animate; with 1, the stepping thread does everything;</li>
+ * <li>the frame is published (triple buffering, {@code FrameExchange}).</li>
+ * </ol>
+ * With the field off ({@link org.jecosys.sim.Simulation#setFieldEnabled}) no flow is evaluated and no
+ * culling is done: every plant is visible and feels no wind (paper Table 6's "Force field
+ * disabled").
+ *
+ * <h2>Start</h2>
+ * In CONSTRAINT mode with the paper's field on, a new simulation puts every plant at the equilibrium
+ * of the flows at its position at t = 0 (one evaluation per plant, once), so the frames before the
+ * first step already show the meadow in the wind. The first step samples the field at t = 0 as well (the
+ * force its spring update starts from; when the plants were not settled at construction, the plants
+ * it sees are settled on it), then for the end of the step as usual. A plant that comes into view
+ * later starts at the equilibrium of the wind it then feels ({@code AnimationState}). When the flows
+ * switch within a step (a window opens or closes, a flow is added, removed or switched:
+ * {@link org.jecosys.wind.WindField#lastEdge}), that step's spring update changes the force at the
+ * sub-interval boundary of the switch instead of spreading it over the step
+ * ({@code SpringKinds.prepare}).
+ *
+ * <h2>Determinism</h2>
+ * Chunks are fixed by the world (about {@value org.jecosys.sim.Simulation#CHUNK_COMPONENTS}
+ * components each), random mode uses one random stream per chunk, and nothing sums floating-point
+ * values across chunks, so the state (see {@link org.jecosys.sim.Inspection#stateHash()}) is
+ * bit-identical for any number of workers.
  */
 package org.jecosys.sim;
