@@ -380,7 +380,8 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * Queues switching the force field on or off (see the class comment). Any thread; allocates a command.
+     * Queues switching the force field on or off (see the package documentation, "How a simulation
+     * steps"). Any thread; allocates a command.
      *
      * @param enabled whether the field evaluates flows and culls plants
      * @throws IllegalStateException when {@link #MAX_PENDING_COMMANDS} commands are already queued
