@@ -18,32 +18,9 @@ import org.jecosys.wind.WindSource;
  * force field (§3), the dynamic-constraint animation of every component (§4.2) on worker threads,
  * and the published frames the renderer reads. See the package documentation for a game loop.
  *
- * <p>How a step runs, how the meadow starts in the wind and why the state is the same for any number
- * of workers: the package documentation ("How a simulation steps", "Start", "Determinism").
- *
- * <h2>Threads</h2>
- * <ul>
- * <li>{@link #step}, {@link #stepFixed} and the stepping-thread methods of {@link #inspect()} (the state
- * hash, the animated state, the force field, the wind a plant felt, the clock): one <em>stepping
- * thread</em> at a time (the game loop), never concurrently with a step.</li>
- * <li>{@link #latestFrame()}: one reader thread (the renderer, the first thread that calls it),
- * concurrently with steps; it never blocks and never sees a frame being written. Another thread that
- * calls it while the reader lives gets an IllegalStateException. {@link #copyLatestFrame(Frame)}:
- * any number of threads, concurrently with steps and the reader; each gets a complete copy.</li>
- * <li>Commands ({@link #addFlow}, {@link #removeFlow}, {@link #attachAgent}, {@link #moveAgent},
- * {@link #blast}, {@link #setFlowEnabled}, {@link #setMode}, {@link #setFieldEnabled},
- * {@link #setLodScale}): any thread; checked by the call (the same ranges as the scene schema;
- * duplicate flow ids and more than {@link #MAX_FLOWS} flows are refused there), queued and applied
- * at the start of the next fixed step. A step applies at most the commands queued when it started,
- * so producers can never keep it from returning; at most {@link #MAX_PENDING_COMMANDS} wait at a
- * time, and a command past that is refused with an IllegalStateException (back-pressure: step more
- * often or send fewer). They allocate a small command, except {@link #moveAgent}, which allocates
- * nothing after a flow's first move; steps allocate nothing after warm-up, on the
- * stepping thread and on every worker.</li>
- * <li>{@link #close()}: any thread, any time, idempotent: it refuses every later step and command
- * ({@code IllegalStateException}), waits for a running step to end its fixed step, and stops the
- * workers.</li>
- * </ul>
+ * <p>How a step runs, how the meadow starts in the wind, why the state is the same for any number
+ * of workers, and which thread may call what: the package documentation ("How a simulation steps",
+ * "Start", "Determinism", "Threads"); each method says its thread too.
  */
 public final class Simulation implements AutoCloseable {
     /** Target components per fixed chunk of plants. */

@@ -78,5 +78,32 @@
  * components each), random mode uses one random stream per chunk, and nothing sums floating-point
  * values across chunks, so the state (see {@link org.jecosys.sim.Inspection#stateHash()}) is
  * bit-identical for any number of workers.
+ *
+ * <h2>Threads</h2>
+ * <ul>
+ * <li>{@link Simulation#step}, {@link Simulation#stepFixed} and the stepping-thread methods of
+ * {@link Simulation#inspect()} (the state hash, the animated state, the force field, the wind a plant
+ * felt, the clock): one <em>stepping thread</em> at a time (the game loop), never concurrently with a
+ * step.</li>
+ * <li>{@link Simulation#latestFrame()}: one reader thread (the renderer, the first thread that calls
+ * it), concurrently with steps; it never blocks and never sees a frame being written. Another thread
+ * that calls it while the reader lives gets an IllegalStateException.
+ * {@link Simulation#copyLatestFrame(Frame)}: any number of threads, concurrently with steps and the
+ * reader; each gets a complete copy.</li>
+ * <li>Commands ({@link Simulation#addFlow}, {@link Simulation#removeFlow},
+ * {@link Simulation#attachAgent}, {@link Simulation#moveAgent}, {@link Simulation#blast},
+ * {@link Simulation#setFlowEnabled}, {@link Simulation#setMode}, {@link Simulation#setFieldEnabled},
+ * {@link Simulation#setLodScale}): any thread; checked by the call (the same ranges as the scene
+ * schema; duplicate flow ids and more than {@link Simulation#MAX_FLOWS} flows are refused there),
+ * queued and applied at the start of the next fixed step. A step applies at most the commands queued
+ * when it started, so producers can never keep it from returning; at most
+ * {@link Simulation#MAX_PENDING_COMMANDS} wait at a time, and a command past that is refused with an
+ * IllegalStateException (back-pressure: step more often or send fewer). They allocate a small
+ * command, except {@link Simulation#moveAgent}, which allocates nothing after a flow's first move;
+ * steps allocate nothing after warm-up, on the stepping thread and on every worker.</li>
+ * <li>{@link Simulation#close()}: any thread, any time, idempotent: it refuses every later step and
+ * command ({@code IllegalStateException}), waits for a running step to end its fixed step, and stops
+ * the workers.</li>
+ * </ul>
  */
 package org.jecosys.sim;
