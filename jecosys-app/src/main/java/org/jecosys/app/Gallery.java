@@ -133,9 +133,9 @@ final class Gallery {
                             }
                             Frame frame = sim.latestFrame();
                             renderer.settings().setShadowPath(v.shadows());
-                            fb.bind();
-                            renderer.render(frame, v.camera(), width, height);
-                            fb.resolve();
+                            HeadlessRender.accumulate(fb);
+                            fb.resetHistory();
+                            HeadlessRender.drawStill(fb, renderer, frame, v.camera(), width, height);
                             Pixels.read(width, height, px);
                             files.writeFile(out.resolve(v.file()),
                                     temporary -> Pixels.writePng(temporary, px, width, height));

@@ -38,6 +38,31 @@ import org.lwjgl.system.MemoryUtil;
 final class HeadlessRender {
     /** Scene seconds between rendered frames. */
     static final double FRAME_DT = 1.0 / 30;
+    /**
+     * Frames of temporal accumulation ({@link GlFramebuffer#setAccumulation}) in the viewer, the render
+     * command and the gallery, wherever the scene's framebuffer is multisampled: the whole jitter pattern.
+     */
+    static final int ACCUMULATION = 16;
+
+    /** Turns temporal accumulation on ({@link #ACCUMULATION} frames) when the framebuffer is multisampled. */
+    static void accumulate(GlFramebuffer fb) {
+        if (fb.samples() > 1) {
+            fb.setAccumulation(ACCUMULATION);
+        }
+    }
+
+    /**
+     * Draws a frame held still and resolves it: with accumulation on, as many jittered frames of it as the
+     * running mean holds, so that a still picture shows what a view held still would; otherwise once.
+     */
+    static void drawStill(GlFramebuffer fb, SceneRenderer renderer, Frame frame, org.jecosys.math.Camera camera,
+                          int width, int height) {
+        for (int i = 0; i < Math.max(1, fb.accumulation()); i++) {
+            fb.bind();
+            renderer.render(frame, fb.jittered(camera, true), width, height);
+            fb.resolve();
+        }
+    }
     /** Side of the map images, pixels. */
     static final int MAP_SIDE = 512;
 
@@ -121,12 +146,18 @@ final class HeadlessRender {
             try (GlFramebuffer fb = new GlFramebuffer(GlContexts.tracker(gl), width, height, def.render().antialiasing());
                  SceneRenderer renderer = new SceneRenderer(gl, world, settings(def.render()))) {
                 renderer.setField(sim.inspect().forceField().debugView());
+                accumulate(fb);
                 for (int i = 1; i <= frames; i++) {
                     sim.step(FRAME_DT, camera);
                     Frame frame = sim.latestFrame();
-                    fb.bind();
-                    renderer.render(frame, camera, width, height);
-                    fb.resolve();
+                    if (i == 1) {
+                        // the first picture as a view held still shows it; later ones as the plants move
+                        drawStill(fb, renderer, frame, camera, width, height);
+                    } else {
+                        fb.bind();
+                        renderer.render(frame, fb.jittered(camera, false), width, height);
+                        fb.resolve();
+                    }
                     Pixels.read(width, height, px);
                     files.writeFile(out.resolve(frameName(i)), temporary -> Pixels.writePng(temporary, px, width, height));
                 }

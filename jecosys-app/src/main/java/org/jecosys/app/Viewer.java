@@ -116,6 +116,7 @@ final class Viewer {
                  GizmoRenderer gizmos = new GizmoRenderer(gl, ground);
                  ImGuiLayer ui = new ImGuiLayer(gl, window)) {
                 renderer.setField(sim.inspect().forceField().debugView());
+                HeadlessRender.accumulate(target);
                 SceneEditor editor = new SceneEditor(def, sim, settings);
                 SceneSaver saver = new SceneSaver(file, SceneSaver.shippedFolder());
                 ViewerControls controls = new ViewerControls(def, sim, editor, saver, fly, input);
@@ -170,10 +171,12 @@ final class Viewer {
                 target.resize(w, h);
             }
             target.bind();
-            renderer.render(frame, camera, w, h);
+            // the plants move in the wind every frame: accumulation keeps a short mean where they drew
+            org.jecosys.math.Camera drawn = target.jittered(camera, false);
+            renderer.render(frame, drawn, w, h);
             if (controls.showGizmos() || controls.showWind()) {
                 gizmoRenderer.render(controls.showGizmos() ? flows.gizmos() : null,
-                        controls.showWind() ? view : null, legend.scale(), camera);
+                        controls.showWind() ? view : null, legend.scale(), drawn);
             }
             target.resolveTo(0);
             GL11C.glViewport(0, 0, w, h);

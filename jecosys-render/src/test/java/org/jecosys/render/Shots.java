@@ -62,6 +62,27 @@ final class Shots implements AutoCloseable {
         return Img.of(px, width, height);
     }
 
+    /** The frames a still view gathers with temporal accumulation in the look tests: the whole jitter pattern. */
+    static final int ACCUMULATED = 16;
+
+    /**
+     * The picture a view held still for {@link #ACCUMULATED} frames shows with temporal accumulation on
+     * ({@link GlFramebuffer#setAccumulation}): each frame drawn with the framebuffer's jittered camera. The
+     * accumulation is off again afterwards.
+     */
+    Img accumulated(Frame frame, Camera camera) {
+        fb.setAccumulation(ACCUMULATED);
+        try {
+            Img last = null;
+            for (int i = 0; i < ACCUMULATED; i++) {
+                last = render(frame, fb.jittered(camera, true), true, true);
+            }
+            return last;
+        } finally {
+            fb.setAccumulation(0);
+        }
+    }
+
     /**
      * Distance from the eye to what each pixel of the terrain alone shows (the depth buffer of a
      * render without plants, unprojected), metres; infinity where the sky is. Allocates.

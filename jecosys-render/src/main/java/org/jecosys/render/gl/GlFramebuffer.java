@@ -50,6 +50,10 @@ public final class GlFramebuffer extends GlResource {
     private final Renderbuffer colour;
     private final Renderbuffer depth;
     private final Resolved resolved;
+    /** Temporal accumulation's state; null while it is off ({@link #setAccumulation}). */
+    private Temporal temporal;
+    /** Counts the GL objects of this framebuffer and its temporal state. */
+    private final GlTracker tracker;
     /**
      * Multisampled only: the detail mask (draw buffer 1): 1 where thin geometry (plants) was drawn, 0
      * elsewhere, which {@link #resolve()} widens its filter by.
@@ -86,6 +90,7 @@ public final class GlFramebuffer extends GlResource {
      */
     public GlFramebuffer(GlTracker tracker, int width, int height, int samples) {
         super(tracker, glGenFramebuffers());
+        this.tracker = tracker;
         if (samples < 1 || samples > MAX_SAMPLES) {
             close();
             throw new IllegalArgumentException("samples must be in [1, " + MAX_SAMPLES + "], got " + samples);
@@ -144,9 +149,12 @@ public final class GlFramebuffer extends GlResource {
         if (resolved != null) {
             resolved.resize(width, height);
         }
+        if (temporal != null) {
+            temporal.resize(width, height, resolved.colour.id());
+        }
     }
 
-    private static void storage(int format, int samples, int width, int height) {
+    static void storage(int format, int samples, int width, int height) {
         if (samples > 1) {
             glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
         } else {
@@ -154,7 +162,7 @@ public final class GlFramebuffer extends GlResource {
         }
     }
 
-    private static void attach(int framebuffer, Renderbuffer colour, Renderbuffer depth, Renderbuffer detail) {
+    static void attach(int framebuffer, Renderbuffer colour, Renderbuffer depth, Renderbuffer detail) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.id());
         if (depth != null) {
@@ -209,17 +217,22 @@ public final class GlFramebuffer extends GlResource {
             glBindFramebuffer(GL_FRAMEBUFFER, id());
             return;
         }
+        boolean box = tent > 0 || temporal != null;
         glBindFramebuffer(GL_READ_FRAMEBUFFER, id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, tent > 0 ? resolved.box.id() : resolved.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, box ? resolved.box.id() : resolved.id());
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        if (tent > 0) {
+        if (box) {
             // the detail mask too, into the box's second texture
             org.lwjgl.opengl.GL11C.glReadBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
             org.lwjgl.opengl.GL11C.glDrawBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
             glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
             org.lwjgl.opengl.GL11C.glDrawBuffer(GL_COLOR_ATTACHMENT0);
             org.lwjgl.opengl.GL11C.glReadBuffer(GL_COLOR_ATTACHMENT0);
-            resolved.filter(width, height, tent);
+            if (temporal != null) {
+                temporal.resolve(id(), resolved.box.texture, resolved.box.detailTexture, width, height, tent);
+            } else {
+                resolved.filter(width, height, tent);
+            }
         }
         glBindFramebuffer(GL_FRAMEBUFFER, resolved.id());
     }
@@ -236,6 +249,105 @@ public final class GlFramebuffer extends GlResource {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
+    }
+
+    /**
+     * Turns temporal accumulation on or off (off when made). On, each frame is drawn with its
+     * projection moved by a sub-pixel jitter (draw with the camera {@link #jittered} returns), and
+     * {@link #resolve()} blends the frame, filtered narrowly, into a running mean of up to {@code frames}
+     * frames: a view held still gathers samples from the whole area of each pixel over frames, so thin
+     * blades keep their detail without the aliasing a narrow one-frame filter shows. The running mean is
+     * reprojected through the frame's depth when the camera moves and clamped to the range of each
+     * pixel's neighbourhood in the new frame, so what comes out from behind something leaves no lasting
+     * trail; while the scene animates by itself the mean is kept to 4 frames (see
+     * {@link #jittered(org.jecosys.math.Camera, boolean)}). Where the mean holds fewer than four frames (the
+     * first frame, a frame whose camera was not jittered, newly seen pixels) the framebuffer shows the
+     * one-frame resolve ({@link #setResolveFilter}) blended toward the mean. Costs a depth blit and one
+     * full-screen pass per frame and two RGBA16F images plus a depth texture of the framebuffer's size.
+     * Render thread (the context current); allocates GL objects when turned on, none per frame.
+     *
+     * @param frames 0 to turn it off; else the most frames in the running mean, in [2, 64] (16 gathers
+     *               the whole jitter pattern)
+     * @throws IllegalArgumentException when {@code frames} is out of range
+     * @throws IllegalStateException    when the framebuffer is not multisampled (accumulation rides on
+     *                                  the multisampled resolve)
+     */
+    public void setAccumulation(int frames) {
+        if (frames != 0 && (frames < 2 || frames > 64)) {
+            throw new IllegalArgumentException("accumulation must be 0 (off) or in [2, 64] frames, got " + frames);
+        }
+        if (frames == 0) {
+            if (temporal != null) {
+                temporal.close();
+                temporal = null;
+            }
+            return;
+        }
+        if (resolved == null) {
+            throw new IllegalStateException("temporal accumulation needs a multisampled framebuffer (this one has 1 "
+                    + "sample per pixel)");
+        }
+        if (temporal == null) {
+            Temporal t = new Temporal(tracker, frames);
+            try {
+                t.resize(width, height, resolved.colour.id());
+            } catch (RuntimeException e) {
+                t.close();
+                throw e;
+            }
+            temporal = t;
+        }
+        temporal.setFrames(frames);
+    }
+
+    /** {@return the most frames temporal accumulation blends, 0 when it is off (see {@link #setAccumulation})} */
+    public int accumulation() {
+        return temporal == null ? 0 : temporal.frames();
+    }
+
+    /**
+     * {@link #jittered(org.jecosys.math.Camera, boolean)} for a frame of a scene that animates by itself
+     * (a running simulation). Render thread; no allocation.
+     *
+     * @param camera this frame's camera
+     * @return the camera to draw with
+     */
+    public org.jecosys.math.Camera jittered(org.jecosys.math.Camera camera) {
+        return jittered(camera, false);
+    }
+
+    /**
+     * The camera to draw this frame with: with accumulation on ({@link #setAccumulation}), {@code camera}
+     * with its projection moved by this frame's sub-pixel jitter (points 1-16 of the Halton (2, 3)
+     * sequence, within half a pixel of the centre; nothing else changes), and its unjittered
+     * view-projection remembered for the next {@link #resolve()}'s reprojection; with accumulation off,
+     * {@code camera} itself. Call once per frame before drawing. The returned camera belongs to this
+     * framebuffer and changes at the next call. Render thread; no allocation.
+     *
+     * @param camera this frame's camera
+     * @param still  true when nothing drawn this frame moved by itself since the last one (a paused
+     *               simulation, a photograph held for several frames): the running mean then holds its
+     *               full length. False while the scene animates (plants, cover sheen and clouds in the
+     *               wind): they carry no motion vectors, so the mean holds at most 4 frames, a short trail
+     *               rather than a smear
+     * @return the camera to draw with
+     */
+    public org.jecosys.math.Camera jittered(org.jecosys.math.Camera camera, boolean still) {
+        if (camera == null) {
+            throw new IllegalArgumentException("camera must not be null");
+        }
+        return temporal == null ? camera : temporal.jittered(camera, still, width, height);
+    }
+
+    /**
+     * Forgets the running mean of temporal accumulation, so that the next frame shows the one-frame
+     * resolve: call it at a cut (a new scene, a jump of the camera that should not blend). Resizing
+     * forgets too. No effect with accumulation off. Render thread; no allocation.
+     */
+    public void resetHistory() {
+        if (temporal != null) {
+            temporal.reset();
+        }
     }
 
     /**
@@ -262,200 +374,6 @@ public final class GlFramebuffer extends GlResource {
     @Override
     public void delete(int name) {
         glDeleteFramebuffers(name);
-        Closing.closeAll(colour, depth, detail, resolved);
-    }
-
-    private static final class Renderbuffer extends GlResource {
-        Renderbuffer(GlTracker tracker) {
-            super(tracker, glGenRenderbuffers());
-        }
-
-        @Override
-        public void delete(int name) {
-            glDeleteRenderbuffers(name);
-        }
-    }
-
-    /**
-     * The single-sampled targets of a multisampled framebuffer: the box average of the samples (a
-     * texture, for the filter pass) and the filtered image (a renderbuffer, to read), with the
-     * filter's program and an empty vertex array.
-     */
-    private static final class Resolved extends GlResource {
-        final Renderbuffer colour;
-        final Box box;
-        final GlProgram program;
-        final GlVertexArray vao;
-        final int uTexel;
-        final int uWeights;
-        /** Allocation-free state queries: the filter runs every frame in the viewer. */
-        final GlInts query = new GlInts();
-
-        Resolved(GlTracker tracker) {
-            super(tracker, glGenFramebuffers());
-            Renderbuffer c = null;
-            Box b = null;
-            GlProgram p = null;
-            GlVertexArray v;
-            try {
-                c = new Renderbuffer(tracker);
-                b = new Box(tracker);
-                p = new GlProgram(tracker, "resolve.vert", "resolve.frag");
-                v = new GlVertexArray(tracker);
-            } catch (RuntimeException e) {
-                Closing.closeAll(p, b, c);
-                close();
-                throw e;
-            }
-            colour = c;
-            box = b;
-            program = p;
-            vao = v;
-            int current = glGetInteger(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
-            program.use();
-            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uImage"), TextureUnits.FILTER_IMAGE);
-            org.lwjgl.opengl.GL20C.glUniform1i(program.uniform("uDetail"), TextureUnits.FILTER_DETAIL);
-            uTexel = program.uniform("uTexel");
-            uWeights = program.uniform("uWeights");
-            org.lwjgl.opengl.GL20C.glUseProgram(current);
-        }
-
-        void resize(int width, int height) {
-            glBindRenderbuffer(GL_RENDERBUFFER, colour.id());
-            storage(GL_RGBA8, 1, width, height);
-            glBindRenderbuffer(GL_RENDERBUFFER, 0);
-            attach(id(), colour, null, null);
-            box.resize(width, height);
-        }
-
-        /** Draws the box-averaged image through the tent filter into this framebuffer; puts back what it changes. */
-        void filter(int width, int height, float tent) {
-            int program0 = query.get(org.lwjgl.opengl.GL20C.GL_CURRENT_PROGRAM);
-            int vao0 = query.get(org.lwjgl.opengl.GL30C.GL_VERTEX_ARRAY_BINDING);
-            int unit0 = query.get(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_DETAIL);
-            int detail0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.detailTexture);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_IMAGE);
-            int image0 = query.get(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
-            boolean depth = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
-            boolean blend = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_BLEND);
-            boolean scissor = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
-            boolean cull = org.lwjgl.opengl.GL11C.glIsEnabled(org.lwjgl.opengl.GL11C.GL_CULL_FACE);
-            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST);
-            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_BLEND);
-            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
-            org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_CULL_FACE);
-            glBindFramebuffer(GL_FRAMEBUFFER, id());
-            glViewport(0, 0, width, height);
-            program.use();
-            org.lwjgl.opengl.GL20C.glUniform2f(uTexel, 1f / width, 1f / height);
-            float plain = Math.max(0, 1 - tent);
-            float wide = Math.max(0, tent - 1);
-            org.lwjgl.opengl.GL20C.glUniform3f(uWeights, plain, 1 - plain - wide, wide);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, box.texture);
-            vao.bind();
-            org.lwjgl.opengl.GL11C.glDrawArrays(org.lwjgl.opengl.GL11C.GL_TRIANGLES, 0, 3);
-            org.lwjgl.opengl.GL30C.glBindVertexArray(vao0);
-            org.lwjgl.opengl.GL20C.glUseProgram(program0);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, image0);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.FILTER_DETAIL);
-            org.lwjgl.opengl.GL11C.glBindTexture(org.lwjgl.opengl.GL11C.GL_TEXTURE_2D, detail0);
-            org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
-            enable(org.lwjgl.opengl.GL11C.GL_DEPTH_TEST, depth);
-            enable(org.lwjgl.opengl.GL11C.GL_BLEND, blend);
-            enable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST, scissor);
-            enable(org.lwjgl.opengl.GL11C.GL_CULL_FACE, cull);
-        }
-
-        private static void enable(int cap, boolean on) {
-            if (on) {
-                org.lwjgl.opengl.GL11C.glEnable(cap);
-            } else {
-                org.lwjgl.opengl.GL11C.glDisable(cap);
-            }
-        }
-
-        @Override
-        public void delete(int name) {
-            glDeleteFramebuffers(name);
-            query.close();
-            Closing.closeAll(vao, program, box, colour);
-        }
-    }
-
-    /** A framebuffer with an RGBA8 texture, linear filtering, clamped: the box-averaged image. */
-    private static final class Box extends GlResource {
-        private final Texture image;
-        private final Texture detailImage;
-        final int texture;
-        final int detailTexture;
-
-        Box(GlTracker tracker) {
-            super(tracker, glGenFramebuffers());
-            Texture t = null;
-            Texture d;
-            try {
-                t = new Texture(tracker);
-                d = new Texture(tracker);
-            } catch (RuntimeException e) {
-                Closing.closeAll(t);
-                close();
-                throw e;
-            }
-            image = t;
-            detailImage = d;
-            texture = t.id();
-            detailTexture = d.id();
-        }
-
-        void resize(int width, int height) {
-            int unit0 = glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
-            org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.UPLOAD);
-            int bound = glGetInteger(org.lwjgl.opengl.GL11C.GL_TEXTURE_BINDING_2D);
-            int t2 = org.lwjgl.opengl.GL11C.GL_TEXTURE_2D;
-            for (int k = 0; k < 2; k++) {
-            org.lwjgl.opengl.GL11C.glBindTexture(t2, k == 0 ? texture : detailTexture);
-            org.lwjgl.opengl.GL11C.glTexImage2D(t2, 0, k == 0 ? GL_RGBA8 : org.lwjgl.opengl.GL30C.GL_R8, width, height,
-                    0, org.lwjgl.opengl.GL11C.GL_RGBA, org.lwjgl.opengl.GL11C.GL_UNSIGNED_BYTE, (java.nio.ByteBuffer) null);
-            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MIN_FILTER,
-                    org.lwjgl.opengl.GL11C.GL_LINEAR);
-            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_MAG_FILTER,
-                    org.lwjgl.opengl.GL11C.GL_LINEAR);
-            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_WRAP_S,
-                    org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
-            org.lwjgl.opengl.GL11C.glTexParameteri(t2, org.lwjgl.opengl.GL11C.GL_TEXTURE_WRAP_T,
-                    org.lwjgl.opengl.GL12C.GL_CLAMP_TO_EDGE);
-            }
-            org.lwjgl.opengl.GL11C.glBindTexture(t2, bound);
-            org.lwjgl.opengl.GL13C.glActiveTexture(unit0);
-            glBindFramebuffer(GL_FRAMEBUFFER, id());
-            org.lwjgl.opengl.GL30C.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t2, texture, 0);
-            org.lwjgl.opengl.GL30C.glFramebufferTexture2D(GL_FRAMEBUFFER, org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1, t2,
-                    detailTexture, 0);
-            int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            if (status != GL_FRAMEBUFFER_COMPLETE) {
-                throw new IllegalStateException("framebuffer incomplete: status 0x" + Integer.toHexString(status));
-            }
-        }
-
-        @Override
-        public void delete(int name) {
-            glDeleteFramebuffers(name);
-            Closing.closeAll(image, detailImage);
-        }
-    }
-
-    /** A texture name, counted by the tracker. */
-    private static final class Texture extends GlResource {
-        Texture(GlTracker tracker) {
-            super(tracker, org.lwjgl.opengl.GL11C.glGenTextures());
-        }
-
-        @Override
-        public void delete(int name) {
-            org.lwjgl.opengl.GL11C.glDeleteTextures(name);
-        }
+        Closing.closeAll(temporal, colour, depth, detail, resolved);
     }
 }

@@ -65,6 +65,10 @@ public final class TextureUnits {
     public static final int FILTER_IMAGE = 17;
     /** The detail mask the framebuffer's resolve filter reads (2D), outside the guard. */
     public static final int FILTER_DETAIL = 18;
+    /** The depth of the frame a temporal resolve reprojects its history with (2D), outside the guard. */
+    public static final int TEMPORAL_DEPTH = 19;
+    /** The running mean of earlier frames a temporal resolve reads (2D), outside the guard. */
+    public static final int TEMPORAL_HISTORY = 20;
     /** Every unit the library uses is below this. */
-    public static final int COUNT = 19;
+    public static final int COUNT = 21;
 }
