@@ -97,15 +97,21 @@ final class HeadlessRender {
         return s;
     }
 
+    /**
+     * Renders {@code frames} frames of a scene into {@code out}. With {@code holdFirst} (the render
+     * command) the first picture is the view held still, as a photograph of that moment (with
+     * accumulation on: {@link #ACCUMULATION} frames of it); without it (the viewer's headless fallback, a
+     * quick look) every frame is drawn once.
+     */
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
-                    boolean maps, PrintWriter log, Progress progress) throws IOException {
+                    boolean maps, boolean holdFirst, PrintWriter log, Progress progress) throws IOException {
         SceneDef def = scene.def();
         if (def.isOpenWorld()) {
             if (maps) {
                 throw new IllegalArgumentException("--maps needs a scene of one square: '" + def.name()
                         + "' is an open world, whose plants exist only around the camera");
             }
-            OpenWorldFrames.run(scene, quality, frames, out, width, height, log);
+            OpenWorldFrames.run(scene, quality, frames, out, width, height, holdFirst, log);
             return;
         }
         log.println("Building '" + def.name() + "' ...");
@@ -115,12 +121,12 @@ final class HeadlessRender {
             if (quality != null) {
                 quality.applyTo(sim);
             }
-            render(def, sim, frames, out, width, height, maps, log);
+            render(def, sim, frames, out, width, height, maps, holdFirst, log);
         }
     }
 
     private static void render(SceneDef def, Simulation sim, int frames, Path out, int width, int height,
-                               boolean maps, PrintWriter log) throws IOException {
+                               boolean maps, boolean holdFirst, PrintWriter log) throws IOException {
         World world = sim.world();
         BuildReport.print(world, log, log);
         OutputFiles files = new OutputFiles();
@@ -150,7 +156,7 @@ final class HeadlessRender {
                 for (int i = 1; i <= frames; i++) {
                     sim.step(FRAME_DT, camera);
                     Frame frame = sim.latestFrame();
-                    if (i == 1) {
+                    if (i == 1 && holdFirst) {
                         // the first picture as a view held still shows it; later ones as the plants move
                         drawStill(fb, renderer, frame, camera, width, height);
                     } else {

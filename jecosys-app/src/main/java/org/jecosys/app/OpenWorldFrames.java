@@ -32,7 +32,7 @@ final class OpenWorldFrames {
     }
 
     static void run(org.jecosys.scene.Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
-                    PrintWriter log) throws IOException {
+                    boolean holdFirst, PrintWriter log) throws IOException {
         SceneDef def = scene.def();
         OutputFiles files = new OutputFiles();
         ByteBuffer px = MemoryUtil.memAlloc(4 * width * height);
@@ -59,12 +59,18 @@ final class OpenWorldFrames {
                     fb.bind();
                     renderer.render(start, width, height);
                 }
+                HeadlessRender.accumulate(fb);
                 for (int i = 1; i <= frames; i++) {
                     ViewCamera camera = walk.at(world.time());
                     world.step(HeadlessRender.FRAME_DT, camera);
-                    fb.bind();
-                    renderer.render(camera, width, height);
-                    fb.resolve();
+                    // the first picture as a view held still shows it (the render command); later ones as the walk
+                    // and the wind move
+                    boolean hold = i == 1 && holdFirst;
+                    for (int k = 0; k < (hold ? Math.max(1, fb.accumulation()) : 1); k++) {
+                        fb.bind();
+                        renderer.render(fb.jittered(camera, hold), width, height);
+                        fb.resolve();
+                    }
                     Pixels.read(width, height, px);
                     files.writeFile(out.resolve(HeadlessRender.frameName(i)),
                             temporary -> Pixels.writePng(temporary, px, width, height));

@@ -186,6 +186,7 @@ final class OpenWorldViewer {
                     t.bind();
                     r.render(camera, width, height);
                 }
+                HeadlessRender.accumulate(t);
                 u = new ImGuiLayer(gl, window);
             } catch (RuntimeException e) {
                 Closing.closeAll(u, r, t);
@@ -221,7 +222,8 @@ final class OpenWorldViewer {
                 target.resize(w, h);
             }
             target.bind();
-            renderer.render(camera, w, h);
+            // the plants move in the wind every frame: accumulation keeps a short mean
+            renderer.render(target.jittered(camera, false), w, h);
             target.resolveTo(screen);
             GL11C.glViewport(0, 0, w, h);
             double renderMs = (System.nanoTime() - r0) / 1e6;

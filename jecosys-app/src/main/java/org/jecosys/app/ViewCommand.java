@@ -84,11 +84,11 @@ final class ViewCommand implements Callable<Integer> {
                 if (def.isOpenWorld()) {
                     PrintWriter log = spec.commandLine().getOut();
                     OpenWorldFrames.run(loaded, quality, frames, out, def.render().width(), def.render().height(),
-                            log);
+                            false, log);
                     return ExitCodes.OK;
                 }
                 HeadlessRender.run(loaded, quality, frames, out, def.render().width(), def.render().height(), true,
-                        spec.commandLine().getOut(),
+                        false, spec.commandLine().getOut(),
                         new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
                 return ExitCodes.OK;
             }

@@ -135,6 +135,11 @@ final class RenderPassSection implements Section {
                     }
                 }
             }
+            double plain = resolveMillis(gl, fb, 0);
+            double temporal = resolveMillis(gl, fb, 16);
+            t.note(String.format(Locale.ROOT, "The framebuffer's resolve after the passes (not in the table; the clock "
+                    + "around glFinish, median of %d): the one-frame filter %.2f ms, with temporal accumulation (16 "
+                    + "frames; a depth blit and one full-screen pass) %.2f ms.", RESOLVES, plain, temporal));
             t.note("GL renderer: " + gl.describe() + ". Timed by " + how + ". Each pass: ground maps (the splatted"
                     + " shadow and contact darkening, when they change), resolve (the near plants' lists, uploads and"
                     + " per-component pass), shadow map (the shadow-map path only), near plants, cover, ground"
@@ -142,5 +147,31 @@ final class RenderPassSection implements Section {
                     + " instead; the last column compares the passes' medians summed with it.");
         }
         report.add(t);
+    }
+
+    /** Resolves timed by {@link #resolveMillis}. */
+    private static final int RESOLVES = 15;
+
+    /**
+     * The median time of the framebuffer's resolve with temporal accumulation of {@code frames} frames (0:
+     * off), by the clock around glFinish; whatever the framebuffer holds is resolved again and again.
+     */
+    private static double resolveMillis(GlContext gl, GlFramebuffer fb, int frames) {
+        fb.setAccumulation(frames);
+        ViewCamera still = new ViewCamera();
+        double[] ms = new double[RESOLVES];
+        for (int i = 0; i < RESOLVES + 4; i++) {
+            fb.jittered(still, true);
+            gl.finish();
+            long t0 = System.nanoTime();
+            fb.resolve();
+            gl.finish();
+            if (i >= 4) {
+                ms[i - 4] = (System.nanoTime() - t0) / 1e6;
+            }
+            fb.bind();
+        }
+        fb.setAccumulation(0);
+        return Stats.median(ms);
     }
 }

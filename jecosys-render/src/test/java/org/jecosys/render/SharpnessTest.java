@@ -2,12 +2,10 @@ package org.jecosys.render;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.jecosys.math.MatrixCamera;
 import org.jecosys.math.ViewCamera;
 import org.jecosys.render.ImageMetrics.Img;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.sim.World;
-import org.joml.Matrix4f;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -23,9 +21,9 @@ import org.junit.jupiter.api.Test;
  * </ul>
  * The view is measured twice: as one frame shows it, and held still for {@link Shots#ACCUMULATED} frames
  * with the framebuffer's temporal accumulation ({@code GlFramebuffer.setAccumulation}), which the viewer
- * and the render command turn on. The accumulated view must meet the issue's three figures, and moved
- * half a pixel (a view accumulated with the projection shifted) issue 13's half-pixel residual (at most 2/255,
- * {@link ImageMetrics#halfPixelResidual}), so that the detail it keeps is not aliasing; the one-frame
+ * and the render command turn on. The accumulated view must meet the issue's three figures (and, in the
+ * nightly {@link AntiAliasingTest}, issue 13's half-pixel residual, so that the detail it keeps is not
+ * aliasing); the one-frame
  * view keeps its earlier floors (fine detail 0.25 of the reference, contrast 8), so that the one-frame
  * resolve, which a moving view and a frame without history show, does not get softer unnoticed. The
  * targets conflict with issue 13's half-pixel residual ({@link AntiAliasingTest}, at most 2/255) for
@@ -34,8 +32,7 @@ import org.junit.jupiter.api.Test;
  * 24.5 / 19.5 / 15.2 / 3.89 for 0.5, 11.2 / 16.3 / 13.0 / 2.44 for 1 and 6.8 / 13.8 / 11.4 / 1.77 for the
  * default 2 (the supersampled reference: 21.4, 20.5, 15.9); sharpening mixes (negative weights on the
  * wide filter) moved along the same curve. Both at once need more samples than one frame has, which
- * temporal accumulation with a jittered projection gathers over frames ({@link AntiAliasingTest} checks
- * the accumulated view's residual).
+ * temporal accumulation with a jittered projection gathers over frames.
  */
 class SharpnessTest {
     private static final int W = 960;
@@ -101,14 +98,10 @@ class SharpnessTest {
         World world = RenderScenes.build(def);
         Shots.View native0;
         Img still;
-        Img stillShifted;
         try (Shots s = new Shots(world, RenderScenes.settings(def), W, H)) {
             ViewCamera cam = RenderScenes.camera(def, world, W, H);
             native0 = s.view(TestFrames.rest(world, cam), cam);
             still = s.accumulated(TestFrames.rest(world, cam), cam);
-            MatrixCamera shifted = new MatrixCamera(cam.view(new Matrix4f()),
-                    new Matrix4f().translation(1f / W, 0, 0).mul(cam.projection(new Matrix4f())));
-            stillShifted = s.accumulated(TestFrames.rest(world, shifted), shifted);
         }
         Img reference;
         try (Shots s = new Shots(world, RenderScenes.settings(def), 2 * W, 2 * H)) {
@@ -131,15 +124,10 @@ class SharpnessTest {
         System.out.printf("[look] meadow sharpness at %dx%d, held still %d frames with temporal accumulation: fine "
                 + "detail %.2f of the reference (issue 41 asks >= 0.8); 8 px contrast near %.1f (asks >= 15), middle "
                 + "%.1f (asks >= 14)%n", W, H, Shots.ACCUMULATED, stillDetail, stillNear, stillMiddle);
-        double residual = ImageMetrics.halfPixelResidual(still, stillShifted, veg);
-        System.out.printf("[look] meadow held still, half a pixel of camera motion: %.2f/255 from a smooth shift over "
-                + "vegetation (issue 13 asks <= 2)%n", residual);
         assertTrue(detail / detailRef >= 0.25, "one frame's fine detail kept: " + detail / detailRef);
         assertTrue(near >= 8 && middle >= 8, "one frame's 8 px contrast near " + near + ", middle " + middle);
         assertTrue(stillDetail >= 0.8, "fine detail of the accumulated view: " + stillDetail);
         assertTrue(stillNear >= 15, "near-field 8 px contrast of the accumulated view: " + stillNear);
         assertTrue(stillMiddle >= 14, "middle-distance 8 px contrast of the accumulated view: " + stillMiddle);
-        assertTrue(residual <= 2, "the accumulated view moved half a pixel changes vegetation by " + residual
-                + "/255 beyond a smooth shift, want <= 2/255");
     }
 }

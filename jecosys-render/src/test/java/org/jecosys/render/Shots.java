@@ -73,11 +73,12 @@ final class Shots implements AutoCloseable {
     Img accumulated(Frame frame, Camera camera) {
         fb.setAccumulation(ACCUMULATED);
         try {
-            Img last = null;
-            for (int i = 0; i < ACCUMULATED; i++) {
-                last = render(frame, fb.jittered(camera, true), true, true);
+            for (int i = 0; i < ACCUMULATED - 1; i++) {
+                fb.bind();
+                renderer.render(frame, fb.jittered(camera, true), width, height);
+                fb.resolve();
             }
-            return last;
+            return render(frame, fb.jittered(camera, true), true, true);
         } finally {
             fb.setAccumulation(0);
         }
