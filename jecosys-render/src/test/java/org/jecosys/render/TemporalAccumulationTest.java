@@ -125,6 +125,20 @@ class TemporalAccumulationTest {
             hold(s, fa, a, 16);
             Img movedB = hold(s, frameB, b, 1);
             Img settledB = hold(s, frameB, b, 16);
+            // what a viewer copies into its window (one more still frame, resolved into it) is the running mean
+            try (GlFramebuffer window = new GlFramebuffer(s.gl.tracker(), W, H)) {
+                s.fb.bind();
+                s.renderer.render(frameB, s.fb.jittered(b, true), W, H);
+                s.fb.resolveTo(window.id());
+                java.nio.ByteBuffer px = org.lwjgl.system.MemoryUtil.memAlloc(4 * W * H);
+                try {
+                    org.jecosys.render.gl.Pixels.read(W, H, px);
+                    double copied = meanAbsDiff(settledB, Img.of(px, W, H));
+                    assertTrue(copied <= 0.25, "resolveTo copies the running mean: " + copied);
+                } finally {
+                    org.lwjgl.system.MemoryUtil.memFree((java.nio.Buffer) px);
+                }
+            }
             // the camera still, the plants in the wind: 0.5 s at the render command's 30 frames a second
             Frame end = TestFrames.wind(world, 1.5, a);
             s.fb.resetHistory();

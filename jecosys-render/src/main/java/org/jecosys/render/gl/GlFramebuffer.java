@@ -150,7 +150,7 @@ public final class GlFramebuffer extends GlResource {
             resolved.resize(width, height);
         }
         if (temporal != null) {
-            temporal.resize(width, height, resolved.colour.id());
+            temporal.resize(width, height);
         }
     }
 
@@ -228,11 +228,12 @@ public final class GlFramebuffer extends GlResource {
             glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
             org.lwjgl.opengl.GL11C.glDrawBuffer(GL_COLOR_ATTACHMENT0);
             org.lwjgl.opengl.GL11C.glReadBuffer(GL_COLOR_ATTACHMENT0);
-            if (temporal != null) {
-                temporal.resolve(id(), resolved.box.texture, resolved.box.detailTexture, width, height, tent);
-            } else {
-                resolved.filter(width, height, tent);
+            if (temporal != null && temporal.resolve(id(), resolved.box.texture, width, height)) {
+                // the running mean is the picture
+                glBindFramebuffer(GL_FRAMEBUFFER, temporal.framebuffer());
+                return;
             }
+            resolved.filter(width, height, tent);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, resolved.id());
     }
@@ -260,9 +261,9 @@ public final class GlFramebuffer extends GlResource {
      * reprojected through the frame's depth when the camera moves and clamped to the range of each
      * pixel's neighbourhood in the new frame, so what comes out from behind something leaves no lasting
      * trail; while the scene animates by itself the mean is kept to 4 frames (see
-     * {@link #jittered(org.jecosys.math.Camera, boolean)}). Where the mean holds fewer than four frames (the
-     * first frame, a frame whose camera was not jittered, newly seen pixels) the framebuffer shows the
-     * one-frame resolve ({@link #setResolveFilter}) blended toward the mean. Costs a depth blit and one
+     * {@link #jittered(org.jecosys.math.Camera, boolean)}). Where the mean is forgotten (the first frame, a
+     * resize, {@link #resetHistory()}, a frame whose camera was not jittered) the framebuffer shows the
+     * one-frame resolve ({@link #setResolveFilter}) for that frame. Costs a depth blit and one
      * full-screen pass per frame and two RGBA16F images plus a depth texture of the framebuffer's size.
      * Render thread (the context current); allocates GL objects when turned on, none per frame.
      *
@@ -290,7 +291,7 @@ public final class GlFramebuffer extends GlResource {
         if (temporal == null) {
             Temporal t = new Temporal(tracker, frames);
             try {
-                t.resize(width, height, resolved.colour.id());
+                t.resize(width, height);
             } catch (RuntimeException e) {
                 t.close();
                 throw e;

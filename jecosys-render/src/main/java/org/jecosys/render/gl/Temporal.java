@@ -9,7 +9,6 @@ import static org.lwjgl.opengl.GL11C.glTexImage2D;
 import static org.lwjgl.opengl.GL11C.glTexParameteri;
 import static org.lwjgl.opengl.GL11C.glViewport;
 import static org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT0;
-import static org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1;
 import static org.lwjgl.opengl.GL30C.GL_DEPTH24_STENCIL8;
 import static org.lwjgl.opengl.GL30C.GL_DEPTH_BUFFER_BIT;
 import static org.lwjgl.opengl.GL30C.GL_DEPTH_STENCIL;
@@ -18,14 +17,12 @@ import static org.lwjgl.opengl.GL30C.GL_DRAW_FRAMEBUFFER;
 import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
 import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER_COMPLETE;
 import static org.lwjgl.opengl.GL30C.GL_READ_FRAMEBUFFER;
-import static org.lwjgl.opengl.GL30C.GL_RENDERBUFFER;
 import static org.lwjgl.opengl.GL30C.GL_RGBA16F;
 import static org.lwjgl.opengl.GL30C.GL_UNSIGNED_INT_24_8;
 import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
 import static org.lwjgl.opengl.GL30C.glBlitFramebuffer;
 import static org.lwjgl.opengl.GL30C.glCheckFramebufferStatus;
 import static org.lwjgl.opengl.GL30C.glDeleteFramebuffers;
-import static org.lwjgl.opengl.GL30C.glFramebufferRenderbuffer;
 import static org.lwjgl.opengl.GL30C.glFramebufferTexture2D;
 import static org.lwjgl.opengl.GL30C.glGenFramebuffers;
 
@@ -39,9 +36,10 @@ import org.lwjgl.opengl.GL20C;
 /**
  * The temporal half of a multisampled {@link GlFramebuffer}'s resolve ({@link GlFramebuffer#setAccumulation}):
  * the sub-pixel jitter of each frame's projection, the running mean of earlier frames (two RGBA16F
- * textures, read and written in turn; alpha counts the frames each pixel holds), the frame's depth
- * (resolved from the samples, to reproject the history for the camera's motion) and the pass
- * ({@code temporal.frag}) that blends the frame in and writes what the framebuffer shows. Nine GL
+ * textures, read and written in turn, each the colour of a framebuffer; alpha counts the frames each
+ * pixel holds), the frame's depth (resolved from the samples, to reproject the history for the camera's
+ * motion) and the pass ({@code temporal.frag}) that blends the frame in. The framebuffer shows the newest
+ * mean; one pass, one target (on Mesa's llvmpipe a second target doubled the pass's time). Nine GL
  * objects. Render thread only; no allocation after construction.
  */
 final class Temporal extends GlResource {
@@ -58,10 +56,9 @@ final class Temporal extends GlResource {
     private final int depthFb;
     private final GlProgram program;
     private final GlVertexArray vao;
-    private final PassState state = new PassState(TextureUnits.FILTER_IMAGE, TextureUnits.FILTER_DETAIL,
-            TextureUnits.TEMPORAL_DEPTH, TextureUnits.TEMPORAL_HISTORY);
+    private final PassState state = new PassState(TextureUnits.FILTER_IMAGE, TextureUnits.TEMPORAL_DEPTH,
+            TextureUnits.TEMPORAL_HISTORY);
     private final int uTexel;
-    private final int uWeights;
     private final int uNarrow;
     private final int uReproject;
     private final int uKeep;
@@ -123,11 +120,9 @@ final class Temporal extends GlResource {
         int program0 = GL11C.glGetInteger(GL20C.GL_CURRENT_PROGRAM);
         program.use();
         GL20C.glUniform1i(program.uniform("uImage"), TextureUnits.FILTER_IMAGE);
-        GL20C.glUniform1i(program.uniform("uDetail"), TextureUnits.FILTER_DETAIL);
         GL20C.glUniform1i(program.uniform("uDepth"), TextureUnits.TEMPORAL_DEPTH);
         GL20C.glUniform1i(program.uniform("uHistory"), TextureUnits.TEMPORAL_HISTORY);
         uTexel = program.uniform("uTexel");
-        uWeights = program.uniform("uWeights");
         uNarrow = program.uniform("uNarrow");
         uReproject = program.uniform("uReproject");
         uKeep = program.uniform("uKeep");
@@ -190,11 +185,8 @@ final class Temporal extends GlResource {
         return jittered;
     }
 
-    /**
-     * Allocates the history and depth at a new size (contents forgotten) and attaches the framebuffer's
-     * shown image ({@code shown}, the single-sampled renderbuffer it reads from) as the pass's second target.
-     */
-    void resize(int width, int height, int shown) {
+    /** Allocates the history and depth at a new size (contents forgotten). */
+    void resize(int width, int height) {
         int unit0 = GL11C.glGetInteger(org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE);
         org.lwjgl.opengl.GL13C.glActiveTexture(org.lwjgl.opengl.GL13C.GL_TEXTURE0 + TextureUnits.UPLOAD);
         int bound = GL11C.glGetInteger(GL11C.GL_TEXTURE_BINDING_2D);
@@ -218,8 +210,6 @@ final class Temporal extends GlResource {
         for (int k = 0; k < 2; k++) {
             glBindFramebuffer(GL_FRAMEBUFFER, passes[k]);
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, history[k].id(), 0);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, shown);
-            GL20C.glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
             complete();
         }
         glBindFramebuffer(GL_FRAMEBUFFER, depthFb);
@@ -241,12 +231,15 @@ final class Temporal extends GlResource {
     }
 
     /**
-     * Blends this frame into the history and writes what the framebuffer shows. The samples' average is
-     * in {@code box} and the detail mask's in {@code detail} (textures); {@code samples} is the
-     * multisampled framebuffer, whose depth this resolves; {@code tent} the one-frame filter shown where
-     * the history is new. Puts back the GL state it changes apart from the framebuffer bindings.
+     * Blends this frame into the history. The samples' average is in {@code box} (a texture);
+     * {@code samples} is the multisampled framebuffer, whose depth this resolves. Puts back the GL state it
+     * changes apart from the framebuffer bindings.
+     *
+     * @return true when the history held earlier frames of this camera, so that the framebuffer shows the
+     *         running mean ({@link #framebuffer()}); false when it was forgotten (the first frame, a reset,
+     *         a resize, a frame drawn without {@link #jittered}): then it shows its one-frame resolve
      */
-    void resolve(int samples, int box, int detail, int width, int height, float tent) {
+    boolean resolve(int samples, int box, int width, int height) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, samples);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, depthFb);
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
@@ -258,7 +251,6 @@ final class Temporal extends GlResource {
             previous.mul(reproject, reproject);
         }
         state.save();
-        PassState.bind(TextureUnits.FILTER_DETAIL, detail);
         PassState.bind(TextureUnits.TEMPORAL_DEPTH, depth.id());
         PassState.bind(TextureUnits.TEMPORAL_HISTORY, history[read].id());
         PassState.bind(TextureUnits.FILTER_IMAGE, box);
@@ -266,7 +258,6 @@ final class Temporal extends GlResource {
         glViewport(0, 0, width, height);
         program.use();
         GL20C.glUniform2f(uTexel, 1f / width, 1f / height);
-        Resolved.setWeights(uWeights, tent);
         Resolved.setWeights(uNarrow, NARROW);
         GL20C.glUniformMatrix4fv(uReproject, false, reproject.get(matrix));
         GL20C.glUniform1f(uKeep, keep ? 1 : 0);
@@ -283,6 +274,12 @@ final class Temporal extends GlResource {
         valid = cameraSet;
         cameraSet = false;
         frame++;
+        return keep;
+    }
+
+    /** {@return the framebuffer whose colour is the running mean the last {@link #resolve} wrote} */
+    int framebuffer() {
+        return passes[read];
     }
 
     @Override
