@@ -31,7 +31,8 @@ import static org.lwjgl.opengl.GL11C.glGetInteger;
  * or multisampled: the target of headless rendering (any size, whatever the window). Multisampled,
  * it also owns a single-sampled colour target that {@link #resolve()} fills (read the image after
  * that), through a filter from the plain average of each pixel's samples to a 5x5 binomial
- * ({@link #setResolveFilter}). Counts as three GL objects, nine when multisampled.
+ * ({@link #setResolveFilter}), and with temporal accumulation ({@link #setAccumulation}). Counts as three GL
+ * objects, nine when multisampled, eight more with accumulation on.
  * Render thread only.
  */
 public final class GlFramebuffer extends GlResource {

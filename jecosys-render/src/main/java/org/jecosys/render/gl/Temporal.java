@@ -39,7 +39,7 @@ import org.lwjgl.opengl.GL20C;
  * textures, read and written in turn, each the colour of a framebuffer; alpha counts the frames each
  * pixel holds), the frame's depth (resolved from the samples, to reproject the history for the camera's
  * motion) and the pass ({@code temporal.frag}) that blends the frame in. The framebuffer shows the newest
- * mean; one pass, one target (on Mesa's llvmpipe a second target doubled the pass's time). Nine GL
+ * mean; one pass, one target (on Mesa's llvmpipe a second target doubled the pass's time). Eight GL
  * objects. Render thread only; no allocation after construction.
  */
 final class Temporal extends GlResource {
