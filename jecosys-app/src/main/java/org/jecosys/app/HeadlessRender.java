@@ -99,9 +99,9 @@ final class HeadlessRender {
 
     /**
      * Renders {@code frames} frames of a scene into {@code out}. With {@code holdFirst} (the render
-     * command) the first picture is the view held still, as a photograph of that moment (with
-     * accumulation on: {@link #ACCUMULATION} frames of it); without it (the viewer's headless fallback, a
-     * quick look) every frame is drawn once.
+     * command's single picture) the first picture is the view held still, as a photograph of that moment
+     * (with accumulation on: {@link #ACCUMULATION} frames of it); without it (a sequence, which
+     * accumulates as the viewer does; the viewer's headless fallback) every frame is drawn once.
      */
     static void run(Scene scene, DrawQuality quality, int frames, Path out, int width, int height,
                     boolean maps, boolean holdFirst, PrintWriter log, Progress progress) throws IOException {

@@ -68,7 +68,7 @@ final class RenderCommand implements Callable<Integer> {
         int w = size == null ? def.render().width() : size.width();
         int h = size == null ? def.render().height() : size.height();
         try {
-            HeadlessRender.run(loaded, quality, frames, out, w, h, maps, true, spec.commandLine().getOut(),
+            HeadlessRender.run(loaded, quality, frames, out, w, h, maps, frames == 1, spec.commandLine().getOut(),
                     new ConsoleProgress(spec.commandLine().getErr(), ConsoleProgress.stderrIsTerminal()));
             if (gif != null) {
                 java.util.List<Path> pngs = new java.util.ArrayList<>();

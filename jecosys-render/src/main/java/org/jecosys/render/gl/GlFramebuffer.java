@@ -211,7 +211,9 @@ public final class GlFramebuffer extends GlResource {
      * (which puts back the program, vertex array, texture unit 0 and the switches it changes), then
      * binds the single-sampled result for reading and drawing (call {@link #bind()} again before
      * drawing more); single-sampled, binds the framebuffer. Then {@link Pixels#read} reads the image.
-     * Render thread; no allocation.
+     * With accumulation on ({@link #setAccumulation}) the frame is blended into the running mean instead,
+     * and the mean is what is bound: draw overlays after {@link #resolveTo} into its target, since what is
+     * drawn into the mean stays in the next frames. Render thread; no allocation.
      */
     public void resolve() {
         if (resolved == null) {
