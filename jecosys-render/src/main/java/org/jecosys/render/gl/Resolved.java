@@ -83,10 +83,10 @@ final class Resolved extends GlResource {
     }
 
     /**
-     * Sets a filter's weights uniform (box, tent, wide; resolve_filter.glsl) for a filter width in [0, 2]
+     * Sets the filter's weights uniform (box, tent, wide; resolve.frag) for a filter width in [0, 2]
      * ({@link GlFramebuffer#setResolveFilter}). The program must be in use.
      */
-    static void setWeights(int uniform, float tent) {
+    private static void setWeights(int uniform, float tent) {
         float plain = Math.max(0, 1 - tent);
         float wide = Math.max(0, tent - 1);
         org.lwjgl.opengl.GL20C.glUniform3f(uniform, plain, 1 - plain - wide, wide);

@@ -14,7 +14,7 @@ uniform sampler2D uImage;
 uniform sampler2D uDepth;
 uniform sampler2D uHistory;
 uniform vec2 uTexel;                             // 1 / size
-uniform vec3 uNarrow;                            // the filter of each accumulated frame (y: the tent's share)
+uniform float uTent;                             // the accumulated frame's filter: the box mixed this far to the tent
 uniform mat4 uReproject;                         // this frame's clip space to the history's
 uniform float uKeep;                             // 0: the history is forgotten (first frame, reset)
 uniform float uFrames;                           // most frames in the running mean
@@ -29,7 +29,7 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     ivec2 last = textureSize(uImage, 0) - 1;
     // the frame's 3x3 neighbourhood (the box-averaged samples of this pixel and the eight around it): the
-    // accumulated frame's narrow filter (the box mixed toward the 1 2 1 tent by uNarrow.y, everywhere) and
+    // accumulated frame's narrow filter (the box mixed toward the 1 2 1 tent by uTent, everywhere) and
     // the colour range the history is clamped to (its mean within uClip standard deviations, inside its
     // extremes)
     vec3 box = vec3(0.0);
@@ -50,7 +50,7 @@ void main() {
             sum2 += c * c;
         }
     }
-    vec3 current = mix(box, tent, uNarrow.y);
+    vec3 current = mix(box, tent, uTent);
     vec3 mean9 = sum / 9.0;
     vec3 sd = sqrt(max(sum2 / 9.0 - mean9 * mean9, vec3(0.0)));
     lo = min(max(lo, mean9 - uClip * sd), current);
