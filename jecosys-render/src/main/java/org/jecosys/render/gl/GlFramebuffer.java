@@ -221,16 +221,20 @@ public final class GlFramebuffer extends GlResource {
             return;
         }
         boolean box = tent > 0 || temporal != null;
+        // the running mean is shown this frame: the one-frame filter, and the detail mask it reads, are not
+        boolean mean = temporal != null && temporal.keeps();
         glBindFramebuffer(GL_READ_FRAMEBUFFER, id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, box ? resolved.box.id() : resolved.id());
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         if (box) {
-            // the detail mask too, into the box's second texture
-            org.lwjgl.opengl.GL11C.glReadBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
-            org.lwjgl.opengl.GL11C.glDrawBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
-            glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            org.lwjgl.opengl.GL11C.glDrawBuffer(GL_COLOR_ATTACHMENT0);
-            org.lwjgl.opengl.GL11C.glReadBuffer(GL_COLOR_ATTACHMENT0);
+            if (!mean) {
+                // the detail mask too, into the box's second texture
+                org.lwjgl.opengl.GL11C.glReadBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
+                org.lwjgl.opengl.GL11C.glDrawBuffer(org.lwjgl.opengl.GL30C.GL_COLOR_ATTACHMENT1);
+                glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                org.lwjgl.opengl.GL11C.glDrawBuffer(GL_COLOR_ATTACHMENT0);
+                org.lwjgl.opengl.GL11C.glReadBuffer(GL_COLOR_ATTACHMENT0);
+            }
             if (temporal != null && temporal.resolve(id(), resolved.box.texture, width, height)) {
                 // the running mean is the picture
                 glBindFramebuffer(GL_FRAMEBUFFER, temporal.framebuffer());

@@ -248,7 +248,7 @@ final class Temporal extends GlResource {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, samples);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, depthFb);
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-        boolean keep = valid && cameraSet;
+        boolean keep = keeps();
         if (!keep || previous.equals(current)) {
             reproject.identity();
         } else {
@@ -280,6 +280,11 @@ final class Temporal extends GlResource {
         cameraSet = false;
         frame++;
         return keep;
+    }
+
+    /** {@return whether the next {@link #resolve} keeps the history, so that the running mean is shown} */
+    boolean keeps() {
+        return valid && cameraSet;
     }
 
     /** {@return the framebuffer whose colour is the running mean the last {@link #resolve} wrote} */
