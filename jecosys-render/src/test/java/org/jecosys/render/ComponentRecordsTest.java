@@ -160,13 +160,13 @@ abstract class ComponentRecordsTest {
         for (int p = 0; p < world.plantCount(); p++) {
             drawnComponents += frame.drawLevel(p) >= 0 ? world.componentsOf(p) : 0;
         }
-        for (int i = 0; i < batches.runs(); i++) {
-            assertTrue(batches.runEnd(i) > batches.runStart(i));
-            assertTrue(i == 0 || batches.runStart(i) - batches.runEnd(i - 1) > PlantBatches.GAP, "ranges merged");
-            states += batches.runEnd(i) - batches.runStart(i);
+        for (int i = 0; i < batches.runs().count(); i++) {
+            assertTrue(batches.runs().end(i) > batches.runs().start(i));
+            assertTrue(i == 0 || batches.runs().start(i) - batches.runs().end(i - 1) > PlantBatches.GAP, "ranges merged");
+            states += batches.runs().end(i) - batches.runs().start(i);
         }
         assertTrue(states >= drawnComponents, "every drawn component's state is uploaded");
-        assertTrue(states <= drawnComponents + (long) PlantBatches.GAP * batches.runs(), "and little else");
+        assertTrue(states <= drawnComponents + (long) PlantBatches.GAP * batches.runs().count(), "and little else");
         assertEquals(8L * batches.instances() + Frame.RENDER_STATE_BYTES * states, renderer.uploadedBytes(),
                 "8 bytes per drawn plant and level, 8 per component of the uploaded ranges");
     }

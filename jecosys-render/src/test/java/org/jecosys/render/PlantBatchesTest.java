@@ -162,8 +162,8 @@ class PlantBatchesTest {
                 hi = Math.max(hi, world.firstComponent(p) + world.componentsOf(p));
             }
         }
-        assertEquals(lo, b.runStart(0), "the first range starts at the lowest listed component");
-        assertEquals(hi, b.runEnd(b.runs() - 1), "the last ends after the highest");
+        assertEquals(lo, b.runs().start(0), "the first range starts at the lowest listed component");
+        assertEquals(hi, b.runs().end(b.runs().count() - 1), "the last ends after the highest");
     }
 
     @Test

@@ -55,6 +55,14 @@ final class CoverageDraws {
         return !c.multisampled || blendOnSamples;
     }
 
+    /**
+     * {@return whether a target with or without samples gets the near plants in two passes on its samples,
+     * the core and then the fringe (the core cut or the split programs)}
+     */
+    boolean twoPassesOnSamples(boolean multisampled) {
+        return multisampled && blendOnSamples;
+    }
+
     /** Draws the prepared triangle levels (the split programs compiled on first use). */
     void near(PassContext c, PlantGpu gpu, PlantPasses passes, PlantBatches batches, PlantLook look, int levelMask) {
         if (!blends(c)) {

@@ -26,6 +26,8 @@ final class NearView implements AutoCloseable {
 
     /** The decision for a camera the frame's own decision was not made for (another view, a cut). */
     private final ViewDecision view;
+    /** How far each list's plants keep a core, for the core's pass of a multisampled target. */
+    private final CoreReach reach;
     private final Matrix4f viewProj = new Matrix4f();
     /** The view-projection as the passes read it, 16 floats column-major (native memory). */
     final FloatBuffer matrix;
@@ -39,10 +41,12 @@ final class NearView implements AutoCloseable {
     /**
      * Allocates the view-projection's floats and the query (freed again if this fails). Render thread.
      *
-     * @param view the decision for other cameras, made for the renderer's world
+     * @param view  the decision for other cameras, made for the renderer's world
+     * @param reach the distances beyond which the world's plants have no core
      */
-    NearView(ViewDecision view) {
+    NearView(ViewDecision view, CoreReach reach) {
         this.view = view;
+        this.reach = reach;
         FloatBuffer mat = MemoryUtil.memAllocFloat(16);
         try {
             query = new GlInts();
@@ -63,6 +67,25 @@ final class NearView implements AutoCloseable {
         int samples = query.get(GL13C.GL_SAMPLES);
         batches.setWholePlants(samples < wholePlantsBelow);
         return samples;
+    }
+
+    /**
+     * Tells {@code batches} whether to list apart the whole plants that have no core where they stand
+     * for {@code camera} ({@link PlantBatches#setCoreless}): only when the near plants' core is drawn in a
+     * pass of its own on a multisampled target ({@code twoPasses}; whether that pass then leaves them out
+     * is {@link PlantPasses#setLeaveOutCoreless}'s), with the values the draw programs get this frame. No
+     * allocation.
+     */
+    void coreless(boolean twoPasses, Camera camera, int viewportHeight, float minPixels, Frame frame,
+                  PlantBatches batches) {
+        if (!twoPasses) {
+            batches.setCoreless(null, 0, 0);
+            return;
+        }
+        reach.update(minPixels, (float) (camera.viewHeightAtEye() / viewportHeight),
+                (float) (camera.viewHeightPerMetre() / viewportHeight), frame.thinStart(), frame.thinEnd(),
+                frame.thinMinFraction());
+        batches.setCoreless(reach, (float) camera.x(), (float) camera.z());
     }
 
     /**

@@ -20,8 +20,9 @@ import org.jecosys.sim.World;
  * plants in a band after them, each group in plant order: the renderer draws the first group with
  * programs that have no dither test, which keeps early depth testing on in the rasteriser (a shader
  * that may discard loses it on llvmpipe), and only those in a band with the dither test
- * ({@link #whole}). Counters: triangles and lines submitted = sum over lists of instances × that
- * level's primitive count.
+ * ({@link #whole}). With {@link #setCoreless}, the whole plants that have no core where they stand
+ * open the whole group ({@link #coreless}), the others following, each in plant order. Counters:
+ * triangles and lines submitted = sum over lists of instances × that level's primitive count.
  *
  * <p>Render thread (or any single thread); {@link #update} and {@link #writeInstances} allocate
  * nothing. Lists are stored in preallocated arrays sized for every plant at every level.
@@ -47,15 +48,20 @@ public final class PlantBatches {
     private long lineCount;
     private int instances;
     private int components;
-    private final int[] runStart;       // component ranges holding the listed plants, gaps under GAP merged
-    private final int[] runEnd;
-    private int runs;
+    private final ComponentRuns runs;
     /** The dither window of a plant drawn whole at its level: keep every fragment, [0, 1). */
     public static final int WHOLE = 0xFF;
     /** Gaps between listed plants' components up to this many are uploaded rather than split. */
     public static final int GAP = 64;
     /** Whether a plant in a band is drawn whole at one level instead of dithered (see {@link #setWholePlants}). */
     private boolean wholePlants;
+    /** Where whole plants with no core are listed apart ({@link #setCoreless}); null: nowhere. */
+    private CoreReach coreReach;
+    private float eyeX;
+    private float eyeZ;
+    private final int[] coreless;       // per list: whole plants without a core, listed first
+    private int[] corePlants;           // per list entry: whole plants with a core, while listing
+    private int[] coreKeeps;
 
     /**
      * Batches for a world. Build time; allocates the lists for every plant at every level.
@@ -88,6 +94,7 @@ public final class PlantBatches {
         listStart = new int[lists + 1];
         listCount = new int[lists];
         whole = new int[lists];
+        coreless = new int[lists];
         banded = new int[lists];
         instanceOffset = new int[lists];
         componentOffset = new int[lists];
@@ -106,8 +113,7 @@ public final class PlantBatches {
         listStart[lists] = at;
         plants = new int[at];
         keeps = new int[at];
-        runStart = new int[Math.max(1, world.plantCount())];
-        runEnd = new int[Math.max(1, world.plantCount())];
+        runs = new ComponentRuns(world.plantCount());
     }
 
     /**
@@ -157,29 +163,25 @@ public final class PlantBatches {
         int lists = listBase[species];
         for (int li = 0; li < lists; li++) {
             whole[li] = 0;
+            coreless[li] = 0;
             banded[li] = 0;
         }
-        runs = 0;
+        runs.clear();
     }
 
     /** Lists plant p at level l (and at l + 1 in a band), and its components in the upload ranges. */
     private void list(int p, int l, int keep) {
         int c0 = world.firstComponent(p);
         int c1 = c0 + world.componentsOf(p);
-        if (runs > 0 && c0 - runEnd[runs - 1] <= GAP) {
-            runEnd[runs - 1] = c1;
-        } else {
-            runStart[runs] = c0;
-            runEnd[runs++] = c1;
-        }
+        runs.add(c0, c1);
         int s = world.plantSpecies(p);
         int next = keep >>> 16 != 0 && l + 1 < levels[s] ? keep >>> 16 : 0;
         if (wholePlants && (keep & 0xFFFF) != WHOLE) {
             // the plant's own threshold picks the one window (of the two complementary ones) it falls in
-            float t = threshold(p);
-            if (inWindow(keep & 0xFFFF, t)) {
+            float t = DitherWindows.threshold(p);
+            if (DitherWindows.inWindow(keep & 0xFFFF, t)) {
                 add(listBase[s] + l, p, WHOLE);
-            } else if (next != 0 && inWindow(next, t)) {
+            } else if (next != 0 && DitherWindows.inWindow(next, t)) {
                 add(listBase[s] + l + 1, p, WHOLE);
             }
             return;
@@ -202,20 +204,6 @@ public final class PlantBatches {
      */
     public void setWholePlants(boolean whole) {
         wholePlants = whole;
-    }
-
-    /** {@return the plant's fixed threshold in (0, 1): a hash of its index} */
-    static float threshold(int plant) {
-        int h = plant * 0x9E3779B9;
-        h ^= h >>> 16;
-        h *= 0x85EBCA6B;
-        h ^= h >>> 13;
-        return ((h >>> 8) + 0.5f) * (1f / (1 << 24));
-    }
-
-    /** Whether threshold t lies in the packed window (lo &lt;&lt; 8 | hi, in 1/255): lo &lt;= t &lt; hi. */
-    static boolean inWindow(int window, float t) {
-        return t >= (window >>> 8) * (1f / 255) && t < (window & 255) * (1f / 255);
     }
 
     private void finish() {
@@ -244,13 +232,55 @@ public final class PlantBatches {
     }
 
     private void add(int list, int plant, int keep) {
+        if (keep == WHOLE && coreReach != null) {
+            float dx = world.plantX(plant) - eyeX;
+            float dz = world.plantZ(plant) - eyeZ;
+            boolean none = dx * dx + dz * dz >= coreReach.beyondSq(list);
+            int at = listStart[list] + (none ? coreless[list]++ : whole[list]++);
+            (none ? plants : corePlants)[at] = plant;
+            (none ? keeps : coreKeeps)[at] = keep;
+            return;
+        }
         int at = keep == WHOLE ? listStart[list] + whole[list]++ : listStart[list + 1] - 1 - banded[list]++;
         plants[at] = plant;
         keeps[at] = keep;
     }
 
+    /**
+     * Lists the whole plants (outside any band) that have no core where they stand first in their lists,
+     * as {@code reach} tells for the eye at ({@code x}, {@code z}), from the next {@link #update} on
+     * (null: no such split): the core's pass of a multisampled target leaves them out ({@link #coreless}).
+     * Render thread; allocates a list-sized array at the first call.
+     */
+    void setCoreless(CoreReach reach, float x, float z) {
+        if (reach != null && corePlants == null) {
+            corePlants = new int[plants.length];
+            coreKeeps = new int[plants.length];
+        }
+        coreReach = reach;
+        eyeX = x;
+        eyeZ = z;
+    }
+
+    /**
+     * {@return how many of a list's plants, its first ones, are drawn whole and have no core where they
+     * stand (0 unless {@link #setCoreless} is set): a part of {@link #whole}}
+     *
+     * @param list list index, in [0, listCount())
+     */
+    public int coreless(int list) {
+        return coreless[list];
+    }
+
     /** Moves a list's banded plants (at the end of its room, last first) to follow its whole ones, in order. */
     private void gather(int list) {
+        if (coreReach != null) {
+            // the whole plants with a core follow those without
+            int st = listStart[list];
+            System.arraycopy(corePlants, st, plants, st + coreless[list], whole[list]);
+            System.arraycopy(coreKeeps, st, keeps, st + coreless[list], whole[list]);
+            whole[list] += coreless[list];
+        }
         int n = banded[list];
         int end = listStart[list + 1];
         for (int i = end - n, j = end - 1; i < j; i++, j--) {
@@ -308,32 +338,10 @@ public final class PlantBatches {
         return keeps[listStart[list] + i];
     }
 
-    /** {@return the number of component ranges that hold the plants listed by the last {@link #update}} */
-    public int runs() {
+    /** {@return the component ranges that hold the plants listed by the last {@link #update}} */
+    public ComponentRuns runs() {
         return runs;
     }
-
-    /**
-     * {@return the first component of range {@code i}: the listed plants' components lie in the
-     * ranges, which are ascending and disjoint; a gap of at most {@link #GAP} components between two
-     * listed plants is part of a range}
-     *
-     * @param i range index, in [0, runs())
-     */
-    public int runStart(int i) {
-        return runStart[i];
-    }
-
-    /**
-     * {@return one past the last component of range {@code i}}
-     *
-     * @param i range index, in [0, runs())
-     */
-    public int runEnd(int i) {
-        return runEnd[i];
-    }
-
-
 
     /** {@return the number of species} */
     public int speciesCount() {
@@ -419,10 +427,6 @@ public final class PlantBatches {
     public int primitivesPerPlant(int list) {
         return primitives[list];
     }
-
-
-
-
 
     /** {@return the number of triangles submitted by the last {@link #update}} */
     public long triangles() {

@@ -65,6 +65,9 @@ public final class PlantPasses {
     /** What the last {@link #drawTrianglesCore} counted, taken back by the {@link #drawTrianglesAgain} after it. */
     private int coreDraws;
     private long coreInstances;
+    /** Whether the draw under way is the core's pass: the plants listed without a core are left out. */
+    private boolean coreOnly;
+    private boolean leaveOutCoreless = true;
 
     /**
      * Compiles program {@code k} of {@link #COUNT} (bit 0: the dither test, bit 1: line levels, bit 2:
@@ -363,8 +366,14 @@ public final class PlantPasses {
         }
     }
 
+    /** Sets whether {@link #drawTrianglesCore} leaves out the plants listed without a core. */
+    public void setLeaveOutCoreless(boolean on) {
+        leaveOutCoreless = on;
+    }
+
     /**
-     * As {@link #drawTriangles}, the core's pass of a multisampled target; what it counts is taken back by
+     * As {@link #drawTriangles}, the core's pass of a multisampled target, without the whole plants each
+     * list holds first as having no core ({@link PlantBatches#coreless}); what it counts is taken back by
      * the fringe's pass after it ({@link #drawTrianglesAgain}), so that each list counts once. No
      * allocation.
      */
@@ -372,7 +381,9 @@ public final class PlantPasses {
                                   int levelMask) {
         int draws0 = draws;
         long instances0 = instances;
+        coreOnly = leaveOutCoreless;
         drawTriangles(batches, vaos, indexCount, look, levelMask);
+        coreOnly = false;
         coreDraws = draws - draws0;
         coreInstances = instances - instances0;
     }
@@ -413,8 +424,8 @@ public final class PlantPasses {
                 for (int l = 0, levels = batches.levels(s); l < levels; l++) {
                     int li = batches.list(s, l);
                     int whole = batches.whole(li);
-                    int first = dither ? whole : 0;
-                    int n = dither ? batches.count(li) - whole : whole;
+                    int first = dither ? whole : coreOnly ? batches.coreless(li) : 0;
+                    int n = dither ? batches.count(li) - whole : whole - first;
                     if (n == 0 || indexCount[li] == 0 || (levelMask >> l & 1) == 0 || batches.lines(li) != lines) {
                         continue;
                     }

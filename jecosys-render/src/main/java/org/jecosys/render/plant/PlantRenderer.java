@@ -37,11 +37,9 @@ import org.jecosys.sim.World;
  * leaf's true width covers as opacity: the line levels are drawn last, blended
  * over the opaque scene ({@link #drawNear}, your terrain, {@link #drawFar}), so far grass has the
  * coverage and colour of the triangle level just nearer instead of one solid pixel per leaf edge.
- * The GL objects and their upload layout live in {@code PlantGpu}, the per-component uploads and the
- * resolve pass in {@code ComponentResolver}, which this renderer owns and closes; the draw programs'
- * variants and the draws in {@code PlantPasses}; what a frame's passes share in a {@code PassContext};
- * the camera and target the near plants are prepared for (the decision for another camera) in
- * {@code NearView}.
+ * Parts: GL objects and upload layout {@code PlantGpu}; per-component uploads and resolve pass
+ * {@code ComponentResolver}; draws {@code PlantPasses}; the passes' shared values {@code PassContext};
+ * the camera and target prepared for {@code NearView}; the core's reach {@code CoreReach}.
  *
  * <p>Render thread only; {@link #draw} allocates nothing. Owns its GL objects; {@link #close()} is
  * idempotent, and a constructor that fails part way releases what it had made.
@@ -135,7 +133,7 @@ public final class PlantRenderer implements AutoCloseable {
         boolean[] flowers = PlantMeshes.flowerParts(models);
         NearView n = null;
         try {
-            n = new NearView(view);
+            n = new NearView(view, new CoreReach(models, batches));
             // the draw programs' uniforms last: Mesa keeps a transform-feedback program that was left in
             // use here alive past its deletion
             passes = new PlantPasses(gpu.programs, flowers);
@@ -332,6 +330,7 @@ public final class PlantRenderer implements AutoCloseable {
         }
         Require.range("viewportHeight", viewportHeight, 1, 1 << 16);
         int targetSamples = near.target(batches);
+        near.coreless(coverage.twoPassesOnSamples(targetSamples > 1), camera, viewportHeight, look.minPixels, frame, batches);
         near.decide(frame, camera, batches);
         passes.resetCounts();
         pending = batches.instances() > 0;
@@ -417,6 +416,16 @@ public final class PlantRenderer implements AutoCloseable {
      */
     public void setCoreCut(boolean on) {
         coverage.setCoreCut(on);
+    }
+
+    /**
+     * With the core cut ({@link #setCoreCut}), whether its pass leaves out whole the plants its lists
+     * hold as having no core where they stand ({@link PlantBatches#coreless}; on, the default) or draws
+     * them and lets the vertex shader leave out each of their vertices. The picture is the same (the
+     * fringe's order is that of the lists either way). Render thread; no allocation.
+     */
+    public void setLeaveOutCoreless(boolean on) {
+        passes.setLeaveOutCoreless(on);
     }
 
     /**

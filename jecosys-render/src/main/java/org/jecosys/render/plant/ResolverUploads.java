@@ -92,10 +92,11 @@ final class ResolverUploads {
             instanceBuffer.upload(0, instances);
         }
         long bytes = 0;
-        for (int i = 0, runs = batches.runs(); i < runs; i++) {
-            long c0 = batches.runStart(i);
+        ComponentRuns runs = batches.runs();
+        for (int i = 0, n = runs.count(); i < n; i++) {
+            long c0 = runs.start(i);
             long at = (long) Frame.RENDER_STATE_BYTES * c0;
-            long size = (long) Frame.RENDER_STATE_BYTES * (batches.runEnd(i) - c0);
+            long size = (long) Frame.RENDER_STATE_BYTES * (runs.end(i) - c0);
             if (ring != null) {
                 MemoryUtil.memCopy(base + at, states + at, size);
             } else {
