@@ -13,6 +13,7 @@ import static org.lwjgl.opengl.GL11C.glEnable;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_ONE;
 import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
+import static org.lwjgl.opengl.GL30C.glDisablei;
 
 /**
  * How {@link PlantRenderer} puts the plants' partial coverage on the bound target: the share of a pixel
@@ -135,11 +136,16 @@ final class CoverageDraws {
 
     /**
      * Turns blending by coverage on or off: colour blended by alpha, alpha composited "over"
-     * (a + d (1 - a)), so plants stay opaque over an opaque target.
+     * (a + d (1 - a)), so plants stay opaque over an opaque target. Draw buffer 1, the library
+     * framebuffer's detail mask ({@code plant.frag}'s {@code fragDetail}, 1 from every plant fragment,
+     * alpha 1), is written rather than blended: blending 1 over anything by its alpha 1 gives 1, the same
+     * value, without reading each sample first (on llvmpipe at 1920x1080 the meadow's near plants cost
+     * about a tenth less). A host's other draw buffers are masked off ({@code GlStateGuard}).
      */
     private static void blendByCoverage(boolean on) {
         if (on) {
             glEnable(GL_BLEND);
+            glDisablei(GL_BLEND, 1);
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         } else {
             glDisable(GL_BLEND);
