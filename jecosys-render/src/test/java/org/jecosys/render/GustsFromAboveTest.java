@@ -44,13 +44,13 @@ import org.junit.jupiter.api.Test;
  * HeadlessRender.FRAME_DT): 150 frames are the 5 s over which the issue saw "pale mottles drift like
  * cloud shadows". (Until the meadow's wind was retuned this test stepped 1/60 s per frame, as
  * {@link WindSheenTest} does, and so watched only 2.5 s.) With the meadow's wind as shipped (gusts
- * 7 m along the wind and 6 times that across it, gustStrength 1, turbulence 0.45) it reads middle
- * 9.91/255, far 8.40, bands 3.72 times longer across than along with the wind 60 degrees off the view
- * (the across length reaches the lattice's 10 m limit), travel 4.29 m/s against 4.00 (+7%): issue 41's
- * figures, which the assertions hold. Within 1 s windows it reads 1.42/255 at least (the first second,
- * while the plants, settled at their equilibrium in the wind at t = 0 and still, pick up speed; the median window 2.28), short of
- * the issue's 3: that assertion holds today's figure with a margin, and the printed line gives it
- * against the issue's. Tagged {@code slow} (150 frames of the whole meadow): it runs in
+ * 4 m along the wind and 6 times that across it, gustStrength 1.6, turbulence 0.45) it reads middle
+ * 12.29/255, far 8.67, every 1 s window from the second on 3.81 at least (median 4.31), bands 4.92 times
+ * longer across than along with the wind 60 degrees off the view, travel 4.00 m/s against 4.00: issue
+ * 41's figures, which the assertions hold. The first second reads 2.40, short of the issue's 3: the
+ * plants start at their equilibrium in the wind at t = 0 and still, and pick up speed over their
+ * response time; that window is held to 2. (With gusts 7 m along and gustStrength 1 the least window
+ * was the first, 1.42, and the others 2.0-2.6.) Tagged {@code slow} (150 frames of the whole meadow): it runs in
  * {@code mvn -B verify -Pnightly}.
  */
 @Tag("slow")
@@ -142,6 +142,7 @@ class GustsFromAboveTest {
             seconds[w] = medianSd(blocks, veg, bx, by, bandRows[1], bandRows[3], w, w + second);
         }
         double leastSecond = Arrays.stream(seconds).min().orElse(0);
+        double leastLater = Arrays.stream(seconds, second, seconds.length).min().orElse(0);
         double[] sortedSeconds = seconds.clone();
         Arrays.sort(sortedSeconds);
         double medianSecond = sortedSeconds[sortedSeconds.length / 2];
@@ -169,17 +170,18 @@ class GustsFromAboveTest {
         }
         double seen = peak > 0 ? TRAVEL / (peak * dt) : Double.POSITIVE_INFINITY;
         System.out.printf(Locale.ROOT, "[look] gusts from 15 m up, %d frames at %dx%d: block luma s.d. middle %.2f, far"
-                        + " %.2f (issue 41 asks >= 8); least over 1 s windows %.2f (asks >= 3; median window %.2f); %d ground points: pattern"
+                        + " %.2f (issue 41 asks >= 8); least over 1 s windows %.2f (asks >= 3; after the first second %.2f; median window %.2f); %d ground points: pattern"
                         + " half-correlation length along the wind %.2f m, across %.2f m (ratio %.2f, asks >= 2; wind %.0f deg"
                         + " from the view's direction); 2 m downwind correlates best %d frames later (%.3f; %.3f at lag"
                         + " 0): %.2f m/s against %.2f m/s (%+.0f%%, asks within 20%%)%n",
-                FRAMES, W, H, middleFar[0], middleFar[1], leastSecond, medianSecond, lattice.count, along, across, across / along,
+                FRAMES, W, H, middleFar[0], middleFar[1], leastSecond, leastLater, medianSecond, lattice.count, along, across, across / along,
                 windAngle, peak, best, atZero, seen, speed, 100 * (seen / speed - 1));
         assertTrue(lattice.count >= 500, "ground points seen in the middle and far field: " + lattice.count);
         // issue 41's figures where they are met (middle, far, bands, travel); every second: today's 1.42 with a margin
         assertTrue(middleFar[0] >= 8 && middleFar[1] >= 8, "the wind shows in the middle and far field (>= 8/255): "
                 + Arrays.toString(middleFar));
-        assertTrue(leastSecond >= 1.2, "every second shows the wind: " + leastSecond);
+        assertTrue(leastLater >= 3, "every second after the first shows the wind (>= 3/255): " + leastLater);
+        assertTrue(leastSecond >= 2, "the first second shows the wind: " + leastSecond);
         assertTrue(across >= 2 * along, "gust patterns at least twice as long across the wind as along it: " + across
                 + " vs " + along + " m");
         assertTrue(peak > 0 && best >= atZero + 0.03, "the pattern travels downwind: peak at " + peak
