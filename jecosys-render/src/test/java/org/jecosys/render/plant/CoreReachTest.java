@@ -10,7 +10,10 @@ import java.util.Set;
 import org.jecosys.plant.LodMesh;
 import org.jecosys.plant.Primitive;
 import org.jecosys.plant.SpeciesModel;
+import org.jecosys.math.ViewCamera;
 import org.jecosys.render.RenderScenes;
+import org.jecosys.render.TestFrames;
+import org.jecosys.sim.Frame;
 import org.jecosys.sim.DrawDecision;
 import org.jecosys.sim.World;
 import org.junit.jupiter.api.Test;
@@ -68,6 +71,58 @@ class CoreReachTest {
         }
         System.out.println("[look] coreless beyond (m, far level; thinning from 4 m, then none): " + far);
         assertEquals(6, far.size(), "the meadow's three grasses lose their core far away");
+    }
+
+    /**
+     * {@link PlantBatches#setCoreless}: the same plants in every list as without it, the whole plants
+     * beyond the list's distance first (in plant order), then the other whole plants (in plant order),
+     * then those in a band; off again, the lists are as before.
+     */
+    @Test
+    void theBatchesListTheCorelessWholePlantsFirst() {
+        World world = RenderScenes.build(RenderScenes.load("meadow.xml"));
+        ViewCamera cam = new ViewCamera();
+        cam.setPosition(0, world.terrain().heightfield().height(0, 0) + 1.7, 0);
+        cam.setOrientation(0, -0.2);
+        cam.setLens(Math.toRadians(60), 16 / 9.0, 0.05, 500);
+        Frame frame = TestFrames.rest(world, cam);
+        PlantBatches plain = new PlantBatches(world);
+        plain.update(frame);
+        PlantBatches split = new PlantBatches(world);
+        CoreReach reach = new CoreReach(world.plants().species(), split);
+        reach.update(MIN_PIXELS, 0, PIXEL_Y, 0, 1, 1);
+        split.setCoreless(reach, (float) cam.x(), (float) cam.z());
+        split.update(frame);
+        long coreless = 0;
+        for (int li = 0; li < split.listCount(); li++) {
+            assertEquals(plain.count(li), split.count(li), "list " + li);
+            assertEquals(plain.whole(li), split.whole(li), "list " + li + " whole");
+            java.util.List<Integer> none = new ArrayList<>();
+            java.util.List<Integer> core = new ArrayList<>();
+            for (int i = 0; i < plain.whole(li); i++) {
+                int p = plain.plant(li, i);
+                float dx = world.plantX(p) - (float) cam.x();
+                float dz = world.plantZ(p) - (float) cam.z();
+                (dx * dx + dz * dz >= reach.beyondSq(li) ? none : core).add(p);
+            }
+            assertEquals(none.size(), split.coreless(li), "list " + li + " coreless");
+            none.addAll(core);
+            for (int i = 0; i < split.count(li); i++) {
+                int want = i < none.size() ? none.get(i) : plain.plant(li, i);
+                assertEquals(want, split.plant(li, i), "list " + li + " entry " + i);
+                assertEquals(i < none.size() ? PlantBatches.WHOLE : plain.keepOf(li, i), split.keepOf(li, i), "its window");
+            }
+            coreless += split.coreless(li);
+        }
+        assertTrue(coreless > 1000, "coreless plants listed apart: " + coreless);
+        split.setCoreless(null, 0, 0);
+        split.update(frame);
+        for (int li = 0; li < split.listCount(); li++) {
+            assertEquals(0, split.coreless(li));
+            for (int i = 0; i < split.count(li); i++) {
+                assertEquals(plain.plant(li, i), split.plant(li, i), "off again: list " + li + " entry " + i);
+            }
+        }
     }
 
     /** Per distinct blade or stem part of the mesh: its widest half width and reach, as uploaded. */
