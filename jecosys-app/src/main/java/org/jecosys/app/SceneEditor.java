@@ -372,7 +372,7 @@ final class SceneEditor {
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
         AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(),
-                a.seed());
+                a.seed(), a.prewarm());
         ForceFieldDef f = def.field();
         ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept
         return new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),

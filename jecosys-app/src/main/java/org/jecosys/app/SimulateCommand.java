@@ -150,7 +150,8 @@ final class SimulateCommand implements Callable<Integer> {
         SimulationDef sd = def.simulationDef();
         AnimationDef a = sd.animation();
         AnimationDef anim = new AnimationDef(mode != null ? mode : a.mode(), dt != null ? dt : a.fixedStep(),
-                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.workers(), a.seed());
+                a.maxSubSteps(), a.subIntervals(), threads != null ? threads : a.workers(), a.seed(),
+                a.prewarm());
         ForceFieldDef f = sd.field();
         ForceFieldDef fd = field == null ? f
                 : f.withEnabled(field == OnOff.on);

@@ -13,9 +13,17 @@ import org.jecosys.math.Require;
  * @param workers      animation workers, in [0, 256]; 0 means the available processors (the scene
  *                     file's {@code <animation threads>})
  * @param seed         seed of the random mode and of any other randomness in animation
+ * @param prewarm      seconds of wind the simulation runs before its first step, in [0,
+ *                     {@link #MAX_PREWARM}] (not in the paper): the plants start at the equilibrium of
+ *                     the wind and still, so without it the first second after a scene starts moves
+ *                     less than any later one; with it the first frame a viewer sees is already in
+ *                     motion. 0 (the default) starts at t = 0 as the paper's scenes do.
  */
 public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps, int subIntervals, int workers,
-                           long seed) {
+                           long seed, double prewarm) {
+    /** Longest {@link #prewarm()}, seconds. */
+    public static final double MAX_PREWARM = 60;
+
     /**
      * Checks the components.
      *
@@ -25,6 +33,7 @@ public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps
      * @param subIntervals spring sub-intervals per step, in [1, 64]
      * @param workers      animation workers, in [0, 256]; 0 means the available processors
      * @param seed         seed of the random mode (any value)
+     * @param prewarm      seconds run before the first step, in [0, {@link #MAX_PREWARM}]
      * @throws IllegalArgumentException when mode is null or a number is out of range
      */
     public AnimationDef {
@@ -33,9 +42,39 @@ public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps
         Require.range("maxSubSteps", maxSubSteps, 1, 1000);
         Require.range("subIntervals", subIntervals, 1, 64);
         Require.range("workers", workers, 0, 256);
+        Require.range("prewarm", prewarm, 0, MAX_PREWARM);
     }
 
-    /** {@return constraint mode at 60 Hz, at most 8 sub-steps, 4 sub-intervals, all processors, seed 1} */
+    /**
+     * Settings without a prewarm (the paper's start at t = 0).
+     *
+     * @param mode         static, random or constraint, not null
+     * @param fixedStep    fixed step, seconds, in [1e-5, 1]
+     * @param maxSubSteps  most fixed steps per step(dt) call, in [1, 1000]
+     * @param subIntervals spring sub-intervals per step, in [1, 64]
+     * @param workers      animation workers, in [0, 256]; 0 means the available processors
+     * @param seed         seed of the random mode (any value)
+     * @throws IllegalArgumentException when mode is null or a number is out of range
+     */
+    public AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps, int subIntervals, int workers,
+                        long seed) {
+        this(mode, fixedStep, maxSubSteps, subIntervals, workers, seed, 0);
+    }
+
+    /**
+     * {@return the fixed steps the prewarm runs: {@link #prewarm()} / {@link #fixedStep()}, rounded to the
+     * nearest}
+     */
+    public int prewarmSteps() {
+        return (int) Math.round(prewarm / fixedStep);
+    }
+
+    /** {@return these settings with another prewarm, seconds in [0, {@link #MAX_PREWARM}]} */
+    public AnimationDef withPrewarm(double seconds) {
+        return new AnimationDef(mode, fixedStep, maxSubSteps, subIntervals, workers, seed, seconds);
+    }
+
+    /** {@return constraint mode at 60 Hz, at most 8 sub-steps, 4 sub-intervals, all processors, seed 1, no prewarm} */
     public static AnimationDef defaults() {
         return new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4, 0, 1);
     }

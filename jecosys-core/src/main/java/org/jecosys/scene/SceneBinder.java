@@ -412,7 +412,8 @@ final class SceneBinder {
             return AnimationDef.defaults();
         }
         return make(a, () -> new AnimationDef(byXml(AnimationMode.values(), a.str("mode")), a.num("fixedStep"),
-                a.integer("maxSubSteps"), a.integer("subIntervals"), a.integer("threads"), a.longValue("seed")));
+                a.integer("maxSubSteps"), a.integer("subIntervals"), a.integer("threads"), a.longValue("seed"),
+                a.num("prewarm")));
     }
 
     private RenderDef render(Values r) {

@@ -344,7 +344,11 @@ final class SceneSchema {
                         .range(1, 64).def(4).get(d -> ((AnimationDef) d).subIntervals()))
                 .attr(integer("threads", "Animation workers; 0 means the available processors.").range(0, 256)
                         .def(0).get(d -> ((AnimationDef) d).workers()))
-                .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()));
+                .attr(seed("Seed of the random mode.", d -> ((AnimationDef) d).seed()))
+                .attr(num("prewarm", "seconds", "Wind the simulation runs before its first step, so the first frame is "
+                        + "already in motion (the plants start still, at the equilibrium of the wind); 0 starts at t = 0 "
+                        + "as the paper's scenes do.").range(0, AnimationDef.MAX_PREWARM).def(0.0)
+                        .get(d -> ((AnimationDef) d).prewarm()));
 
         ElementSpec render = RenderSchema.render();
 

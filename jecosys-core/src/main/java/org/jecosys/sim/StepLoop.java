@@ -42,6 +42,8 @@ final class StepLoop {
     private final int subIntervals;
     /** Whether the constructor put the plants at the equilibrium of the wind at t = 0. */
     private final boolean settledAtBuild;
+    /** Fixed steps still to run before the first step a caller asks for ({@link AnimationDef#prewarm()}). */
+    private int prewarmSteps;
 
     private AnimationMode mode;
     private boolean fieldEnabled;
@@ -74,6 +76,7 @@ final class StepLoop {
         fixedStep = ad.fixedStep();
         maxSubSteps = ad.maxSubSteps();
         subIntervals = ad.subIntervals();
+        prewarmSteps = ad.prewarmSteps();
         mode = ad.mode();
         fieldEnabled = def.field().enabled();
         wind = WindField.of(def.flows());
@@ -135,6 +138,7 @@ final class StepLoop {
 
     private int stepLocked(double dt, Camera camera) {
         checkOpen();
+        prewarmLocked(camera);
         accumulator += dt;
         int n = 0;
         while (accumulator >= fixedStep && n < maxSubSteps) {
@@ -161,10 +165,26 @@ final class StepLoop {
         stepLock.lock();
         try {
             checkOpen();
+            prewarmLocked(camera);
             stepFixedLocked(camera);
         } finally {
             stepLock.unlock();
         }
+    }
+
+    /**
+     * Before the first step a caller asks for: the scene's prewarm ({@link AnimationDef#prewarm()}), that
+     * many fixed steps with the caller's camera, each published as usual, none counted against
+     * maxSubSteps. Runs once; a prewarm step that throws (a game's camera or flow) ends the prewarm and
+     * reaches the caller. Stepping thread, under the step lock.
+     */
+    private void prewarmLocked(Camera camera) {
+        int n = prewarmSteps;
+        prewarmSteps = 0;
+        for (int i = 0; i < n && !closed; i++) {
+            stepFixedLocked(camera);
+        }
+        checkOpen();
     }
 
     /** Refuses a call after {@link #close()} with {@link Simulation#CLOSED}. */
@@ -312,7 +332,8 @@ final class StepLoop {
 
     /**
      * Before the first step: starts the clock (the loop's and the flows') at {@code t}, for a tile of
-     * an open world that joins the others' running time ({@link WindField#startAt}). Stepping thread.
+     * an open world that joins the others' running time ({@link WindField#startAt}); such a tile does not
+     * prewarm (it joins plants already in motion). Stepping thread.
      *
      * @throws IllegalStateException when a step has run already
      */
@@ -322,6 +343,7 @@ final class StepLoop {
         }
         wind.startAt(t);
         time = t;
+        prewarmSteps = 0;
     }
 
     /** {@return the fixed steps run so far} */

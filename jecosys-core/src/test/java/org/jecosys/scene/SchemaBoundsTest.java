@@ -62,7 +62,8 @@ class SchemaBoundsTest {
             <waypoint x="0" y="2" z="2"/>
             </path>
             </camera>
-            <animation mode="constraint" fixedStep="0.016" maxSubSteps="8" subIntervals="4" threads="2" seed="1"/>
+            <animation mode="constraint" fixedStep="0.016" maxSubSteps="8" subIntervals="4" threads="2" seed="1"
+             prewarm="1"/>
             <render width="320" height="200" lodTransition="1"/>
             </scene>
             """;

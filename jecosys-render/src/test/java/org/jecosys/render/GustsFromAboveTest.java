@@ -43,14 +43,15 @@ import org.junit.jupiter.api.Test;
  * One frame is 1/30 s of wind, as the render command draws them ({@code ./jecosys render}: its
  * HeadlessRender.FRAME_DT): 150 frames are the 5 s over which the issue saw "pale mottles drift like
  * cloud shadows". (Until the meadow's wind was retuned this test stepped 1/60 s per frame, as
- * {@link WindSheenTest} does, and so watched only 2.5 s.) With the meadow's wind as shipped (gusts
- * 4 m along the wind and 6 times that across it, gustStrength 1.6, turbulence 0.45) it reads middle
- * 12.29/255, far 8.67, every 1 s window from the second on 3.81 at least (median 4.31), bands 4.92 times
- * longer across than along with the wind 60 degrees off the view, travel 4.00 m/s against 4.00: issue
- * 41's figures, which the assertions hold. The first second reads 2.40, short of the issue's 3: the
- * plants start at their equilibrium in the wind at t = 0 and still, and pick up speed over their
- * response time; that window is held to 2. (With gusts 7 m along and gustStrength 1 the least window
- * was the first, 1.42, and the others 2.0-2.6.) Tagged {@code slow} (150 frames of the whole meadow): it runs in
+ * {@link WindSheenTest} does, and so watched only 2.5 s.) The meadow prewarms 1 s
+ * ({@code <animation prewarm>}, two of its grasses' response times): its plants start still, at the
+ * equilibrium of the wind, and without it the first second read 2.40, short of the issue's 3. With the
+ * meadow's wind as shipped (gusts 4 m along the wind and 6 times that across it, gustStrength 1.6,
+ * turbulence 0.45) it reads middle 12.27/255, far 8.04, every 1 s window 3.31 at least (median 4.31),
+ * bands 3.90 times longer across than along with the wind 60 degrees off the view, travel 4.62 m/s
+ * against 4.00 (+15%; one frame of lag is 7%): issue 41's figures, which the assertions hold. (With
+ * gusts 7 m along and gustStrength 1 the least window was the first, 1.42, and the others 2.0-2.6.)
+ * Tagged {@code slow} (150 frames of the whole meadow): it runs in
  * {@code mvn -B verify -Pnightly}.
  */
 @Tag("slow")
@@ -177,11 +178,10 @@ class GustsFromAboveTest {
                 FRAMES, W, H, middleFar[0], middleFar[1], leastSecond, leastLater, medianSecond, lattice.count, along, across, across / along,
                 windAngle, peak, best, atZero, seen, speed, 100 * (seen / speed - 1));
         assertTrue(lattice.count >= 500, "ground points seen in the middle and far field: " + lattice.count);
-        // issue 41's figures where they are met (middle, far, bands, travel); every second: today's 1.42 with a margin
+        // issue 41's figures
         assertTrue(middleFar[0] >= 8 && middleFar[1] >= 8, "the wind shows in the middle and far field (>= 8/255): "
                 + Arrays.toString(middleFar));
-        assertTrue(leastLater >= 3, "every second after the first shows the wind (>= 3/255): " + leastLater);
-        assertTrue(leastSecond >= 2, "the first second shows the wind: " + leastSecond);
+        assertTrue(leastSecond >= 3, "every second shows the wind (>= 3/255), the first included: " + leastSecond);
         assertTrue(across >= 2 * along, "gust patterns at least twice as long across the wind as along it: " + across
                 + " vs " + along + " m");
         assertTrue(peak > 0 && best >= atZero + 0.03, "the pattern travels downwind: peak at " + peak
