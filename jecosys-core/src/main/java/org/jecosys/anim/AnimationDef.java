@@ -69,7 +69,12 @@ public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps
         return (int) Math.round(prewarm / fixedStep);
     }
 
-    /** {@return these settings with another prewarm, seconds in [0, {@link #MAX_PREWARM}]} */
+    /**
+     * {@return these settings with another prewarm} Any thread; allocates the record.
+     *
+     * @param seconds the prewarm, seconds, in [0, {@link #MAX_PREWARM}]
+     * @throws IllegalArgumentException when it is out of range or NaN
+     */
     public AnimationDef withPrewarm(double seconds) {
         return new AnimationDef(mode, fixedStep, maxSubSteps, subIntervals, workers, seed, seconds);
     }
