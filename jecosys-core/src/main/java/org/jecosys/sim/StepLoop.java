@@ -175,16 +175,15 @@ final class StepLoop {
     /**
      * Before the first step a caller asks for: the scene's prewarm ({@link AnimationDef#prewarm()}), that
      * many fixed steps with the caller's camera, each published as usual, none counted against
-     * maxSubSteps. Runs once; a prewarm step that throws (a game's camera or flow) ends the prewarm and
-     * reaches the caller. Stepping thread, under the step lock.
+     * maxSubSteps. A prewarm step that throws (a game's camera or flow) reaches the caller, and the steps
+     * not yet done run at the next call; a close stops it at a step's end. Stepping thread, under the
+     * step lock.
      */
     private void prewarmLocked(Camera camera) {
-        int n = prewarmSteps;
-        prewarmSteps = 0;
-        for (int i = 0; i < n && !closed; i++) {
+        while (prewarmSteps > 0 && !closed) {
             stepFixedLocked(camera);
+            prewarmSteps--;
         }
-        checkOpen();
     }
 
     /** Refuses a call after {@link #close()} with {@link Simulation#CLOSED}. */

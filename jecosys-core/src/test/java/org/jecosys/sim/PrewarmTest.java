@@ -72,6 +72,19 @@ class PrewarmTest {
     }
 
     @Test
+    void aFirstCallThatThrowsLeavesThePrewarmForTheNext() throws Exception {
+        ViewCamera cam = SimFixtures.camera();
+        UserCodeReliabilityTest.LooseCamera bad = new UserCodeReliabilityTest.LooseCamera(SimFixtures.camera());
+        bad.badEye = true;
+        bad.x = Double.NaN; // a game's own camera, its eye not finite
+        try (Simulation sim = prewarmed(2)) {
+            assertThrows(IllegalArgumentException.class, () -> sim.stepFixed(bad), "a camera that is not finite");
+            sim.stepFixed(cam);
+            assertEquals(31, sim.latestFrame().number(), "the whole prewarm, then the caller's step");
+        }
+    }
+
+    @Test
     void anOutOfRangePrewarmIsRefusedByName() {
         AnimationDef a = AnimationDef.defaults();
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> a.withPrewarm(-1));
