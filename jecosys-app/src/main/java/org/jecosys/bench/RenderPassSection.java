@@ -62,6 +62,7 @@ final class RenderPassSection implements Section {
         headers.add("sum of passes ms");
         headers.add("whole frame ms");
         headers.add("sum / whole");
+        headers.add("frame CPU ms");
         Table t = new Table("render-passes", String.format(Locale.ROOT, "GPU time per pass: %dx%d, each scene's "
                 + "camera walk, 4 samples, median (95th percentile)", width, height), headers);
         String how = "";
@@ -90,6 +91,8 @@ final class RenderPassSection implements Section {
                             double[][] per = new double[passes][frames * 2];
                             double[] sums = new double[frames * 2];
                             double[] wholes = new double[frames * 2];
+                            double[] cpus = new double[frames * 2];
+                            int nc = 0;
                             int np = 0;
                             int nw = 0;
                             long seenPass = 0;
@@ -99,7 +102,12 @@ final class RenderPassSection implements Section {
                             for (int i = 0; i < frames + 2 * 4; i++) {
                                 ViewCamera cam = walk.at(i * DT);
                                 sim.step(DT, cam);
+                                long c0 = ProcessCpu.nanos();
                                 r.render(sim.latestFrame(), cam, width, height);
+                                long c1 = ProcessCpu.nanos();
+                                if (i >= 4 && i < frames + 4 && c0 >= 0) {
+                                    cpus[nc++] = (c1 - c0) / 1e6;
+                                }
                                 PassTimes pt = r.passTimes();
                                 if (pt.passFrames() > seenPass && i >= 4) {
                                     for (PassTimes.Pass p : PassTimes.Pass.values()) {
@@ -128,6 +136,13 @@ final class RenderPassSection implements Section {
                             row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
                             row.add(String.format(Locale.ROOT, "%.2f", whole));
                             row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
+                            row.add(nc == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f (%.2f)",
+                                    Stats.median(java.util.Arrays.copyOf(cpus, nc)),
+                                    Stats.percentile(java.util.Arrays.copyOf(cpus, nc), 95)));
+                            if (nc > 0) {
+                                report.raw("render passes / " + file + " / " + path + " / frame CPU",
+                                        java.util.Arrays.copyOf(cpus, nc));
+                            }
                             t.row(row.toArray());
                             report.raw("render passes / " + file + " / " + path + " / whole frame",
                                     java.util.Arrays.copyOf(wholes, nw));
@@ -144,7 +159,10 @@ final class RenderPassSection implements Section {
                     + " shadow and contact darkening, when they change), resolve (the near plants' lists, uploads and"
                     + " per-component pass), shadow map (the shadow-map path only), near plants, cover, ground"
                     + " (terrain), sky, far plants (line levels), overlays. Every fourth timed frame is measured whole"
-                    + " instead; the last column compares the passes' medians summed with it.");
+                    + " instead; \"sum / whole\" compares the passes' medians summed with it. Frame CPU: the"
+                    + " process's CPU time over each frame's draw calls, every thread counted (on a software rasteriser"
+                    + " its threads do the GPU's work; the host's other tenants do not count; the JVM reads it in steps of"
+                    + " 10 ms on Linux), median of every timed frame.");
         }
         report.add(t);
     }
