@@ -430,7 +430,10 @@ public final class OpenWorld implements AutoCloseable {
 
     /**
      * A loading screen: fixed steps with {@code camera}, each followed by a {@link #settle}, until a step
-     * starts no tile, so every tile within reach of the views is live. Stepping thread; allocates.
+     * starts no tile, so every tile within reach of the views is live; then the def's prewarm
+     * ({@link org.jecosys.anim.AnimationDef#prewarm()}): that many fixed steps more, so the plants the game
+     * starts among are already in motion (tiles that arrive later join the running wind at the radius).
+     * Stepping thread; allocates.
      *
      * @param camera the viewer where the game starts
      */
@@ -440,8 +443,11 @@ public final class OpenWorld implements AutoCloseable {
             boolean started = pendingTiles() > 0;
             settle();
             if (!started) {
-                return;
+                break;
             }
+        }
+        for (int i = def.animation().prewarmSteps(); i > 0; i--) {
+            stepFixed(camera);
         }
     }
 

@@ -191,6 +191,29 @@ class OpenWorldTest {
         }
     }
 
+    /**
+     * The loading screen runs the def's prewarm after the start area is live: the meadow's 1 s is 60 fixed
+     * steps more than the same load without it, and the plants then move step to step.
+     */
+    @Test
+    void loadingRunsThePrewarmAfterTheStartAreaIsLive() throws Exception {
+        SimulationDef def = meadowDef();
+        assertEquals(60, def.animation().prewarmSteps(), "the meadow prewarms 1 s at 60 Hz");
+        SimulationDef none = new SimulationDef(def.terrain(), def.species(), def.distributions(), def.placements(),
+                def.flows(), def.field(), def.animation().withPrewarm(0), def.seed());
+        long[] steps = new long[2];
+        SimulationDef[] defs = {none, def};
+        for (int k = 0; k < 2; k++) {
+            try (OpenWorld w = OpenWorld.create(defs[k], placer(defs[k]), RADIUS, 2, 1, 8)) {
+                w.load(walker(5, 3));
+                assertEquals(0, w.pendingTiles(), "every tile around the camera is live");
+                steps[k] = w.steps();
+                assertEquals(steps[k] * defs[k].animation().fixedStep(), w.time(), 1e-9, "the clock");
+            }
+        }
+        assertEquals(steps[0] + 60, steps[1], "load's steps without and with the prewarm");
+    }
+
     @Test
     void badArgumentsAreRefused() throws Exception {
         SimulationDef def = meadowDef();
