@@ -19,9 +19,9 @@ public final class BenchSuite {
     }
 
     /**
-     * The standard suite over the scenes in {@code scenes}, the render-scale section drawing at
-     * {@code quality} (null: each scene's own thinning); the other sections measure the paper's
-     * tables and do not draw.
+     * The standard suite over the scenes in {@code scenes}, the render-scale and render-pass sections
+     * drawing at {@code quality} (null: each scene's own thinning); the other sections measure the
+     * paper's tables and do not draw.
      */
     public static BenchSuite standard(Path scenes, org.jecosys.sim.DrawQuality quality) {
         BenchSuite s = new BenchSuite();
@@ -32,7 +32,7 @@ public final class BenchSuite {
         s.add(new ScaleSection(scenes));
         s.add(new RenderScaleSection(scenes, quality));
         s.add(new TextureSection(scenes));
-        s.add(new RenderPassSection(scenes));
+        s.add(new RenderPassSection(scenes, quality));
         s.add(new StreamingSection());
         s.add(new OpenWorldSection(scenes));
         return s;

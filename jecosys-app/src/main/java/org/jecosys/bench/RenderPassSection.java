@@ -30,9 +30,12 @@ import org.jecosys.sim.Simulation;
 final class RenderPassSection implements Section {
     private static final double DT = 1 / 30.0;
     private final Path scenes;
+    /** Thinning for every scene, or null for each scene's own. */
+    private final org.jecosys.sim.DrawQuality quality;
 
-    RenderPassSection(Path scenes) {
+    RenderPassSection(Path scenes, org.jecosys.sim.DrawQuality quality) {
         this.scenes = scenes;
+        this.quality = quality;
     }
 
     @Override
@@ -80,6 +83,9 @@ final class RenderPassSection implements Section {
                 for (ResolvePath path : paths) {
                     Scene scene = SceneFiles.read(scenes.resolve(file));
                     try (Simulation sim = Scenes.simulation(scene, 0, Progress.NONE)) {
+                        if (quality != null) {
+                            quality.applyTo(sim);
+                        }
                         RenderSettings settings = RenderSettings.of(scene.def().render());
                         settings.setClear(true);
                         settings.setTerrain(true);
