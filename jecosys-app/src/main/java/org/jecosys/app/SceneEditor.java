@@ -371,8 +371,7 @@ final class SceneEditor {
                 settings.tint(), settings.overlays().showField(), settings.overlays().showWind(), nl,
                 r.patches(), r.antialiasing(), r.groundCover());
         AnimationDef a = def.animation();
-        AnimationDef na = new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(),
-                a.seed(), a.prewarm());
+        AnimationDef na = a.withMode(mode);
         ForceFieldDef f = def.field();
         ForceFieldDef nf = f.withEnabled(fieldEnabled); // thinning and the LOD lens kept
         return new SceneDef(def.version(), def.name(), def.seed(), def.terrain(), species, def.distributions(),

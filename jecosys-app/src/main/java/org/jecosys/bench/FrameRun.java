@@ -38,8 +38,7 @@ final class FrameRun {
         ForceFieldDef f = d.field();
         return new SimulationDef(d.terrain(), d.species(), d.distributions(), d.placements(), d.flows(),
                 f.withEnabled(field),
-                new AnimationDef(mode, a.fixedStep(), a.maxSubSteps(), a.subIntervals(), a.workers(), a.seed(),
-                        a.prewarm()),
+                a.withMode(mode),
                 d.seed());
     }
 

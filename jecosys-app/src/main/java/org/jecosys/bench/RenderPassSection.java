@@ -142,12 +142,11 @@ final class RenderPassSection implements Section {
                             row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
                             row.add(String.format(Locale.ROOT, "%.2f", whole));
                             row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
-                            row.add(nc == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f (%.2f)",
-                                    Stats.median(java.util.Arrays.copyOf(cpus, nc)),
-                                    Stats.percentile(java.util.Arrays.copyOf(cpus, nc), 95)));
+                            double[] cpu = java.util.Arrays.copyOf(cpus, nc);
+                            row.add(nc == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f (%.2f)", Stats.median(cpu),
+                                    Stats.percentile(cpu, 95)));
                             if (nc > 0) {
-                                report.raw("render passes / " + file + " / " + path + " / frame CPU",
-                                        java.util.Arrays.copyOf(cpus, nc));
+                                report.raw("render passes / " + file + " / " + path + " / frame CPU", cpu);
                             }
                             t.row(row.toArray());
                             report.raw("render passes / " + file + " / " + path + " / whole frame",

@@ -79,6 +79,16 @@ public record AnimationDef(AnimationMode mode, double fixedStep, int maxSubSteps
         return new AnimationDef(mode, fixedStep, maxSubSteps, subIntervals, workers, seed, seconds);
     }
 
+    /**
+     * {@return these settings with another mode, everything else kept} Any thread; allocates the record.
+     *
+     * @param mode static, random or constraint, not null
+     * @throws IllegalArgumentException when it is null
+     */
+    public AnimationDef withMode(AnimationMode mode) {
+        return new AnimationDef(mode, fixedStep, maxSubSteps, subIntervals, workers, seed, prewarm);
+    }
+
     /** {@return constraint mode at 60 Hz, at most 8 sub-steps, 4 sub-intervals, all processors, seed 1, no prewarm} */
     public static AnimationDef defaults() {
         return new AnimationDef(AnimationMode.CONSTRAINT, 1.0 / 60, 8, 4, 0, 1);

@@ -94,5 +94,8 @@ class PrewarmTest {
         e = assertThrows(IllegalArgumentException.class, () -> a.withPrewarm(Double.NaN));
         assertTrue(e.getMessage().contains("prewarm"), e.getMessage());
         assertEquals(0, a.prewarm(), "no prewarm by default");
+        AnimationDef random = a.withPrewarm(0.5).withMode(org.jecosys.anim.AnimationMode.RANDOM);
+        assertEquals(0.5, random.prewarm(), "another mode keeps the prewarm");
+        assertEquals(org.jecosys.anim.AnimationMode.RANDOM, random.mode());
     }
 }
