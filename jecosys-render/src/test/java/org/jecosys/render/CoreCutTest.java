@@ -19,9 +19,11 @@ import org.junit.jupiter.api.Test;
  * the split programs, which discard, are the reference ({@link PlantRenderer#setCoreCut}). The
  * meadow's start view at 960x540 and 4 samples must come out the same both ways but for rounding (the
  * split programs blend a core of alpha 0.996 or more, the cut writes it opaque): no pixel more than
- * 4/255 apart in any channel, fewer than 0.5% of them apart at all (measured: 857 pixels, 0.17%, at most
- * 3/255; at 1920x1080, 3,933 pixels, 0.19%, at most 7/255). A fringe pass that blended the core again (a depth test that is not strict) changes 11,456
- * pixels by up to 129/255.
+ * 4/255 apart in any channel, fewer than 0.5% of them apart at all (measured: 83 pixels, at most 3/255,
+ * with both fringes on pixel centres; 857 pixels, at most 3/255, when both were on the samples). A
+ * fringe pass that blended the core again (a depth test that is not strict) changed 11,456 pixels by up
+ * to 129/255; the split programs' fringe on pixel centres without its strict depth test, 954 by up to
+ * 8/255.
  */
 class CoreCutTest {
     private static final int W = 960;

@@ -226,6 +226,7 @@ final class GuestCensus {
                 GL32C.glSampleMaski(0, 0x1);
                 GL11C.glPolygonMode(GL11C.GL_FRONT_AND_BACK, GL11C.GL_LINE);
                 GL11C.glEnable(GL32C.GL_DEPTH_CLAMP);
+                GL11C.glDisable(GL13C.GL_MULTISAMPLE); // the plants' cores would lose their samples
             }
         }
 
@@ -241,6 +242,7 @@ final class GuestCensus {
             }
             GL33C.glDeleteSamplers(samplers);
             GL13C.glActiveTexture(GL13C.GL_TEXTURE0);
+            GL11C.glEnable(GL13C.GL_MULTISAMPLE);
             GL11C.glDisable(GL11C.GL_BLEND);
             GL14C.glBlendFuncSeparate(GL11C.GL_ONE, GL11C.GL_ZERO, GL11C.GL_ONE, GL11C.GL_ZERO);
             GL20C.glBlendEquationSeparate(GL14C.GL_FUNC_ADD, GL14C.GL_FUNC_ADD);

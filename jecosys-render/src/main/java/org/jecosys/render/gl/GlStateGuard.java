@@ -39,6 +39,7 @@ import static org.lwjgl.opengl.GL11C.glViewport;
 import static org.lwjgl.opengl.GL12C.GL_UNPACK_IMAGE_HEIGHT;
 import static org.lwjgl.opengl.GL12C.GL_UNPACK_SKIP_IMAGES;
 import static org.lwjgl.opengl.GL13C.GL_ACTIVE_TEXTURE;
+import static org.lwjgl.opengl.GL13C.GL_MULTISAMPLE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_ONE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_COVERAGE;
@@ -97,7 +98,7 @@ import org.lwjgl.system.MemoryUtil;
  * and index 0), the active texture unit and, on units 0 to {@link TextureUnits#GUARDED} - 1, the buffer texture,
  * the 2D texture and the sampler object (and the 2D array on {@link TextureUnits#PLANT_TEXTURES});</li>
  * <li>capabilities: depth test, face culling, blending, scissor test, rasteriser discard,
- * alpha-to-coverage and alpha-to-one, stencil test, polygon offset (fill, line, point: Mesa offsets
+ * alpha-to-coverage and alpha-to-one, multisampling, stencil test, polygon offset (fill, line, point: Mesa offsets
  * line primitives too), sRGB framebuffer writes,
  * colour logic op, sample mask and sample coverage, primitive restart, depth clamp and the eight clip
  * distances;</li>
@@ -109,11 +110,12 @@ import org.lwjgl.system.MemoryUtil;
  * {@link #setGuestState()} then sets what the renderers depend on, whatever the host left: additive
  * blend equations, all colour channels of draw buffer 0 written and none of a host's other draw buffers, no stencil test, polygon offset, logic op, sample mask
  * or coverage, clip distances or depth clamp, filled counter-clockwise front faces, depth cleared to 1,
- * the last vertex provoking, dithering on, the upload unit ({@link TextureUnits#UPLOAD}) active, no sampler objects
+ * the last vertex provoking, dithering on, multisampling on (the plants' fringe switches it off for its
+ * pass and on again), the upload unit ({@link TextureUnits#UPLOAD}) active, no sampler objects
  * on the renderer's units, and sRGB conversion off. The plants' colours are display (sRGB-encoded)
  * values: written unconverted into an sRGB framebuffer they read back exactly as in a linear one (and
  * a host with gamma correction, such as jMonkeyEngine's default, sees the same picture as without).
- * The framebuffer binding, depth range and multisample switch stay the host's (the sun's shadow map binds
+ * The framebuffer binding and depth range stay the host's (the sun's shadow map binds
  * its own framebuffer for its pass and binds the host's again right after).
  *
  * <p>Render thread only. {@link #save} and {@link #restore} allocate nothing (the storage is made once
@@ -126,14 +128,14 @@ public final class GlStateGuard implements AutoCloseable {
 
     /** Capabilities saved and put back; those from {@link #OFF} on are switched off by {@link #setGuestState()}. */
     private static final int[] CAPS = {GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST, GL_RASTERIZER_DISCARD,
-        GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
+        GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_MULTISAMPLE,
         GL_STENCIL_TEST, GL_POLYGON_OFFSET_FILL, GL11C.GL_POLYGON_OFFSET_LINE, GL11C.GL_POLYGON_OFFSET_POINT,
         GL_FRAMEBUFFER_SRGB, GL_COLOR_LOGIC_OP, GL_SAMPLE_MASK,
         GL_SAMPLE_COVERAGE, GL_PRIMITIVE_RESTART, GL_DEPTH_CLAMP, GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE0 + 1,
         GL_CLIP_DISTANCE0 + 2, GL_CLIP_DISTANCE0 + 3, GL_CLIP_DISTANCE0 + 4, GL_CLIP_DISTANCE0 + 5,
         GL_CLIP_DISTANCE0 + 6, GL_CLIP_DISTANCE0 + 7};
     /** Index in {@link #CAPS} of the first capability the renderers need off. */
-    private static final int OFF = 7;
+    private static final int OFF = 8;
 
     /** Pixel-unpack store parameters and their defaults. */
     private static final int[] UNPACK = {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS,
@@ -262,6 +264,7 @@ public final class GlStateGuard implements AutoCloseable {
         for (int i = 1; i < DRAW_BUFFERS; i++) {
             glColorMaski(i, false, false, false, false); // a host's other draw buffers (a G-buffer) stay as they are
         }
+        glEnable(GL_MULTISAMPLE); // on a multisampled target the plants' cores go to its samples
         glFrontFace(GL_CCW);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         GL11C.glClearDepth(1.0);

@@ -10,6 +10,7 @@ import static org.lwjgl.opengl.GL11C.GL_SRC_ALPHA;
 import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL13C.GL_MULTISAMPLE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_COVERAGE;
 import static org.lwjgl.opengl.GL13C.GL_SAMPLE_ALPHA_TO_ONE;
 import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
@@ -17,21 +18,28 @@ import static org.lwjgl.opengl.GL30C.glDisablei;
 
 /**
  * How {@link PlantRenderer} puts the plants' partial coverage on the bound target: the share of a pixel
- * a thin part covers (its alpha) is blended, on the samples its geometry covers where the target has
- * samples, in two passes for the triangle levels (an opaque core writing depth, then the fringe that only
- * blends, so a faint edge never hides what is behind it) and one blended pass for the line levels; or,
- * on a multisampled target where blending on samples is off, the GL's alpha-to-coverage with opaque
- * plants.
+ * a thin part covers (its alpha) is blended, in two passes for the triangle levels (an opaque core
+ * writing depth, then the fringe that only blends, so a faint edge never hides what is behind it) and
+ * one blended pass for the line levels; or, on a multisampled target where blending on samples is off,
+ * the GL's alpha-to-coverage with opaque plants.
  *
- * <p>Without samples the two passes use the split programs, which discard what is not theirs. With
- * samples both use the ordinary programs, which never discard (a software rasteriser then tests depth
- * before shading): the core's pass cuts alpha to 0 or 1 ({@code uCoreCut}) and writes it through
- * alpha-to-coverage, so only the core reaches the samples, and its vertex shader leaves out, before any
- * pose or light work, the blades and stems whose widest half width is under the least half width
- * wherever they reach (they have no core); the fringe's pass blends with a strict depth test, which the
- * core's fragments, at exactly the depth they wrote (the same programs and inputs), fail. The picture is
- * the split programs' but for rounding ({@code CoreCutTest}); on llvmpipe at 1920x1080 the meadow's near
- * plants cost about a fifth less than drawn twice whole. Render thread; no allocation.
+ * <p>Without samples the two passes use the split programs, which discard what is not theirs, and both
+ * have the soft edge ({@link PlantUniforms#FEATHER}). With samples the core goes to the samples its
+ * geometry covers, without the soft edge, and the fringe is drawn on pixel centres with it
+ * (multisampling off for its pass): each of its fragments blends into every sample of its pixel that
+ * passes a strict depth test. Both passes use the ordinary programs, which never discard (a software
+ * rasteriser then tests depth before shading): the core's pass cuts alpha to 0 or 1 ({@code uCoreCut})
+ * and writes it through alpha-to-coverage, so only the core reaches the samples, and its vertex shader
+ * leaves out, before any pose or light work, the blades and stems whose widest half width is under the
+ * least half width wherever they reach (they have no core); the fringe's pass gives alpha 0 to every
+ * fragment whose coverage (the soft edge left out) reaches the core's, so what the core drew, its edges
+ * anti-aliased on the samples included, is left to it. The picture is the split programs' (with the
+ * fringe on pixel centres too) but for rounding ({@code CoreCutTest}).
+ *
+ * <p>Cost on llvmpipe at 1920x1080, the meadow: the core cut takes the near plants about a fifth under
+ * drawing them twice whole; the fringe on pixel centres takes them to about 0.7 of the fringe on
+ * samples, whose long thin triangles were set up, binned and depth-tested per sample. Render thread; no
+ * allocation.
  */
 final class CoverageDraws {
     /** The least alpha of the opaque core (the split programs' threshold, plant.frag). */
@@ -86,7 +94,9 @@ final class CoverageDraws {
             blendByCoverage(true);
             glDepthMask(false);
             glDepthFunc(GL_LESS);
+            fringeOnPixels(passes, true);
             passes.drawTrianglesAgain(batches, gpu.vaos, gpu.indexCount, look, levelMask);
+            fringeOnPixels(passes, false);
             glDepthFunc(GL_LEQUAL);
             glDepthMask(true);
             blendByCoverage(false);
@@ -100,9 +110,17 @@ final class CoverageDraws {
         }
         // the opaque core writes depth; the fringe (soft edges, thin parts) only blends, so it hides nothing
         blendByCoverage(true);
-        passes.drawTrianglesSplit(true, batches, gpu.vaos, gpu.indexCount, look, levelMask);
+        passes.drawTrianglesSplit(true, false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(false);
-        passes.drawTrianglesSplit(false, batches, gpu.vaos, gpu.indexCount, look, levelMask);
+        if (c.multisampled) {
+            glDepthFunc(GL_LESS);
+            fringeOnPixels(passes, true);
+        }
+        passes.drawTrianglesSplit(false, c.multisampled, batches, gpu.vaos, gpu.indexCount, look, levelMask);
+        if (c.multisampled) {
+            fringeOnPixels(passes, false);
+            glDepthFunc(GL_LEQUAL);
+        }
         glDepthMask(true);
         blendByCoverage(false);
     }
@@ -121,6 +139,27 @@ final class CoverageDraws {
         passes.drawLines(batches, gpu.vaos, gpu.indexCount, look, levelMask);
         glDepthMask(true);
         blendByCoverage(false);
+    }
+
+    /**
+     * Turns the fringe's rasterisation on pixel centres on (multisampling off, the soft edge on) or back
+     * to the target's samples. A multisampled target's fringe is the thin parts and the outer edges of
+     * the wide ones, blended by the share of a pixel they cover; rasterised on its samples, each of its
+     * long, thin triangles was set up, binned and depth-tested four times over on a software rasteriser,
+     * most of the near plants' cost. On pixel centres it is drawn once per pixel into every sample it
+     * passes the depth test on, with the soft edge that targets without samples use
+     * ({@link PlantUniforms#FEATHER}: the ribbon half a pixel wider, fading over that half pixel), so
+     * its edges step from pixel to pixel no more than on the samples ({@code AntiAliasingTest}). The core
+     * stays on the samples. The host's multisampling switch is saved and put back by the guard.
+     */
+    private static void fringeOnPixels(PlantPasses passes, boolean on) {
+        if (on) {
+            glDisable(GL_MULTISAMPLE);
+            passes.setFeather(PlantUniforms.FEATHER);
+        } else {
+            passes.setFeather(0f);
+            glEnable(GL_MULTISAMPLE);
+        }
     }
 
     /** Turns alpha-to-coverage with alpha-to-one (plants opaque, coverage to samples) on or off. */

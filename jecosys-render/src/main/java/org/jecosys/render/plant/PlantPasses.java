@@ -324,15 +324,18 @@ public final class PlantPasses {
 
     /**
      * As {@link #drawTriangles}, with the split programs ({@link #hasSplit}): the plants' opaque core
-     * ({@code core}) or their fringe. The caller sets the depth mask and blending. The fringe's draws
-     * are not counted ({@link #draws()} and {@link #instances()} count each list once). No allocation.
+     * ({@code core}) or their fringe; {@code overSamples}: the fringe drawn on pixel centres over a core
+     * drawn on a multisampled target's samples without the soft edge, which keeps every fragment whose
+     * coverage, the soft edge left out, is short of the core's ({@code uSplit} 3). The caller sets the
+     * depth mask, blending and the soft edge. The fringe's draws are not counted ({@link #draws()} and
+     * {@link #instances()} count each list once). No allocation.
      */
-    public void drawTrianglesSplit(boolean core, PlantBatches batches, GlVertexArray[] vaos, int[] indexCount,
-                                   PlantLook look, int levelMask) {
+    public void drawTrianglesSplit(boolean core, boolean overSamples, PlantBatches batches, GlVertexArray[] vaos,
+                                   int[] indexCount, PlantLook look, int levelMask) {
         PlantUniforms[] programs = mapped ? splitReceivers : split;
         for (PlantUniforms u : programs) {
             u.program.use();
-            glUniform1f(u.split, core ? 1f : 2f);
+            glUniform1f(u.split, core ? 1f : overSamples ? 3f : 2f);
         }
         int draws0 = draws;
         long instances0 = instances;
@@ -353,6 +356,32 @@ public final class PlantPasses {
     public void setCoreCut(float cut) {
         setCoreCut(passes, cut);
         setCoreCut(receivers, cut);
+    }
+
+    /**
+     * Sets the soft edge of blades and stems, pixels ({@code uFeather}), on every triangle program made
+     * (ordinary and split): {@link PlantUniforms#FEATHER} for a pass rasterised on pixel centres, 0 for
+     * one on a multisampled target's samples. Each frame's {@code frame} call sets it back from the
+     * target. No allocation.
+     *
+     * @param feather pixels, 0 or more
+     */
+    public void setFeather(float feather) {
+        setFeather(passes, feather);
+        setFeather(receivers, feather);
+        setFeather(split, feather);
+        setFeather(splitReceivers, feather);
+    }
+
+    private static void setFeather(PlantUniforms[] programs, float feather) {
+        if (programs != null) {
+            for (PlantUniforms u : programs) {
+                if (u.feather >= 0) {
+                    u.program.use();
+                    glUniform1f(u.feather, feather);
+                }
+            }
+        }
     }
 
     private static void setCoreCut(PlantUniforms[] programs, float cut) {

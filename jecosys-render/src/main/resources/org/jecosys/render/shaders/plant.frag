@@ -20,7 +20,8 @@ uniform float uFeather;
 #ifdef SPLIT
 // targets without samples draw the near plants twice: their opaque core writing depth (uSplit 1), then
 // the fringe the soft edge and thin parts blend (uSplit 2), depth-tested but not written, so a faint
-// edge never hides a blade behind it
+// edge never hides a blade behind it; uSplit 3: the fringe on pixel centres over a core drawn on a
+// multisampled target's samples without the soft edge, so the fringe keeps what that core left out
 uniform float uSplit;
 #endif
 #ifdef DITHER
@@ -50,25 +51,30 @@ uniform vec3 uFogColour;
 #endif
 
 void main() {
-    // the soft edge (targets without samples, which blend by alpha): the outer uFeather pixels fade
-    float alpha = uFeather > 0.0 ? vShade.a * clamp((1.0 - abs(vEdge.x)) * abs(vEdge.y) / uFeather, 0.0, 1.0)
-            : vShade.a;
+    // the share of the drawn width the part covers, times its image's coverage
+    float cover = vShade.a;
 #ifdef TEXTURED
     vec4 texel = vec4(1.0);
     if (vTex.z > -0.5) {
         // no discard here: a shader that may discard loses the early depth test on llvmpipe, and the
         // outline is coverage (multisampled) or blended (the fringe of a target without samples)
         texel = texture(uPlantTextures, vec3(vTex.xy, floor(vTex.z + 0.5)));
-        alpha *= texel.a;
+        cover *= texel.a;
     }
 #endif
+    // the soft edge (a pass on pixel centres, which blends by alpha): the outer uFeather pixels fade
+    float alpha = uFeather > 0.0 ? cover * clamp((1.0 - abs(vEdge.x)) * abs(vEdge.y) / uFeather, 0.0, 1.0) : cover;
 #ifndef SPLIT
     if (uCoreCut > 0.0) {
         alpha = alpha >= uCoreCut ? 1.0 : 0.0;
+    } else if (uCoreCut < 0.0 && cover >= 0.996) {
+        // the fringe over the core's pass: what the core drew on the samples (edges included) is left
+        // to it; alpha 0 adds nothing, and unlike a discard keeps the early depth test
+        alpha = 0.0;
     }
 #endif
 #ifdef SPLIT
-    if ((alpha >= 0.996) != (uSplit < 1.5)) {
+    if (((uSplit > 2.5 ? cover : alpha) >= 0.996) != (uSplit < 1.5)) {
         discard;
     }
 #endif
