@@ -41,8 +41,8 @@ public final class GlFramebuffer extends GlResource {
      * ({@link #setResolveFilter}) where the plants drew: half way between the tent of one pixel's radius
      * (the 3x3 binomial) and the 5x5 binomial. Thin blades moving by a fraction of a pixel then change
      * the image smoothly instead of in coverage steps of a quarter pixel (4 samples). The plants blend
-     * their thin parts on the samples (PlantRenderer's default), which already moves them smoothly, so
-     * the full 5x5 binomial would mostly soften the picture.
+     * their thin parts by the share of a pixel they cover, with a soft edge (PlantRenderer's default),
+     * which already moves them smoothly, so the full 5x5 binomial would mostly soften the picture.
      */
     public static final float DEFAULT_TENT = 1.5f;
     /** The largest sample count asked for; the driver's maximum caps it further. */
