@@ -10,6 +10,7 @@ import static org.lwjgl.opengl.GL20C.glUniform3f;
 import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
 
+import java.util.function.ToIntFunction;
 import java.util.ArrayList;
 import java.util.List;
 import org.jecosys.render.gl.GlProgram;
@@ -374,22 +375,21 @@ public final class PlantPasses {
     }
 
     private static void setFeather(PlantUniforms[] programs, float feather) {
-        if (programs != null) {
-            for (PlantUniforms u : programs) {
-                if (u.feather >= 0) {
-                    u.program.use();
-                    glUniform1f(u.feather, feather);
-                }
-            }
-        }
+        set(programs, u -> u.feather, feather);
     }
 
     private static void setCoreCut(PlantUniforms[] programs, float cut) {
+        set(programs, u -> u.coreCut, cut);
+    }
+
+    /** Sets a float uniform on every program made that has it (location at or above 0); no allocation. */
+    private static void set(PlantUniforms[] programs, ToIntFunction<PlantUniforms> location, float value) {
         if (programs != null) {
             for (PlantUniforms u : programs) {
-                if (u.coreCut >= 0) {
+                int at = location.applyAsInt(u);
+                if (at >= 0) {
                     u.program.use();
-                    glUniform1f(u.coreCut, cut);
+                    glUniform1f(at, value);
                 }
             }
         }
