@@ -361,9 +361,10 @@ public final class PlantPasses {
 
     /**
      * Sets the soft edge of blades and stems, pixels ({@code uFeather}), on every triangle program made
-     * (ordinary and split): {@link PlantUniforms#FEATHER} for a pass rasterised on pixel centres, 0 for
-     * one on a multisampled target's samples. Each frame's {@code frame} call sets it back from the
-     * target. No allocation.
+     * (ordinary and split): above 0 for a pass rasterised on pixel centres ({@link PlantUniforms#FEATHER}
+     * on a target without samples, 0.7 for the fringe of a multisampled one), 0 for one on a
+     * multisampled target's samples. Each frame's {@code frame} call sets it back from the target. No
+     * allocation.
      *
      * @param feather pixels, 0 or more
      */
