@@ -2,6 +2,7 @@ package org.jecosys.bench;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.jecosys.math.Progress;
@@ -18,6 +19,7 @@ import org.jecosys.scene.Scene;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.scene.Scenes;
 import org.jecosys.sim.CameraWalk;
+import org.jecosys.sim.DrawQuality;
 import org.jecosys.sim.Simulation;
 
 /**
@@ -31,9 +33,9 @@ final class RenderPassSection implements Section {
     private static final double DT = 1 / 30.0;
     private final Path scenes;
     /** Thinning for every scene, or null for each scene's own. */
-    private final org.jecosys.sim.DrawQuality quality;
+    private final DrawQuality quality;
 
-    RenderPassSection(Path scenes, org.jecosys.sim.DrawQuality quality) {
+    RenderPassSection(Path scenes, DrawQuality quality) {
         this.scenes = scenes;
         this.quality = quality;
     }
@@ -131,18 +133,18 @@ final class RenderPassSection implements Section {
                             row.add(file + " (" + path.name().toLowerCase(Locale.ROOT).replace('_', ' ') + ")");
                             double sumOfMedians = 0;
                             for (int p = 0; p < passes; p++) {
-                                double[] v = java.util.Arrays.copyOf(per[p], np);
+                                double[] v = Arrays.copyOf(per[p], np);
                                 double m = Stats.median(v);
                                 sumOfMedians += m;
                                 row.add(String.format(Locale.ROOT, "%.2f (%.2f)", m, Stats.percentile(v, 95)));
                                 report.raw("render passes / " + file + " / " + path + " / "
                                         + PassTimes.Pass.values()[p], v);
                             }
-                            double whole = Stats.median(java.util.Arrays.copyOf(wholes, nw));
+                            double whole = Stats.median(Arrays.copyOf(wholes, nw));
                             row.add(String.format(Locale.ROOT, "%.2f", sumOfMedians));
                             row.add(String.format(Locale.ROOT, "%.2f", whole));
                             row.add(String.format(Locale.ROOT, "%.3f", sumOfMedians / whole));
-                            double[] cpu = java.util.Arrays.copyOf(cpus, nc);
+                            double[] cpu = Arrays.copyOf(cpus, nc);
                             row.add(nc == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f (%.2f)", Stats.median(cpu),
                                     Stats.percentile(cpu, 95)));
                             if (nc > 0) {
@@ -150,7 +152,7 @@ final class RenderPassSection implements Section {
                             }
                             t.row(row.toArray());
                             report.raw("render passes / " + file + " / " + path + " / whole frame",
-                                    java.util.Arrays.copyOf(wholes, nw));
+                                    Arrays.copyOf(wholes, nw));
                         }
                     }
                 }
