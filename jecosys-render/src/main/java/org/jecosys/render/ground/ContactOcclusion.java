@@ -80,8 +80,9 @@ public final class ContactOcclusion {
             SpeciesModel model = world.plants().species().get(s);
             prints[s] = new Footprint[model.variants()];
         }
-        // accumulate -log(1 - w) (transparency multiplies), then turn it back into occlusion
+        // accumulate the transmission 1 - w (transparency multiplies), then turn it back into occlusion
         float[] acc = m.occlusion;
+        java.util.Arrays.fill(acc, 1f);
         for (int p = 0; p < world.plantCount(); p++) {
             int s = world.plantSpecies(p);
             int v = world.plantVariant(p);
@@ -91,15 +92,19 @@ public final class ContactOcclusion {
             m.splat(acc, world.plantX(p), world.plantZ(p), world.plantRestAzimuth(p), prints[s][v], PEAK, 1);
         }
         for (int i = 0; i < acc.length; i++) {
-            acc[i] = (float) (1 - Math.exp(-acc[i]));
+            acc[i] = 1 - acc[i];
         }
         return m;
     }
 
     /**
-     * Adds one plant's footprint to {@code acc} (on this map's grid, as {@code -log(1 - w)}): weight
+     * Adds one plant's footprint to {@code acc} (on this map's grid, a transmission that starts at 1 and is
+     * multiplied by {@code 1 - w}): weight
      * {@code peak} well inside it, fading over a soft edge {@code edgeScale} times the contact map's.
      */
+    /** The least transmission kept: far under a float's step at 1 (so 1 - TINY is 1), far above the subnormals. */
+    private static final float TINY = 1e-30f;
+
     void splat(float[] acc, double x, double z, double restAzimuth, Footprint f, double peak, double edgeScale) {
         double edge = edgeScale * Math.max(MIN_EDGE, Math.min(MAX_EDGE, EDGE * f.radius()));
         double reach = f.maxReach() + edge;
@@ -125,20 +130,35 @@ public final class ContactOcclusion {
         // texel offsets turned back into the plant's frame (the footprint is at rest azimuth 0)
         double c = Math.cos(restAzimuth);
         double sn = Math.sin(restAzimuth);
+        double reachSq = reach * reach;
+        // within the least reach less the soft edge every texel takes the full weight
+        double inner = f.minReach() - edge;
+        double innerSq = inner > 0 ? inner * inner : -1;
+        float full = (float) (1 - peak);
         for (int j = j0; j <= j1; j++) {
             double dz = minZ + j * texelZ - z;
+            double dzSq = dz * dz;
+            if (dzSq >= reachSq) {
+                continue;
+            }
+            int row = j * width;
             for (int i = i0; i <= i1; i++) {
                 double dx = minX + i * texelX - x;
-                double r = Math.sqrt(dx * dx + dz * dz);
-                if (r >= reach) {
+                double rSq = dx * dx + dzSq;
+                if (rSq >= reachSq) {
                     continue;
                 }
+                if (rSq <= innerSq) {
+                    acc[row + i] = Math.max(TINY, acc[row + i] * full);
+                    continue;
+                }
+                double r = Math.sqrt(rSq);
                 double lx = dx * c + dz * sn;
                 double lz = -dx * sn + dz * c;
                 double t = (r - f.reach(lx, lz) + edge) / (2 * edge);
                 if (t < 1) {
                     double k = t <= 0 ? 1 : 1 - t * t * (3 - 2 * t);
-                    acc[j * width + i] += (float) -Math.log(1 - peak * k);
+                    acc[row + i] = Math.max(TINY, acc[row + i] * (float) (1 - peak * k));
                 }
             }
         }
@@ -146,7 +166,7 @@ public final class ContactOcclusion {
 
     private void add(float[] acc, int i, int j, double share, double peak) {
         if (i >= 0 && j >= 0 && i < width && j < height && share > 0) {
-            acc[j * width + i] += (float) -Math.log(1 - peak * Math.min(1, share));
+            acc[j * width + i] = Math.max(TINY, acc[j * width + i] * (float) (1 - peak * Math.min(1, share)));
         }
     }
 

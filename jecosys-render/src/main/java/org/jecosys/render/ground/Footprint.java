@@ -17,8 +17,9 @@ import org.joml.Vector3f;
  * @param area     the hull's area, square metres
  * @param radius   the radius of a disc of that area, metres
  * @param maxReach the largest of the reaches, metres
+ * @param minReach the least of the reaches, metres: every point nearer the base lies inside
  */
-record Footprint(float[] reaches, double area, double radius, double maxReach) {
+record Footprint(float[] reaches, double area, double radius, double maxReach, double minReach) {
     /** Directions sampled round the base. */
     static final int DIRECTIONS = 64;
     /** Least reach, metres. */
@@ -89,14 +90,16 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
         area = Math.abs(area) / 2;
         float[] reaches = new float[DIRECTIONS];
         double max = 0;
+        double min = Double.MAX_VALUE;
         for (int k = 0; k < DIRECTIONS; k++) {
             double[] d = direction(4.0 * k / DIRECTIONS);
             double r = Math.max(MIN_REACH, rayToHull(hull, d[0], d[1]));
             reaches[k] = (float) r;
             max = Math.max(max, r);
+            min = Math.min(min, reaches[k]);
         }
         double radius = Math.max(MIN_REACH, Math.sqrt(area / Math.PI));
-        return new Footprint(reaches, area, radius, max);
+        return new Footprint(reaches, area, radius, max, min);
     }
 
     /**
@@ -110,7 +113,7 @@ record Footprint(float[] reaches, double area, double radius, double maxReach) {
         double p = diamond(x, z) * (DIRECTIONS / 4.0);
         int k = (int) p;
         double f = p - k;
-        return reaches[k % DIRECTIONS] * (1 - f) + reaches[(k + 1) % DIRECTIONS] * f;
+        return reaches[k & (DIRECTIONS - 1)] * (1 - f) + reaches[(k + 1) & (DIRECTIONS - 1)] * f;
     }
 
     /** The diamond angle of (x, z), in [0, 4): 0 along +X, 1 along +Z, 2 along -X, 3 along -Z. */

@@ -51,6 +51,7 @@ public final class SunShadow {
         int factor = Math.max(1, (int) Math.round(TEXEL / Math.min(grid.texelX, grid.texelZ)));
         ContactOcclusion coarse = grid.coarser(factor);
         float[] acc = coarse.occlusion;
+        java.util.Arrays.fill(acc, 1f); // the transmission, multiplied by each plant's 1 - w
         double horizontal = Math.hypot(sunX, sunZ);
         double run = horizontal < 1e-9 ? 0 : 1 / Math.tan(elevation);
         // world offset on the ground per metre of height: away from the sun
@@ -81,7 +82,7 @@ public final class SunShadow {
             coarse.splat(acc, world.plantX(p), world.plantZ(p), rounded, f, PEAK, EDGE_SCALE);
         }
         for (int i = 0; i < acc.length; i++) {
-            acc[i] = (float) (1 - Math.exp(-acc[i]));
+            acc[i] = 1 - acc[i];
         }
         for (int j = 0; j < grid.height; j++) {
             double z = grid.minZ + j * grid.texelZ;
