@@ -48,6 +48,8 @@ public final class SpeciesModel {
     private final double[] slotBaseZ;
     private final int[] slotVariantOffset;
     private final long buildNanos;
+    /** Per slot, the widest half width of its part ({@link #slotWidestHalfWidth}); made at the first call. */
+    private volatile float[] widestHalf;
 
     /** Takes the arrays as they are (no copy): {@link SpeciesBuild} and {@link #withComponents} only. */
     SpeciesModel(SpeciesDef def, long seed, PlantComponent[] components, LodMesh[] meshes,
@@ -355,6 +357,40 @@ public final class SpeciesModel {
      */
     public PoseTable slotPoseTable(int slot, int plantVariant) {
         return components[slotComponent[slot]].poseTable(slotVariant(slot, plantVariant));
+    }
+
+    /**
+     * The widest half width of a slot's part, metres: the longest width vector (a pose-table point's
+     * second triple, from its axis to its edge) over every shape variant of the plant, every pose and
+     * every point. Renderers read it to tell parts always thinner than a pixel from the others. Worked out
+     * for every slot at the first call and kept (the model is immutable), so the renderers of many tiles
+     * or contexts that share this model scan its pose tables once. Any thread; allocates at the first
+     * call only.
+     *
+     * @param slot slot index, in [0, slotCount())
+     * @return metres, 0 or more
+     */
+    public float slotWidestHalfWidth(int slot) {
+        float[] w = widestHalf;
+        if (w == null) {
+            w = new float[slotComponent.length];
+            for (int s = 0; s < w.length; s++) {
+                double most = 0;
+                for (int variant = 0; variant < variants(); variant++) {
+                    PoseTable t = slotPoseTable(s, variant);
+                    int floats = t.poses() * t.points() * PoseTable.STRIDE;
+                    for (int o = 0; o < floats; o += PoseTable.STRIDE) {
+                        double x = t.get(o + 3);
+                        double y = t.get(o + 4);
+                        double z = t.get(o + 5);
+                        most = Math.max(most, Math.sqrt(x * x + y * y + z * z));
+                    }
+                }
+                w[s] = (float) most;
+            }
+            widestHalf = w; // a race computes the same values twice, nothing worse
+        }
+        return w[slot];
     }
 
     /**

@@ -95,7 +95,10 @@ final class PlantGpu implements AutoCloseable {
                 programs[k] = shared != null && shared.textured() == textured ? shared.draw(k)
                         : own(PlantPasses.compile(tracker, k, textured));
             }
-            poseTexture = own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
+            // the model's tables and meshes: shared with the other renderers of the shared programs' model
+            SpeciesGpu common = shared != null ? shared.species(tracker, world.plants()) : null;
+            poseTexture = common != null ? common.poseTexture
+                    : own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
                     GL_RGBA32F));
             resolver = own(new ComponentResolver(tracker, world, batches, poseTexture, poseTexel, components,
                     maxComponents, PlantMeshes.slotLooks(models, images), resolvePath,
@@ -109,7 +112,8 @@ final class PlantGpu implements AutoCloseable {
                 for (int l = 0; l < m.levels(); l++) {
                     int li = batches.list(s, l);
                     indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = PlantMeshes.uploadMesh(tracker, m, m.mesh(l), layers, owned);
+                    vaos[li] = common != null ? common.mesh(s, l)
+                            : PlantMeshes.uploadMesh(tracker, m, m.mesh(l), layers, owned);
                 }
             }
             // trilinear on a GPU; the nearest level's bilinear on a software rasteriser (GlTextureArray)

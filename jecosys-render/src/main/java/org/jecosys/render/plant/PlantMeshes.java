@@ -235,18 +235,7 @@ public final class PlantMeshes {
      * (plant.vert leaves a part out of the core's pass where even that is thinner than the least width).
      */
     static float widestHalf(SpeciesModel m, int slot) {
-        double most = 0;
-        for (int variant = 0; variant < m.variants(); variant++) {
-            PoseTable t = m.slotPoseTable(slot, variant);
-            int poses = t.poses();
-            for (int pose = 0; pose < poses; pose++) {
-                for (int j = 0; j < t.points(); j++) {
-                    int o = pose * t.points() * PoseTable.STRIDE + j * PoseTable.STRIDE;
-                    most = Math.max(most, Math.sqrt(sq(t.get(o + 3)) + sq(t.get(o + 4)) + sq(t.get(o + 5))));
-                }
-            }
-        }
-        return (float) most;
+        return m.slotWidestHalfWidth(slot);
     }
 
     private static double sq(double x) {

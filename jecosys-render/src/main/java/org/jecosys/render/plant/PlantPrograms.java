@@ -11,7 +11,9 @@ import org.jecosys.render.gl.GlTracker;
 
 /**
  * The programs every {@link PlantRenderer} of one context can share: the {@link PlantPasses#COUNT} draw
- * programs and the two resolve programs of one {@link ResolvePath}. Compiling them is most of what
+ * programs and the two resolve programs of one {@link ResolvePath}; and, made by the first renderer that
+ * takes them, its plant model's pose tables and meshes, which the renderers of later worlds of the same
+ * model read instead of uploading their own. Compiling them is most of what
  * making a renderer costs (tens of milliseconds on a software rasteriser), so renderers made often (an
  * open world's tiles) take them from here ({@link PlantRenderer#PlantRenderer(GlContext,
  * org.jecosys.sim.World, PlantPrograms)}) and leave them to this owner. The per-frame uniforms are set
@@ -26,6 +28,8 @@ public final class PlantPrograms implements AutoCloseable {
     /** The components' images as one array, shared by the renderers; null without textures. */
     private org.jecosys.render.gl.GlTextureArray textures;
     private boolean textured;
+    /** The pose tables and meshes of the first model a renderer asked for ({@link #species}); null before. */
+    private SpeciesGpu species;
 
     private PlantPrograms(ResolvePath path) {
         this.path = path;
@@ -80,6 +84,19 @@ public final class PlantPrograms implements AutoCloseable {
         return resource;
     }
 
+    /**
+     * The pose tables and meshes of {@code model}, made at the first call and kept, deleted with these
+     * programs; every renderer of a world of that model reads them instead of its own. Null when an
+     * earlier call made them for another model: that renderer uploads its own. Render thread; allocates
+     * at the first call only.
+     */
+    SpeciesGpu species(GlTracker t, org.jecosys.plant.PlantModel model) {
+        if (species == null) {
+            species = own(new SpeciesGpu(t, model));
+        }
+        return species.model == model ? species : null;
+    }
+
     /** {@return whether the draw programs read the components' images} */
     boolean textured() {
         return textured;
@@ -103,10 +120,11 @@ public final class PlantPrograms implements AutoCloseable {
         return resolve;
     }
 
-    /** Deletes the programs. Render thread; idempotent. */
+    /** Deletes the programs and the shared tables and meshes. Render thread; idempotent. */
     @Override
     public void close() {
         Closing.closeReverse(owned);
         owned.clear();
+        species = null;
     }
 }
