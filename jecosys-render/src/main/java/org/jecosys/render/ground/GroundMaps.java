@@ -2,6 +2,12 @@ package org.jecosys.render.ground;
 
 import org.jecosys.render.Lighting;
 import java.nio.ByteBuffer;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import org.jecosys.render.RenderSettings;
 import org.jecosys.render.gl.GlTexture2D;
 import org.jecosys.render.gl.GlTracker;
@@ -16,7 +22,9 @@ import org.lwjgl.system.MemoryUtil;
  * sun the plants' shadows take ({@link SunShadow}, rebuilt when the sun moves while shadows are on, 0
  * while they are off, so every reader may weigh it by {@code <light shadows>}).
  * Without plants the texture is a 2 x 2 of zeros. Render thread; the rebuilds allocate, nothing else
- * does.
+ * does. A sun that turns a little (a day passing) has its shadow map rebuilt on a worker thread
+ * ({@value #WORKER_NAME}, started at the first such rebuild, ended after a few idle seconds) while the
+ * frames go on with the map before; a larger turn, and the first map, are built at once.
  */
 final class GroundMaps implements AutoCloseable {
     /** The grid and contact occlusion; null when built without plants. */
@@ -30,8 +38,27 @@ final class GroundMaps implements AutoCloseable {
     private float shadowX = Float.NaN;
     private float shadowY = Float.NaN;
     private float shadowZ = Float.NaN;
-    /** Shadow maps built so far (tests). */
+    /** Shadow maps built so far, at once or started on the worker (tests). */
     private int shadowBuilds;
+    /** The shadow map being built on the worker, or null. */
+    private Future<float[]> building;
+    /** The sun direction {@link #building} is for. */
+    private float buildX;
+    private float buildY;
+    private float buildZ;
+
+    /** The name of the thread that rebuilds shadow maps for small turns of the sun. */
+    static final String WORKER_NAME = "jecosys-ground-maps";
+
+    /** One worker for every renderer's small rebuilds; its thread ends after 5 s without work. */
+    private static final class Worker {
+        static final ExecutorService POOL = new ThreadPoolExecutor(0, 1, 5, TimeUnit.SECONDS,
+                new LinkedBlockingQueue<>(), r -> {
+                    Thread t = new Thread(r, WORKER_NAME);
+                    t.setDaemon(true);
+                    return t;
+                });
+    }
 
     /**
      * Builds the contact occlusion of a world's plants and uploads it. Render thread; allocates.
@@ -106,16 +133,26 @@ final class GroundMaps implements AutoCloseable {
      * (the map is made on the CPU). The sun's disc is about half a degree across.
      */
     static final double RESHADE_COS = Math.cos(Math.toRadians(0.25));
+    /**
+     * Cosine of the largest turn of the sun, 2 degrees, whose shadow map is rebuilt on the worker (the
+     * frames meanwhile keep the map before, at most that far off); a larger turn rebuilds at once.
+     */
+    static final double WORKER_COS = Math.cos(Math.toRadians(2));
 
     /**
-     * Makes sure the shadow map is of the settings' sun when shadows are on (rebuilds it when the sun
-     * turned by more than a quarter of a degree since it was made).
+     * Makes sure the shadow map is of the settings' sun when shadows are on: rebuilt when the sun turned
+     * by more than a quarter of a degree since it was made, on the worker up to 2 degrees (the map in use
+     * is kept until the new one is done, taken in at a later call), at once beyond. Render thread.
      *
      * @return whether shadows are drawn: they are on, there are plants and the sun is high enough
      */
     boolean prepareShadows(RenderSettings settings) {
         if (settings.shadows() <= 0 || grid == null
                 || Math.asin(Math.min(1, settings.lighting().sunY())) < SunShadow.MIN_ELEVATION) {
+            if (building != null) {
+                building.cancel(false);
+                building = null;
+            }
             if (shadow != null) { // shadows off: the blue channel goes back to 0 for every reader
                 shadow = null;
                 shadowX = Float.NaN;
@@ -124,16 +161,79 @@ final class GroundMaps implements AutoCloseable {
             return false;
         }
         Lighting l = settings.lighting();
+        if (building != null && building.isDone()) {
+            adopt();
+        }
         double turned = (double) l.sunX() * shadowX + (double) l.sunY() * shadowY + (double) l.sunZ() * shadowZ;
-        if (shadow == null || !(turned >= RESHADE_COS)) { // NaN (no map yet) rebuilds too
+        if (shadow == null || !(turned >= WORKER_COS)) { // NaN (no map yet) builds at once too
+            if (building != null) {
+                building.cancel(false);
+                building = null;
+            }
             shadow = SunShadow.of(world, grid, l.sunX(), l.sunY(), l.sunZ());
             shadowBuilds++;
             shadowX = l.sunX();
             shadowY = l.sunY();
             shadowZ = l.sunZ();
             upload();
+        } else if (!(turned >= RESHADE_COS) && building == null) {
+            float x = l.sunX();
+            float y = l.sunY();
+            float z = l.sunZ();
+            buildX = x;
+            buildY = y;
+            buildZ = z;
+            World w = world;
+            ContactOcclusion g = grid;
+            building = Worker.POOL.submit(() -> SunShadow.of(w, g, x, y, z));
+            shadowBuilds++;
         }
         return true;
+    }
+
+    /** Takes in the map the worker finished. */
+    private void adopt() {
+        float[] made;
+        try {
+            made = building.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return;
+        } catch (ExecutionException e) {
+            building = null;
+            throw new IllegalStateException("building the sun shadow map failed: " + e.getCause(), e.getCause());
+        }
+        building = null;
+        shadow = made;
+        shadowX = buildX;
+        shadowY = buildY;
+        shadowZ = buildZ;
+        upload();
+    }
+
+    /** Waits for the map the worker is building, if any, and takes it in (tests). Render thread. */
+    void awaitShadows() {
+        if (building != null) {
+            try {
+                building.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            } catch (ExecutionException e) {
+                // adopt() reports it
+            }
+            adopt();
+        }
+    }
+
+    /** {@return whether the worker is building a shadow map not taken in yet (tests)} */
+    boolean shadowPending() {
+        return building != null;
+    }
+
+    /** {@return the shadow map in use, or null (tests)} */
+    float[] shadow() {
+        return shadow;
     }
 
     /** {@return the sun shadow maps built so far: tests} */
@@ -152,6 +252,10 @@ final class GroundMaps implements AutoCloseable {
 
     @Override
     public void close() {
+        if (building != null) {
+            building.cancel(false);
+            building = null;
+        }
         texture.close();
     }
 }

@@ -17,8 +17,8 @@ import org.junit.jupiter.api.Test;
 /**
  * A game's sun that moves a little every frame (a day passing, set through {@code Lighting} each
  * frame) rebuilds the CPU-made sun shadow map only when it has turned by more than a quarter of a
- * degree since the map was made, not at every frame; the same sun set again rebuilds nothing, and a
- * larger turn rebuilds at once.
+ * degree since the map was made, not at every frame, and on the ground maps' worker thread, not the
+ * render thread; the same sun set again rebuilds nothing, and a larger turn rebuilds at once.
  */
 class ReshadeTest {
     @Test
@@ -36,16 +36,51 @@ class ReshadeTest {
             assertEquals(1, maps.shadowBuilds(), "the first map");
             assertTrue(maps.prepareShadows(settings));
             assertEquals(1, maps.shadowBuilds(), "the same sun: no rebuild");
-            // 100 frames of a sun turning 0.01 degrees a frame: 1 degree in all
+            // 100 frames of a sun turning 0.01 degrees a frame: 1 degree in all (each frame waits for the
+            // worker's map, so that the count does not depend on how fast it is)
             for (int f = 1; f <= 100; f++) {
                 settings.lighting().setSun(az + Math.toRadians(0.01 * f), el);
                 maps.prepareShadows(settings);
+                maps.awaitShadows();
             }
             int builds = maps.shadowBuilds() - 1;
             assertTrue(builds >= 3 && builds <= 5, "rebuilt every quarter of a degree: " + builds + " in 100 frames");
             settings.lighting().setSun(az + Math.toRadians(10), el);
             maps.prepareShadows(settings);
             assertEquals(builds + 2, maps.shadowBuilds(), "a larger turn rebuilds at once");
+            assertTrue(!maps.shadowPending(), "nothing left to the worker after a larger turn");
+            GlContexts.debug(gl).check("the reshade test");
+        }
+    }
+
+    /**
+     * A small turn (half a degree) is rebuilt on the worker: the frame that sees it keeps the map before,
+     * and the map taken in afterwards is exactly the one the render thread would have made.
+     */
+    @Test
+    void aSmallTurnIsRebuiltOnTheWorkerAndComesOutTheSame() throws Exception {
+        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
+        World world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
+        try (GlContext gl = GlContext.headless(DebugOutput.ON);
+             GroundMaps maps = new GroundMaps(GlContexts.tracker(gl), world)) {
+            RenderSettings settings = RenderSettings.of(def);
+            settings.setShadows(0.6f);
+            double az = Math.toRadians(120);
+            double el = Math.toRadians(40);
+            settings.lighting().setSun(az, el);
+            assertTrue(maps.prepareShadows(settings));
+            float[] before = maps.shadow();
+            settings.lighting().setSun(az + Math.toRadians(0.5), el);
+            assertTrue(maps.prepareShadows(settings));
+            assertTrue(maps.shadowPending(), "half a degree goes to the worker");
+            assertTrue(maps.shadow() == before, "the frame keeps the map before");
+            maps.awaitShadows();
+            assertTrue(!maps.shadowPending());
+            var l = settings.lighting();
+            float[] direct = SunShadow.of(world, maps.grid, l.sunX(), l.sunY(), l.sunZ());
+            org.junit.jupiter.api.Assertions.assertArrayEquals(direct, maps.shadow(), "the worker's map");
+            assertTrue(java.util.stream.IntStream.range(0, direct.length).anyMatch(i -> direct[i] != before[i]),
+                    "the turn moved the shadows");
             GlContexts.debug(gl).check("the reshade test");
         }
     }
