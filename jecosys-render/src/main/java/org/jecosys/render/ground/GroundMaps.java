@@ -40,8 +40,15 @@ final class GroundMaps implements AutoCloseable {
     private float shadowZ = Float.NaN;
     /** Shadow maps built so far, at once or started on the worker (tests). */
     private int shadowBuilds;
+    /**
+     * What the worker made: the shadow map, the texture's texels packed with it (direct memory the
+     * collector frees, so that a build dropped half way leaks nothing) and the cover level packed.
+     */
+    private record Built(float[] shadow, ByteBuffer texels, float[] cover) {
+    }
+
     /** The shadow map being built on the worker, or null. */
-    private Future<float[]> building;
+    private Future<Built> building;
     /** The sun direction {@link #building} is for. */
     private float buildX;
     private float buildY;
@@ -185,7 +192,13 @@ final class GroundMaps implements AutoCloseable {
             buildZ = z;
             World w = world;
             ContactOcclusion g = grid;
-            building = Worker.POOL.submit(() -> SunShadow.of(w, g, x, y, z));
+            float[] cover = coverLevel; // replaced when rebuilt, never changed in place
+            building = Worker.POOL.submit(() -> {
+                float[] made = SunShadow.of(w, g, x, y, z);
+                ByteBuffer texels = ByteBuffer.allocateDirect(4 * g.width * g.height);
+                g.bytes(texels, cover, made);
+                return new Built(made, texels, cover);
+            });
             shadowBuilds++;
         }
         return true;
@@ -193,7 +206,7 @@ final class GroundMaps implements AutoCloseable {
 
     /** Takes in the map the worker finished. */
     private void adopt() {
-        float[] made;
+        Built made;
         try {
             made = building.get();
         } catch (InterruptedException e) {
@@ -204,11 +217,15 @@ final class GroundMaps implements AutoCloseable {
             throw new IllegalStateException("building the sun shadow map failed: " + e.getCause(), e.getCause());
         }
         building = null;
-        shadow = made;
+        shadow = made.shadow();
         shadowX = buildX;
         shadowY = buildY;
         shadowZ = buildZ;
-        upload();
+        if (made.cover() == coverLevel) {
+            texture.upload(made.texels()); // packed on the worker: only the copy to the GL here
+        } else {
+            upload(); // the cover changed meanwhile
+        }
     }
 
     /** Waits for the map the worker is building, if any, and takes it in (tests). Render thread. */
