@@ -42,11 +42,7 @@ class OpenWorldPoppingTest {
     @Test
     void noFrameOfTheOpenWorldsWalkChangesMuchMoreThanTheOthers() throws Exception {
         SceneDef scene = SceneFiles.parse(Path.of("scenes", "openworld.xml"));
-        int[] speciesOf = new int[scene.distributions().size()];
-        for (int k = 0; k < speciesOf.length; k++) {
-            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
-        }
-        TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+        TilePlacer placer = RenderScenes.placer(scene);
         SimulationDef d = scene.simulationDef();
         SimulationDef still = new SimulationDef(d.terrain(), d.species(), d.distributions(), d.placements(), d.flows(),
                 d.field().withEnabled(false), d.animation(), d.seed());

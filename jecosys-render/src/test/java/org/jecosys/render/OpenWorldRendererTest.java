@@ -38,11 +38,7 @@ class OpenWorldRendererTest {
     @Test
     void theLiveTilesAreDrawnAndTheirRenderersFollowTheWalk() throws Exception {
         SceneDef scene = SceneFiles.parse(Path.of("scenes", "openworld.xml"));
-        int[] speciesOf = new int[scene.distributions().size()];
-        for (int k = 0; k < speciesOf.length; k++) {
-            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
-        }
-        TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+        TilePlacer placer = RenderScenes.placer(scene);
         RenderSettings settings = RenderSettings.of(scene.render());
         settings.setClear(true);
         settings.setTerrain(true);

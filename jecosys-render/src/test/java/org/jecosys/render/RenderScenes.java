@@ -54,6 +54,15 @@ public final class RenderScenes {
         }
     };
 
+    /** The tile placer of an open-world scene ({@code <world>}): its distributions, each mapped to its species. */
+    static org.jecosys.world.TilePlacer placer(SceneDef scene) {
+        int[] speciesOf = new int[scene.distributions().size()];
+        for (int k = 0; k < speciesOf.length; k++) {
+            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
+        }
+        return scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+    }
+
     static ViewCamera camera(SceneDef def, World world, int width, int height) {
         double ground = world.terrain().heightfield().height(def.camera().x(), def.camera().z());
         return ViewCamera.of(def.camera(), ground, width / (double) height);

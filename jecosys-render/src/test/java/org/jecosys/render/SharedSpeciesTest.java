@@ -36,11 +36,7 @@ class SharedSpeciesTest {
     @Test
     void tileRenderersShareTheModelsTablesAndMeshesAndDrawTheSame() throws Exception {
         SceneDef scene = SceneFiles.parse(Path.of("scenes", "openworld.xml"));
-        int[] speciesOf = new int[scene.distributions().size()];
-        for (int k = 0; k < speciesOf.length; k++) {
-            speciesOf[k] = scene.species().indexOf(scene.speciesById(scene.distributions().get(k).species()));
-        }
-        TilePlacer placer = scene.world().placer(scene.seed(), scene.distributions(), speciesOf);
+        TilePlacer placer = RenderScenes.placer(scene);
         ByteBuffer px = MemoryUtil.memAlloc(4 * W * H);
         try (OpenWorld w = OpenWorld.create(scene.simulationDef(), placer, 12, 1, 1, 8);
              GlContext gl = GlContext.headless(DebugOutput.ON);

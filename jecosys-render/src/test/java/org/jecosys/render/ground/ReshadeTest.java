@@ -21,17 +21,26 @@ import org.junit.jupiter.api.Test;
  * render thread; the same sun set again rebuilds nothing, and a larger turn rebuilds at once.
  */
 class ReshadeTest {
+    private static final double AZ = Math.toRadians(120);
+    private static final double EL = Math.toRadians(40);
+
+    /** C1 with shadows on and the sun at {@link #AZ}, {@link #EL}. */
+    private static RenderSettings settings(SceneDef def) {
+        RenderSettings settings = RenderSettings.of(def);
+        settings.setShadows(0.6f);
+        settings.lighting().setSun(AZ, EL);
+        return settings;
+    }
+
     @Test
     void aSlowlyTurningSunRebuildsTheShadowMapEverySoOften() throws Exception {
         SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
         World world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
         try (GlContext gl = GlContext.headless(DebugOutput.ON);
              GroundMaps maps = new GroundMaps(GlContexts.tracker(gl), world)) {
-            RenderSettings settings = RenderSettings.of(def);
-            settings.setShadows(0.6f);
-            double az = Math.toRadians(120);
-            double el = Math.toRadians(40);
-            settings.lighting().setSun(az, el);
+            RenderSettings settings = settings(def);
+            double az = AZ;
+            double el = EL;
             assertTrue(maps.prepareShadows(settings));
             assertEquals(1, maps.shadowBuilds(), "the first map");
             assertTrue(maps.prepareShadows(settings));
@@ -63,14 +72,10 @@ class ReshadeTest {
         World world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
         try (GlContext gl = GlContext.headless(DebugOutput.ON);
              GroundMaps maps = new GroundMaps(GlContexts.tracker(gl), world)) {
-            RenderSettings settings = RenderSettings.of(def);
-            settings.setShadows(0.6f);
-            double az = Math.toRadians(120);
-            double el = Math.toRadians(40);
-            settings.lighting().setSun(az, el);
+            RenderSettings settings = settings(def);
             assertTrue(maps.prepareShadows(settings));
             float[] before = maps.shadow();
-            settings.lighting().setSun(az + Math.toRadians(0.5), el);
+            settings.lighting().setSun(AZ + Math.toRadians(0.5), EL);
             assertTrue(maps.prepareShadows(settings));
             assertTrue(maps.shadowPending(), "half a degree goes to the worker");
             assertTrue(maps.shadow() == before, "the frame keeps the map before");
