@@ -44,15 +44,11 @@ final class GroundMaps implements AutoCloseable {
      * What the worker made: the shadow map, the texture's texels packed with it (direct memory the
      * collector frees, so that a build dropped half way leaks nothing) and the cover level packed.
      */
-    private record Built(float[] shadow, ByteBuffer texels, float[] cover) {
+    private record Built(float[] shadow, ByteBuffer texels, float[] cover, float sunX, float sunY, float sunZ) {
     }
 
     /** The shadow map being built on the worker, or null. */
     private Future<Built> building;
-    /** The sun direction {@link #building} is for. */
-    private float buildX;
-    private float buildY;
-    private float buildZ;
 
     /** The name of the thread that rebuilds shadow maps for small turns of the sun. */
     static final String WORKER_NAME = "jecosys-ground-maps";
@@ -156,10 +152,7 @@ final class GroundMaps implements AutoCloseable {
     boolean prepareShadows(RenderSettings settings) {
         if (settings.shadows() <= 0 || grid == null
                 || Math.asin(Math.min(1, settings.lighting().sunY())) < SunShadow.MIN_ELEVATION) {
-            if (building != null) {
-                building.cancel(false);
-                building = null;
-            }
+            dropBuild();
             if (shadow != null) { // shadows off: the blue channel goes back to 0 for every reader
                 shadow = null;
                 shadowX = Float.NaN;
@@ -173,10 +166,7 @@ final class GroundMaps implements AutoCloseable {
         }
         double turned = (double) l.sunX() * shadowX + (double) l.sunY() * shadowY + (double) l.sunZ() * shadowZ;
         if (shadow == null || !(turned >= WORKER_COS)) { // NaN (no map yet) builds at once too
-            if (building != null) {
-                building.cancel(false);
-                building = null;
-            }
+            dropBuild();
             shadow = SunShadow.of(world, grid, l.sunX(), l.sunY(), l.sunZ());
             shadowBuilds++;
             shadowX = l.sunX();
@@ -187,9 +177,6 @@ final class GroundMaps implements AutoCloseable {
             float x = l.sunX();
             float y = l.sunY();
             float z = l.sunZ();
-            buildX = x;
-            buildY = y;
-            buildZ = z;
             World w = world;
             ContactOcclusion g = grid;
             float[] cover = coverLevel; // replaced when rebuilt, never changed in place
@@ -197,14 +184,22 @@ final class GroundMaps implements AutoCloseable {
                 float[] made = SunShadow.of(w, g, x, y, z);
                 ByteBuffer texels = ByteBuffer.allocateDirect(4 * g.width * g.height);
                 g.bytes(texels, cover, made);
-                return new Built(made, texels, cover);
+                return new Built(made, texels, cover, x, y, z);
             });
             shadowBuilds++;
         }
         return true;
     }
 
-    /** Takes in the map the worker finished. */
+    /** Drops the worker's build, if any (its result is let go). */
+    private void dropBuild() {
+        if (building != null) {
+            building.cancel(false);
+            building = null;
+        }
+    }
+
+    /** Takes in the map the worker finished (waits for it when it is not done). */
     private void adopt() {
         Built made;
         try {
@@ -218,9 +213,9 @@ final class GroundMaps implements AutoCloseable {
         }
         building = null;
         shadow = made.shadow();
-        shadowX = buildX;
-        shadowY = buildY;
-        shadowZ = buildZ;
+        shadowX = made.sunX();
+        shadowY = made.sunY();
+        shadowZ = made.sunZ();
         if (made.cover() == coverLevel) {
             texture.upload(made.texels()); // packed on the worker: only the copy to the GL here
         } else {
@@ -231,14 +226,6 @@ final class GroundMaps implements AutoCloseable {
     /** Waits for the map the worker is building, if any, and takes it in (tests). Render thread. */
     void awaitShadows() {
         if (building != null) {
-            try {
-                building.get();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
-            } catch (ExecutionException e) {
-                // adopt() reports it
-            }
             adopt();
         }
     }
@@ -269,10 +256,7 @@ final class GroundMaps implements AutoCloseable {
 
     @Override
     public void close() {
-        if (building != null) {
-            building.cancel(false);
-            building = null;
-        }
+        dropBuild();
         texture.close();
     }
 }
