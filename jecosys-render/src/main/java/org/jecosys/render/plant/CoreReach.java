@@ -86,7 +86,7 @@ final class CoreReach {
         reach[li] = new double[core ? 0 : pairs];
         for (int slot = 0, i = 0; slot < seen.length && !core; slot++) {
             if (seen[slot]) {
-                half[li][i] = PlantMeshes.widestHalf(m, slot);
+                half[li][i] = m.slotWidestHalfWidth(slot);
                 reach[li][i++] = 1.5 * PlantMeshes.reach(m.slotPoseTable(slot, 0));
             }
         }

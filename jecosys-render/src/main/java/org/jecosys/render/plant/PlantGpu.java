@@ -1,6 +1,5 @@
 package org.jecosys.render.plant;
 
-import static org.lwjgl.opengl.GL30C.GL_RGBA32F;
 import static org.lwjgl.opengl.GL31C.GL_MAX_TEXTURE_BUFFER_SIZE;
 import static org.lwjgl.opengl.GL43C.GL_MAX_SHADER_STORAGE_BLOCK_SIZE;
 
@@ -95,11 +94,12 @@ final class PlantGpu implements AutoCloseable {
                 programs[k] = shared != null && shared.textured() == textured ? shared.draw(k)
                         : own(PlantPasses.compile(tracker, k, textured));
             }
-            // the model's tables and meshes: shared with the other renderers of the shared programs' model
+            // the model's tables and meshes: the shared programs' when they are of this model, else its own
             SpeciesGpu common = shared != null ? shared.species(tracker, world.plants()) : null;
-            poseTexture = common != null ? common.poseTexture
-                    : own(new GlBufferTexture(tracker, own(PlantMeshes.uploadPoses(tracker, models, texels)),
-                    GL_RGBA32F));
+            if (common == null) {
+                common = own(new SpeciesGpu(tracker, world.plants()));
+            }
+            poseTexture = common.poseTexture;
             resolver = own(new ComponentResolver(tracker, world, batches, poseTexture, poseTexel, components,
                     maxComponents, PlantMeshes.slotLooks(models, images), resolvePath,
                     shared == null ? null : shared.resolve()));
@@ -108,12 +108,10 @@ final class PlantGpu implements AutoCloseable {
             indexCount = new int[lists];
             for (int s = 0; s < models.size(); s++) {
                 SpeciesModel m = models.get(s);
-                int[] layers = PlantMeshes.layers(images, s, m);
                 for (int l = 0; l < m.levels(); l++) {
                     int li = batches.list(s, l);
                     indexCount[li] = m.mesh(l).indexCount();
-                    vaos[li] = common != null ? common.mesh(s, l)
-                            : PlantMeshes.uploadMesh(tracker, m, m.mesh(l), layers, owned);
+                    vaos[li] = common.mesh(s, l);
                 }
             }
             // trilinear on a GPU; the nearest level's bilinear on a software rasteriser (GlTextureArray)

@@ -89,7 +89,7 @@ public final class PlantMeshes {
             float[] halfWidth = new float[m.slotCount()];
             for (int slot = 0; slot < reach.length; slot++) {
                 reach[slot] = reach(m.slotPoseTable(slot, 0));
-                halfWidth[slot] = widestHalf(m, slot);
+                halfWidth[slot] = m.slotWidestHalfWidth(slot);
             }
             for (int v = 0; v < n; v++) {
                 int slot = mesh.vertexSlot(v);
@@ -228,14 +228,6 @@ public final class PlantMeshes {
             most = Math.max(most, p + w);
         }
         return (float) most;
-    }
-
-    /**
-     * {@return the widest half width of a slot's part, metres, over every shape variant, pose and point}
-     * (plant.vert leaves a part out of the core's pass where even that is thinner than the least width).
-     */
-    static float widestHalf(SpeciesModel m, int slot) {
-        return m.slotWidestHalfWidth(slot);
     }
 
     private static double sq(double x) {

@@ -12,6 +12,7 @@ import org.jecosys.render.gl.GlContexts;
 import org.jecosys.scene.SceneDef;
 import org.jecosys.scene.SceneFiles;
 import org.jecosys.sim.World;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,16 @@ class ReshadeTest {
     private static final double AZ = Math.toRadians(120);
     private static final double EL = Math.toRadians(40);
 
+    private static SceneDef def;
+    /** C1's world, built once for both tests (a world is immutable). */
+    private static World world;
+
+    @BeforeAll
+    static void build() throws Exception {
+        def = SceneFiles.parse(Path.of("scenes/c1.xml"));
+        world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
+    }
+
     /** C1 with shadows on and the sun at {@link #AZ}, {@link #EL}. */
     private static RenderSettings settings(SceneDef def) {
         RenderSettings settings = RenderSettings.of(def);
@@ -34,13 +45,9 @@ class ReshadeTest {
 
     @Test
     void aSlowlyTurningSunRebuildsTheShadowMapEverySoOften() throws Exception {
-        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
-        World world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
         try (GlContext gl = GlContext.headless(DebugOutput.ON);
              GroundMaps maps = new GroundMaps(GlContexts.tracker(gl), world)) {
             RenderSettings settings = settings(def);
-            double az = AZ;
-            double el = EL;
             assertTrue(maps.prepareShadows(settings));
             assertEquals(1, maps.shadowBuilds(), "the first map");
             assertTrue(maps.prepareShadows(settings));
@@ -48,13 +55,13 @@ class ReshadeTest {
             // 100 frames of a sun turning 0.01 degrees a frame: 1 degree in all (each frame waits for the
             // worker's map, so that the count does not depend on how fast it is)
             for (int f = 1; f <= 100; f++) {
-                settings.lighting().setSun(az + Math.toRadians(0.01 * f), el);
+                settings.lighting().setSun(AZ + Math.toRadians(0.01 * f), EL);
                 maps.prepareShadows(settings);
                 maps.awaitShadows();
             }
             int builds = maps.shadowBuilds() - 1;
             assertTrue(builds >= 3 && builds <= 5, "rebuilt every quarter of a degree: " + builds + " in 100 frames");
-            settings.lighting().setSun(az + Math.toRadians(10), el);
+            settings.lighting().setSun(AZ + Math.toRadians(10), EL);
             maps.prepareShadows(settings);
             assertEquals(builds + 2, maps.shadowBuilds(), "a larger turn rebuilds at once");
             assertTrue(!maps.shadowPending(), "nothing left to the worker after a larger turn");
@@ -68,8 +75,6 @@ class ReshadeTest {
      */
     @Test
     void aSmallTurnIsRebuiltOnTheWorkerAndComesOutTheSame() throws Exception {
-        SceneDef def = SceneFiles.parse(Path.of("scenes/c1.xml"));
-        World world = World.build(def.simulationDef(), Path.of("scenes"), 1, Progress.NONE);
         try (GlContext gl = GlContext.headless(DebugOutput.ON);
              GroundMaps maps = new GroundMaps(GlContexts.tracker(gl), world)) {
             RenderSettings settings = settings(def);

@@ -134,7 +134,7 @@ class CoreReachTest {
         float[][] p = new float[slots.size()][];
         int i = 0;
         for (int slot : slots) {
-            p[i++] = new float[] {PlantMeshes.widestHalf(m, slot), PlantMeshes.reach(m.slotPoseTable(slot, 0))};
+            p[i++] = new float[] {m.slotWidestHalfWidth(slot), PlantMeshes.reach(m.slotPoseTable(slot, 0))};
         }
         return p;
     }
