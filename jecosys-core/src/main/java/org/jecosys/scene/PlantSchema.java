@@ -237,7 +237,16 @@ final class PlantSchema {
                 .attr(integer("tuftCount", "Candidates drawn around each tuft centre: above 1 gathers plants into "
                         + "small groups (tussocks) inside the clumps; 1 draws every plant on its own.")
                         .range(1, DistributionDef.MAX_TUFT_COUNT).def(DistributionDef.DEFAULT_TUFT_COUNT)
-                        .get(d -> dist(d).tuftCount()));
+                        .get(d -> dist(d).tuftCount()))
+                .attr(integer("tuftBunches", "Bunches a tuft splits into (a bunchgrass's hollow crown): each of its "
+                        + "plants joins one at random, and the bunches stand spaced about evenly on a ring of radius "
+                        + "tuftRing round the tuft's centre, turned at random; 1 keeps one bunch at the centre.")
+                        .range(1, DistributionDef.MAX_TUFT_BUNCHES).def(DistributionDef.DEFAULT_TUFT_BUNCHES)
+                        .get(d -> dist(d).tuftBunches()))
+                .attr(num("tuftRing", "metres", "Radius of the ring a tuft's bunches stand on (read only when "
+                        + "tuftBunches and tuftCount are above 1).")
+                        .range(0, DistributionDef.MAX_TUFT_SIZE).def(DistributionDef.DEFAULT_TUFT_RING)
+                        .get(d -> dist(d).tuftRing()));
         ElementSpec plant = new ElementSpec("plant", "One plant placed by hand.")
                 .attr(AttrSpec.of("species", ID, "", "Id of the species.").required()
                         .get(d -> ((PlacementDef) d).species()))

@@ -294,7 +294,7 @@ final class SceneBinder {
                 d.num("minWater"), d.num("maxWater"), d.num("minNutrients"), d.num("maxNutrients"),
                 d.num("maxSlope"), d.num("minAltitude"), d.num("maxAltitude"), d.num("footprint"),
                 d.num("waterUse"), d.num("nutrientUse"), d.num("clumpSize"), d.num("clumpStrength"),
-                d.num("tuftSize"), d.integer("tuftCount")));
+                d.num("tuftSize"), d.integer("tuftCount"), d.integer("tuftBunches"), d.num("tuftRing")));
     }
 
     private boolean minMax(Values v, String min, String max) {

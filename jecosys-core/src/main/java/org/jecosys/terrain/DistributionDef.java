@@ -1,6 +1,7 @@
 package org.jecosys.terrain;
 
 import org.jecosys.math.Require;
+import org.jecosys.math.Rng;
 
 /**
  * Where and how many plants of one species grow (paper §4.3). Plants are placed concurrently with
@@ -31,11 +32,21 @@ import org.jecosys.math.Require;
  *                     every candidate on its own (the paper's layout, bit for bit), more gather plants into
  *                     tufts (tussocks) of up to that many within about {@code 2 tuftSize} of each other
  *                     (see {@link CompetitiveDistributor})
+ * @param tuftBunches  bunches a tuft splits into (not in the paper; a bunchgrass's hollow crown, whose
+ *                     middle dies back and leaves a ring of daughter bunches), in [1,
+ *                     {@link #MAX_TUFT_BUNCHES}]: each of the tuft's candidates joins one of that many bunches
+ *                     at random (so bunches differ in size), the bunches' centres stand on a ring of radius
+ *                     {@code tuftRing} round the tuft's centre (see {@link #bunchCentres}), and the
+ *                     candidates spread round their bunch's centre by {@code tuftSize}; 1
+ *                     (the default) keeps one bunch at the centre, the layout bit for bit as without it
+ * @param tuftRing     radius, metres, of the ring the bunches stand on, in [0, {@link #MAX_TUFT_SIZE}];
+ *                     read only when {@code tuftBunches > 1} and {@code tuftCount > 1}
  */
 public record DistributionDef(String species, int count, double density, double minWater, double maxWater,
                               double minNutrients, double maxNutrients, double maxSlope, double minAltitude,
                               double maxAltitude, double footprint, double waterUse, double nutrientUse,
-                              double clumpSize, double clumpStrength, double tuftSize, int tuftCount) {
+                              double clumpSize, double clumpStrength, double tuftSize, int tuftCount,
+                              int tuftBunches, double tuftRing) {
     /** Largest exact count. */
     public static final int MAX_COUNT = 10_000_000;
     /** Largest density, plants per square metre (the scene schema's range and the API's). */
@@ -58,6 +69,10 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double MAX_TUFT_SIZE = 10;
     /** Most candidates per tuft centre. */
     public static final int MAX_TUFT_COUNT = 64;
+    /** Most bunches per tuft. */
+    public static final int MAX_TUFT_BUNCHES = 16;
+    /** Largest move of a bunch along its tuft's ring, as a share of the bunches' even spacing. */
+    public static final double BUNCH_JITTER = 0.1;
 
     /**
      * Checks the components.
@@ -80,6 +95,8 @@ public record DistributionDef(String species, int count, double density, double 
      * @param clumpStrength clumping, in [0, 1]; 0 for none
      * @param tuftSize      tuft spread (s.d.), metres, in [{@link #MIN_TUFT_SIZE}, {@link #MAX_TUFT_SIZE}]
      * @param tuftCount     candidates per tuft centre, in [1, {@link #MAX_TUFT_COUNT}]; 1 for none
+     * @param tuftBunches   bunches per tuft, in [1, {@link #MAX_TUFT_BUNCHES}]; 1 for one at the centre
+     * @param tuftRing      radius of the bunches' ring, metres, in [0, {@link #MAX_TUFT_SIZE}]
      * @throws IllegalArgumentException when a component is out of range or species is null
      */
     public DistributionDef {
@@ -103,6 +120,8 @@ public record DistributionDef(String species, int count, double density, double 
         Require.range("clumpStrength", clumpStrength, 0, 1);
         Require.range("tuftSize", tuftSize, MIN_TUFT_SIZE, MAX_TUFT_SIZE);
         Require.range("tuftCount", tuftCount, 1, MAX_TUFT_COUNT);
+        Require.range("tuftBunches", tuftBunches, 1, MAX_TUFT_BUNCHES);
+        Require.range("tuftRing", tuftRing, 0, MAX_TUFT_SIZE);
     }
 
     /** Default {@link #count()}: -1, place by {@link #density()}. */
@@ -137,6 +156,10 @@ public record DistributionDef(String species, int count, double density, double 
     public static final double DEFAULT_TUFT_SIZE = 0.1;
     /** Default {@link #tuftCount()}: no tufts, every candidate drawn on its own. */
     public static final int DEFAULT_TUFT_COUNT = 1;
+    /** Default {@link #tuftBunches()}: one bunch, at the tuft's centre. */
+    public static final int DEFAULT_TUFT_BUNCHES = 1;
+    /** Default {@link #tuftRing()}, metres (read only when {@link #tuftBunches()} is above 1). */
+    public static final double DEFAULT_TUFT_RING = 0;
 
     /**
      * A builder for a distribution of {@code species}, every value at the scene schema's default
@@ -151,6 +174,30 @@ public record DistributionDef(String species, int count, double density, double 
     }
 
     /**
+     * The centres of one tuft's {@link #tuftBunches()} bunches round the tuft's centre (x, z): evenly
+     * spaced on a circle of radius {@link #tuftRing()}, the circle turned at random, each bunch moved
+     * along it by up to {@link #BUNCH_JITTER} of the spacing, so that the bunches do not stand in
+     * regular polygons. The placement's streams call it once per tuft (fixed scenes and tiles alike).
+     * Any thread; no allocation; draws {@code tuftBunches + 1} numbers from rng.
+     *
+     * @param rng the tuft's random stream, not null
+     * @param x   the tuft's centre, metres
+     * @param z   the tuft's centre, metres
+     * @param bx  receives the bunches' X, metres; length at least tuftBunches
+     * @param bz  receives the bunches' Z, metres; length at least tuftBunches
+     */
+    public void bunchCentres(Rng rng, double x, double z, double[] bx, double[] bz) {
+        int n = tuftBunches;
+        double step = 2 * Math.PI / n;
+        double turn = rng.nextDouble() * step;
+        for (int b = 0; b < n; b++) {
+            double a = turn + step * (b + BUNCH_JITTER * (2 * rng.nextDouble() - 1));
+            bx[b] = x + tuftRing * Math.cos(a);
+            bz[b] = z + tuftRing * Math.sin(a);
+        }
+    }
+
+    /**
      * A builder holding every value of this def, to change a few. Any thread; allocates.
      *
      * @return a new builder
@@ -159,7 +206,7 @@ public record DistributionDef(String species, int count, double density, double 
         return new Builder(species).count(count).density(density).water(minWater, maxWater)
                 .nutrients(minNutrients, maxNutrients).maxSlope(maxSlope).altitude(minAltitude, maxAltitude)
                 .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse).clump(clumpSize, clumpStrength)
-                .tufts(tuftSize, tuftCount);
+                .tufts(tuftSize, tuftCount).bunches(tuftBunches, tuftRing);
     }
 
     /**
@@ -184,6 +231,8 @@ public record DistributionDef(String species, int count, double density, double 
         private double clumpStrength = DEFAULT_CLUMP_STRENGTH;
         private double tuftSize = DEFAULT_TUFT_SIZE;
         private int tuftCount = DEFAULT_TUFT_COUNT;
+        private int tuftBunches = DEFAULT_TUFT_BUNCHES;
+        private double tuftRing = DEFAULT_TUFT_RING;
 
         private Builder(String species) {
             this.species = species;
@@ -322,6 +371,22 @@ public record DistributionDef(String species, int count, double density, double 
         }
 
         /**
+         * Sets the bunches a tuft splits into (a bunchgrass's hollow crown): each of the tuft's
+         * candidates joins one of {@code count} bunches at random, whose centres stand on a ring of radius
+         * {@code ring} round the tuft's centre ({@link DistributionDef#bunchCentres}); {@link #tufts} gives
+         * the spread round each bunch.
+         *
+         * @param count bunches per tuft, in [1, {@link #MAX_TUFT_BUNCHES}]; 1 for one at the centre
+         * @param ring  ring radius, metres, in [0, {@link #MAX_TUFT_SIZE}]
+         * @return this builder
+         */
+        public Builder bunches(int count, double ring) {
+            this.tuftBunches = count;
+            this.tuftRing = ring;
+            return this;
+        }
+
+        /**
          * The def. Allocates.
          *
          * @return a new def
@@ -330,7 +395,7 @@ public record DistributionDef(String species, int count, double density, double 
         public DistributionDef build() {
             return new DistributionDef(species, count, density, minWater, maxWater, minNutrients, maxNutrients,
                     maxSlope, minAltitude, maxAltitude, footprint, waterUse, nutrientUse, clumpSize, clumpStrength,
-                    tuftSize, tuftCount);
+                    tuftSize, tuftCount, tuftBunches, tuftRing);
         }
     }
 }

@@ -163,10 +163,14 @@ final class Rounds {
         double clumpScale = 1 / (2 * def.clumpSize());
         int tuft = def.tuftCount();
         double spread = def.tuftSize();
+        int bunches = tuft > 1 ? def.tuftBunches() : 1;
+        double[] bunchX = new double[bunches];
+        double[] bunchZ = new double[bunches];
         float x = 0;
         float z = 0;
         for (int i = from; i < to; i++) {
-            if (tuft == 1 || (i - from) % tuft == 0) {
+            int member = (i - from) % tuft;
+            if (tuft == 1 || member == 0) {
                 int tries = 0;
                 while (true) {
                     int cell = m.possible[rng.nextInt(m.possible.length)];
@@ -180,12 +184,18 @@ final class Rounds {
                         break;
                     }
                 }
+                if (bunches > 1) { // one bunch draws nothing more: the tufts without bunches, bit for bit
+                    def.bunchCentres(rng, x, z, bunchX, bunchZ);
+                }
             }
             float px = x;
             float pz = z;
-            if (tuft > 1) { // a tuft member: normal offsets from the tuft's centre (x, z); one tuft count draws none
-                px = inside(x + spread * rng.nextGaussian(), minX, hf.maxX());
-                pz = inside(z + spread * rng.nextGaussian(), minZ, hf.maxZ());
+            if (tuft > 1) { // a tuft member: normal offsets from its bunch's centre; one tuft count draws none
+                int b = bunches > 1 ? rng.nextInt(bunches) : 0; // each joins a bunch at random: bunches of uneven size
+                double bx = bunches > 1 ? bunchX[b] : x;
+                double bz = bunches > 1 ? bunchZ[b] : z;
+                px = inside(bx + spread * rng.nextGaussian(), minX, hf.maxX());
+                pz = inside(bz + spread * rng.nextGaussian(), minZ, hf.maxZ());
             }
             double y = hf.height(px, pz);
             cx[d][i] = px;

@@ -20,7 +20,9 @@ import org.jecosys.terrain.DistributionDef;
  * density is that of the candidates, so the placed density is lower where footprints crowd (with the
  * meadow's footprints and tufts, 7.6 candidates per m² give 5.7 plants per m²). With {@code tuftCount > 1} the candidates come in tufts: offsets
  * around a shared centre, normal with s.d. {@code tuftSize}, clamped to {@link #TUFT_REACH} s.d. (so
- * a tuft reaches a known distance beyond its tile). With {@code clumpStrength > 0} each tuft centre
+ * a tuft reaches a known distance beyond its tile); with {@code tuftBunches > 1} each joins one of the
+ * tuft's bunches at random, on a ring round the centre ({@link DistributionDef#bunchCentres}), and
+ * the reach grows by the ring's radius. With {@code clumpStrength > 0} each tuft centre
  * (each candidate without tufts) is kept with the chance {@code 1 - strength + strength g(x, z)} where
  * g is the clump field, smooth value noise of world position seeded by (seed, d), never of the tile;
  * the count is raised by the field's mean so the mean density stays the def's.
@@ -160,9 +162,7 @@ public final class TilePlacer {
             defs[d] = def;
             radius[d] = def.footprint();
             rMax = Math.max(rMax, radius[d]);
-            if (def.tuftCount() > 1) {
-                lim = Math.max(lim, TUFT_REACH * def.tuftSize());
-            }
+            lim = Math.max(lim, tuftReach(def));
             clumpSeed[d] = Rng.mix(seed ^ Rng.mix(0xC1L + ((long) d << 8)));
             double mean = def.clumpStrength() > 0 ? clumpMean(d) : 1;
             double density = def.density() / mean;
@@ -181,7 +181,7 @@ public final class TilePlacer {
         if (halo < 2 * rMax) {
             throw new IllegalArgumentException("tileSize " + tileSize + " m is too small: it must be at least the"
                     + " largest footprint diameter (" + 2 * rMax + " m) plus the largest tuft reach ("
-                    + TUFT_REACH + " tuftSize = " + lim + " m)");
+                    + TUFT_REACH + " tuftSize, plus tuftRing where a tuft has bunches: " + lim + " m)");
         }
         double neighbours = perM2 * Math.PI * 4 * rMax * rMax;
         this.reach = neighbours <= SPARSE_NEIGHBOURS && !wholeHalo ? Math.min(halo, REACH_DIAMETERS * 2 * rMax) : halo;
@@ -284,7 +284,11 @@ public final class TilePlacer {
         double z1 = (double) (tj + 1) * size;
         int tuft = def.tuftCount();
         double spread = def.tuftSize();
-        double lim = tuft > 1 ? TUFT_REACH * spread : 0;
+        double lim = tuftReach(def);
+        double clampS = tuft > 1 ? TUFT_REACH * spread : 0;
+        int bunches = tuft > 1 ? def.tuftBunches() : 1;
+        double[] bunchX = bunches > 1 ? new double[bunches] : null;
+        double[] bunchZ = bunches > 1 ? new double[bunches] : null;
         double strength = def.clumpStrength();
         double cx = 0;
         double cz = 0;
@@ -300,15 +304,23 @@ public final class TilePlacer {
                     double u = rng.nextDouble();
                     kept = near && u < clumpAcceptance(clumpSeed[d], 1 / (2 * def.clumpSize()), strength, cx, cz);
                 }
+                if (bunches > 1) { // the ring's draws are taken whether or not the tuft is kept
+                    def.bunchCentres(rng, cx, cz, bunchX, bunchZ);
+                }
             }
             double x = cx;
             double z = cz;
             if (tuft > 1) {
                 if (kept) {
-                    x += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
-                    z += Math.max(-lim, Math.min(lim, spread * rng.nextGaussian()));
+                    if (bunches > 1) {
+                        int b = rng.nextInt(bunches);
+                        x = bunchX[b];
+                        z = bunchZ[b];
+                    }
+                    x += Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
+                    z += Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
                 } else {
-                    skip(rng, 4); // two normal draws take two longs each
+                    skip(rng, (bunches > 1 ? 1 : 0) + 4); // the bunch, and two normal draws of two longs each
                 }
             }
             if (!kept) {
@@ -321,6 +333,18 @@ public final class TilePlacer {
                 out.add(x, z, az < 2 * (float) Math.PI ? az : 0, vs, d, ti, tj, k);
             }
         }
+    }
+
+    /**
+     * How far a plant of the distribution may stand from its tuft's drawn centre, metres: the bunches'
+     * ring ({@link DistributionDef#tuftRing}, with more than one bunch) plus the clamped spread; 0
+     * without tufts.
+     */
+    static double tuftReach(DistributionDef def) {
+        if (def.tuftCount() <= 1) {
+            return 0;
+        }
+        return TUFT_REACH * def.tuftSize() + (def.tuftBunches() > 1 ? def.tuftRing() : 0);
     }
 
     /** Advances the stream by n draws, as n calls of {@link Rng#nextLong} (or nextDouble) would. */

@@ -94,6 +94,134 @@ class TuftingTest {
         assertEquals(500, one.count());
     }
 
+    /** Tufts of 9 on a flat square, each split into 3 bunches on a 0.2 m ring, spread 5 mm round them. */
+    private static DistributionDef ringed(int bunches, double ring) {
+        return DistributionDef.builder("A").count(1800).footprint(0.002).waterUse(0).nutrientUse(0)
+                .tufts(DistributionDef.MIN_TUFT_SIZE, 9).bunches(bunches, ring).build();
+    }
+
+    /**
+     * Issue 41's hollow crowns: each tuft's plants stand in bunches on the ring round its centre. The
+     * plants joined within 5 cm are the bunches; a bunch's nearest bunch is its sibling on the ring, a
+     * chord of the 0.2 m ring between 2 x 0.2 sin(60 deg - 12 deg) and 2 x 0.2 sin(60 deg + 12 deg) (the
+     * spacing moved by at most a tenth), widened by the bunches' spread; the bunches differ in size
+     * (each plant joins one at random); and one bunch is the tufted layout bit for bit, whatever the ring.
+     */
+    @Test
+    void bunchesStandOnTheirTuftsRingAndDifferInSize() {
+        PlantLayout l = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(ringed(3, 0.2)), List.of(), 11, 2,
+                Progress.NONE);
+        assertEquals(1800, l.count());
+        float[] x = new float[l.count()];
+        float[] z = new float[l.count()];
+        for (int i = 0; i < l.count(); i++) {
+            x[i] = l.x(i);
+            z[i] = l.z(i);
+        }
+        double[][] b = groups(x, z, 0.05);
+        int n = b[0].length;
+        int onRing = 0;
+        int counted = 0;
+        java.util.Set<Integer> sizes = new java.util.TreeSet<>();
+        for (int i = 0; i < n; i++) {
+            sizes.add((int) b[2][i]);
+            if (Math.abs(b[0][i]) > SIZE / 2 - 1 || Math.abs(b[1][i]) > SIZE / 2 - 1) {
+                continue;
+            }
+            double best = Double.POSITIVE_INFINITY;
+            for (int j = 0; j < n; j++) {
+                if (j != i) {
+                    best = Math.min(best, Math.hypot(b[0][j] - b[0][i], b[1][j] - b[1][i]));
+                }
+            }
+            counted++;
+            onRing += best >= 2 * 0.2 * Math.sin(Math.toRadians(48)) - 0.02
+                    && best <= 2 * 0.2 * Math.sin(Math.toRadians(72)) + 0.02 ? 1 : 0;
+        }
+        System.out.printf("bunches: %d of %d plants (sizes %s); %d of %d have their nearest bunch at the ring's "
+                + "chord%n", n, l.count(), sizes, onRing, counted);
+        // 200 tufts of 9 plants over 900 m^2: another tuft's bunch is rarely the nearest
+        assertTrue(onRing >= 0.8 * counted, onRing + " of " + counted + " bunches have a sibling at the chord");
+        assertTrue(sizes.size() >= 4, "bunches of uneven size: " + sizes);
+        PlantLayout one = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(ringed(1, 0.7)), List.of(), 11, 2,
+                Progress.NONE);
+        PlantLayout plain = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(ringed(1, 0).toBuilder()
+                .bunches(DistributionDef.DEFAULT_TUFT_BUNCHES, DistributionDef.DEFAULT_TUFT_RING).build()),
+                List.of(), 11, 1, Progress.NONE);
+        assertSameLayout(plain, one);
+    }
+
+    @Test
+    void bunchedLayoutIsDeterministicForTheSeedWhateverTheThreads() throws IOException {
+        Terrain t = CompetitiveDistributorTest.meadow(4);
+        List<DistributionDef> defs = List.of(
+                CompetitiveDistributorTest.tuft(400).toBuilder().footprint(0.005).clump(2, 0.5).tufts(0.01, 9)
+                        .bunches(3, 0.19).build(),
+                CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.02, 4).bunches(2, 0.2).build());
+        PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 1, Progress.NONE);
+        PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
+        assertSameLayout(one, four);
+        assertEquals(500, one.count());
+    }
+
+    /**
+     * Points joined where two stand within {@code join} metres (transitively): {x, z, size} per group,
+     * at the mean of its points. Test helper; allocates.
+     */
+    static double[][] groups(float[] x, float[] z, double join) {
+        int n = x.length;
+        int[] id = new int[n];
+        for (int i = 0; i < n; i++) {
+            id[i] = i;
+        }
+        for (int i = 0; i < n; i++) {
+            for (int j = i + 1; j < n; j++) {
+                if (Math.hypot(x[j] - x[i], z[j] - z[i]) < join) {
+                    int a = root(id, i);
+                    int c = root(id, j);
+                    id[Math.max(a, c)] = Math.min(a, c);
+                }
+            }
+        }
+        double[] sx = new double[n];
+        double[] sz = new double[n];
+        int[] c = new int[n];
+        int g = 0;
+        for (int i = 0; i < n; i++) {
+            int r = root(id, i);
+            g += c[r] == 0 ? 1 : 0;
+            sx[r] += x[i];
+            sz[r] += z[i];
+            c[r]++;
+        }
+        double[][] out = new double[3][g];
+        for (int i = 0, k = 0; i < n; i++) {
+            if (c[i] > 0) {
+                out[0][k] = sx[i] / c[i];
+                out[1][k] = sz[i] / c[i];
+                out[2][k++] = c[i];
+            }
+        }
+        return out;
+    }
+
+    private static int root(int[] id, int i) {
+        while (id[i] != i) {
+            id[i] = id[id[i]];
+            i = id[i];
+        }
+        return i;
+    }
+
+    @Test
+    void badBunchValuesAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> ringed(0, 0.2));
+        assertThrows(IllegalArgumentException.class, () -> ringed(DistributionDef.MAX_TUFT_BUNCHES + 1, 0.2));
+        assertThrows(IllegalArgumentException.class, () -> ringed(3, -0.1));
+        assertThrows(IllegalArgumentException.class, () -> ringed(3, Double.NaN));
+        assertThrows(IllegalArgumentException.class, () -> ringed(3, DistributionDef.MAX_TUFT_SIZE * 2));
+    }
+
     @Test
     void badTuftValuesAreRefused() {
         assertThrows(IllegalArgumentException.class, () -> grass(0.1, 0));

@@ -149,6 +149,43 @@ class TilePlacerTest {
         }
     }
 
+    /**
+     * Bunched tufts (issue 41) stream like the rest: a tile is the same whatever was placed before, its
+     * plants stand in bunches on their tufts' rings (nearest plant of another bunch at the ring's chord
+     * or further), and the halo grows by the ring, refused with its name where the tile is too small.
+     */
+    @Test
+    void bunchedTuftsStreamAndReachByTheirRing() {
+        DistributionDef def = DistributionDef.builder("crowns").density(2).footprint(0.004).tufts(0.005, 6)
+                .bunches(3, 0.2).build();
+        TilePlacer a = new TilePlacer(9, 8, List.of(def), new int[] {0}, WAVES);
+        TilePlants alone = a.place(1, 1);
+        TilePlacer b = new TilePlacer(9, 8, List.of(def), new int[] {0}, WAVES);
+        b.place(2, 1);
+        b.place(1, 2);
+        assertSame(alone, b.place(1, 1));
+        assertEquals(TilePlacer.TUFT_REACH * 0.005 + 0.2, TilePlacer.tuftReach(def), 1e-12);
+        // within 5 cm: the same bunch; the next plant beyond that stands at least a chord of the ring away
+        int n = alone.count();
+        int far = 0;
+        for (int i = 0; i < n; i++) {
+            double best = Double.POSITIVE_INFINITY;
+            for (int j = 0; j < n; j++) {
+                double d = Math.hypot(alone.x()[j] - alone.x()[i], alone.z()[j] - alone.z()[i]);
+                if (j != i && d >= 0.05) {
+                    best = Math.min(best, d);
+                }
+            }
+            far += best >= 2 * 0.2 * Math.sin(Math.toRadians(48)) - 0.03 ? 1 : 0;
+        }
+        assertTrue(n > 60, "the tile has plants: " + n);
+        assertTrue(far >= 0.8 * n, far + " of " + n + " plants have no other bunch nearer than the ring's chord");
+        DistributionDef wide = def.toBuilder().bunches(3, 8).build();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new TilePlacer(9, 8, List.of(wide), new int[] {0}, WAVES));
+        assertTrue(e.getMessage().contains("tuftRing"), e.getMessage());
+    }
+
     @Test
     void clumpsFollowAFieldOfWorldPosition() {
         DistributionDef def = DistributionDef.builder("patches").density(1).footprint(0.02).clump(1.5, 1).build();
