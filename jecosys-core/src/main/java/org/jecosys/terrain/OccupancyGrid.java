@@ -36,7 +36,7 @@ final class OccupancyGrid {
     /** Most buckets per side of a class's grid. */
     static final int MAX_BUCKETS_PER_SIDE = 2048;
     /** Most buckets of a class's grid per disc it is declared to hold (at least one bucket). */
-    static final int BUCKETS_PER_DISC = 16;
+    static final int BUCKETS_PER_DISC = 64;
 
     private final double minX;
     private final double minZ;
