@@ -64,71 +64,22 @@ final class MeadowPattern {
      */
     static float[][] tussocks(World w, java.util.Set<Integer> species, double join) {
         int n = w.plantCount();
-        int[] id = new int[n];
         float[] x = new float[n];
         float[] z = new float[n];
         int m = 0;
         for (int p = 0; p < n; p++) {
             if (species.contains(w.plantSpecies(p))) {
                 x[m] = w.plantX(p);
-                z[m] = w.plantZ(p);
-                id[m] = m;
-                m++;
+                z[m++] = w.plantZ(p);
             }
         }
-        var hf = w.terrain().heightfield();
-        int gx = (int) Math.ceil(hf.sizeX() / join) + 1;
-        int gz = (int) Math.ceil(hf.sizeZ() / join) + 1;
-        int[] head = new int[gx * gz];
-        int[] next = new int[m];
-        Arrays.fill(head, -1);
-        for (int i = 0; i < m; i++) {
-            int b = bucket(x[i], hf.minX(), join, gx) + gx * bucket(z[i], hf.minZ(), join, gz);
-            next[i] = head[b];
-            head[b] = i;
-        }
-        for (int i = 0; i < m; i++) {
-            int bi = bucket(x[i], hf.minX(), join, gx);
-            int bj = bucket(z[i], hf.minZ(), join, gz);
-            for (int j = Math.max(0, bj - 1); j <= Math.min(gz - 1, bj + 1); j++) {
-                for (int a = Math.max(0, bi - 1); a <= Math.min(gx - 1, bi + 1); a++) {
-                    for (int q = head[j * gx + a]; q >= 0; q = next[q]) {
-                        if (q > i && Math.hypot(x[q] - x[i], z[q] - z[i]) < join) {
-                            int ri = root(id, i);
-                            int rq = root(id, q);
-                            id[Math.max(ri, rq)] = Math.min(ri, rq);
-                        }
-                    }
-                }
-            }
-        }
-        double[] sx = new double[m];
-        double[] sz = new double[m];
-        int[] c = new int[m];
-        int groups = 0;
-        for (int i = 0; i < m; i++) {
-            int r = root(id, i);
-            groups += c[r] == 0 ? 1 : 0;
-            sx[r] += x[i];
-            sz[r] += z[i];
-            c[r]++;
-        }
-        float[][] out = new float[2][groups];
-        for (int i = 0, g = 0; i < m; i++) {
-            if (c[i] > 0) {
-                out[0][g] = (float) (sx[i] / c[i]);
-                out[1][g++] = (float) (sz[i] / c[i]);
-            }
+        double[][] g = org.jecosys.terrain.PointGroups.join(x, z, m, join);
+        float[][] out = new float[2][g[0].length];
+        for (int k = 0; k < g[0].length; k++) {
+            out[0][k] = (float) g[0][k];
+            out[1][k] = (float) g[1][k];
         }
         return out;
-    }
-
-    private static int root(int[] id, int i) {
-        while (id[i] != i) {
-            id[i] = id[id[i]];
-            i = id[i];
-        }
-        return i;
     }
 
     /** The Clark–Evans ratio of the points (x, z) over w's terrain in square windows (see the class comment). */

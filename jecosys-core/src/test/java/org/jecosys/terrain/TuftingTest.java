@@ -118,7 +118,7 @@ class TuftingTest {
             x[i] = l.x(i);
             z[i] = l.z(i);
         }
-        double[][] b = groups(x, z, 0.05);
+        double[][] b = PointGroups.join(x, z, x.length, 0.05);
         int n = b[0].length;
         int onRing = 0;
         int counted = 0;
@@ -162,55 +162,6 @@ class TuftingTest {
         PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
         assertSameLayout(one, four);
         assertEquals(500, one.count());
-    }
-
-    /**
-     * Points joined where two stand within {@code join} metres (transitively): {x, z, size} per group,
-     * at the mean of its points. Test helper; allocates.
-     */
-    static double[][] groups(float[] x, float[] z, double join) {
-        int n = x.length;
-        int[] id = new int[n];
-        for (int i = 0; i < n; i++) {
-            id[i] = i;
-        }
-        for (int i = 0; i < n; i++) {
-            for (int j = i + 1; j < n; j++) {
-                if (Math.hypot(x[j] - x[i], z[j] - z[i]) < join) {
-                    int a = root(id, i);
-                    int c = root(id, j);
-                    id[Math.max(a, c)] = Math.min(a, c);
-                }
-            }
-        }
-        double[] sx = new double[n];
-        double[] sz = new double[n];
-        int[] c = new int[n];
-        int g = 0;
-        for (int i = 0; i < n; i++) {
-            int r = root(id, i);
-            g += c[r] == 0 ? 1 : 0;
-            sx[r] += x[i];
-            sz[r] += z[i];
-            c[r]++;
-        }
-        double[][] out = new double[3][g];
-        for (int i = 0, k = 0; i < n; i++) {
-            if (c[i] > 0) {
-                out[0][k] = sx[i] / c[i];
-                out[1][k] = sz[i] / c[i];
-                out[2][k++] = c[i];
-            }
-        }
-        return out;
-    }
-
-    private static int root(int[] id, int i) {
-        while (id[i] != i) {
-            id[i] = id[id[i]];
-            i = id[i];
-        }
-        return i;
     }
 
     @Test
