@@ -206,7 +206,7 @@ public record DistributionDef(String species, int count, double density, double 
         return new Builder(species).count(count).density(density).water(minWater, maxWater)
                 .nutrients(minNutrients, maxNutrients).maxSlope(maxSlope).altitude(minAltitude, maxAltitude)
                 .footprint(footprint).waterUse(waterUse).nutrientUse(nutrientUse).clump(clumpSize, clumpStrength)
-                .tufts(tuftSize, tuftCount).bunches(tuftBunches, tuftRing);
+                .tufts(tuftSize, tuftCount).bunches(tuftRing, tuftBunches);
     }
 
     /**
@@ -376,11 +376,11 @@ public record DistributionDef(String species, int count, double density, double 
          * {@code ring} round the tuft's centre ({@link DistributionDef#bunchCentres}); {@link #tufts} gives
          * the spread round each bunch.
          *
-         * @param count bunches per tuft, in [1, {@link #MAX_TUFT_BUNCHES}]; 1 for one at the centre
          * @param ring  ring radius, metres, in [0, {@link #MAX_TUFT_SIZE}]
+         * @param count bunches per tuft, in [1, {@link #MAX_TUFT_BUNCHES}]; 1 for one at the centre
          * @return this builder
          */
-        public Builder bunches(int count, double ring) {
+        public Builder bunches(double ring, int count) {
             this.tuftBunches = count;
             this.tuftRing = ring;
             return this;

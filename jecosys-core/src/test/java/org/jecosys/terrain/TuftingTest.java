@@ -97,7 +97,7 @@ class TuftingTest {
     /** Tufts of 9 on a flat square, each split into 3 bunches on a 0.2 m ring, spread 5 mm round them. */
     private static DistributionDef ringed(int bunches, double ring) {
         return DistributionDef.builder("A").count(1800).footprint(0.002).waterUse(0).nutrientUse(0)
-                .tufts(DistributionDef.MIN_TUFT_SIZE, 9).bunches(bunches, ring).build();
+                .tufts(DistributionDef.MIN_TUFT_SIZE, 9).bunches(ring, bunches).build();
     }
 
     /**
@@ -146,7 +146,7 @@ class TuftingTest {
         PlantLayout one = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(ringed(1, 0.7)), List.of(), 11, 2,
                 Progress.NONE);
         PlantLayout plain = DISTRIBUTOR.distribute(flat(), SPECIES, List.of(ringed(1, 0).toBuilder()
-                .bunches(DistributionDef.DEFAULT_TUFT_BUNCHES, DistributionDef.DEFAULT_TUFT_RING).build()),
+                .bunches(DistributionDef.DEFAULT_TUFT_RING, DistributionDef.DEFAULT_TUFT_BUNCHES).build()),
                 List.of(), 11, 1, Progress.NONE);
         assertSameLayout(plain, one);
     }
@@ -156,8 +156,8 @@ class TuftingTest {
         Terrain t = CompetitiveDistributorTest.meadow(4);
         List<DistributionDef> defs = List.of(
                 CompetitiveDistributorTest.tuft(400).toBuilder().footprint(0.005).clump(2, 0.5).tufts(0.01, 9)
-                        .bunches(3, 0.19).build(),
-                CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.02, 4).bunches(2, 0.2).build());
+                        .bunches(0.19, 3).build(),
+                CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.02, 4).bunches(0.2, 2).build());
         PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 1, Progress.NONE);
         PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
         assertSameLayout(one, four);

@@ -157,7 +157,7 @@ class TilePlacerTest {
     @Test
     void bunchedTuftsStreamAndReachByTheirRing() {
         DistributionDef def = DistributionDef.builder("crowns").density(2).footprint(0.004).tufts(0.005, 6)
-                .bunches(3, 0.2).build();
+                .bunches(0.2, 3).build();
         TilePlacer a = new TilePlacer(9, 8, List.of(def), new int[] {0}, WAVES);
         TilePlants alone = a.place(1, 1);
         TilePlacer b = new TilePlacer(9, 8, List.of(def), new int[] {0}, WAVES);
@@ -180,7 +180,7 @@ class TilePlacerTest {
         }
         assertTrue(n > 60, "the tile has plants: " + n);
         assertTrue(far >= 0.8 * n, far + " of " + n + " plants have no other bunch nearer than the ring's chord");
-        DistributionDef wide = def.toBuilder().bunches(3, 8).build();
+        DistributionDef wide = def.toBuilder().bunches(8, 3).build();
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> new TilePlacer(9, 8, List.of(wide), new int[] {0}, WAVES));
         assertTrue(e.getMessage().contains("tuftRing"), e.getMessage());
