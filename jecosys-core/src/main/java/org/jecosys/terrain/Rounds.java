@@ -184,18 +184,19 @@ final class Rounds {
                         break;
                     }
                 }
-                if (bunches > 1) { // one bunch draws nothing more: the tufts without bunches, bit for bit
+                if (bunches > 1) {
                     def.bunchCentres(rng, x, z, bunchX, bunchZ);
+                } else { // one bunch, at the centre, draws nothing more: the tufts without bunches, bit for bit
+                    bunchX[0] = x;
+                    bunchZ[0] = z;
                 }
             }
             float px = x;
             float pz = z;
             if (tuft > 1) { // a tuft member: normal offsets from its bunch's centre; one tuft count draws none
                 int b = bunches > 1 ? rng.nextInt(bunches) : 0; // each joins a bunch at random: bunches of uneven size
-                double bx = bunches > 1 ? bunchX[b] : x;
-                double bz = bunches > 1 ? bunchZ[b] : z;
-                px = inside(bx + spread * rng.nextGaussian(), minX, hf.maxX());
-                pz = inside(bz + spread * rng.nextGaussian(), minZ, hf.maxZ());
+                px = inside(bunchX[b] + spread * rng.nextGaussian(), minX, hf.maxX());
+                pz = inside(bunchZ[b] + spread * rng.nextGaussian(), minZ, hf.maxZ());
             }
             double y = hf.height(px, pz);
             cx[d][i] = px;

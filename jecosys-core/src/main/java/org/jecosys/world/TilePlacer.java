@@ -287,8 +287,8 @@ public final class TilePlacer {
         double lim = tuftReach(def);
         double clampS = tuft > 1 ? TUFT_REACH * spread : 0;
         int bunches = tuft > 1 ? def.tuftBunches() : 1;
-        double[] bunchX = bunches > 1 ? new double[bunches] : null;
-        double[] bunchZ = bunches > 1 ? new double[bunches] : null;
+        double[] bunchX = new double[bunches];
+        double[] bunchZ = new double[bunches];
         double strength = def.clumpStrength();
         double cx = 0;
         double cz = 0;
@@ -306,19 +306,18 @@ public final class TilePlacer {
                 }
                 if (bunches > 1) { // the ring's draws are taken whether or not the tuft is kept
                     def.bunchCentres(rng, cx, cz, bunchX, bunchZ);
+                } else {
+                    bunchX[0] = cx;
+                    bunchZ[0] = cz;
                 }
             }
             double x = cx;
             double z = cz;
             if (tuft > 1) {
                 if (kept) {
-                    if (bunches > 1) {
-                        int b = rng.nextInt(bunches);
-                        x = bunchX[b];
-                        z = bunchZ[b];
-                    }
-                    x += Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
-                    z += Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
+                    int b = bunches > 1 ? rng.nextInt(bunches) : 0;
+                    x = bunchX[b] + Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
+                    z = bunchZ[b] + Math.max(-clampS, Math.min(clampS, spread * rng.nextGaussian()));
                 } else {
                     skip(rng, (bunches > 1 ? 1 : 0) + 4); // the bunch, and two normal draws of two longs each
                 }
