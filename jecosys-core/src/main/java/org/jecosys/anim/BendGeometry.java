@@ -53,7 +53,7 @@ public final class BendGeometry {
         scale = new float[n];
         poseMax = new float[n];
         for (int c = 0; c < n; c++) {
-            int k = Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
+            int k = Require.elementRange("componentKind", c, componentKind[c], 0, kinds.count() - 1);
             double h = restHeading[c];
             leanX[c] = (float) (kinds.leanMag[k] * Math.cos(h));
             leanZ[c] = (float) (kinds.leanMag[k] * Math.sin(h));

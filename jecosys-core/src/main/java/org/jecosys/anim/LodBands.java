@@ -57,7 +57,7 @@ final class LodBands {
         }
         double prev = 0;
         for (int i = 0; i < maxDistances.length; i++) {
-            Require.range("maxDistances[" + i + "]", maxDistances[i], Math.nextUp(prev), 1e6);
+            Require.elementRange("maxDistances", i, maxDistances[i], Math.nextUp(prev), 1e6);
             prev = maxDistances[i];
         }
         edges[species] = maxDistances.clone();

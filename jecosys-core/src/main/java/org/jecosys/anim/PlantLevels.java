@@ -33,7 +33,7 @@ final class PlantLevels {
         }
         bands = new LodBands(lodEdges);
         for (int p = 0; p < plants; p++) {
-            Require.range("plantSpecies[" + p + "]", species[p], 0, bands.species() - 1);
+            Require.elementRange("plantSpecies", p, species[p], 0, bands.species() - 1);
         }
         this.species = species.clone();
         this.x = x.clone();

@@ -57,7 +57,7 @@ final class StateArrays {
     static short[] kinds(SpringKinds kinds, int[] componentKind) {
         short[] kind = new short[componentKind.length];
         for (int c = 0; c < kind.length; c++) {
-            kind[c] = (short) Require.range("componentKind[" + c + "]", componentKind[c], 0, kinds.count() - 1);
+            kind[c] = (short) Require.elementRange("componentKind", c, componentKind[c], 0, kinds.count() - 1);
         }
         return kind;
     }
@@ -79,9 +79,9 @@ final class StateArrays {
         }
         for (int p = 0; p < plants; p++) {
             plantResponse[p] = (byte) (response == null ? SpringKinds.NOMINAL_VARIANT
-                    : Require.range("response[" + p + "]", response[p], 0, SpringKinds.RESPONSE_VARIANTS - 1));
+                    : Require.elementRange("response", p, response[p], 0, SpringKinds.RESPONSE_VARIANTS - 1));
             plantCompliance[p] = compliance == null ? 1f
-                    : (float) Require.range("compliance[" + p + "]", compliance[p], 0.5, 10);
+                    : (float) Require.elementRange("compliance", p, compliance[p], 0.5, 10);
         }
     }
 

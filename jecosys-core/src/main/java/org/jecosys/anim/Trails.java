@@ -99,8 +99,8 @@ final class Trails {
         float[] f = new float[recovery.length];
         boolean any = false;
         for (int s = 0; s < r.length; s++) {
-            r[s] = (float) Require.range("recovery[" + s + "]", recovery[s], 0, 3600);
-            f[s] = (float) Require.range("flattenAt[" + s + "]", flattenAt[s], 0.1, 0.95);
+            r[s] = (float) Require.elementRange("recovery", s, recovery[s], 0, 3600);
+            f[s] = (float) Require.elementRange("flattenAt", s, flattenAt[s], 0.1, 0.95);
             any |= r[s] > 0;
         }
         return any ? new Trails(r, f, species) : null;

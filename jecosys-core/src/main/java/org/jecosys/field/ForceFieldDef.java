@@ -71,7 +71,7 @@ public record ForceFieldDef(boolean enabled, int maxObjectsPerNode, int maxDepth
         }
         double prev = 0;
         for (int i = 0; i < lodDistances.size(); i++) {
-            double d = Require.above("lodDistances[" + i + "]", lodDistances.get(i), 0, MAX_LOD_DISTANCE);
+            double d = Require.elementAbove("lodDistances", i, lodDistances.get(i), 0, MAX_LOD_DISTANCE);
             if (d <= prev) {
                 throw new IllegalArgumentException("lodDistances must be strictly ascending, got "
                         + lodDistances);

@@ -191,4 +191,70 @@ public final class Require {
         }
         return v;
     }
+
+    /**
+     * An int element {@code array[index]} in [min, max]: like {@link #range(String, int, int, int)}, for a
+     * check in a loop over an array, whose element name is built only when it throws (a loop over a
+     * tile's components allocates nothing).
+     *
+     * @param array the array's name, for the message
+     * @param index the element's index, for the message
+     * @param v     the element's value
+     * @param min   smallest allowed value (inclusive)
+     * @param max   largest allowed value (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} lies outside [min, max], naming {@code array[index]}
+     */
+    public static int elementRange(String array, int index, int v, int min, int max) {
+        return v < min || v > max ? range(array + "[" + index + "]", v, min, max) : v;
+    }
+
+    /**
+     * A finite double element {@code array[index]} in [min, max]: like
+     * {@link #range(String, double, double, double)}, its name built only when it throws.
+     *
+     * @param array the array's name, for the message
+     * @param index the element's index, for the message
+     * @param v     the element's value
+     * @param min   smallest allowed value (inclusive)
+     * @param max   largest allowed value (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is not finite or lies outside [min, max], naming
+     *                                  {@code array[index]}
+     */
+    public static double elementRange(String array, int index, double v, double min, double max) {
+        return v >= min && v <= max && Double.isFinite(v) ? v : range(array + "[" + index + "]", v, min, max);
+    }
+
+    /**
+     * A finite double element {@code array[index]} in (min, max]: like
+     * {@link #above(String, double, double, double)}, its name built only when it throws.
+     *
+     * @param array the array's name, for the message
+     * @param index the element's index, for the message
+     * @param v     the element's value
+     * @param min   the exclusive lower bound
+     * @param max   largest allowed value (inclusive)
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is not finite, &le; min or &gt; max, naming
+     *                                  {@code array[index]}
+     */
+    public static double elementAbove(String array, int index, double v, double min, double max) {
+        return v > min && v <= max && Double.isFinite(v) ? v : above(array + "[" + index + "]", v, min, max);
+    }
+
+    /**
+     * A non-null element {@code array[index]}: like {@link #nonNull(String, Object)}, its name built only
+     * when it throws.
+     *
+     * @param <T>   the element's type
+     * @param array the array's (or list's) name, for the message
+     * @param index the element's index, for the message
+     * @param v     the element
+     * @return {@code v}
+     * @throws IllegalArgumentException when {@code v} is null, naming {@code array[index]}
+     */
+    public static <T> T elementNonNull(String array, int index, T v) {
+        return v != null ? v : nonNull(array + "[" + index + "]", v);
+    }
 }

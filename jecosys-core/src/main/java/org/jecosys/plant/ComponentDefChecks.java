@@ -54,7 +54,7 @@ final class ComponentDefChecks {
         }
         List<Integer> lods = List.copyOf(Require.nonNull("lodSegments", lodSegments));
         for (int i = 0; i < lods.size(); i++) {
-            Require.range("lodSegments[" + i + "]", lods.get(i), 0, segments);
+            Require.elementRange("lodSegments", i, lods.get(i), 0, segments);
         }
         if (texture != null && texture.isBlank()) {
             throw new IllegalArgumentException("texture must not be blank (null for none)");

@@ -93,7 +93,7 @@ public final class PlantModel {
         long t0 = System.nanoTime();
         List<SpeciesModel> out = new ArrayList<>(defs.size());
         for (int i = 0; i < defs.size(); i++) {
-            SpeciesDef d = Require.nonNull("defs[" + i + "]", defs.get(i));
+            SpeciesDef d = Require.elementNonNull("defs", i, defs.get(i));
             out.add(SpeciesModel.build(d, speciesSeed(seed, d), gravity).withComponents(components));
             progress.report("plants", i + 1, defs.size());
         }

@@ -48,7 +48,7 @@ final class DetailCommands {
         }
         double prev = 0;
         for (int i = 0; i < maxDistances.length; i++) {
-            Require.range("maxDistances[" + i + "]", maxDistances[i], Math.nextUp(prev), 1e6);
+            Require.elementRange("maxDistances", i, maxDistances[i], Math.nextUp(prev), 1e6);
             prev = maxDistances[i];
         }
         double[] copy = maxDistances.clone();

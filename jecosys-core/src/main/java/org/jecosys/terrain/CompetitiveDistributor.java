@@ -96,11 +96,11 @@ public final class CompetitiveDistributor implements TerrainDistributor {
         int nd = distributions.size();
         int[] speciesOf = new int[nd];
         for (int d = 0; d < nd; d++) {
-            DistributionDef def = Require.nonNull("distributions[" + d + "]", distributions.get(d));
+            DistributionDef def = Require.elementNonNull("distributions", d, distributions.get(d));
             speciesOf[d] = speciesIndex(speciesIds, def.species(), "distributions[" + d + "]");
         }
         for (int p = 0; p < placements.size(); p++) {
-            Require.nonNull("placements[" + p + "]", placements.get(p));
+            Require.elementNonNull("placements", p, placements.get(p));
         }
         Heightfield hf = terrain.heightfield();
         ResourceMap water = terrain.water().copy();
@@ -218,7 +218,7 @@ public final class CompetitiveDistributor implements TerrainDistributor {
                                     PlantLayout.Builder out) {
         int[] slots = placementSlots(distributions, placements);
         for (int p = 0; p < placements.size(); p++) {
-            PlacementDef pl = Require.nonNull("placements[" + p + "]", placements.get(p));
+            PlacementDef pl = Require.elementNonNull("placements", p, placements.get(p));
             int sp = speciesIndex(speciesIds, pl.species(), "placements[" + p + "]");
             float x = (float) pl.x();
             float z = (float) pl.z();
