@@ -6,7 +6,9 @@ import org.jecosys.math.Rng;
 /**
  * The candidates one {@link TilePlacer#place} call gathers from a tile and its halo, and their
  * competition: sorted by rank, accepted when their footprint disc overlaps no accepted one (a spatial
- * hash grid over the gathered region). One thread; grows its arrays as needed; package-private.
+ * hash grid over the gathered region). One thread at a time; grows its arrays as needed and keeps
+ * them for the next tile ({@link #clear}), so a placer reusing it allocates nothing here once its
+ * arrays fit the largest region; package-private.
  */
 final class Candidates {
     /** Salt of a candidate's rank hash, so that the rank is not the variant seed itself. */
@@ -22,6 +24,18 @@ final class Candidates {
     int[] tileI = new int[1024];
     int[] tileJ = new int[1024];
     int[] index = new int[1024];
+    /** The competition's scratch, grown as needed: sort keys, order, grid heads and links, accepted. */
+    private long[] key = new long[0];
+    private int[] order = new int[0];
+    private int[] head = new int[0];
+    private int[] next = new int[0];
+    /** The accepted candidates of the last {@link #compete}, in order of acceptance. */
+    int[] accepted = new int[0];
+
+    /** Forgets the candidates, keeping the arrays. */
+    void clear() {
+        n = 0;
+    }
 
     void add(double px, double pz, float az, long s, int d, int ti, int tj, int k) {
         if (n == x.length) {
@@ -57,16 +71,19 @@ final class Candidates {
     /**
      * The candidates' indices in competition order: by rank (unsigned), ties (all but impossible) by
      * generating tile, distribution and index in the stream, so the order of any two candidates is the
-     * same whatever the tile being placed. Allocates.
+     * same whatever the tile being placed. The first n entries of the returned array (the scratch,
+     * grown when needed).
      */
-    int[] order() {
+    private int[] order() {
         int bits = Math.max(1, 32 - Integer.numberOfLeadingZeros(Math.max(1, n - 1)));
-        long[] key = new long[n];
+        if (key.length < n) {
+            key = new long[n];
+            order = new int[n];
+        }
         for (int c = 0; c < n; c++) {
             key[c] = ((rank(seed[c]) >>> (bits + 1)) << bits) | c;
         }
-        Arrays.sort(key);
-        int[] order = new int[n];
+        Arrays.sort(key, 0, n);
         long mask = (1L << bits) - 1;
         for (int c = 0; c < n; c++) {
             order[c] = (int) (key[c] & mask);
@@ -117,7 +134,7 @@ final class Candidates {
      * The competition (paper §4.3, without resources): in {@link #order}, a candidate is accepted
      * when its footprint disc overlaps no accepted plant's (centres closer than the sum of the radii).
      * The grid's cells are at least {@code 2 maxRadius} wide, so only the 3 x 3 cells around a
-     * candidate can hold a disc it overlaps. Allocates.
+     * candidate can hold a disc it overlaps. Grows its scratch when needed.
      *
      * @param radius    footprint radius per distribution, metres
      * @param maxRadius the largest of them, metres
@@ -125,17 +142,22 @@ final class Candidates {
      * @param minZ      the region's lowest Z, metres
      * @param sizeX     the region's extent along X, metres
      * @param sizeZ     the region's extent along Z, metres
-     * @return the accepted candidates' indices, in order of acceptance
+     * @return how many were accepted: their indices are the first entries of {@link #accepted}, in order
+     *         of acceptance
      */
-    int[] compete(double[] radius, double maxRadius, double minX, double minZ, double sizeX, double sizeZ) {
+    int compete(double[] radius, double maxRadius, double minX, double minZ, double sizeX, double sizeZ) {
         int[] order = order();
         double cell = Math.max(2 * maxRadius, Math.sqrt(sizeX * sizeZ / Math.max(1, n)));
         int gx = Math.max(1, (int) Math.ceil(sizeX / cell));
         int gz = Math.max(1, (int) Math.ceil(sizeZ / cell));
-        int[] head = new int[gx * gz];
-        Arrays.fill(head, -1);
-        int[] next = new int[n];
-        int[] accepted = new int[n];
+        if (head.length < gx * gz) {
+            head = new int[gx * gz];
+        }
+        Arrays.fill(head, 0, gx * gz, -1);
+        if (next.length < n) {
+            next = new int[n];
+            accepted = new int[n];
+        }
         int na = 0;
         for (int o = 0; o < n; o++) {
             int c = order[o];
@@ -165,6 +187,6 @@ final class Candidates {
                 accepted[na++] = c;
             }
         }
-        return Arrays.copyOf(accepted, na);
+        return na;
     }
 }

@@ -45,8 +45,10 @@ import org.jecosys.terrain.DistributionDef;
  * -1), hand placements and the finite distributor's rounds (candidates beyond the target). Levels are
  * read at a candidate's centre, not averaged over its footprint.
  *
- * <p>Immutable: any thread may call {@link #place} concurrently, provided the height and soil
- * functions allow concurrent calls. {@link #place} allocates its working arrays per call.
+ * <p>Thread-safe: any thread may call {@link #place} concurrently, provided the height and soil
+ * functions allow concurrent calls; a tile's plants depend only on the placer's inputs and the tile.
+ * {@link #place} allocates the tile's arrays and reuses its working buffers from call to call (kept by
+ * the placer, about one per thread placing at once).
  */
 public final class TilePlacer {
     /** Smallest tile side, metres. */
@@ -87,6 +89,14 @@ public final class TilePlacer {
     private final long[] clumpSeed;
     private final double reach;
     private final double tuftReachMax;
+    /**
+     * Candidate buffers no {@link #place} call holds now, at most {@link #SPARE_BUFFERS}: a call takes
+     * one (or makes one) and gives it back, so placing tile after tile reuses the same arrays. Guarded
+     * by itself; the only state the placer changes, and it changes no result.
+     */
+    private final java.util.ArrayDeque<Candidates> spare = new java.util.ArrayDeque<>();
+    /** Candidate buffers kept for reuse, about one per thread that places at once. */
+    private static final int SPARE_BUFFERS = 8;
 
     /**
      * A placer without soil functions: water and nutrient limits are not checked. Allocates.
@@ -153,12 +163,12 @@ public final class TilePlacer {
         double lim = 0;
         double perM2 = 0;
         for (int d = 0; d < nd; d++) {
-            DistributionDef def = Require.nonNull("distributions[" + d + "]", distributions.get(d));
+            DistributionDef def = Require.elementNonNull("distributions", d, distributions.get(d));
             if (def.count() != -1) {
                 throw new IllegalArgumentException("distributions[" + d + "] (species '" + def.species()
                         + "') has count " + def.count() + "; tiled placement takes densities only (count -1)");
             }
-            Require.range("speciesOf[" + d + "]", this.speciesOf[d], 0, Integer.MAX_VALUE);
+            Require.elementRange("speciesOf", d, this.speciesOf[d], 0, Integer.MAX_VALUE);
             defs[d] = def;
             radius[d] = def.footprint();
             rMax = Math.max(rMax, radius[d]);
@@ -214,8 +224,9 @@ public final class TilePlacer {
     /**
      * The plants of tile (tileI, tileJ): those whose position lies in [tileI size, (tileI + 1) size) x
      * [tileJ size, (tileJ + 1) size). A pure function of the placer's inputs and the tile: the same
-     * arrays whatever was placed before, on any thread. Allocates (a few arrays per candidate of the
-     * gathered region, about 50,000 candidates for a 32 m tile at meadow density).
+     * arrays whatever was placed before, on any thread. Allocates the tile's arrays; the candidates of
+     * the gathered region (about 50,000 for a 32 m tile at meadow density) go in buffers the placer
+     * keeps and reuses.
      *
      * @param tileI tile index along X, in [-{@link #MAX_TILE_INDEX}, {@link #MAX_TILE_INDEX}]
      * @param tileJ tile index along Z, in the same range
@@ -229,7 +240,23 @@ public final class TilePlacer {
         double maxX = (double) (tileI + 1) * size + reach;
         double minZ = (double) tileJ * size - reach;
         double maxZ = (double) (tileJ + 1) * size + reach;
-        Candidates c = new Candidates();
+        Candidates c;
+        synchronized (spare) {
+            c = spare.poll();
+        }
+        try {
+            return place(tileI, tileJ, minX, maxX, minZ, maxZ, c != null ? c : (c = new Candidates()));
+        } finally {
+            c.clear();
+            synchronized (spare) {
+                if (spare.size() < SPARE_BUFFERS) {
+                    spare.push(c);
+                }
+            }
+        }
+    }
+
+    private TilePlants place(int tileI, int tileJ, double minX, double maxX, double minZ, double maxZ, Candidates c) {
         for (int dj = -1; dj <= 1; dj++) {
             for (int di = -1; di <= 1; di++) {
                 for (int d = 0; d < defs.length; d++) {
@@ -237,13 +264,15 @@ public final class TilePlacer {
                 }
             }
         }
-        int[] accepted = c.compete(radius, maxRadius, minX, minZ, maxX - minX, maxZ - minZ);
+        int na = c.compete(radius, maxRadius, minX, minZ, maxX - minX, maxZ - minZ);
+        int[] accepted = c.accepted;
         double x0 = (double) tileI * size;
         double x1 = (double) (tileI + 1) * size;
         double z0 = (double) tileJ * size;
         double z1 = (double) (tileJ + 1) * size;
         int n = 0;
-        for (int a : accepted) {
+        for (int k = 0; k < na; k++) {
+            int a = accepted[k];
             if (inside(c.x[a], c.z[a], x0, x1, z0, z1)) {
                 accepted[n++] = a;
             }

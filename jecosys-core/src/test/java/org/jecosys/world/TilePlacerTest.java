@@ -82,6 +82,28 @@ class TilePlacerTest {
     }
 
     @Test
+    void placingAgainReusesTheCandidateBuffers() {
+        TilePlacer p = meadow(5, 12);
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean)
+                java.lang.management.ManagementFactory.getThreadMXBean();
+        long id = Thread.currentThread().getId();
+        long first = mx.getThreadAllocatedBytes(id);
+        TilePlants a = p.place(3, -2);
+        long firstBytes = mx.getThreadAllocatedBytes(id) - first;
+        p.place(4, -2);
+        long again = mx.getThreadAllocatedBytes(id);
+        TilePlants b = p.place(3, -2);
+        long againBytes = mx.getThreadAllocatedBytes(id) - again;
+        assertSame(a, b);
+        // the tile's own arrays: x, y, z, azimuth (4 bytes), species (4) and variant seeds (8) per plant
+        long tile = 24L * a.count();
+        System.out.printf("[placer] a %d-plant tile: %d bytes placed first, %d placed again (its arrays %d)%n",
+                a.count(), firstBytes, againBytes, tile);
+        assertTrue(againBytes < tile + 64 * 1024 && againBytes < firstBytes / 4, "placing a tile again allocated "
+                + againBytes + " bytes (the first time " + firstBytes + ", its arrays " + tile + ")");
+    }
+
+    @Test
     void theReachGivesTheSamePlantsAsTheWholeHalo() {
         TilePlacer near = new TilePlacer(17, 24, TileSeamTest.meadow(), TileSeamTest.SPECIES, WAVES, null, null, false);
         TilePlacer whole = new TilePlacer(17, 24, TileSeamTest.meadow(), TileSeamTest.SPECIES, WAVES, null, null, true);
