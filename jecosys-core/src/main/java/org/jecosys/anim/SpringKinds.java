@@ -95,6 +95,46 @@ public final class SpringKinds implements KindsView {
         this.speciesVariants = speciesVariants;
     }
 
+    /** A copy of {@code o}: its per-kind constants shared (they never change), its coefficients copied. */
+    private SpringKinds(SpringKinds o) {
+        count = o.count;
+        stiffness = o.stiffness;
+        responseTime = o.responseTime;
+        mass = o.mass;
+        dragArea = o.dragArea;
+        gain = o.gain;
+        responseVariation = o.responseVariation;
+        leanMag = o.leanMag;
+        invLength = o.invLength;
+        poseScale = o.poseScale;
+        poseMax = o.poseMax;
+        maxBend = o.maxBend;
+        length = o.length;
+        lodMask = o.lodMask;
+        dMax = o.dMax;
+        coef = o.coef.clone();
+        springClass = o.springClass;
+        speciesBase = o.speciesBase;
+        speciesVariants = o.speciesVariants;
+        preparedStep = o.preparedStep;
+        preparedSub = o.preparedSub;
+        preparedEdge = o.preparedEdge;
+    }
+
+    /**
+     * The same kinds with their own coefficients and preparation (copied as this one is prepared
+     * now), sharing the per-kind constants, which never change: what {@link #of} and {@link #prepare}
+     * would give again for the same species, without rebuilding or recomputing them. Many simulations
+     * of one species list (an open world's tiles) each take a copy of one prepared instance. Any
+     * thread while no thread prepares this one; allocates the coefficient rows
+     * ({@code count() * RESPONSE_VARIANTS * STRIDE} floats).
+     *
+     * @return the copy
+     */
+    public SpringKinds copy() {
+        return new SpringKinds(this);
+    }
+
     /**
      * The kinds of a scene's species: kind {@link #kindOf}{@code (s, c, v)} for species s, component
      * type c and shape variant v. The rest lean of a kind is the horizontal tip offset of its pose 0

@@ -57,6 +57,11 @@ final class AnimationStates {
     static BendGeometry geometry(World world) {
         SpringKinds kinds = SpringKinds.of(world.plants().species());
         int[] first = SimulationBuild.firstComponents(world);
+        return geometry(world, kinds, first, kinds(world, kinds, first));
+    }
+
+    /** Like {@link #geometry(World)}, from the world's kinds and its components' kinds already worked out. */
+    static BendGeometry geometry(World world, SpringKinds kinds, int[] first, int[] kind) {
         List<SpeciesModel> species = world.plants().species();
         float[] heading = new float[world.componentCount()];
         for (int p = 0; p < world.plantCount(); p++) {
@@ -65,7 +70,7 @@ final class AnimationStates {
                 heading[first[p] + s] = (float) (world.plantRestAzimuth(p) + sm.slotAzimuth(s));
             }
         }
-        return BendGeometry.of(kinds, kinds(world, kinds, first), heading);
+        return BendGeometry.of(kinds, kind, heading);
     }
 
     /**
@@ -105,7 +110,8 @@ final class AnimationStates {
             double u = (Rng.mix(h) >>> 11) * 0x1.0p-53 * 2 - 1;
             compliance[p] = (float) (1 / (1 + var.stiffness() * u));
         }
-        AnimationState state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind, world.bendGeometry(),
+        AnimationState state = new AnimationState(kinds, edges, sp, first, xs, ys, zs, kind,
+                world.bendGeometry(kinds, first, kind),
                 response, compliance);
         double[] recovery = new double[species.size()];
         double[] flattenAt = new double[species.size()];

@@ -45,10 +45,12 @@ public final class Simulation implements AutoCloseable {
     private final DetailCommands detail;
     private final Inspection inspection;
 
-    private Simulation(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields) {
+    /** The simulation's parts; {@code kinds}: its species' kinds prepared (copied: a tile's) or null (built). */
+    Simulation(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields,
+               org.jecosys.anim.SpringKinds kinds) {
         this.world = world;
         this.def = def;
-        loop = new StepLoop(world, def, workers, chunkComponents, fields);
+        loop = new StepLoop(world, def, workers, chunkComponents, fields, kinds);
         detail = new DetailCommands(world, loop.commands, loop.state, loop.draw);
         inspection = new Inspection(loop);
     }
@@ -89,7 +91,7 @@ public final class Simulation implements AutoCloseable {
         Require.nonNull("def", def);
         int w = workerCount(def, workers);
         World world = World.build(def, Require.nonNull("images", images), w, Require.nonNull("progress", progress));
-        return new Simulation(world, def, w, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE);
+        return new Simulation(world, def, w, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE, null);
     }
 
     /**
@@ -125,13 +127,13 @@ public final class Simulation implements AutoCloseable {
         Require.nonNull("world", world);
         Require.nonNull("def", def);
         Require.nonNull("fields", fields);
-        return new Simulation(world, def, workerCount(def, workers), CHUNK_COMPONENTS, fields);
+        return new Simulation(world, def, workerCount(def, workers), CHUNK_COMPONENTS, fields, null);
     }
 
     /** Like {@link #of} with another chunk size (components), for tests of the chunking itself. */
     static Simulation of(World world, SimulationDef def, int workers, int chunkComponents) {
         Require.range("chunkComponents", chunkComponents, 1, Integer.MAX_VALUE);
-        return new Simulation(world, def, workerCount(def, workers), chunkComponents, ForceFieldFactory.QUADTREE);
+        return new Simulation(world, def, workerCount(def, workers), chunkComponents, ForceFieldFactory.QUADTREE, null);
     }
 
     private static int workerCount(SimulationDef def, int workers) {

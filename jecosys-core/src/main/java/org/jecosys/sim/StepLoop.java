@@ -70,8 +70,12 @@ final class StepLoop {
      * Builds the parts of a simulation of {@code world}: flows, force field, animation state (settled
      * in the wind of t = 0 where "Start" says so), frames, draw decision and workers. Build time;
      * allocates.
+     *
+     * @param template the world's species' kinds prepared for the def's usual step, copied
+     *                 ({@link SpringKinds#copy}); null: built and prepared here
      */
-    StepLoop(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields) {
+    StepLoop(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields,
+             SpringKinds template) {
         AnimationDef ad = def.animation();
         fixedStep = ad.fixedStep();
         maxSubSteps = ad.maxSubSteps();
@@ -91,9 +95,10 @@ final class StepLoop {
         float[] ys = positions[1];
         float[] zs = positions[2];
         field = SimulationBuild.field(world, def, fields, wind, xs, zs);
-        kinds = SpringKinds.of(world.plants().species());
+        kinds = template != null ? template.copy() : SpringKinds.of(world.plants().species());
         // the step's spring coefficients for the usual step (no flow switching inside it), at build: the
-        // first step finds them ready (1.1 ms of an open world's tile, whose build runs on a tile worker)
+        // first step finds them ready (1.1 ms of an open world's tile, whose build runs on a tile worker;
+        // a tile's copy of its open world's prepared kinds is ready already)
         kinds.prepare(fixedStep, subIntervals, -1);
         int comps = world.componentCount();
         int[] first = SimulationBuild.firstComponents(world);

@@ -1,6 +1,7 @@
 package org.jecosys.sim;
 
 import java.util.function.BooleanSupplier;
+import org.jecosys.anim.SpringKinds;
 import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.HeightFunction;
 import org.jecosys.plant.PlantModel;
@@ -26,6 +27,8 @@ final class TileBuilds implements TileFactory<WorldTile> {
     private final PlantModel model;
     private final TilePlacer placer;
     private final BooleanSupplier closed;
+    /** The species' kinds prepared for the usual step, which every tile's simulation copies; read only. */
+    private final SpringKinds kinds;
     /** Whether a step is running (workers hold their next phase). */
     volatile boolean stepping;
     /** System.nanoTime() at the end of the last step. */
@@ -38,6 +41,8 @@ final class TileBuilds implements TileFactory<WorldTile> {
         this.model = model;
         this.placer = placer;
         this.closed = closed;
+        kinds = SpringKinds.of(model.species());
+        kinds.prepare(def.animation().fixedStep(), def.animation().subIntervals(), -1);
     }
 
     /** Holds a tile worker until it may start a build phase. */
@@ -71,7 +76,8 @@ final class TileBuilds implements TileFactory<WorldTile> {
         Heightfield hf = Heightfield.of(x0 + size / 2, z0 + size / 2, size, size, res, h);
         World world = World.tile(model, plants, hf);
         gate();
-        return new WorldTile(i, j, world, Simulation.of(world, def, 1, ForceFieldFactory.QUADTREE));
+        return new WorldTile(i, j, world, new Simulation(world, def, 1, Simulation.CHUNK_COMPONENTS,
+                ForceFieldFactory.QUADTREE, kinds));
     }
 
     @Override
