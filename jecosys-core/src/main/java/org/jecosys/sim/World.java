@@ -296,25 +296,21 @@ public final class World {
      * a simulation of this world and for renderers. Any thread; allocates on the first call only.
      */
     public org.jecosys.anim.BendGeometry bendGeometry() {
-        return bendGeometry(null, null, null);
+        org.jecosys.anim.BendGeometry g = bendGeometry;
+        return g != null ? g : bendGeometry(null, null, null);
     }
 
     /**
-     * {@link #bendGeometry()}, built on the first call from the given kinds (a simulation's, null: the
-     * world's species' own) and per component its kind (null with them). Any thread.
+     * {@link #bendGeometry()}, built on the first call from a simulation's kinds and its components'
+     * kinds (null: from the world's species). Any thread.
      */
-    org.jecosys.anim.BendGeometry bendGeometry(org.jecosys.anim.SpringKinds kinds, int[] first, int[] kind) {
-        org.jecosys.anim.BendGeometry g = bendGeometry;
-        if (g == null) {
-            synchronized (this) {
-                g = bendGeometry;
-                if (g == null) {
-                    g = kinds != null ? AnimationStates.geometry(this, kinds, first, kind) : AnimationStates.geometry(this);
-                    bendGeometry = g;
-                }
-            }
+    synchronized org.jecosys.anim.BendGeometry bendGeometry(org.jecosys.anim.SpringKinds kinds, int[] first,
+                                                            int[] kind) {
+        if (bendGeometry == null) {
+            bendGeometry = kinds != null ? AnimationStates.geometry(this, kinds, first, kind)
+                    : AnimationStates.geometry(this);
         }
-        return g;
+        return bendGeometry;
     }
 
     /**
