@@ -244,8 +244,11 @@ public final class TilePlacer {
         synchronized (spare) {
             c = spare.poll();
         }
+        if (c == null) {
+            c = new Candidates();
+        }
         try {
-            return place(tileI, tileJ, minX, maxX, minZ, maxZ, c != null ? c : (c = new Candidates()));
+            return place(tileI, tileJ, minX, maxX, minZ, maxZ, c);
         } finally {
             c.clear();
             synchronized (spare) {
