@@ -85,6 +85,7 @@ final class OpenWorldSection implements Section {
         MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
         List<Object> raw = new ArrayList<>();
         double walkNs;
+        Map<String, Object> m = new LinkedHashMap<>();
         double[] standing = null;
         double[] floor = null;
         try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4)) {
@@ -180,6 +181,14 @@ final class OpenWorldSection implements Section {
                     + " loading screen and a warm-up walk of 100 m. At most " + w.maxLiveTiles() + " tiles are live"
                     + " per view (those within the radius plus one tile). A wait is a step that found a tile due and"
                     + " not built yet.");
+            double[] slow = slowSteps(java.util.Arrays.copyOf(stepMs, used), java.util.Arrays.copyOf(cpuMs, used));
+            t.note(String.format(java.util.Locale.ROOT, "Of the walk's %d steps, %.0f took longer than 1.5 times the"
+                    + " median; in %.0f of them the CPU time (the threads' sum) was within 1.3 times its median: the"
+                    + " usual work, run on fewer cores. CPU time over wall time: %.2f in those slow steps, %.2f in all"
+                    + " (medians; the animation's two threads side by side give up to 2).", used, slow[0], slow[1],
+                    slow[2], slow[3]));
+            m.put("slowSteps", slow[0]);
+            m.put("slowStepsWithUsualCpu", slow[1]);
             if (mode != Mode.SMOKE) {
                 // the same world with the camera standing where the walk ended: no tile arrives, the same plants
                 // are animated at every step; what its steps spread by is the machine's, not the streaming's
@@ -201,7 +210,6 @@ final class OpenWorldSection implements Section {
                 floor = StepClock.floor(standing[0], RATE, stand.length);
             }
         }
-        Map<String, Object> m = new LinkedHashMap<>();
         m.put("walkNsPerAnimatedComponent", walkNs);
         if (standing != null) {
             t.note(String.format(java.util.Locale.ROOT, "The camera then stood still where the walk ended for 20 s in "
@@ -317,6 +325,30 @@ final class OpenWorldSection implements Section {
         m.put("stepP99Ms", stepP99);
         raw.add(m);
         return t;
+    }
+
+    /**
+     * Of steps' wall and CPU times (ms, per fixed step): how many took over 1.5 times the median wall
+     * time, how many of those had a CPU time within 1.3 times the median CPU time, and the median CPU over
+     * wall ratio in those slow steps and in all. A step whose work was the usual one but whose wall time
+     * was long waited for a core: the machine's, not the library's.
+     */
+    static double[] slowSteps(double[] wallMs, double[] cpuMs) {
+        double wallMedian = Stats.median(wallMs);
+        double cpuMedian = Stats.median(cpuMs);
+        int slow = 0;
+        int usual = 0;
+        double[] slowRatio = new double[wallMs.length];
+        double[] ratio = new double[wallMs.length];
+        for (int i = 0; i < wallMs.length; i++) {
+            ratio[i] = cpuMs[i] / wallMs[i];
+            if (wallMs[i] > 1.5 * wallMedian) {
+                slowRatio[slow++] = ratio[i];
+                usual += cpuMs[i] <= 1.3 * cpuMedian ? 1 : 0;
+            }
+        }
+        return new double[] {slow, usual, slow > 0 ? Stats.median(java.util.Arrays.copyOf(slowRatio, slow)) : Double.NaN,
+                Stats.median(ratio)};
     }
 
     private static void place(ViewCamera cam, RollingTerrain ground, double x) {
