@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import org.jecosys.anim.AnimationDef;
 import org.jecosys.anim.AnimationMode;
+import org.jecosys.anim.SpringKinds;
 import org.jecosys.field.ForceFieldFactory;
 import org.jecosys.math.Progress;
 import org.jecosys.math.Require;
@@ -46,11 +47,10 @@ public final class Simulation implements AutoCloseable {
     private final Inspection inspection;
 
     /** The simulation's parts; {@code kinds}: its species' kinds prepared (copied: a tile's) or null (built). */
-    Simulation(World world, SimulationDef def, int workers, int chunkComponents, ForceFieldFactory fields,
-               org.jecosys.anim.SpringKinds kinds) {
+    Simulation(World world, SimulationDef def, int workers, int chunks, ForceFieldFactory fields, SpringKinds kinds) {
         this.world = world;
         this.def = def;
-        loop = new StepLoop(world, def, workers, chunkComponents, fields, kinds);
+        loop = new StepLoop(world, def, workers, chunks, fields, kinds);
         detail = new DetailCommands(world, loop.commands, loop.state, loop.draw);
         inspection = new Inspection(loop);
     }
@@ -88,8 +88,7 @@ public final class Simulation implements AutoCloseable {
      */
     public static Simulation create(SimulationDef def, ImageSource images, int workers, Progress progress)
             throws IOException {
-        Require.nonNull("def", def);
-        int w = workerCount(def, workers);
+        int w = workerCount(Require.nonNull("def", def), workers);
         World world = World.build(def, Require.nonNull("images", images), w, Require.nonNull("progress", progress));
         return new Simulation(world, def, w, CHUNK_COMPONENTS, ForceFieldFactory.QUADTREE, null);
     }
