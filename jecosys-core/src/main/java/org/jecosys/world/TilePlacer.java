@@ -75,6 +75,8 @@ public final class TilePlacer {
     /** Samples per side, over {@link #CLUMP_MEAN_CELLS} noise cells, of the clump field's mean. */
     private static final int CLUMP_MEAN_SAMPLES = 192;
     private static final int CLUMP_MEAN_CELLS = 48;
+    /** Candidate buffers kept for reuse, about one per thread that places at once. */
+    private static final int SPARE_BUFFERS = 8;
 
     private final long seed;
     private final double size;
@@ -95,8 +97,6 @@ public final class TilePlacer {
      * by itself; the only state the placer changes, and it changes no result.
      */
     private final java.util.ArrayDeque<Candidates> spare = new java.util.ArrayDeque<>();
-    /** Candidate buffers kept for reuse, about one per thread that places at once. */
-    private static final int SPARE_BUFFERS = 8;
 
     /**
      * A placer without soil functions: water and nutrient limits are not checked. Allocates.

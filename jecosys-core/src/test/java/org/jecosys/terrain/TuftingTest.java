@@ -88,10 +88,16 @@ class TuftingTest {
         List<DistributionDef> defs = List.of(
                 CompetitiveDistributorTest.tuft(400).toBuilder().footprint(0.05).clump(2, 0.9).tufts(0.1, 5).build(),
                 CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.2, 3).build());
+        assertSameForOneAndFourThreads(t, defs, 500);
+    }
+
+    /** The layout of {@code defs} (seed 8) on 1 and 4 threads: the same, with {@code count} plants. */
+    private static void assertSameForOneAndFourThreads(Terrain t, List<DistributionDef> defs, int count)
+            throws IOException {
         PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 1, Progress.NONE);
         PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
         assertSameLayout(one, four);
-        assertEquals(500, one.count());
+        assertEquals(count, one.count());
     }
 
     /** Tufts of 9 on a flat square, each split into 3 bunches on a 0.2 m ring, spread 5 mm round them. */
@@ -158,10 +164,7 @@ class TuftingTest {
                 CompetitiveDistributorTest.tuft(400).toBuilder().footprint(0.005).clump(2, 0.5).tufts(0.01, 9)
                         .bunches(0.19, 3).build(),
                 CompetitiveDistributorTest.yellow(100).toBuilder().tufts(0.02, 4).bunches(0.2, 2).build());
-        PlantLayout one = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 1, Progress.NONE);
-        PlantLayout four = DISTRIBUTOR.distribute(t, SPECIES, defs, List.of(), 8, 4, Progress.NONE);
-        assertSameLayout(one, four);
-        assertEquals(500, one.count());
+        assertSameForOneAndFourThreads(t, defs, 500);
     }
 
     @Test
