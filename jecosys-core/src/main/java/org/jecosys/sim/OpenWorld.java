@@ -147,10 +147,15 @@ public final class OpenWorld implements AutoCloseable {
         Require.nonNull("camera", camera);
         accumulator += dt;
         int n = 0;
-        while (accumulator >= fixedStep && n < maxSubSteps) {
-            stepFixed(camera);
-            accumulator -= fixedStep;
-            n++;
+        try {
+            while (accumulator >= fixedStep && n < maxSubSteps) {
+                // another fixed step follows at once: the animation workers spin for it instead of sleeping
+                stepFixed(camera, accumulator - fixedStep >= fixedStep && n + 1 < maxSubSteps);
+                accumulator -= fixedStep;
+                n++;
+            }
+        } finally {
+            builds.burstEnded(); // a step that threw ends the burst too
         }
         if (accumulator >= fixedStep) {
             long drop = (long) (accumulator / fixedStep);
@@ -169,6 +174,10 @@ public final class OpenWorld implements AutoCloseable {
      * @throws IllegalStateException when the world is closed, or building a tile failed
      */
     public void stepFixed(Camera camera) {
+        stepFixed(camera, false);
+    }
+
+    private void stepFixed(Camera camera, boolean followed) {
         Require.nonNull("camera", camera);
         synchronized (lock) {
             checkOpen();
@@ -176,14 +185,9 @@ public final class OpenWorld implements AutoCloseable {
                 flows.expire(time, tileSteps.tiles, tileSteps.started(tiles));
             }
             int viewCount = tileSteps.viewsAt(camera, views);
-            builds.loading = true; // the update may wait for a tile that is due: the workers must be let through
-            try {
-                tiles.update(tileSteps.viewX, tileSteps.viewZ, viewCount);
-            } finally {
-                builds.loading = false;
-            }
+            tiles.update(tileSteps.viewX, tileSteps.viewZ, viewCount); // a wait for a tile opens the builds' gate
             int idle = tileSteps.gather(tiles, camera, views, time, flows, thinning);
-            animated = tileSteps.run(camera, builds);
+            animated = tileSteps.run(camera, builds, followed);
             idleTiles = idle;
             steps++;
             time += fixedStep;
@@ -419,12 +423,7 @@ public final class OpenWorld implements AutoCloseable {
      */
     public void settle() {
         synchronized (lock) {
-            builds.loading = true;
-            try {
-                tiles.settle();
-            } finally {
-                builds.loading = false;
-            }
+            tiles.settle(); // each wait for a tile opens the builds' gate
         }
     }
 

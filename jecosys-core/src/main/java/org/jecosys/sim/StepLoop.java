@@ -150,7 +150,8 @@ final class StepLoop {
             if (closed) {
                 return n; // close() waits for this step: stop at a fixed-step boundary
             }
-            stepFixedLocked(camera);
+            // another fixed step follows at once: the workers spin for it instead of sleeping
+            stepFixedLocked(camera, accumulator - fixedStep >= fixedStep && n + 1 < maxSubSteps);
             accumulator -= fixedStep;
             n++;
         }
@@ -171,7 +172,7 @@ final class StepLoop {
         try {
             checkOpen();
             prewarmLocked(camera);
-            stepFixedLocked(camera);
+            stepFixedLocked(camera, false);
         } finally {
             stepLock.unlock();
         }
@@ -186,7 +187,7 @@ final class StepLoop {
      */
     private void prewarmLocked(Camera camera) {
         while (prewarmSteps > 0 && !closed) {
-            stepFixedLocked(camera);
+            stepFixedLocked(camera, true);
             prewarmSteps--;
         }
     }
@@ -198,7 +199,7 @@ final class StepLoop {
         }
     }
 
-    private void stepFixedLocked(Camera camera) {
+    private void stepFixedLocked(Camera camera, boolean followed) {
         steppingThread = Thread.currentThread().getId();
         commands.drain();
         checkOpen(); // a command may have closed the simulation (close() from this very thread)
@@ -216,7 +217,7 @@ final class StepLoop {
                 stampFrames);
         draw.prepare();
         long t0 = System.nanoTime();
-        pool.start();
+        pool.start(followed);
         try {
             sampler.update(camera, others, others.length, 1 - b, fieldEnabled);
         } catch (RuntimeException | Error e) {

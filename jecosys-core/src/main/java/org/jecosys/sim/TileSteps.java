@@ -110,20 +110,23 @@ final class TileSteps {
 
     /**
      * Steps the tiles {@link #gather} took in on the workers, this thread among them, with {@code camera}
-     * as each simulation's camera, while {@code builds} holds the tile workers back (the step's end time
-     * noted for its build window).
+     * as each simulation's camera, while {@code builds} holds the tile workers back: until this step's
+     * end, or when another fixed step follows at once, until the burst's last step ends (so that a build
+     * phase does not start between two fixed steps and run into the second).
      *
+     * @param followed whether another fixed step follows at once (the workers spin for it)
      * @return the components animated, over all tiles
      */
-    long run(Camera camera, TileBuilds builds) {
+    long run(Camera camera, TileBuilds builds, boolean followed) {
         this.camera = camera;
-        builds.stepping = true;
+        builds.stepStarting(followed);
         try {
-            pool.start();
+            pool.start(followed);
             pool.await();
         } finally {
-            builds.stepping = false;
-            builds.stepEnded = System.nanoTime();
+            if (!followed) {
+                builds.burstEnded();
+            }
         }
         long sum = 0;
         for (int k = 0, n = count; k < n; k++) {

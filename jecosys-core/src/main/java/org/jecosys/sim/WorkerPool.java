@@ -16,6 +16,20 @@ import org.jecosys.math.Require;
  * Hand-off by a volatile generation counter and
  * {@link LockSupport#park()}/{@code unpark}: no task objects, lambdas or collections per step, no
  * allocation after the threads started. Owner: one thread at a time calls start/await/close.
+ *
+ * <p>Anticipation: a thread the owner unparks may be woken on the owner's own core and share it with
+ * the owner until the scheduler moves it, so that the step runs as on one core. On a virtual machine
+ * whose idle cores are halted this happened in one step in ten of a 30 Hz walk; a C program of two
+ * threads showed the same (woken by another thread, the sleeper ran on the waker's core 295 times in
+ * 300). A thread that wakes itself with a timer wakes on its own core. So the owner says at each
+ * {@link #start(boolean)} whether another step follows right after this one (its loop of fixed
+ * steps): then the pool threads spin for it (at most {@link #FOLLOW_CAP_NANOS}). After a step nothing
+ * follows, they sleep until {@link #LEAD_NANOS} before the next burst of steps is due (the last
+ * burst's start plus the interval between the last two bursts' starts, as a game's loop repeats its
+ * frame) and spin until as long after it; only when the last two intervals differ by more than the
+ * lead (no cadence to anticipate), or the burst comes outside that window, does the owner's unpark
+ * wake them. The spinning costs at most twice the lead per burst of one thread's time, none while no
+ * step is coming.
  */
 final class WorkerPool implements AutoCloseable {
     /** The work of one chunk; implemented once, never allocated per step. */
@@ -29,6 +43,14 @@ final class WorkerPool implements AutoCloseable {
     }
 
     private static final int SPINS = 200;
+    /** How long a pool thread spins for the step the owner said follows, at most, nanoseconds. */
+    static final long FOLLOW_CAP_NANOS = 2_000_000;
+    /** How long before the burst it expects a pool thread wakes itself, and spins after it, nanoseconds. */
+    static final long LEAD_NANOS = 1_000_000;
+    /** Intervals between bursts longer than this are not anticipated: the owner's unpark wakes the threads. */
+    static final long LONGEST_INTERVAL = 250_000_000;
+    /** How long the owner spins for the pool's last chunks before it parks, nanoseconds. */
+    private static final long DRAIN_SPIN_NANOS = 1_000_000;
     /**
      * The JVM's per-thread allocation counter, looked up once: {@code ManagementFactory.getThreadMXBean()}
      * itself allocates on every call, which would pollute the very measurement. Null when unsupported.
@@ -44,9 +66,28 @@ final class WorkerPool implements AutoCloseable {
     /** System.nanoTime() at which the step's first chunk started and its last chunk ended, any thread. */
     private final AtomicLong firstChunk = new AtomicLong();
     private final AtomicLong lastChunk = new AtomicLong();
+    /** Steps a pool thread found started while it was awake for them (spinning), summed over threads. */
+    private final AtomicLong awake = new AtomicLong();
+    /** Steps a pool thread was woken for by the owner's unpark, summed over threads. */
+    private final AtomicLong unparked = new AtomicLong();
     private volatile int generation;
+    /** Whether the owner said another step follows the current one; written before the generation. */
+    private volatile boolean followed;
+    /** System.nanoTime() of the last burst's first {@link #start}; 0: none yet. */
+    private volatile long burstStart;
+    /** The interval between the last two bursts' starts when it matched the one before; 0: no cadence. */
+    private volatile long cadence;
+    /** The interval between the last two bursts' starts, ns; owner only. */
+    private long lastInterval;
+    /** Whether the owner said the last step is followed by another; owner only. */
+    private boolean lastFollowed;
     private volatile boolean stopped;
     private volatile Thread owner;
+    /**
+     * Whether the owner is parked (or about to) waiting for the pool: only then does the last worker
+     * unpark it, so that no permit is left behind for the owner's own next park (a game's frame pacing).
+     */
+    private volatile boolean ownerParked;
     private volatile Throwable failure;
 
     WorkerPool(String name, int workers, int chunks, ChunkTask task) {
@@ -80,6 +121,20 @@ final class WorkerPool implements AutoCloseable {
         return threads.length + 1;
     }
 
+    /**
+     * {@return how often a pool thread found a step started while it was awake for it} Summed over the
+     * pool's threads since they started: steps the owner said would follow, and steps of a steady
+     * cadence that came inside the anticipated window. Any thread; no allocation.
+     */
+    long awakeSteps() {
+        return awake.get();
+    }
+
+    /** {@return how often a pool thread had to be woken by the owner for a step, summed over threads} Any thread. */
+    long unparkedSteps() {
+        return unparked.get();
+    }
+
     /** The worker threads' ids (allocates). */
     long[] threadIds() {
         return ids.clone();
@@ -102,12 +157,28 @@ final class WorkerPool implements AutoCloseable {
         return sum;
     }
 
-    /** Releases the workers on a new step. Owner thread. No allocation. */
-    void start() {
+    /**
+     * Releases the workers on a new step. Owner thread. No allocation.
+     *
+     * @param followed whether the owner starts another step right after this one's {@link #await()}
+     *                 (the pool threads then spin for it instead of sleeping)
+     */
+    void start(boolean followed) {
         if (stopped) {
             throw new IllegalStateException("the worker pool is closed");
         }
         owner = Thread.currentThread();
+        if (!lastFollowed) { // the first step of a burst: the owner's cadence
+            long now = System.nanoTime();
+            long interval = burstStart == 0 ? 0 : now - burstStart;
+            boolean steady = interval > 0 && interval <= LONGEST_INTERVAL
+                    && Math.abs(interval - lastInterval) <= LEAD_NANOS;
+            cadence = steady ? interval : 0;
+            lastInterval = interval;
+            burstStart = now;
+        }
+        lastFollowed = followed;
+        this.followed = followed;
         firstChunk.set(Long.MAX_VALUE);
         lastChunk.set(Long.MIN_VALUE);
         next.set(0);
@@ -156,6 +227,7 @@ final class WorkerPool implements AutoCloseable {
 
     private void drain() {
         int spins = 0;
+        long spinUntil = 0;
         while (pending.get() != 0) {
             if (stopped) {
                 // closed during the step: every chunk was claimed (the loop above ran the rest), and a
@@ -166,8 +238,16 @@ final class WorkerPool implements AutoCloseable {
             if (spins < SPINS) {
                 spins++;
                 Thread.onSpinWait();
+            } else if (spinUntil == 0) {
+                spinUntil = System.nanoTime() + DRAIN_SPIN_NANOS;
+            } else if (System.nanoTime() - spinUntil < 0) {
+                Thread.onSpinWait();
             } else {
-                LockSupport.park(this);
+                ownerParked = true;
+                if (pending.get() != 0) { // read after the flag: the last worker sees the flag, or we see 0
+                    LockSupport.park(this);
+                }
+                ownerParked = false;
             }
         }
     }
@@ -199,20 +279,23 @@ final class WorkerPool implements AutoCloseable {
 
     private void loop(int worker) {
         int seen = 0;
+        boolean follow = false;
+        long expected = 0;
         while (true) {
-            int spins = 0;
+            boolean spinning = awaitNext(seen, follow, expected);
             while (generation == seen && !stopped) {
-                if (spins < SPINS) {
-                    spins++;
-                    Thread.onSpinWait();
-                } else {
-                    LockSupport.park(this);
-                }
+                spinning = false;
+                LockSupport.park(this);
             }
             if (generation == seen) {
                 return; // stopped, and no step is waiting for this thread
             }
             seen = generation;
+            (spinning ? awake : unparked).incrementAndGet();
+            // what the owner said of this step, read before it can start the next one
+            follow = followed;
+            long interval = cadence;
+            expected = interval == 0 ? 0 : burstStart + interval;
             if (!stopped) {
                 try {
                     runChunks(worker);
@@ -222,10 +305,50 @@ final class WorkerPool implements AutoCloseable {
                 }
             }
             // always signalled, also when stopped: the owner's await() runs the chunks left itself
-            if (pending.decrementAndGet() == 0) {
+            if (pending.decrementAndGet() == 0 && ownerParked) {
                 LockSupport.unpark(owner);
             }
         }
+    }
+
+    /**
+     * A pool thread's wait after step {@code seen}: spins for the step the owner said follows
+     * ({@code follow}), or sleeps until shortly before the next burst is due ({@code expected},
+     * System.nanoTime(); 0: no cadence) and spins over it; returns when the next step came, the pool
+     * stopped or the window passed (the caller then parks until unparked). No allocation.
+     *
+     * @return whether the thread was awake, spinning, until it returned
+     */
+    private boolean awaitNext(int seen, boolean follow, long expected) {
+        if (seen == 0) {
+            return false; // no step yet
+        }
+        long now = System.nanoTime();
+        if (follow) {
+            long until = now + FOLLOW_CAP_NANOS;
+            while (generation == seen && !stopped && now - until < 0) {
+                Thread.onSpinWait();
+                now = System.nanoTime();
+            }
+            return true;
+        }
+        if (expected == 0) {
+            return false;
+        }
+        long wake = expected - LEAD_NANOS;
+        while (generation == seen && !stopped && wake - now > 0) {
+            LockSupport.parkNanos(this, wake - now); // returns early on the owner's unpark
+            now = System.nanoTime();
+        }
+        if (generation != seen) {
+            return false; // the step came before the window: the owner's unpark woke the thread
+        }
+        long until = expected + LEAD_NANOS;
+        while (generation == seen && !stopped && now - until < 0) {
+            Thread.onSpinWait();
+            now = System.nanoTime();
+        }
+        return true;
     }
 
     /**

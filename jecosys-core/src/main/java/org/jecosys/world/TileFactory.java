@@ -31,4 +31,15 @@ public interface TileFactory<T> {
      */
     default void release(T tile) {
     }
+
+    /**
+     * Called on the stepping thread with {@code true} before the streamer waits for a tile being built
+     * (a tile due and not finished, or a settle), and with {@code false} when the wait is over: a
+     * factory that holds its builds back while the game's frame runs lets them through meanwhile. The
+     * default does nothing.
+     *
+     * @param waiting whether the stepping thread is about to wait (true) or done waiting (false)
+     */
+    default void waiting(boolean waiting) {
+    }
 }

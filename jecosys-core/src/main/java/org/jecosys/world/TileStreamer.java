@@ -377,7 +377,11 @@ public final class TileStreamer<T> implements AutoCloseable {
         collect(null, null, 0, true);
     }
 
-    private static void waitFor(Future<?> f) {
+    private void waitFor(Future<?> f) {
+        if (f.isDone()) {
+            return;
+        }
+        factory.waiting(true);
         try {
             f.get();
         } catch (InterruptedException ex) {
@@ -385,6 +389,8 @@ public final class TileStreamer<T> implements AutoCloseable {
             throw new IllegalStateException("interrupted while waiting for tiles", ex);
         } catch (java.util.concurrent.ExecutionException ex) {
             throw new IllegalStateException("building a tile failed: " + ex.getCause(), ex.getCause());
+        } finally {
+            factory.waiting(false);
         }
     }
 

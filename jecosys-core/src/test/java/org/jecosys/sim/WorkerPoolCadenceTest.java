@@ -1,0 +1,125 @@
+package org.jecosys.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.locks.LockSupport;
+import org.junit.jupiter.api.Test;
+
+/**
+ * How the animation pool's threads wait between steps ({@link WorkerPool}'s anticipation): a step the
+ * owner said follows finds them awake; the bursts of a steady cadence are anticipated (the threads wake
+ * themselves shortly before and are awake when the burst starts); without a cadence they sleep until the
+ * owner wakes them, spinning at no time; and the owner is never left a stray permit that would cut its
+ * own next park short (a game's frame pacing). The timing checks are loose: a busy machine may wake a
+ * thread late now and then.
+ */
+class WorkerPoolCadenceTest {
+    /** A chunk of about 20 microseconds of arithmetic. */
+    private static volatile double sink;
+
+    private static WorkerPool pool(int chunks) {
+        return new WorkerPool("cadence", 2, chunks, (c, worker) -> {
+            double s = 0;
+            long until = System.nanoTime() + 20_000;
+            while (System.nanoTime() < until) {
+                s += Math.sqrt(s + c);
+            }
+            sink = s;
+        });
+    }
+
+    private static void sleepUntil(long deadline) {
+        for (long w = deadline - System.nanoTime(); w > 0; w = deadline - System.nanoTime()) {
+            LockSupport.parkNanos(w);
+        }
+    }
+
+    @Test
+    void aStepTheOwnerSaidFollowsFindsThePoolThreadAwake() {
+        try (WorkerPool pool = pool(16)) {
+            int steps = 200;
+            for (int s = 0; s < steps; s++) {
+                pool.start(s + 1 < steps);
+                pool.await();
+            }
+            long total = pool.awakeSteps() + pool.unparkedSteps();
+            assertTrue(total > 0, "the pool thread ran steps");
+            assertTrue(pool.awakeSteps() >= total * 8 / 10, "awake for " + pool.awakeSteps() + " of " + total
+                    + " steps that followed one another");
+        }
+    }
+
+    @Test
+    void theBurstsOfASteadyCadenceAreAnticipated() {
+        try (WorkerPool pool = pool(16)) {
+            long period = 10_000_000;
+            long deadline = System.nanoTime();
+            int bursts = 60;
+            for (int b = 0; b < bursts; b++) {
+                deadline += period;
+                sleepUntil(deadline);
+                pool.start(true); // two fixed steps a frame, as the viewer's loop runs them
+                pool.await();
+                pool.start(false);
+                pool.await();
+            }
+            // the first bursts teach the cadence; after them a burst's first step finds the thread awake
+            // (woken by its own timer) unless the machine woke it late: at least half of them here
+            long awake = pool.awakeSteps() - bursts; // the second step of each burst followed the first
+            assertTrue(awake >= bursts / 2, "bursts anticipated: " + awake + " of " + bursts);
+        }
+    }
+
+    @Test
+    void withoutACadenceThePoolThreadSleepsUntilWoken() {
+        try (WorkerPool pool = pool(16)) {
+            long deadline = System.nanoTime();
+            int bursts = 40;
+            for (int b = 0; b < bursts; b++) {
+                deadline += b % 2 == 0 ? 4_000_000 : 16_000_000; // intervals 4 and 16 ms: no cadence
+                sleepUntil(deadline);
+                pool.start(false);
+                pool.await();
+            }
+            assertTrue(pool.unparkedSteps() >= bursts * 9 / 10, "woken by the owner: " + pool.unparkedSteps()
+                    + " of " + bursts + " steps (awake for " + pool.awakeSteps() + ")");
+        }
+    }
+
+    @Test
+    void theOwnerIsLeftNoPermitForItsOwnNextPark() {
+        // chunks that make the owner wait for the pool thread at the end of each step, so that it spins in
+        // await and the last chunk's end comes while it is not parked
+        try (WorkerPool pool = pool(3)) {
+            int steps = 40;
+            int cutShort = 0;
+            for (int s = 0; s < steps; s++) {
+                pool.start(false);
+                pool.await();
+                long t0 = System.nanoTime();
+                LockSupport.parkNanos(2_000_000);
+                if (System.nanoTime() - t0 < 1_500_000) {
+                    cutShort++;
+                }
+            }
+            // a park may return early now and then on its own (the JDK allows it); a stray permit after
+            // each step would cut most of them short
+            assertTrue(cutShort <= 4, "the owner's park was cut short after " + cutShort + " of " + steps + " steps");
+        }
+    }
+
+    @Test
+    void everyChunkRunsOnceWhateverTheWaiting() {
+        int[] runs = new int[64];
+        try (WorkerPool pool = new WorkerPool("cadence-count", 3, runs.length, (c, worker) -> runs[c]++)) {
+            for (int s = 0; s < 50; s++) {
+                pool.start(s % 3 != 2);
+                pool.await();
+            }
+        }
+        for (int c = 0; c < runs.length; c++) {
+            assertEquals(50, runs[c], "chunk " + c);
+        }
+    }
+}
