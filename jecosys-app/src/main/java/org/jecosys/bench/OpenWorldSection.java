@@ -102,7 +102,7 @@ final class OpenWorldSection implements Section {
             for (int f = 0; f < warmFrames; f++) {
                 place(cam, ground, (f + 1 - warmFrames) * SPEED / RATE);
                 warm += (long) (1e9 / RATE);
-                java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, warm - System.nanoTime()));
+                StepClock.sleepUntil(warm);
                 w.step(1 / RATE, cam);
             }
             double end = checkpoints[checkpoints.length - 1];
@@ -123,9 +123,8 @@ final class OpenWorldSection implements Section {
                 place(cam, ground, x);
                 // real time: 30 frames a second, as a game's loop; tiles are built in the time between steps
                 deadline += frameNanos;
-                long wait = deadline - System.nanoTime();
-                if (wait > 0) {
-                    java.util.concurrent.locks.LockSupport.parkNanos(wait);
+                if (deadline - System.nanoTime() > 0) {
+                    StepClock.sleepUntil(deadline);
                 } else {
                     deadline = System.nanoTime();
                 }
@@ -189,6 +188,20 @@ final class OpenWorldSection implements Section {
                     slow[2], slow[3]));
             m.put("slowSteps", slow[0]);
             m.put("slowStepsWithUsualCpu", slow[1]);
+            if (mode != Mode.SMOKE && Affinity.available()) {
+                double metres = mode == Mode.FULL ? 1000 : 600;
+                double[] pinned = pinnedWalk(w, cam, ground, end, metres, clock);
+                t.note(String.format(java.util.Locale.ROOT, "The walk went on for %.0f m with its threads pinned to"
+                        + " cores, as a game engine pins its workers (the stepping thread to core 0, the animation"
+                        + " pool's thread and the tile worker to core 1): step %.2f ms median, %.2f ms p99 (%.2f"
+                        + " times); %.0f steps took longer than 1.5 times the median, %.0f of them with the usual CPU"
+                        + " time. Unpinned, this machine's scheduler now and then wakes a thread on a busy core while"
+                        + " the other stays idle (docs/performance.md).", metres, pinned[0], pinned[1],
+                        pinned[1] / pinned[0], pinned[2], pinned[3]));
+                m.put("pinnedStepMedianMs", pinned[0]);
+                m.put("pinnedStepP99Ms", pinned[1]);
+                m.put("pinnedSlowSteps", pinned[2]);
+            }
             if (mode != Mode.SMOKE) {
                 // the same world with the camera standing where the walk ended: no tile arrives, the same plants
                 // are animated at every step; what its steps spread by is the machine's, not the streaming's
@@ -197,7 +210,7 @@ final class OpenWorldSection implements Section {
                 long next2 = System.nanoTime();
                 for (int f = 0; f < stand.length; f++) {
                     next2 += frameNanos;
-                    java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, next2 - System.nanoTime()));
+                    StepClock.sleepUntil(next2);
                     long c0 = clock.cpuNanos();
                     long t0 = System.nanoTime();
                     int n = Math.max(1, w.step(1 / RATE, cam));
@@ -351,6 +364,50 @@ final class OpenWorldSection implements Section {
                 Stats.median(ratio)};
     }
 
+    /**
+     * The walk continued from {@code from} for {@code metres} in real time with the stepping thread pinned
+     * to core 0 and the animation pool's and tile worker's threads to core 1 ({@link Affinity}), unpinned
+     * after: {step median ms, p99 ms, slow steps, slow steps with the usual CPU time}.
+     */
+    private static double[] pinnedWalk(OpenWorld w, ViewCamera cam, RollingTerrain ground, double from,
+                                       double metres, StepClock clock) {
+        Affinity.pinCaller(0);
+        Affinity.pinNamed("jecosys-world-", 1);
+        Affinity.pinNamed("jecosys-tiles", 1);
+        try {
+            int frames = (int) Math.ceil(metres / SPEED * RATE);
+            double[] ms = new double[frames];
+            double[] cpu = new double[frames];
+            int used = 0;
+            long deadline = System.nanoTime();
+            for (int f = 0; f < frames; f++) {
+                place(cam, ground, from + (f + 1) * SPEED / RATE);
+                deadline += (long) (1e9 / RATE);
+                if (deadline - System.nanoTime() > 0) {
+                    StepClock.sleepUntil(deadline);
+                } else {
+                    deadline = System.nanoTime();
+                }
+                long c0 = clock.cpuNanos();
+                long t0 = System.nanoTime();
+                int n = w.step(1 / RATE, cam);
+                long ns = System.nanoTime() - t0;
+                if (n > 0) {
+                    ms[used] = ns / 1e6 / n;
+                    cpu[used] = (clock.cpuNanos() - c0) / 1e6 / n;
+                    used++;
+                }
+            }
+            double[] steps = java.util.Arrays.copyOf(ms, used);
+            double[] slow = slowSteps(steps, java.util.Arrays.copyOf(cpu, used));
+            return new double[] {Stats.median(steps), Stats.percentile(steps, 0.99), slow[0], slow[1]};
+        } finally {
+            Affinity.pinCaller(-1);
+            Affinity.pinNamed("jecosys-world-", -1);
+            Affinity.pinNamed("jecosys-tiles", -1);
+        }
+    }
+
     private static void place(ViewCamera cam, RollingTerrain ground, double x) {
         cam.setPosition(x, ground.height(x, 0) + 1.7, 0);
     }
@@ -374,7 +431,7 @@ final class OpenWorldSection implements Section {
                 ViewCamera cam = walk.at(f / RATE);
                 if (f >= frames) { // the timed half in real time, as the walk
                     deadline += (long) (1e9 / RATE);
-                    java.util.concurrent.locks.LockSupport.parkNanos(Math.max(0, deadline - System.nanoTime()));
+                    StepClock.sleepUntil(deadline);
                 } else {
                     deadline = System.nanoTime();
                 }
