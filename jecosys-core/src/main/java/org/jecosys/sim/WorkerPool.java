@@ -171,9 +171,7 @@ final class WorkerPool implements AutoCloseable {
         if (!lastFollowed) { // the first step of a burst: the owner's cadence
             long now = System.nanoTime();
             long interval = burstStart == 0 ? 0 : now - burstStart;
-            boolean steady = interval > 0 && interval <= LONGEST_INTERVAL
-                    && Math.abs(interval - lastInterval) <= LEAD_NANOS;
-            cadence = steady ? interval : 0;
+            cadence = cadence(interval, lastInterval);
             lastInterval = interval;
             burstStart = now;
         }
@@ -192,6 +190,18 @@ final class WorkerPool implements AutoCloseable {
         for (Thread t : threads) {
             LockSupport.unpark(t);
         }
+    }
+
+    /**
+     * The cadence to anticipate after a burst started {@code interval} after the one before, which came
+     * {@code lastInterval} after its own predecessor (ns; 0: none): the interval when the two match
+     * within {@link #LEAD_NANOS} and it is at most {@link #LONGEST_INTERVAL}, else 0 (no cadence: the
+     * threads park until unparked). Pure.
+     */
+    static long cadence(long interval, long lastInterval) {
+        boolean steady = interval > 0 && interval <= LONGEST_INTERVAL
+                && Math.abs(interval - lastInterval) <= LEAD_NANOS;
+        return steady ? interval : 0;
     }
 
     /**
