@@ -60,6 +60,8 @@ final class WorkerPool implements AutoCloseable {
     private final Thread[] threads;
     private final long[] ids;
     private final ChunkTask task;
+    /** How long a pool thread spins for a step the owner said follows, at most, nanoseconds. */
+    private final long followCap;
     private final int chunks;
     private final AtomicInteger next = new AtomicInteger();
     private final AtomicInteger pending = new AtomicInteger();
@@ -91,6 +93,18 @@ final class WorkerPool implements AutoCloseable {
     private volatile Throwable failure;
 
     WorkerPool(String name, int workers, int chunks, ChunkTask task) {
+        this(name, workers, chunks, task, FOLLOW_CAP_NANOS);
+    }
+
+    /**
+     * As {@link #WorkerPool(String, int, int, ChunkTask)}, the pool's threads spinning at most
+     * {@code followCap} ns for a step the owner said follows (tests: a cap no machine's load reaches).
+     */
+    WorkerPool(String name, int workers, int chunks, ChunkTask task, long followCap) {
+        if (followCap < 0) {
+            throw new IllegalArgumentException("followCap must be at least 0 ns, got " + followCap);
+        }
+        this.followCap = followCap;
         Require.range("workers", workers, 1, 256);
         this.chunks = Require.range("chunks", chunks, 0, Integer.MAX_VALUE);
         this.task = Require.nonNull("task", task);
@@ -335,7 +349,7 @@ final class WorkerPool implements AutoCloseable {
         }
         long now = System.nanoTime();
         if (follow) {
-            long until = now + FOLLOW_CAP_NANOS;
+            long until = now + followCap;
             while (generation == seen && !stopped && now - until < 0) {
                 Thread.onSpinWait();
                 now = System.nanoTime();
