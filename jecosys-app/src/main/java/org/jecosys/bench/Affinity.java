@@ -1,71 +1,45 @@
 package org.jecosys.bench;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.lwjgl.system.JNI;
-import org.lwjgl.system.Library;
-import org.lwjgl.system.MemoryUtil;
-import org.lwjgl.system.SharedLibrary;
+import java.util.concurrent.TimeUnit;
 
 /**
- * Pins threads to one core each, on Linux, through {@code sched_setaffinity} (called with LWJGL's
- * native-call helpers, found in the C library at run time), for the bench's pinned walk: a game engine
- * pins its workers the same way. A thread is found by its name in {@code /proc/self/task/N/comm} (the
- * kernel keeps the first 15 characters of a Java thread's name). Elsewhere, or when the call fails,
- * nothing is pinned and the methods say so. Bench only; allocates.
+ * Pins threads to one core each, on Linux, for the bench's pinned walk (a game engine pins its workers
+ * the same way), with the system's {@code taskset -p -c CORES TID}: no native code in the bench. A
+ * thread is found by its name in {@code /proc/self/task/N/comm} (the kernel keeps the first 15
+ * characters of a Java thread's name), the calling thread by {@code /proc/thread-self}. The cores the
+ * process may use are read when this class is first used, before anything is pinned, to let threads go
+ * again ({@code Runtime.availableProcessors()} counts the calling thread's cores, so it cannot tell once
+ * the caller is pinned). Elsewhere, or without {@code taskset}, nothing is pinned and the methods say
+ * so. Bench only; allocates, starts a process per thread.
  */
 final class Affinity {
-    private static final int MASK_BYTES = 128;
-    /**
-     * The cores the process may run on, read when this class is first used (before anything is pinned:
-     * {@code Runtime.availableProcessors()} counts the calling thread's cores, so it cannot tell once the
-     * caller is pinned); null when unavailable.
-     */
-    private static final byte[] ORIGINAL = original();
+    private static final Path TASKSET = Path.of("/usr/bin/taskset");
+    /** The process's cores as {@code taskset} lists them ("0-1"), read before anything is pinned; null: none. */
+    private static final String ORIGINAL = original();
 
     private Affinity() {
     }
 
-    /** {@return whether pinning can work here: Linux, and the C library has {@code sched_setaffinity}} */
-    static boolean available() {
-        return function() != 0 && ORIGINAL != null;
-    }
-
-    private static byte[] original() {
-        long f = function("sched_getaffinity");
-        if (f == 0) {
+    private static String original() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("Cpus_allowed_list:")) {
+                    return line.substring(line.indexOf(':') + 1).strip();
+                }
+            }
+        } catch (IOException | RuntimeException e) {
             return null;
         }
-        ByteBuffer mask = MemoryUtil.memCalloc(MASK_BYTES);
-        try {
-            if (JNI.invokePPI(0, (long) MASK_BYTES, MemoryUtil.memAddress(mask), f) != 0) {
-                return null;
-            }
-            byte[] b = new byte[MASK_BYTES];
-            mask.get(0, b);
-            return b;
-        } finally {
-            MemoryUtil.memFree(mask);
-        }
+        return null;
     }
 
-    private static long function() {
-        return function("sched_setaffinity");
-    }
-
-    private static long function(String name) {
-        if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {
-            return 0;
-        }
-        try {
-            SharedLibrary libc = Library.loadNative(Affinity.class, "org.lwjgl", "libc.so.6");
-            return libc.getFunctionAddress(name);
-        } catch (RuntimeException | LinkageError e) {
-            return 0;
-        }
+    /** {@return whether pinning can work here: Linux's /proc and {@code taskset}} */
+    static boolean available() {
+        return ORIGINAL != null && Files.isExecutable(TASKSET) && Files.isDirectory(Path.of("/proc/self/task"));
     }
 
     /**
@@ -74,7 +48,12 @@ final class Affinity {
      * @return whether it was pinned
      */
     static boolean pinCaller(int cpu) {
-        return pin(0, cpu);
+        try {
+            String link = Files.readSymbolicLink(Path.of("/proc/thread-self")).toString(); // "PID/task/TID"
+            return pin(Integer.parseInt(link.substring(link.lastIndexOf('/') + 1)), cpu);
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
     }
 
     /**
@@ -105,22 +84,23 @@ final class Affinity {
     }
 
     private static boolean pin(int tid, int cpu) {
-        long f = function();
-        if (f == 0 || cpu < -1 || cpu >= MASK_BYTES * 8) {
+        if (!available() || cpu < -1) {
             return false;
         }
-        ByteBuffer mask = MemoryUtil.memCalloc(MASK_BYTES);
+        String cores = cpu >= 0 ? Integer.toString(cpu) : ORIGINAL;
         try {
-            if (cpu >= 0) {
-                mask.put(cpu / 8, (byte) (1 << (cpu % 8)));
-            } else if (ORIGINAL != null) { // the cores the process had
-                mask.put(0, ORIGINAL);
-            } else {
+            Process p = new ProcessBuilder(TASKSET.toString(), "-p", "-c", cores, Integer.toString(tid))
+                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            if (!p.waitFor(10, TimeUnit.SECONDS)) {
+                p.destroyForcibly();
                 return false;
             }
-            return JNI.invokePPI(tid, (long) MASK_BYTES, MemoryUtil.memAddress(mask), f) == 0;
-        } finally {
-            MemoryUtil.memFree(mask);
+            return p.exitValue() == 0;
+        } catch (IOException e) {
+            return false;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
         }
     }
 }
