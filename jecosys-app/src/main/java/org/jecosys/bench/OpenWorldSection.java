@@ -122,12 +122,7 @@ final class OpenWorldSection implements Section {
                 double x = (f + 1) * SPEED / RATE;
                 place(cam, ground, x);
                 // real time: 30 frames a second, as a game's loop; tiles are built in the time between steps
-                deadline += frameNanos;
-                if (deadline - System.nanoTime() > 0) {
-                    StepClock.sleepUntil(deadline);
-                } else {
-                    deadline = System.nanoTime();
-                }
+                deadline = StepClock.pace(deadline + frameNanos);
                 long c0 = clock.cpuNanos();
                 long t0 = System.nanoTime();
                 int n = w.step(1 / RATE, cam);
@@ -382,12 +377,7 @@ final class OpenWorldSection implements Section {
             long deadline = System.nanoTime();
             for (int f = 0; f < frames; f++) {
                 place(cam, ground, from + (f + 1) * SPEED / RATE);
-                deadline += (long) (1e9 / RATE);
-                if (deadline - System.nanoTime() > 0) {
-                    StepClock.sleepUntil(deadline);
-                } else {
-                    deadline = System.nanoTime();
-                }
+                deadline = StepClock.pace(deadline + (long) (1e9 / RATE));
                 long c0 = clock.cpuNanos();
                 long t0 = System.nanoTime();
                 int n = w.step(1 / RATE, cam);

@@ -110,4 +110,16 @@ final class StepClock {
             java.util.concurrent.locks.LockSupport.parkNanos(wait);
         }
     }
+
+    /**
+     * A real-time loop's pacing: parks until {@code deadline} and returns it, or returns now when the
+     * deadline has passed (a late frame starts the next period from now). No allocation.
+     */
+    static long pace(long deadline) {
+        if (deadline - System.nanoTime() > 0) {
+            sleepUntil(deadline);
+            return deadline;
+        }
+        return System.nanoTime();
+    }
 }

@@ -187,7 +187,7 @@ final class StepLoop {
      */
     private void prewarmLocked(Camera camera) {
         while (prewarmSteps > 0 && !closed) {
-            stepFixedLocked(camera, true);
+            stepFixedLocked(camera, prewarmSteps > 1); // the prewarm's steps follow one another
             prewarmSteps--;
         }
     }
