@@ -46,10 +46,8 @@ final class TileBuilds implements TileFactory<WorldTile> {
     private volatile long stepEnded = System.nanoTime();
     /** System.nanoTime() at which the next burst is expected to start, or 0 when the bursts keep no cadence. */
     private volatile long nextBurst;
-    /** Stepping thread only: whether the last step said another follows, the last burst's start and interval. */
-    private boolean inBurst;
-    private long burstStart;
-    private long burstInterval;
+    /** The stepping thread's bursts of steps; stepping thread only. */
+    private final Bursts bursts = new Bursts();
     /** Per phase (placement, world, simulation), its expected length on a tile worker, nanoseconds. */
     private final AtomicLongArray phaseNanos = new AtomicLongArray(3);
     /** Whether the stepping thread waits for a tile (a tile due, a settle): the gate is open. */
@@ -74,15 +72,12 @@ final class TileBuilds implements TileFactory<WorldTile> {
 
     /** {@link #stepStarting(boolean)} at {@code now} (System.nanoTime()). */
     void stepStarting(boolean followed, long now) {
-        if (!inBurst) {
-            long interval = burstStart == 0 ? 0 : now - burstStart;
+        if (bursts.step(followed, now)) {
             // the shorter of the last two intervals: a phase should rather wait than run into a step
-            long expected = Math.min(interval, burstInterval);
+            long interval = bursts.interval();
+            long expected = Math.min(interval, bursts.lastInterval());
             nextBurst = expected > 0 && interval <= LONGEST_INTERVAL ? now + expected : 0;
-            burstInterval = interval;
-            burstStart = now;
         }
-        inBurst = followed;
         stepping = true;
     }
 
@@ -93,7 +88,7 @@ final class TileBuilds implements TileFactory<WorldTile> {
 
     /** {@link #burstEnded()} at {@code now} (System.nanoTime()). */
     void burstEnded(long now) {
-        inBurst = false;
+        bursts.end();
         if (stepping) {
             stepping = false;
             stepEnded = now;

@@ -79,10 +79,8 @@ final class WorkerPool implements AutoCloseable {
     private volatile long burstStart;
     /** The interval between the last two bursts' starts when it matched the one before; 0: no cadence. */
     private volatile long cadence;
-    /** The interval between the last two bursts' starts, ns; owner only. */
-    private long lastInterval;
-    /** Whether the owner said the last step is followed by another; owner only. */
-    private boolean lastFollowed;
+    /** The owner's bursts of steps; owner only. */
+    private final Bursts bursts = new Bursts();
     private volatile boolean stopped;
     private volatile Thread owner;
     /**
@@ -182,14 +180,10 @@ final class WorkerPool implements AutoCloseable {
             throw new IllegalStateException("the worker pool is closed");
         }
         owner = Thread.currentThread();
-        if (!lastFollowed) { // the first step of a burst: the owner's cadence
-            long now = System.nanoTime();
-            long interval = burstStart == 0 ? 0 : now - burstStart;
-            cadence = cadence(interval, lastInterval);
-            lastInterval = interval;
-            burstStart = now;
+        if (bursts.step(followed, System.nanoTime())) { // the first step of a burst: the owner's cadence
+            cadence = cadence(bursts.interval(), bursts.lastInterval());
+            burstStart = bursts.start();
         }
-        lastFollowed = followed;
         this.followed = followed;
         firstChunk.set(Long.MAX_VALUE);
         lastChunk.set(Long.MIN_VALUE);
