@@ -31,8 +31,6 @@ final class TileBuilds implements TileFactory<WorldTile> {
     static final long FIRST_NANOS = 1_000_000;
     /** A phase is expected to take up to this many times its mean length. */
     private static final int PHASE_MARGIN = 2;
-    /** Intervals between bursts longer than this are no cadence, nanoseconds. */
-    private static final long LONGEST_INTERVAL = 250_000_000;
 
     private final SimulationDef def;
     private final PlantModel model;
@@ -76,7 +74,7 @@ final class TileBuilds implements TileFactory<WorldTile> {
             // the shorter of the last two intervals: a phase should rather wait than run into a step
             long interval = bursts.interval();
             long expected = Math.min(interval, bursts.lastInterval());
-            nextBurst = expected > 0 && interval <= LONGEST_INTERVAL ? now + expected : 0;
+            nextBurst = expected > 0 && interval <= Bursts.LONGEST_INTERVAL ? now + expected : 0;
         }
         stepping = true;
     }

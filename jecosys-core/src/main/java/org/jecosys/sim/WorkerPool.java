@@ -2,6 +2,7 @@ package org.jecosys.sim;
 
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.locks.LockSupport;
 import org.jecosys.math.Require;
 
@@ -17,19 +18,26 @@ import org.jecosys.math.Require;
  * {@link LockSupport#park()}/{@code unpark}: no task objects, lambdas or collections per step, no
  * allocation after the threads started. Owner: one thread at a time calls start/await/close.
  *
- * <p>Anticipation: a thread the owner unparks may be woken on the owner's own core and share it with
- * the owner until the scheduler moves it, so that the step runs as on one core. On a virtual machine
- * whose idle cores are halted this happened in one step in ten of a 30 Hz walk; a C program of two
- * threads showed the same (woken by another thread, the sleeper ran on the waker's core 295 times in
- * 300). A thread that wakes itself with a timer wakes on its own core. So the owner says at each
- * {@link #start(boolean)} whether another step follows right after this one (its loop of fixed
- * steps): then the pool threads spin for it (at most {@link #FOLLOW_CAP_NANOS}). After a step nothing
- * follows, they sleep until {@link #LEAD_NANOS} before the next burst of steps is due (the last
- * burst's start plus the interval between the last two bursts' starts, as a game's loop repeats its
- * frame) and spin until as long after it; only when the last two intervals differ by more than the
- * lead (no cadence to anticipate), or the burst comes outside that window, does the owner's unpark
- * wake them. The spinning costs at most twice the lead per burst of one thread's time, none while no
- * step is coming.
+ * <p>Waking without moving: a thread woken by another may be placed on the waker's core, and one
+ * that wakes by its own timer wakes on the core it slept on; on a virtual machine whose idle cores are
+ * halted the scheduler kept a woken thread on the waker's core even with the other core idle (a C
+ * program of two threads: 295 times in 300), and the two then shared one core, the step running as on
+ * one, until the balancer moved one of them several milliseconds later. So the owner and the pool
+ * threads wake one another as little as they can:
+ * <ul>
+ *   <li>the owner says at each {@link #start(boolean)} whether another step follows at once (its loop of
+ *       fixed steps): then the pool threads spin for it (at most {@link #FOLLOW_CAP_NANOS});</li>
+ *   <li>after a burst they sleep by their own timer until {@link #LEAD_NANOS} before the window in which
+ *       the owner's rhythm ({@link Bursts}) expects the next burst, spin until as long after it, and then
+ *       still look every {@link #POLL_SLICE_NANOS} for {@link #POLL_SPAN_NANOS} (a late frame);</li>
+ *   <li>each thread says by when it will look at the generation by itself ({@link #comesBy}); the owner
+ *       unparks only a thread that would come later than {@link #GRACE_NANOS} (parked: no rhythm, or
+ *       a burst far outside its window);</li>
+ *   <li>the owner waits for the pool's last chunks spinning, then in short timed sleeps: the pool never
+ *       unparks it.</li>
+ * </ul>
+ * The spinning costs at most the window plus twice the lead per burst of one thread's time, none while
+ * no step is coming.
  */
 final class WorkerPool implements AutoCloseable {
     /** The work of one chunk; implemented once, never allocated per step. */
@@ -47,10 +55,21 @@ final class WorkerPool implements AutoCloseable {
     static final long FOLLOW_CAP_NANOS = 2_000_000;
     /** How long before the burst it expects a pool thread wakes itself, and spins after it, nanoseconds. */
     static final long LEAD_NANOS = 1_000_000;
-    /** Intervals between bursts longer than this are not anticipated: the owner's unpark wakes the threads. */
-    static final long LONGEST_INTERVAL = 250_000_000;
-    /** How long the owner spins for the pool's last chunks before it parks, nanoseconds. */
+    /** How long the owner spins for the pool's last chunks before it sleeps in short slices, nanoseconds. */
     private static final long DRAIN_SPIN_NANOS = 1_000_000;
+    /** The owner's sleep slice while it waits for the pool's last chunks, nanoseconds. */
+    private static final long DRAIN_SLICE_NANOS = 100_000;
+    /** A pool thread's sleep slice while a late burst may still come, nanoseconds. */
+    static final long POLL_SLICE_NANOS = 200_000;
+    /** How long after its window a pool thread still polls for a late burst, nanoseconds. */
+    static final long POLL_SPAN_NANOS = 4_000_000;
+    /**
+     * The owner does not unpark a pool thread that looks at the step by itself within this, nanoseconds:
+     * a thread it wakes may be moved onto the owner's core, which costs more than coming this late.
+     */
+    static final long GRACE_NANOS = 2_000_000;
+    /** {@link #comesBy}: the thread is parked until unparked. */
+    private static final long PARKED = Long.MAX_VALUE;
     /**
      * The JVM's per-thread allocation counter, looked up once: {@code ManagementFactory.getThreadMXBean()}
      * itself allocates on every call, which would pollute the very measurement. Null when unsupported.
@@ -62,47 +81,53 @@ final class WorkerPool implements AutoCloseable {
     private final ChunkTask task;
     /** How long a pool thread spins for a step the owner said follows, at most, nanoseconds. */
     private final long followCap;
+    /** How long after its window a pool thread polls for a late burst, nanoseconds. */
+    private final long pollSpan;
     private final int chunks;
     private final AtomicInteger next = new AtomicInteger();
     private final AtomicInteger pending = new AtomicInteger();
     /** System.nanoTime() at which the step's first chunk started and its last chunk ended, any thread. */
     private final AtomicLong firstChunk = new AtomicLong();
     private final AtomicLong lastChunk = new AtomicLong();
-    /** Steps a pool thread found started while it was awake for them (spinning), summed over threads. */
-    private final AtomicLong awake = new AtomicLong();
-    /** Steps a pool thread was woken for by the owner's unpark, summed over threads. */
-    private final AtomicLong unparked = new AtomicLong();
+    /** Steps the pool threads saw, summed over threads. */
+    private final AtomicLong seenSteps = new AtomicLong();
+    /** How often the owner unparked a pool thread for a step; owner writes, any thread reads. */
+    private volatile long unparks;
     private volatile int generation;
     /** Whether the owner said another step follows the current one; written before the generation. */
     private volatile boolean followed;
-    /** System.nanoTime() of the last burst's first {@link #start}; 0: none yet. */
-    private volatile long burstStart;
-    /** The interval between the last two bursts' starts when it matched the one before; 0: no cadence. */
-    private volatile long cadence;
+    /** Earliest the next burst is expected (System.nanoTime()); 0: no rhythm. Written before the generation. */
+    private volatile long windowOpen;
+    /** Latest the next burst is expected; written before the generation. */
+    private volatile long windowClose;
+    /**
+     * Per pool thread: System.nanoTime() by which it looks at the generation by itself (spinning: a
+     * time already past), or {@link #PARKED}. The owner unparks only threads that would come later
+     * than {@link #GRACE_NANOS}.
+     */
+    private final AtomicLongArray comesBy;
     /** The owner's bursts of steps; owner only. */
     private final Bursts bursts = new Bursts();
     private volatile boolean stopped;
     private volatile Thread owner;
-    /**
-     * Whether the owner is parked (or about to) waiting for the pool: only then does the last worker
-     * unpark it, so that no permit is left behind for the owner's own next park (a game's frame pacing).
-     */
-    private volatile boolean ownerParked;
     private volatile Throwable failure;
 
     WorkerPool(String name, int workers, int chunks, ChunkTask task) {
-        this(name, workers, chunks, task, FOLLOW_CAP_NANOS);
+        this(name, workers, chunks, task, FOLLOW_CAP_NANOS, POLL_SPAN_NANOS);
     }
 
     /**
      * As {@link #WorkerPool(String, int, int, ChunkTask)}, the pool's threads spinning at most
-     * {@code followCap} ns for a step the owner said follows (tests: a cap no machine's load reaches).
+     * {@code followCap} ns for a step the owner said follows and polling {@code pollSpan} ns for a late
+     * burst (tests: spans no machine's load reaches).
      */
-    WorkerPool(String name, int workers, int chunks, ChunkTask task, long followCap) {
-        if (followCap < 0) {
-            throw new IllegalArgumentException("followCap must be at least 0 ns, got " + followCap);
+    WorkerPool(String name, int workers, int chunks, ChunkTask task, long followCap, long pollSpan) {
+        if (followCap < 0 || pollSpan < 0) {
+            throw new IllegalArgumentException("followCap and pollSpan must be at least 0 ns, got " + followCap
+                    + " and " + pollSpan);
         }
         this.followCap = followCap;
+        this.pollSpan = pollSpan;
         Require.range("workers", workers, 1, 256);
         this.chunks = Require.range("chunks", chunks, 0, Integer.MAX_VALUE);
         this.task = Require.nonNull("task", task);
@@ -112,6 +137,10 @@ final class WorkerPool implements AutoCloseable {
             Thread t = new Thread(() -> loop(worker), name + "-" + i);
             t.setDaemon(true);
             threads[i] = t;
+        }
+        comesBy = new AtomicLongArray(threads.length);
+        for (int i = 0; i < threads.length; i++) {
+            comesBy.set(i, PARKED);
         }
         ids = new long[threads.length];
         for (int i = 0; i < threads.length; i++) {
@@ -134,17 +163,22 @@ final class WorkerPool implements AutoCloseable {
     }
 
     /**
-     * {@return how often a pool thread found a step started while it was awake for it} Summed over the
+     * {@return how often a pool thread came to a step by itself, not unparked for it} Summed over the
      * pool's threads since they started: steps the owner said would follow, and steps of a steady
      * cadence that came inside the anticipated window. Any thread; no allocation.
      */
     long awakeSteps() {
-        return awake.get();
+        return seenSteps.get() - unparks;
     }
 
     /** {@return how often a pool thread had to be woken by the owner for a step, summed over threads} Any thread. */
     long unparkedSteps() {
-        return unparked.get();
+        return unparks;
+    }
+
+    /** {@return whether the pool's threads anticipate the next burst (the owner keeps a rhythm)} Any thread. */
+    boolean anticipating() {
+        return windowOpen != 0;
     }
 
     /** The worker threads' ids (allocates). */
@@ -180,9 +214,10 @@ final class WorkerPool implements AutoCloseable {
             throw new IllegalStateException("the worker pool is closed");
         }
         owner = Thread.currentThread();
-        if (bursts.step(followed, System.nanoTime())) { // the first step of a burst: the owner's cadence
-            cadence = cadence(bursts.interval(), bursts.lastInterval());
-            burstStart = bursts.start();
+        long now = System.nanoTime();
+        if (bursts.step(followed, now)) { // the first step of a burst: the owner's rhythm
+            windowOpen = bursts.earliestNext();
+            windowClose = bursts.latestNext();
         }
         this.followed = followed;
         firstChunk.set(Long.MAX_VALUE);
@@ -195,21 +230,14 @@ final class WorkerPool implements AutoCloseable {
         }
         pending.set(threads.length);
         generation++;
-        for (Thread t : threads) {
-            LockSupport.unpark(t);
+        // read after the generation's write: a thread that set itself PARKED afterwards sees the step
+        for (int i = 0; i < threads.length; i++) {
+            long c = comesBy.get(i);
+            if (c == PARKED || c - now > GRACE_NANOS) {
+                unparks++;
+                LockSupport.unpark(threads[i]);
+            }
         }
-    }
-
-    /**
-     * The cadence to anticipate after a burst started {@code interval} after the one before, which came
-     * {@code lastInterval} after its own predecessor (ns; 0: none): the interval when the two match
-     * within {@link #LEAD_NANOS} and it is at most {@link #LONGEST_INTERVAL}, else 0 (no cadence: the
-     * threads park until unparked). Pure.
-     */
-    static long cadence(long interval, long lastInterval) {
-        boolean steady = interval > 0 && interval <= LONGEST_INTERVAL
-                && Math.abs(interval - lastInterval) <= LEAD_NANOS;
-        return steady ? interval : 0;
     }
 
     /**
@@ -261,11 +289,9 @@ final class WorkerPool implements AutoCloseable {
             } else if (System.nanoTime() - spinUntil < 0) {
                 Thread.onSpinWait();
             } else {
-                ownerParked = true;
-                if (pending.get() != 0) { // read after the flag: the last worker sees the flag, or we see 0
-                    LockSupport.park(this);
-                }
-                ownerParked = false;
+                // short timed sleeps, not a park the last worker would end: a thread woken by another
+                // may be moved onto the waker's core, and the owner would then share the pool's next step
+                LockSupport.parkNanos(this, DRAIN_SLICE_NANOS);
             }
         }
     }
@@ -298,22 +324,27 @@ final class WorkerPool implements AutoCloseable {
     private void loop(int worker) {
         int seen = 0;
         boolean follow = false;
-        long expected = 0;
+        long open = 0;
+        long close = 0;
         while (true) {
-            boolean spinning = awaitNext(seen, follow, expected);
-            while (generation == seen && !stopped) {
-                spinning = false;
-                LockSupport.park(this);
+            awaitNext(worker, seen, follow, open, close);
+            if (generation == seen) {
+                comesBy.set(worker, PARKED);
+                while (generation == seen && !stopped) { // read after PARKED: the owner unparks, or we see it
+                    LockSupport.park(this);
+                }
             }
+            // busy with this step until it looks at the next one: no unpark needed meanwhile
+            comesBy.set(worker, System.nanoTime());
             if (generation == seen) {
                 return; // stopped, and no step is waiting for this thread
             }
             seen = generation;
-            (spinning ? awake : unparked).incrementAndGet();
+            seenSteps.incrementAndGet();
             // what the owner said of this step, read before it can start the next one
             follow = followed;
-            long interval = cadence;
-            expected = interval == 0 ? 0 : burstStart + interval;
+            open = windowOpen;
+            close = windowClose;
             if (!stopped) {
                 try {
                     runChunks(worker);
@@ -323,50 +354,54 @@ final class WorkerPool implements AutoCloseable {
                 }
             }
             // always signalled, also when stopped: the owner's await() runs the chunks left itself
-            if (pending.decrementAndGet() == 0 && ownerParked) {
-                LockSupport.unpark(owner);
-            }
+            pending.decrementAndGet(); // the owner looks by itself (drain): no unpark to move it here
         }
     }
 
     /**
      * A pool thread's wait after step {@code seen}: spins for the step the owner said follows
-     * ({@code follow}), or sleeps until shortly before the next burst is due ({@code expected},
-     * System.nanoTime(); 0: no cadence) and spins over it; returns when the next step came, the pool
-     * stopped or the window passed (the caller then parks until unparked). No allocation.
-     *
-     * @return whether the thread was awake, spinning, until it returned
+     * ({@code follow}), or sleeps until {@link #LEAD_NANOS} before the window {@code open .. close} in
+     * which the next burst is expected (System.nanoTime(); 0: no rhythm) and spins until as long after
+     * it; then it still looks every {@link #POLL_SLICE_NANOS} for {@link #POLL_SPAN_NANOS} (a late
+     * burst). Returns when the next step came, the pool stopped or the time passed (the caller then
+     * parks until unparked). It keeps {@link #comesBy} so that the owner need not unpark it. No allocation.
      */
-    private boolean awaitNext(int seen, boolean follow, long expected) {
+    private void awaitNext(int worker, int seen, boolean follow, long open, long close) {
         if (seen == 0) {
-            return false; // no step yet
+            return; // no step yet
         }
         long now = System.nanoTime();
+        long spinUntil;
         if (follow) {
-            long until = now + followCap;
-            while (generation == seen && !stopped && now - until < 0) {
-                Thread.onSpinWait();
+            spinUntil = now + followCap;
+        } else if (open != 0) {
+            long wake = open - LEAD_NANOS;
+            comesBy.set(worker, wake);
+            while (generation == seen && !stopped && wake - now > 0) {
+                LockSupport.parkNanos(this, wake - now); // returns early on the owner's unpark
                 now = System.nanoTime();
             }
-            return true;
+            if (generation != seen) {
+                return; // the step came before the window
+            }
+            spinUntil = close + LEAD_NANOS;
+        } else {
+            return;
         }
-        if (expected == 0) {
-            return false;
-        }
-        long wake = expected - LEAD_NANOS;
-        while (generation == seen && !stopped && wake - now > 0) {
-            LockSupport.parkNanos(this, wake - now); // returns early on the owner's unpark
-            now = System.nanoTime();
-        }
-        if (generation != seen) {
-            return false; // the step came before the window: the owner's unpark woke the thread
-        }
-        long until = expected + LEAD_NANOS;
-        while (generation == seen && !stopped && now - until < 0) {
+        comesBy.set(worker, now);
+        while (generation == seen && !stopped && now - spinUntil < 0) {
             Thread.onSpinWait();
             now = System.nanoTime();
         }
-        return true;
+        if (generation != seen || stopped) {
+            return;
+        }
+        long pollUntil = now + pollSpan;
+        while (generation == seen && !stopped && now - pollUntil < 0) {
+            comesBy.set(worker, now + POLL_SLICE_NANOS);
+            LockSupport.parkNanos(this, POLL_SLICE_NANOS);
+            now = System.nanoTime();
+        }
     }
 
     /**

@@ -4,10 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.concurrent.ThreadFactory;
 import org.jecosys.math.Require;
 
 /**
@@ -39,7 +36,7 @@ public final class TileStreamer<T> implements AutoCloseable {
     private final double size;
     private final double radius;
     private final int budget;
-    private final ExecutorService workers;
+    private final BuildWorkers workers;
     private final Map<Long, T> live = new HashMap<>();
     /** The started tiles not live yet: key, build and the update that started it (dense, unordered). */
     private long[] pendingKeys = new long[16];
@@ -135,12 +132,7 @@ public final class TileStreamer<T> implements AutoCloseable {
         Require.range("workers", workers, 1, 64);
         this.budget = Require.range("budget", budget, 1, 1024);
         this.radius = radius;
-        ThreadFactory daemons = r -> {
-            Thread t = new Thread(r, "jecosys-tiles");
-            t.setDaemon(true);
-            return t;
-        };
-        this.workers = Executors.newFixedThreadPool(workers, daemons);
+        this.workers = new BuildWorkers("jecosys-tiles", workers);
     }
 
     /** {@return the reach of a view, metres} */

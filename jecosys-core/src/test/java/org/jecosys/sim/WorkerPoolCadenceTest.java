@@ -8,11 +8,12 @@ import org.junit.jupiter.api.Test;
 
 /**
  * How the animation pool's threads wait between steps ({@link WorkerPool}'s anticipation): a step the
- * owner said follows finds them awake; only a steady cadence of bursts is anticipated (how well the
- * threads then wake before a burst is the bench's to measure, not a test's: it depends on the machine's
- * load); without a cadence they sleep until the owner wakes them; and the owner is never left a stray
- * permit that would cut its own next park short (a game's frame pacing). The timing checks are loose: a
- * busy machine may wake a thread late now and then.
+ * owner said follows finds them awake; a burst later than its window finds them polling, not parked,
+ * so the owner need not wake them (how well the threads wake before a burst is the bench's to measure,
+ * not a test's: it depends on the machine's load; the rhythm itself is {@link BurstsTest}'s); without a
+ * rhythm they sleep until the owner wakes them; and the owner is never left a stray permit that would
+ * cut its own next park short (a game's frame pacing). The timing checks are loose: a busy machine may
+ * wake a thread late now and then.
  */
 class WorkerPoolCadenceTest {
     /** A chunk of about 20 microseconds of arithmetic. */
@@ -39,26 +40,39 @@ class WorkerPoolCadenceTest {
     void aStepTheOwnerSaidFollowsFindsThePoolThreadAwake() {
         // a follow cap of 10 s, which no machine's load reaches: every step that followed another finds
         // the pool thread spinning for it, none needs the owner's unpark
-        try (WorkerPool pool = new WorkerPool("cadence-follow", 2, 16, (c, worker) -> sink = c, 10_000_000_000L)) {
+        try (WorkerPool pool = new WorkerPool("cadence-follow", 2, 16, (c, worker) -> sink = c, 10_000_000_000L,
+                WorkerPool.POLL_SPAN_NANOS)) {
             int steps = 200;
             for (int s = 0; s < steps; s++) {
                 pool.start(s + 1 < steps);
                 pool.await();
             }
             assertEquals(steps, pool.awakeSteps() + pool.unparkedSteps(), "the pool thread saw every step");
-            assertEquals(steps - 1, pool.awakeSteps(), "awake for every step but the first");
+            // the first may find the thread not parked yet (just started): then it needs no unpark either
+            assertTrue(pool.awakeSteps() >= steps - 1, "awake for every step but perhaps the first: " + pool.awakeSteps());
         }
     }
 
     @Test
-    void onlyASteadyCadenceIsAnticipated() {
-        long ms = 1_000_000;
-        assertEquals(33 * ms, WorkerPool.cadence(33 * ms, 33 * ms), "a steady 30 Hz frame");
-        assertEquals(33 * ms + ms / 2, WorkerPool.cadence(33 * ms + ms / 2, 33 * ms), "jitter within the lead");
-        assertEquals(0, WorkerPool.cadence(36 * ms, 33 * ms), "a late frame: no cadence to go by");
-        assertEquals(0, WorkerPool.cadence(16 * ms, 4 * ms), "alternating intervals");
-        assertEquals(0, WorkerPool.cadence(33 * ms, 0), "the first interval");
-        assertEquals(0, WorkerPool.cadence(300 * ms, 300 * ms), "pauses too long to spin for");
+    void aLateBurstFindsThePoolThreadLookingByItself() {
+        // a steady 20 ms rhythm, then a burst 3 ms late: past the window, inside the polling (made longer
+        // than any load here), so the owner leaves the thread to come by itself: no unpark that could move it
+        try (WorkerPool pool = new WorkerPool("cadence-late", 2, 16, (c, worker) -> sink = c, 0, 10_000_000_000L)) {
+            long deadline = System.nanoTime();
+            for (int b = 0; b < 200 && (b < 12 || !pool.anticipating()); b++) {
+                deadline += 20_000_000;
+                sleepUntil(deadline);
+                pool.start(false);
+                pool.await();
+            }
+            assertTrue(pool.anticipating(), "a steady 20 ms rhythm was found");
+            long before = pool.unparkedSteps();
+            deadline += 23_000_000;
+            sleepUntil(deadline);
+            pool.start(false);
+            pool.await();
+            assertEquals(before, pool.unparkedSteps(), "the late burst needed no unpark");
+        }
     }
 
     @Test
