@@ -1,6 +1,7 @@
 package org.jecosys.sim;
 
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicIntegerArray;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.locks.LockSupport;
@@ -33,6 +34,8 @@ import org.jecosys.math.Require;
  *   <li>each thread says by when it will look at the generation by itself ({@link #comesBy}); the owner
  *       unparks only a thread that would come later than {@link #GRACE_NANOS} (parked: no rhythm, or
  *       a burst far outside its window);</li>
+ *   <li>once every chunk of a step is claimed, the owner closes the step to the pool threads that have
+ *       not entered it yet ({@link #ticket}): a thread that comes late does not hold the step;</li>
  *   <li>the owner waits for the pool's last chunks spinning, then in short timed sleeps: the pool never
  *       unparks it.</li>
  * </ul>
@@ -93,6 +96,8 @@ final class WorkerPool implements AutoCloseable {
     private final AtomicLong seenSteps = new AtomicLong();
     /** How often the owner unparked a pool thread for a step; owner writes, any thread reads. */
     private volatile long unparks;
+    /** How often the owner closed a step to a pool thread that had not entered it; owner writes. */
+    private volatile long closedOut;
     private volatile int generation;
     /** Whether the owner said another step follows the current one; written before the generation. */
     private volatile boolean followed;
@@ -106,6 +111,12 @@ final class WorkerPool implements AutoCloseable {
      * than {@link #GRACE_NANOS}.
      */
     private final AtomicLongArray comesBy;
+    /**
+     * Per pool thread: the last generation settled for it, entered by the thread or closed to it by the
+     * owner once every chunk of that step was claimed (a thread that comes late then does not hold the
+     * step: it has nothing left to run). Whoever sets it first, by compare-and-set, decides.
+     */
+    private final AtomicIntegerArray ticket;
     /** The owner's bursts of steps; owner only. */
     private final Bursts bursts = new Bursts();
     private volatile boolean stopped;
@@ -139,6 +150,7 @@ final class WorkerPool implements AutoCloseable {
             threads[i] = t;
         }
         comesBy = new AtomicLongArray(threads.length);
+        ticket = new AtomicIntegerArray(threads.length);
         for (int i = 0; i < threads.length; i++) {
             comesBy.set(i, PARKED);
         }
@@ -174,6 +186,14 @@ final class WorkerPool implements AutoCloseable {
     /** {@return how often a pool thread had to be woken by the owner for a step, summed over threads} Any thread. */
     long unparkedSteps() {
         return unparks;
+    }
+
+    /**
+     * {@return how often a pool thread came to a step after every chunk was claimed, and the owner went
+     * on without it} Summed over threads; any thread.
+     */
+    long closedOutSteps() {
+        return closedOut;
     }
 
     /** {@return whether the pool's threads anticipate the next burst (the owner keeps a rhythm)} Any thread. */
@@ -230,10 +250,12 @@ final class WorkerPool implements AutoCloseable {
         }
         pending.set(threads.length);
         generation++;
-        // read after the generation's write: a thread that set itself PARKED afterwards sees the step
+        // read after the generation's write: a thread that set itself PARKED afterwards sees the step;
+        // the time read afresh, as a thread's own clock may have run on while the owner was descheduled
+        long t = System.nanoTime();
         for (int i = 0; i < threads.length; i++) {
             long c = comesBy.get(i);
-            if (c == PARKED || c - now > GRACE_NANOS) {
+            if (c == PARKED || c - t > GRACE_NANOS) {
                 unparks++;
                 LockSupport.unpark(threads[i]);
             }
@@ -254,8 +276,10 @@ final class WorkerPool implements AutoCloseable {
             own = t;
             next.set(chunks); // no thread claims another chunk of this step
         }
-        // always wait for the pool threads, also after a failure: a step they still run would
-        // otherwise overlap the next one (its counters reset under them) and park the owner for ever
+        // every chunk is claimed now: a thread that has not entered the step yet has nothing to do in it
+        closeToLate();
+        // always wait for the pool threads that entered, also after a failure: a step they still run
+        // would otherwise overlap the next one (its counters reset under them)
         drain();
         if (own != null) {
             failure = null; // the owner's own exception goes out as it is
@@ -268,6 +292,21 @@ final class WorkerPool implements AutoCloseable {
         if (f != null) {
             failure = null;
             throw new IllegalStateException("an animation worker failed: " + f, f);
+        }
+    }
+
+    /** Settles the step for every pool thread that has not entered it; they no longer count as pending. */
+    private void closeToLate() {
+        if (chunks <= 1 || threads.length == 0) {
+            return; // the pool threads were not called for this step
+        }
+        int g = generation;
+        for (int i = 0; i < threads.length; i++) {
+            int cur = ticket.get(i);
+            if (cur - g < 0 && ticket.compareAndSet(i, cur, g)) {
+                closedOut++;
+                pending.decrementAndGet();
+            }
         }
     }
 
@@ -339,12 +378,17 @@ final class WorkerPool implements AutoCloseable {
             if (generation == seen) {
                 return; // stopped, and no step is waiting for this thread
             }
-            seen = generation;
+            int g = generation;
+            seen = g;
             seenSteps.incrementAndGet();
-            // what the owner said of this step, read before it can start the next one
+            // what the owner said of this step (if it already started the next, of that one: then this
+            // thread was closed out of this step and enters the next at once)
             follow = followed;
             open = windowOpen;
             close = windowClose;
+            if (!enter(worker, g)) {
+                continue; // came after every chunk was claimed: the owner did not wait for it
+            }
             if (!stopped) {
                 try {
                     runChunks(worker);
@@ -355,6 +399,19 @@ final class WorkerPool implements AutoCloseable {
             }
             // always signalled, also when stopped: the owner's await() runs the chunks left itself
             pending.decrementAndGet(); // the owner looks by itself (drain): no unpark to move it here
+        }
+    }
+
+    /** Whether pool thread {@code worker} enters step {@code g}: false when the owner closed it out first. */
+    private boolean enter(int worker, int g) {
+        while (true) {
+            int cur = ticket.get(worker);
+            if (cur - g >= 0) {
+                return false;
+            }
+            if (ticket.compareAndSet(worker, cur, g)) {
+                return true;
+            }
         }
     }
 
