@@ -251,11 +251,11 @@ final class WorkerPool implements AutoCloseable {
         pending.set(threads.length);
         generation++;
         // read after the generation's write: a thread that set itself PARKED afterwards sees the step;
-        // the time read afresh, as a thread's own clock may have run on while the owner was descheduled
-        long t = System.nanoTime();
+        // the time read after the thread's word, as the owner may have been descheduled (or stopped for a
+        // collection) meanwhile while the thread wrote a later time of its own
         for (int i = 0; i < threads.length; i++) {
             long c = comesBy.get(i);
-            if (c == PARKED || c - t > GRACE_NANOS) {
+            if (c == PARKED || c - System.nanoTime() > GRACE_NANOS) {
                 unparks++;
                 LockSupport.unpark(threads[i]);
             }
