@@ -71,6 +71,11 @@ final class BuildWorkers {
             t.interrupt();
             LockSupport.unpark(t);
         }
+        cancelQueued();
+    }
+
+    /** Cancels the builds handed in and not started (a stop). */
+    private void cancelQueued() {
         for (FutureTask<?> f = queue.poll(); f != null; f = queue.poll()) {
             f.cancel(false);
         }
@@ -89,8 +94,6 @@ final class BuildWorkers {
             }
             parked.set(w, 0);
         }
-        for (FutureTask<?> f = queue.poll(); f != null; f = queue.poll()) {
-            f.cancel(false);
-        }
+        cancelQueued(); // a hand-in that raced the stop
     }
 }

@@ -46,6 +46,13 @@ class BurstsTest {
         assertTrue(b.step(false, at * MS));
     }
 
+    /** Four bursts 33 ms apart, from 1000 to 1099 ms: a period of 33 ms, the grid on 1132 ms. */
+    private static void steady(Bursts b) {
+        for (long t = 1000; t <= 1099; t += 33) {
+            burst(b, t);
+        }
+    }
+
     @Test
     void aSteadyFrameIsExpectedAPeriodAfterTheLastStart() {
         Bursts b = new Bursts();
@@ -61,9 +68,7 @@ class BurstsTest {
     @Test
     void aLateFrameKeepsThePeriodAndTheGrid() {
         Bursts b = new Bursts();
-        for (long t = 1000; t <= 1099; t += 33) {
-            burst(b, t);
-        }
+        steady(b);
         burst(b, 1134); // 2 ms late
         assertEquals(33 * MS, b.period(), "one late frame keeps the period");
         assertEquals(1165 * MS, b.earliestNext(), "a loop paced by deadlines comes back to its grid");
@@ -77,9 +82,7 @@ class BurstsTest {
     @Test
     void aGridTooFarOffIsLetGo() {
         Bursts b = new Bursts();
-        for (long t = 1000; t <= 1099; t += 33) {
-            burst(b, t);
-        }
+        steady(b);
         burst(b, 1142); // 10 ms late: beyond the spread in which both are expected
         assertEquals(1175 * MS, b.earliestNext(), "only a period after the late start");
         assertEquals(1175 * MS, b.latestNext());
@@ -88,9 +91,7 @@ class BurstsTest {
     @Test
     void aNewRhythmIsTakenWhenTwoIntervalsAgree() {
         Bursts b = new Bursts();
-        for (long t = 1000; t <= 1099; t += 33) {
-            burst(b, t);
-        }
+        steady(b);
         burst(b, 1115);
         assertEquals(33 * MS, b.period(), "one interval of 16 ms is a miss");
         burst(b, 1131);
@@ -108,9 +109,7 @@ class BurstsTest {
             assertEquals(0, b.earliestNext(), "alternating intervals, burst " + k);
         }
         Bursts d = new Bursts();
-        for (t = 1000; t <= 1099; t += 33) {
-            burst(d, t);
-        }
+        steady(d);
         long[] misses = {1150, 1210, 1290, 1390};
         for (int k = 0; k < misses.length; k++) {
             burst(d, misses[k]);
