@@ -88,7 +88,8 @@ final class OpenWorldSection implements Section {
         Map<String, Object> m = new LinkedHashMap<>();
         double[] standing = null;
         double[] floor = null;
-        try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4)) {
+        try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4);
+             CollectorPauses pauses = new CollectorPauses()) {
             StepClock clock = new StepClock("jecosys-world-");
             ViewCamera cam = new ViewCamera();
             cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
@@ -117,7 +118,13 @@ final class OpenWorldSection implements Section {
             int segment = 0;
             double since = 0;
             long frameNanos = (long) (1e9 / RATE);
-            long deadline = System.nanoTime();
+            // the collector's pauses along the walk, but for the full collections asked for at the checkpoints
+            long[] stepStart = new long[frames];
+            long[] stepEnd = new long[frames];
+            long[] gcFrom = new long[checkpoints.length];
+            long[] gcTo = new long[checkpoints.length];
+            long walkStart = System.nanoTime();
+            long deadline = walkStart;
             for (int f = 0; f < frames; f++) {
                 double x = (f + 1) * SPEED / RATE;
                 place(cam, ground, x);
@@ -129,14 +136,18 @@ final class OpenWorldSection implements Section {
                 long ns = System.nanoTime() - t0;
                 long cpu = clock.cpuNanos() - c0;
                 if (n > 0) {
+                    stepStart[used] = t0;
+                    stepEnd[used] = t0 + ns;
                     stepMs[used] = ns / 1e6 / n;
                     cpuMs[used] = cpu / 1e6 / n;
                     perComponent[used] = w.animatedComponents() > 0 ? (double) ns / n / w.animatedComponents() : 0;
                     used++;
                 }
                 if (next < checkpoints.length && x >= checkpoints[next] - 1e-9) {
+                    gcFrom[next] = System.nanoTime();
                     System.gc();
                     System.gc();
+                    gcTo[next] = System.nanoTime();
                     double heap = memory.getHeapMemoryUsage().getUsed() / (1024.0 * 1024.0);
                     double[] ms = java.util.Arrays.copyOfRange(stepMs, segment, used);
                     double median = Stats.median(ms);
@@ -183,6 +194,15 @@ final class OpenWorldSection implements Section {
                     slow[2], slow[3]));
             m.put("slowSteps", slow[0]);
             m.put("slowStepsWithUsualCpu", slow[1]);
+            double[] gc = pauses.within(walkStart, System.nanoTime(), gcFrom, gcTo, next);
+            int slowInPause = slowInPauses(java.util.Arrays.copyOf(stepMs, used), stepStart, stepEnd, pauses);
+            t.note(String.format(java.util.Locale.ROOT, "The collector (%s) paused the walk %.0f times, %.1f ms in all,"
+                    + " the longest %.1f ms (the full collections asked for at the rows left out); %d of the slow steps"
+                    + " overlapped a pause.", collectors(), gc[0], gc[1], gc[2], slowInPause));
+            m.put("collectorPauses", gc[0]);
+            m.put("collectorPauseMs", gc[1]);
+            m.put("collectorLongestPauseMs", gc[2]);
+            m.put("slowStepsInAPause", slowInPause);
             if (mode != Mode.SMOKE && Affinity.available()) {
                 double metres = mode == Mode.FULL ? 1000 : 600;
                 double[] pinned = pinnedWalk(w, cam, ground, end, metres, clock);
@@ -357,6 +377,27 @@ final class OpenWorldSection implements Section {
         }
         return new double[] {slow, usual, slow > 0 ? Stats.median(java.util.Arrays.copyOf(slowRatio, slow)) : Double.NaN,
                 Stats.median(ratio)};
+    }
+
+    /** {@return how many steps over 1.5 times the median overlapped one of {@code pauses}} */
+    static int slowInPauses(double[] wallMs, long[] start, long[] end, CollectorPauses pauses) {
+        double median = Stats.median(wallMs);
+        int n = 0;
+        for (int i = 0; i < wallMs.length; i++) {
+            n += wallMs[i] > 1.5 * median && pauses.overlaps(start[i], end[i]) ? 1 : 0;
+        }
+        return n;
+    }
+
+    /** {@return the names of the collectors that pause the application, joined by " and "} */
+    private static String collectors() {
+        StringBuilder b = new StringBuilder();
+        for (var gc : ManagementFactory.getGarbageCollectorMXBeans()) {
+            if (CollectorPauses.pauses(gc.getName())) {
+                b.append(b.length() > 0 ? " and " : "").append(gc.getName());
+            }
+        }
+        return b.toString();
     }
 
     /**
