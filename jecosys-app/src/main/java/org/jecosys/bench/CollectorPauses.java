@@ -53,6 +53,17 @@ final class CollectorPauses implements AutoCloseable {
         return !name.contains("Cycles") && !name.contains("Concurrent");
     }
 
+    /** {@return the names of this JVM's collectors that pause the application, joined by " and "} */
+    static String names() {
+        StringBuilder b = new StringBuilder();
+        for (GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
+            if (pauses(gc.getName())) {
+                b.append(b.length() > 0 ? " and " : "").append(gc.getName());
+            }
+        }
+        return b.toString();
+    }
+
     private void noted(Notification n, Object handback) {
         if (!GarbageCollectionNotificationInfo.GARBAGE_COLLECTION_NOTIFICATION.equals(n.getType())) {
             return;

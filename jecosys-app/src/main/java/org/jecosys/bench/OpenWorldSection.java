@@ -198,7 +198,7 @@ final class OpenWorldSection implements Section {
             int slowInPause = slowInPauses(java.util.Arrays.copyOf(stepMs, used), stepStart, stepEnd, pauses);
             t.note(String.format(java.util.Locale.ROOT, "The collector (%s) paused the walk %.0f times, %.1f ms in all,"
                     + " the longest %.1f ms (the full collections asked for at the rows left out); %d of the slow steps"
-                    + " overlapped a pause.", collectors(), gc[0], gc[1], gc[2], slowInPause));
+                    + " overlapped a pause.", CollectorPauses.names(), gc[0], gc[1], gc[2], slowInPause));
             m.put("collectorPauses", gc[0]);
             m.put("collectorPauseMs", gc[1]);
             m.put("collectorLongestPauseMs", gc[2]);
@@ -387,17 +387,6 @@ final class OpenWorldSection implements Section {
             n += wallMs[i] > 1.5 * median && pauses.overlaps(start[i], end[i]) ? 1 : 0;
         }
         return n;
-    }
-
-    /** {@return the names of the collectors that pause the application, joined by " and "} */
-    private static String collectors() {
-        StringBuilder b = new StringBuilder();
-        for (var gc : ManagementFactory.getGarbageCollectorMXBeans()) {
-            if (CollectorPauses.pauses(gc.getName())) {
-                b.append(b.length() > 0 ? " and " : "").append(gc.getName());
-            }
-        }
-        return b.toString();
     }
 
     /**

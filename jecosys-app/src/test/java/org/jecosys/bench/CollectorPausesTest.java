@@ -86,5 +86,7 @@ class CollectorPausesTest {
         assertTrue(CollectorPauses.pauses("ZGC Pauses"));
         assertFalse(CollectorPauses.pauses("ZGC Cycles"));
         assertFalse(CollectorPauses.pauses("G1 Concurrent GC"));
+        assertFalse(CollectorPauses.names().isEmpty(), "this JVM has a collector that pauses");
+        assertFalse(CollectorPauses.names().contains("Cycles"), CollectorPauses.names());
     }
 }
