@@ -64,22 +64,29 @@ class WorkerPoolCadenceTest {
     @Test
     void aLateBurstFindsThePoolThreadLookingByItself() {
         // a steady 20 ms rhythm, then a burst 3 ms late: past the window, inside the polling (made longer
-        // than any load here), so the owner leaves the thread to come by itself: no unpark that could move it
+        // than any load here), so the owner leaves the thread to come by itself: no unpark that could move it.
+        // Five rounds: on a loaded machine the thread may not have reached its polling in one of them (the CI
+        // machine's full suite once unparked it); without the polling every late burst needs an unpark
         try (WorkerPool pool = new WorkerPool("cadence-late", 2, 16, (c, worker) -> sink = c, 0, 10_000_000_000L)) {
             long deadline = System.nanoTime();
-            for (int b = 0; b < 200 && (b < 12 || !pool.anticipating()); b++) {
-                deadline += 20_000_000;
+            int unparked = 0;
+            int rounds = 5;
+            for (int round = 0; round < rounds; round++) {
+                for (int b = 0; b < 200 && (b < (round == 0 ? 12 : 6) || !pool.anticipating()); b++) {
+                    deadline += 20_000_000;
+                    sleepUntil(deadline);
+                    pool.start(false);
+                    pool.await();
+                }
+                assertTrue(pool.anticipating(), "a steady 20 ms rhythm was found, round " + round);
+                long before = pool.unparkedSteps();
+                deadline += 23_000_000;
                 sleepUntil(deadline);
                 pool.start(false);
                 pool.await();
+                unparked += pool.unparkedSteps() > before ? 1 : 0;
             }
-            assertTrue(pool.anticipating(), "a steady 20 ms rhythm was found");
-            long before = pool.unparkedSteps();
-            deadline += 23_000_000;
-            sleepUntil(deadline);
-            pool.start(false);
-            pool.await();
-            assertEquals(before, pool.unparkedSteps(), "the late burst needed no unpark");
+            assertTrue(unparked <= 2, "late bursts that needed an unpark: " + unparked + " of " + rounds);
         }
     }
 
