@@ -28,7 +28,8 @@ import org.jecosys.world.TilePlacer;
  * components alive, the tiles built per second and the steps that waited for a tile. Then the same
  * cost per animated component for the meadow itself along its own camera path (2 workers), the figure
  * the walk's is measured against. Beside each step's wall time its CPU time ({@link StepClock}), and
- * after the walk a fixed kernel paced the same way: the machine's own spread. Nothing is drawn.
+ * after the walk a fixed kernel paced the same way, on one thread and on two at once: the machine's own
+ * spread. Nothing is drawn.
  */
 final class OpenWorldSection implements Section {
     private static final double SPEED = 10;
@@ -88,6 +89,7 @@ final class OpenWorldSection implements Section {
         Map<String, Object> m = new LinkedHashMap<>();
         double[] standing = null;
         double[] floor = null;
+        double[] twoThreads = null;
         try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4);
              CollectorPauses pauses = new CollectorPauses()) {
             StepClock clock = new StepClock("jecosys-world-");
@@ -109,6 +111,7 @@ final class OpenWorldSection implements Section {
             double end = checkpoints[checkpoints.length - 1];
             int frames = (int) Math.ceil(end / SPEED * RATE);
             double[] stepMs = new double[frames];
+            double[] frameMs = new double[frames];
             double[] cpuMs = new double[frames];
             double[] perComponent = new double[frames];
             int used = 0;
@@ -139,6 +142,7 @@ final class OpenWorldSection implements Section {
                     stepStart[used] = t0;
                     stepEnd[used] = t0 + ns;
                     stepMs[used] = ns / 1e6 / n;
+                    frameMs[used] = ns / 1e6;
                     cpuMs[used] = cpu / 1e6 / n;
                     perComponent[used] = w.animatedComponents() > 0 ? (double) ns / n / w.animatedComponents() : 0;
                     used++;
@@ -222,16 +226,25 @@ final class OpenWorldSection implements Section {
                 // are animated at every step; what its steps spread by is the machine's, not the streaming's
                 double[] stand = new double[600];
                 double[] standCpu = new double[stand.length];
-                long next2 = System.nanoTime();
-                for (int f = 0; f < stand.length; f++) {
-                    next2 += frameNanos;
-                    StepClock.sleepUntil(next2);
-                    long c0 = clock.cpuNanos();
-                    long t0 = System.nanoTime();
-                    int n = Math.max(1, w.step(1 / RATE, cam));
-                    stand[f] = (System.nanoTime() - t0) / 1e6 / n;
-                    standCpu[f] = (clock.cpuNanos() - c0) / 1e6 / n;
+                double[] pair = new double[stand.length];
+                // half a period after each step, in the same seconds, a fixed kernel of the frame's whole
+                // step on two threads at once: what this machine gives any step that needs both cores
+                double frameStepMs = Stats.median(java.util.Arrays.copyOf(frameMs, used));
+                try (TwoThreadKernel kernel = new TwoThreadKernel(frameStepMs)) {
+                    long next2 = System.nanoTime();
+                    for (int f = 0; f < stand.length; f++) {
+                        next2 += frameNanos;
+                        kernel.arm(next2 + frameNanos / 2);
+                        StepClock.sleepUntil(next2);
+                        long c0 = clock.cpuNanos();
+                        long t0 = System.nanoTime();
+                        int n = Math.max(1, w.step(1 / RATE, cam));
+                        stand[f] = (System.nanoTime() - t0) / 1e6 / n;
+                        standCpu[f] = (clock.cpuNanos() - c0) / 1e6 / n;
+                        pair[f] = kernel.run() / 1e6;
+                    }
                 }
+                twoThreads = new double[] {Stats.median(pair), Stats.percentile(pair, 0.99), frameStepMs};
                 standing = new double[] {Stats.median(stand), Stats.percentile(stand, 0.99),
                         Stats.percentile(standCpu, 0.99) / Stats.median(standCpu)};
                 // then the machine's own spread for a step of that length, paced the same way
@@ -254,6 +267,14 @@ final class OpenWorldSection implements Section {
             m.put("standingStepCpuP99OverMedian", standing[2]);
             m.put("floorMedianMs", floor[0]);
             m.put("floorP99Ms", floor[1]);
+            t.note(String.format(java.util.Locale.ROOT, "Standing, in the same 20 s, half a period after each"
+                    + " step: a fixed kernel of the walk's whole step per frame (%.2f ms) on two threads at once,"
+                    + " ending when both are done, as the walk's step needs both cores (the second thread wakes 1"
+                    + " ms early and spins, as the animation pool's does before a step): %.2f ms median, %.2f ms"
+                    + " p99 (%.2f times); what this machine gives any step that needs both its cores.",
+                    twoThreads[2], twoThreads[0], twoThreads[1], twoThreads[1] / twoThreads[0]));
+            m.put("twoThreadKernelMedianMs", twoThreads[0]);
+            m.put("twoThreadKernelP99Ms", twoThreads[1]);
         }
         if (mode == Mode.SMOKE) {
             t.note("A smoke run walks a few metres within a radius of " + radius + " m and does not step the meadow "

@@ -13,6 +13,7 @@ import java.util.Arrays;
  * <li>{@link #floor}: a fixed arithmetic kernel of about a step's length, paced like the walk (one
  * period of the rate, the thread parked in between). Its 99th percentile over its median is the
  * machine's own for any step of that length: there is nothing in the kernel to spread.</li>
+ * <li>{@link TwoThreadKernel}: the same kernel on two threads at once, between the steps.</li>
  * </ul>
  * Bench only; {@link #cpuNanos()} allocates nothing, the constructor and {@link #floor} allocate.
  */
@@ -59,24 +60,7 @@ final class StepClock {
      * time, ms.
      */
     static double[] floor(double stepMs, double rate, int steps) {
-        // warm the kernel up (compiled), then size it: the fastest of three runs, doubling until a quarter step
-        long n = 1 << 14;
-        for (int w = 0; w < 2000; w++) {
-            sink = kernel(n);
-        }
-        while (true) {
-            double ms = Double.POSITIVE_INFINITY;
-            for (int k = 0; k < 3; k++) {
-                long t0 = System.nanoTime();
-                sink = kernel(n);
-                ms = Math.min(ms, (System.nanoTime() - t0) / 1e6);
-            }
-            if (ms >= stepMs / 4 || n > (1L << 40)) {
-                n = Math.max(1, (long) (n * stepMs / Math.max(1e-3, ms)));
-                break;
-            }
-            n *= 2;
-        }
+        long n = size(stepMs);
         double[] ms = new double[steps];
         long period = (long) (1e9 / rate);
         long deadline = System.nanoTime();
@@ -90,8 +74,31 @@ final class StepClock {
         return new double[] {Stats.median(ms), Stats.percentile(ms, 0.99)};
     }
 
+    /**
+     * The kernel's length for about {@code stepMs}: warmed up (compiled), then the fastest of three runs,
+     * doubling until a quarter step, scaled.
+     */
+    static long size(double stepMs) {
+        long n = 1 << 14;
+        for (int w = 0; w < 2000; w++) {
+            sink = kernel(n);
+        }
+        while (true) {
+            double ms = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < 3; k++) {
+                long t0 = System.nanoTime();
+                sink = kernel(n);
+                ms = Math.min(ms, (System.nanoTime() - t0) / 1e6);
+            }
+            if (ms >= stepMs / 4 || n > (1L << 40)) {
+                return Math.max(1, (long) (n * stepMs / Math.max(1e-3, ms)));
+            }
+            n *= 2;
+        }
+    }
+
     /** A loop-carried chain of multiplies and adds: no memory, no allocation, the same work every time. */
-    private static double kernel(long n) {
+    static double kernel(long n) {
         double a = 1.000000001;
         double s = 0;
         for (long i = 0; i < n; i++) {
