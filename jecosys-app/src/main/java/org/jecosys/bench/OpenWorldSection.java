@@ -91,7 +91,8 @@ final class OpenWorldSection implements Section {
         double[] floor = null;
         double[] twoThreads = null;
         try (OpenWorld w = OpenWorld.create(def, placer, radius, 2, 1, 4);
-             CollectorPauses pauses = new CollectorPauses()) {
+             CollectorPauses pauses = new CollectorPauses();
+             CoreShares shares = new CoreShares()) {
             StepClock clock = new StepClock("jecosys-world-");
             ViewCamera cam = new ViewCamera();
             cam.setOrientation(Math.PI / 2, Math.toRadians(-8));
@@ -126,19 +127,31 @@ final class OpenWorldSection implements Section {
             long[] stepEnd = new long[frames];
             long[] gcFrom = new long[checkpoints.length];
             long[] gcTo = new long[checkpoints.length];
+            // what else in the process ran while each step ran (Linux)
+            long[][] others = new long[CoreShares.KINDS][frames];
+            long[] before = new long[CoreShares.KINDS];
+            long[] after = new long[CoreShares.KINDS];
             long walkStart = System.nanoTime();
             long deadline = walkStart;
             for (int f = 0; f < frames; f++) {
                 double x = (f + 1) * SPEED / RATE;
                 place(cam, ground, x);
+                if (f % 300 == 0) {
+                    shares.rescan();
+                }
                 // real time: 30 frames a second, as a game's loop; tiles are built in the time between steps
                 deadline = StepClock.pace(deadline + frameNanos);
+                shares.read(before);
                 long c0 = clock.cpuNanos();
                 long t0 = System.nanoTime();
                 int n = w.step(1 / RATE, cam);
                 long ns = System.nanoTime() - t0;
                 long cpu = clock.cpuNanos() - c0;
+                shares.read(after);
                 if (n > 0) {
+                    for (int k = 0; k < CoreShares.KINDS; k++) {
+                        others[k][used] = after[k] - before[k];
+                    }
                     stepStart[used] = t0;
                     stepEnd[used] = t0 + ns;
                     stepMs[used] = ns / 1e6 / n;
@@ -190,7 +203,7 @@ final class OpenWorldSection implements Section {
                     + " loading screen and a warm-up walk of 100 m. At most " + w.maxLiveTiles() + " tiles are live"
                     + " per view (those within the radius plus one tile). A wait is a step that found a tile due and"
                     + " not built yet.");
-            double[] slow = slowSteps(java.util.Arrays.copyOf(stepMs, used), java.util.Arrays.copyOf(cpuMs, used));
+            double[] slow = SlowSteps.count(java.util.Arrays.copyOf(stepMs, used), java.util.Arrays.copyOf(cpuMs, used));
             t.note(String.format(java.util.Locale.ROOT, "Of the walk's %d steps, %.0f took longer than 1.5 times the"
                     + " median; in %.0f of them the CPU time (the threads' sum) was within 1.3 times its median: the"
                     + " usual work, run on fewer cores. CPU time over wall time: %.2f in those slow steps, %.2f in all"
@@ -199,7 +212,7 @@ final class OpenWorldSection implements Section {
             m.put("slowSteps", slow[0]);
             m.put("slowStepsWithUsualCpu", slow[1]);
             double[] gc = pauses.within(walkStart, System.nanoTime(), gcFrom, gcTo, next);
-            int slowInPause = slowInPauses(java.util.Arrays.copyOf(stepMs, used), stepStart, stepEnd, pauses);
+            int slowInPause = SlowSteps.inPauses(java.util.Arrays.copyOf(stepMs, used), stepStart, stepEnd, pauses);
             t.note(String.format(java.util.Locale.ROOT, "The collector (%s) paused the walk %.0f times, %.1f ms in all,"
                     + " the longest %.1f ms (the full collections asked for at the rows left out); %d of the slow steps"
                     + " overlapped a pause.", CollectorPauses.names(), gc[0], gc[1], gc[2], slowInPause));
@@ -207,6 +220,19 @@ final class OpenWorldSection implements Section {
             m.put("collectorPauseMs", gc[1]);
             m.put("collectorLongestPauseMs", gc[2]);
             m.put("slowStepsInAPause", slowInPause);
+            if (CoreShares.available()) {
+                boolean[] inPause = new boolean[used];
+                for (int i = 0; i < used; i++) {
+                    inPause[i] = pauses.overlaps(stepStart[i], stepEnd[i]);
+                }
+                long[] a = CoreShares.attribute(java.util.Arrays.copyOf(stepMs, used), others, inPause, 1_000_000);
+                t.note(CoreShares.note(a, used, 1));
+                m.put("slowStepsWithCompiler", a[CoreShares.COMPILER]);
+                m.put("slowStepsWithCollector", a[CoreShares.COLLECTOR]);
+                m.put("slowStepsWithTileWorkers", a[CoreShares.TILES]);
+                m.put("slowStepsWithOtherJvmThreads", a[CoreShares.OTHER]);
+                m.put("slowStepsWithNone", a[CoreShares.KINDS]);
+            }
             if (mode != Mode.SMOKE && Affinity.available()) {
                 double metres = mode == Mode.FULL ? 1000 : 600;
                 double[] pinned = pinnedWalk(w, cam, ground, end, metres, clock);
@@ -377,40 +403,6 @@ final class OpenWorldSection implements Section {
     }
 
     /**
-     * Of steps' wall and CPU times (ms, per fixed step): how many took over 1.5 times the median wall
-     * time, how many of those had a CPU time within 1.3 times the median CPU time, and the median CPU over
-     * wall ratio in those slow steps and in all. A step whose work was the usual one but whose wall time
-     * was long waited for a core: the machine's, not the library's.
-     */
-    static double[] slowSteps(double[] wallMs, double[] cpuMs) {
-        double wallMedian = Stats.median(wallMs);
-        double cpuMedian = Stats.median(cpuMs);
-        int slow = 0;
-        int usual = 0;
-        double[] slowRatio = new double[wallMs.length];
-        double[] ratio = new double[wallMs.length];
-        for (int i = 0; i < wallMs.length; i++) {
-            ratio[i] = cpuMs[i] / wallMs[i];
-            if (wallMs[i] > 1.5 * wallMedian) {
-                slowRatio[slow++] = ratio[i];
-                usual += cpuMs[i] <= 1.3 * cpuMedian ? 1 : 0;
-            }
-        }
-        return new double[] {slow, usual, slow > 0 ? Stats.median(java.util.Arrays.copyOf(slowRatio, slow)) : Double.NaN,
-                Stats.median(ratio)};
-    }
-
-    /** {@return how many steps over 1.5 times the median overlapped one of {@code pauses}} */
-    static int slowInPauses(double[] wallMs, long[] start, long[] end, CollectorPauses pauses) {
-        double median = Stats.median(wallMs);
-        int n = 0;
-        for (int i = 0; i < wallMs.length; i++) {
-            n += wallMs[i] > 1.5 * median && pauses.overlaps(start[i], end[i]) ? 1 : 0;
-        }
-        return n;
-    }
-
-    /**
      * The walk continued from {@code from} for {@code metres} in real time with the stepping thread pinned
      * to core 0 and the animation pool's and tile worker's threads to core 1 ({@link Affinity}), unpinned
      * after: {step median ms, p99 ms, slow steps, slow steps with the usual CPU time}.
@@ -440,7 +432,7 @@ final class OpenWorldSection implements Section {
                 }
             }
             double[] steps = java.util.Arrays.copyOf(ms, used);
-            double[] slow = slowSteps(steps, java.util.Arrays.copyOf(cpu, used));
+            double[] slow = SlowSteps.count(steps, java.util.Arrays.copyOf(cpu, used));
             return new double[] {Stats.median(steps), Stats.percentile(steps, 0.99), slow[0], slow[1]};
         } finally {
             Affinity.pinCaller(-1);
