@@ -27,9 +27,10 @@ import org.jecosys.world.TilePlacer;
  * frame the time of its fixed steps; at checkpoints the heap after a full GC, the tiles, plants and
  * components alive, the tiles built per second and the steps that waited for a tile. Then the same
  * cost per animated component for the meadow itself along its own camera path (2 workers), the figure
- * the walk's is measured against. Beside each step's wall time its CPU time ({@link StepClock}), and
- * after the walk a fixed kernel paced the same way, on one thread and on two at once: the machine's own
- * spread. Nothing is drawn.
+ * the walk's is measured against. Beside each step's wall time its CPU time ({@link StepClock}) and, on
+ * Linux, what else in the process ran meanwhile ({@link CoreShares}); between the standing steps a fixed
+ * kernel on two threads at once ({@link TwoThreadKernel}) and after them one on one thread: the
+ * machine's own spread. Nothing is drawn.
  */
 final class OpenWorldSection implements Section {
     private static final double SPEED = 10;
