@@ -10,8 +10,9 @@ import java.nio.file.Files;
  * What else ran in this process while a step ran, on Linux: the time on a core of the JVM's and the
  * library's other threads, by kind (the JIT compilers, the collector and safepoints, the tile workers,
  * other JVM threads), read from each thread's {@code /proc/self/task/<tid>/schedstat} before and after
- * the step. The step's own threads (the stepping thread, named {@code java} or {@code main} by the
- * kernel, and the animation pool's, {@code jecosys-world-}) are left out. On a machine with two cores a
+ * the step; and of the step's own threads (the stepping thread, named {@code java} or {@code main} by the
+ * kernel, and the animation pool's, {@code jecosys-world-}) the time they waited in the kernel's run
+ * queue. On a machine with two cores a
  * step that needs both loses a core to whatever of these runs meanwhile; what none of them explains has
  * its reason outside the process (the host, other processes, the kernel placing both step threads on
  * one core). Bench only; one thread. {@link #read} allocates
@@ -23,6 +24,13 @@ final class CoreShares implements AutoCloseable {
     static final int TILES = 2;
     static final int OTHER = 3;
     static final int KINDS = 4;
+    /**
+     * The slot of {@link #read}'s array after the kinds: the step's own threads' time waiting in the
+     * kernel's run queue (runnable, not on a core) so far, ns.
+     */
+    static final int WAITED = KINDS;
+    /** The length of {@link #read}'s array. */
+    static final int SLOTS = KINDS + 1;
     /** Each kind's name in a note. */
     static final String[] NAMES = {"the JIT compilers", "the collector and safepoints", "the tile workers",
             "other JVM threads"};
@@ -38,12 +46,12 @@ final class CoreShares implements AutoCloseable {
     }
 
     /**
-     * The kind of a thread named {@code comm} by the kernel (its first 15 characters), or -1 for the
-     * step's own threads.
+     * The kind of a thread named {@code comm} by the kernel (its first 15 characters), or {@link #WAITED}
+     * for the step's own threads.
      */
     static int kind(String comm) {
         if (comm.equals("java") || comm.equals("main") || comm.startsWith("jecosys-world-")) {
-            return -1;
+            return WAITED;
         }
         if (comm.startsWith("C1 CompilerThre") || comm.startsWith("C2 CompilerThre")) {
             return COMPILER;
@@ -72,12 +80,9 @@ final class CoreShares implements AutoCloseable {
             try {
                 String comm = new String(Files.readAllBytes(new File(task, "comm").toPath()),
                         StandardCharsets.UTF_8).trim();
-                int kind = kind(comm);
-                if (kind >= 0) {
-                    f[n] = new RandomAccessFile(new File(task, "schedstat"), "r");
-                    k[n] = kind;
-                    n++;
-                }
+                f[n] = new RandomAccessFile(new File(task, "schedstat"), "r");
+                k[n] = kind(comm);
+                n++;
             } catch (IOException gone) {
                 // the thread ended meanwhile
             }
@@ -86,18 +91,19 @@ final class CoreShares implements AutoCloseable {
         kinds = java.util.Arrays.copyOf(k, n);
         last = new long[n];
         for (int i = 0; i < n; i++) {
-            last[i] = runNanos(i);
+            last[i] = nanos(i);
         }
     }
 
     /**
-     * Adds up the time on a core so far, ns, of the threads of each kind into {@code out} (length
-     * {@link #KINDS}); a thread that ended keeps its last reading. No allocation.
+     * Adds up into {@code out} (length {@link #SLOTS}) the time on a core so far, ns, of the threads of
+     * each kind, and the step's threads' time waiting in the run queue ({@link #WAITED}); a thread that
+     * ended keeps its last reading. No allocation.
      */
     void read(long[] out) {
         java.util.Arrays.fill(out, 0);
         for (int i = 0; i < files.length; i++) {
-            long ns = runNanos(i);
+            long ns = nanos(i);
             if (ns >= 0) {
                 last[i] = ns;
             }
@@ -105,18 +111,28 @@ final class CoreShares implements AutoCloseable {
         }
     }
 
-    /** The first field of thread {@code i}'s schedstat (ns on a core), or -1 when it cannot be read. */
-    private long runNanos(int i) {
+    /**
+     * Thread {@code i}'s schedstat field for its slot: the first (ns on a core) for the kinds, the second
+     * (ns waiting in the run queue) for the step's threads; -1 when it cannot be read.
+     */
+    private long nanos(int i) {
         try {
             RandomAccessFile f = files[i];
             f.seek(0);
             int len = f.read(buf);
-            long v = 0;
             int p = 0;
+            if (kinds[i] == WAITED) {
+                while (p < len && buf[p] != ' ') {
+                    p++;
+                }
+                p++;
+            }
+            long v = 0;
+            int start = p;
             for (; p < len && buf[p] >= '0' && buf[p] <= '9'; p++) {
                 v = v * 10 + (buf[p] - '0');
             }
-            return p > 0 ? v : -1;
+            return p > start ? v : -1;
         } catch (IOException gone) {
             return -1;
         }
@@ -137,52 +153,69 @@ final class CoreShares implements AutoCloseable {
     }
 
     /**
-     * Of the steps over 1.5 times the median wall time: how many had each kind run at least
-     * {@code minNs} meanwhile, and how many had none of them and no collector's pause; then the same
-     * counts over all steps. {@code ns[kind][step]}; {@code inPause[step]}. Allocates the result:
-     * {slow[KINDS], slowNone, all[KINDS], allNone, slowCount}.
+     * What ran beside the slow steps (over 1.5 times the median wall time), each counted when it reached
+     * the threshold during the step.
+     *
+     * @param slow            how many steps were slow
+     * @param slowWith        per kind, the slow steps beside which it ran
+     * @param allWith         per kind, all the steps beside which it ran
+     * @param slowNone        slow steps beside which no kind ran and no collector's pause fell
+     * @param allNone         all such steps
+     * @param slowNoneWaited  of {@code slowNone}, those whose own threads waited in the run queue
      */
-    static long[] attribute(double[] wallMs, long[][] ns, boolean[] inPause, long minNs) {
+    record Attribution(long slow, long[] slowWith, long[] allWith, long slowNone, long allNone, long slowNoneWaited) {
+    }
+
+    /**
+     * Attributes the slow steps: {@code ns[slot][step]} the time of each of {@link #read}'s slots during
+     * each step, {@code inPause[step]} whether a collector's pause overlapped it, {@code minNs} the
+     * threshold. Allocates the result.
+     */
+    static Attribution attribute(double[] wallMs, long[][] ns, boolean[] inPause, long minNs) {
         double median = Stats.median(wallMs);
-        long[] r = new long[2 * KINDS + 3];
+        long slow = 0;
+        long[] slowWith = new long[KINDS];
+        long[] allWith = new long[KINDS];
+        long slowNone = 0;
+        long allNone = 0;
+        long slowNoneWaited = 0;
         for (int i = 0; i < wallMs.length; i++) {
-            boolean slow = wallMs[i] > 1.5 * median;
+            boolean isSlow = wallMs[i] > 1.5 * median;
             boolean any = inPause[i];
             for (int k = 0; k < KINDS; k++) {
                 if (ns[k][i] >= minNs) {
                     any = true;
-                    r[KINDS + 1 + k]++;
-                    if (slow) {
-                        r[k]++;
-                    }
+                    allWith[k]++;
+                    slowWith[k] += isSlow ? 1 : 0;
                 }
             }
+            slow += isSlow ? 1 : 0;
             if (!any) {
-                r[2 * KINDS + 1]++;
-                if (slow) {
-                    r[KINDS]++;
+                allNone++;
+                if (isSlow) {
+                    slowNone++;
+                    slowNoneWaited += ns[WAITED][i] >= minNs ? 1 : 0;
                 }
-            }
-            if (slow) {
-                r[2 * KINDS + 2]++;
             }
         }
-        return r;
+        return new Attribution(slow, slowWith, allWith, slowNone, allNone, slowNoneWaited);
     }
 
-    /** A note's sentence for {@link #attribute}'s result over {@code steps} steps, {@code minMs} the threshold. */
-    static String note(long[] a, int steps, double minMs) {
+    /** A note's sentences for {@code a} over {@code steps} steps, {@code minMs} the threshold. */
+    static String note(Attribution a, int steps, double minMs) {
         StringBuilder b = new StringBuilder(String.format(java.util.Locale.ROOT, "While the %d slow steps ran,"
                 + " other threads of the process were on a core for %.0f ms or more (schedstat; in brackets the"
-                + " share of all %d steps with the same):", a[2 * KINDS + 2], minMs, steps));
+                + " share of all %d steps with the same):", a.slow(), minMs, steps));
         for (int k = 0; k < KINDS; k++) {
-            b.append(String.format(java.util.Locale.ROOT, " %s in %d (%.1f%%)%s", NAMES[k], a[k],
-                    100.0 * a[KINDS + 1 + k] / steps, k + 1 < KINDS ? "," : ";"));
+            b.append(String.format(java.util.Locale.ROOT, " %s in %d (%.1f%%)%s", NAMES[k], a.slowWith()[k],
+                    100.0 * a.allWith()[k] / steps, k + 1 < KINDS ? "," : ";"));
         }
-        b.append(String.format(java.util.Locale.ROOT, " none of these nor a collector's pause in %d (%.1f%%): there"
-                + " the step's threads waited for a core for a reason outside the process (the host, other"
-                + " processes, the kernel placing both on one core).", a[KINDS],
-                100.0 * a[2 * KINDS + 1] / steps));
+        b.append(String.format(java.util.Locale.ROOT, " none of these nor a collector's pause in %d (%.1f%%). In %d"
+                + " of those the step's own threads waited %.0f ms or more in the kernel's run queue (runnable"
+                + " with no core: another process, or the two on one core); in the other %d they did not wait"
+                + " there, and their time went to the host (a virtual CPU slowed or parked, which the guest"
+                + " does not see) or to waking.", a.slowNone(), 100.0 * a.allNone() / steps, a.slowNoneWaited(),
+                minMs, a.slowNone() - a.slowNoneWaited()));
         return b.toString();
     }
 }

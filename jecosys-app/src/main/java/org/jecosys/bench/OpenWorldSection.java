@@ -129,9 +129,9 @@ final class OpenWorldSection implements Section {
             long[] gcFrom = new long[checkpoints.length];
             long[] gcTo = new long[checkpoints.length];
             // what else in the process ran while each step ran (Linux)
-            long[][] others = new long[CoreShares.KINDS][frames];
-            long[] before = new long[CoreShares.KINDS];
-            long[] after = new long[CoreShares.KINDS];
+            long[][] others = new long[CoreShares.SLOTS][frames];
+            long[] before = new long[CoreShares.SLOTS];
+            long[] after = new long[CoreShares.SLOTS];
             long walkStart = System.nanoTime();
             long deadline = walkStart;
             for (int f = 0; f < frames; f++) {
@@ -150,7 +150,7 @@ final class OpenWorldSection implements Section {
                 long cpu = clock.cpuNanos() - c0;
                 shares.read(after);
                 if (n > 0) {
-                    for (int k = 0; k < CoreShares.KINDS; k++) {
+                    for (int k = 0; k < CoreShares.SLOTS; k++) {
                         others[k][used] = after[k] - before[k];
                     }
                     stepStart[used] = t0;
@@ -226,13 +226,15 @@ final class OpenWorldSection implements Section {
                 for (int i = 0; i < used; i++) {
                     inPause[i] = pauses.overlaps(stepStart[i], stepEnd[i]);
                 }
-                long[] a = CoreShares.attribute(java.util.Arrays.copyOf(stepMs, used), others, inPause, 1_000_000);
+                CoreShares.Attribution a = CoreShares.attribute(java.util.Arrays.copyOf(stepMs, used), others,
+                        inPause, 1_000_000);
                 t.note(CoreShares.note(a, used, 1));
-                m.put("slowStepsWithCompiler", a[CoreShares.COMPILER]);
-                m.put("slowStepsWithCollector", a[CoreShares.COLLECTOR]);
-                m.put("slowStepsWithTileWorkers", a[CoreShares.TILES]);
-                m.put("slowStepsWithOtherJvmThreads", a[CoreShares.OTHER]);
-                m.put("slowStepsWithNone", a[CoreShares.KINDS]);
+                m.put("slowStepsWithCompiler", a.slowWith()[CoreShares.COMPILER]);
+                m.put("slowStepsWithCollector", a.slowWith()[CoreShares.COLLECTOR]);
+                m.put("slowStepsWithTileWorkers", a.slowWith()[CoreShares.TILES]);
+                m.put("slowStepsWithOtherJvmThreads", a.slowWith()[CoreShares.OTHER]);
+                m.put("slowStepsWithNone", a.slowNone());
+                m.put("slowStepsWithNoneThatWaitedInTheRunQueue", a.slowNoneWaited());
             }
             if (mode != Mode.SMOKE && Affinity.available()) {
                 double metres = mode == Mode.FULL ? 1000 : 600;
