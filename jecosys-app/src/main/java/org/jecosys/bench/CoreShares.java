@@ -2,9 +2,11 @@ package org.jecosys.bench;
 
 import java.io.File;
 import java.io.IOException;
-import java.io.RandomAccessFile;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.StandardOpenOption;
 
 /**
  * What else ran in this process while a step ran, on Linux: the time on a core of the JVM's and the
@@ -35,10 +37,10 @@ final class CoreShares implements AutoCloseable {
     static final String[] NAMES = {"the JIT compilers", "the collector and safepoints", "the tile workers",
             "other JVM threads"};
     private static final File TASKS = new File("/proc/self/task");
-    private RandomAccessFile[] files = new RandomAccessFile[0];
+    private FileChannel[] files = new FileChannel[0];
     private int[] kinds = new int[0];
     private long[] last = new long[0];
-    private final byte[] buf = new byte[128];
+    private final ByteBuffer buf = ByteBuffer.allocateDirect(128);
 
     /** {@return whether this system has per-thread schedstat (Linux)} */
     static boolean available() {
@@ -73,14 +75,14 @@ final class CoreShares implements AutoCloseable {
         if (tasks == null) {
             return;
         }
-        RandomAccessFile[] f = new RandomAccessFile[tasks.length];
+        FileChannel[] f = new FileChannel[tasks.length];
         int[] k = new int[tasks.length];
         int n = 0;
         for (File task : tasks) {
             try {
                 String comm = new String(Files.readAllBytes(new File(task, "comm").toPath()),
                         StandardCharsets.UTF_8).trim();
-                f[n] = new RandomAccessFile(new File(task, "schedstat"), "r");
+                f[n] = FileChannel.open(new File(task, "schedstat").toPath(), StandardOpenOption.READ);
                 k[n] = kind(comm);
                 n++;
             } catch (IOException gone) {
@@ -117,37 +119,45 @@ final class CoreShares implements AutoCloseable {
      */
     private long nanos(int i) {
         try {
-            RandomAccessFile f = files[i];
-            f.seek(0);
-            int len = f.read(buf);
-            int p = 0;
-            if (kinds[i] == WAITED) {
-                while (p < len && buf[p] != ' ') {
-                    p++;
-                }
-                p++;
-            }
-            long v = 0;
-            int start = p;
-            for (; p < len && buf[p] >= '0' && buf[p] <= '9'; p++) {
-                v = v * 10 + (buf[p] - '0');
-            }
-            return p > start ? v : -1;
+            buf.clear();
+            int len = files[i].read(buf, 0);
+            return field(buf, Math.max(0, len), kinds[i] == WAITED ? 1 : 0);
         } catch (IOException gone) {
             return -1;
         }
     }
 
+    /**
+     * The {@code index}th (from 0) of the space-separated decimal numbers in the first {@code len} bytes
+     * of {@code text} (schedstat's line: ns on a core, ns waiting in the run queue, time slices), or -1
+     * when it is missing. No allocation.
+     */
+    static long field(ByteBuffer text, int len, int index) {
+        int p = 0;
+        for (int skip = 0; skip < index; skip++) {
+            while (p < len && text.get(p) != ' ') {
+                p++;
+            }
+            p++;
+        }
+        long v = 0;
+        int start = p;
+        for (; p < len && text.get(p) >= '0' && text.get(p) <= '9'; p++) {
+            v = v * 10 + (text.get(p) - '0');
+        }
+        return p > start ? v : -1;
+    }
+
     @Override
     public void close() {
-        for (RandomAccessFile f : files) {
+        for (FileChannel f : files) {
             try {
                 f.close();
             } catch (IOException ignored) {
                 // a /proc file: nothing to flush
             }
         }
-        files = new RandomAccessFile[0];
+        files = new FileChannel[0];
         kinds = new int[0];
         last = new long[0];
     }

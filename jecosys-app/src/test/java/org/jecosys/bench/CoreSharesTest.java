@@ -48,27 +48,49 @@ class CoreSharesTest {
     }
 
     @Test
-    void aBusyTileWorkersTimeAndTheStepThreadsWaitAreRead() throws Exception {
+    void schedstatsFieldsAreRead() {
+        java.nio.ByteBuffer line = java.nio.ByteBuffer.wrap("5123 877 12\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        assertEquals(5123, CoreShares.field(line, line.capacity(), 0), "ns on a core");
+        assertEquals(877, CoreShares.field(line, line.capacity(), 1), "ns in the run queue");
+        assertEquals(12, CoreShares.field(line, line.capacity(), 2));
+        assertEquals(-1, CoreShares.field(line, line.capacity(), 3), "no fourth field");
+        assertEquals(51, CoreShares.field(line, 2, 0), "only the bytes read count");
+        assertEquals(-1, CoreShares.field(line, 0, 0), "nothing read");
+    }
+
+    @Test
+    void aBusyTileWorkersTimeAndAStepThreadsWaitAreRead() throws Exception {
         assumeTrue(CoreShares.available(), "per-thread schedstat (Linux)");
         int cores = Runtime.getRuntime().availableProcessors();
         AtomicBoolean stop = new AtomicBoolean();
         java.util.List<Thread> busy = new java.util.ArrayList<>();
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
         try (CoreShares shares = new CoreShares()) {
-            // a tile worker and one step thread spinning, a core each: the step thread hardly waits
-            spin(busy, stop, "jecosys-tiles-t");
-            spin(busy, stop, "jecosys-world-t0");
-            long[] alone = measure(shares, 300);
-            assertTrue(alone[CoreShares.TILES] > 100_000_000L,
-                    "the spinning tile worker ran " + alone[CoreShares.TILES] + " ns of 300 ms");
-            assertTrue(alone[CoreShares.WAITED] < 100_000_000L,
-                    "a step thread with a core waited " + alone[CoreShares.WAITED] + " ns of 300 ms, not its run time");
-            // then more step threads than cores: they wait for one
-            for (int i = 1; i <= cores; i++) {
-                spin(busy, stop, "jecosys-world-t" + i);
+            // three tile workers a core and one step thread, all spinning: the step thread waits for a core
+            // most of the time, and its time on a core plus its wait is the time it was runnable
+            for (int i = 0; i < 3 * cores; i++) {
+                spin(busy, stop, "jecosys-tiles-t" + i);
             }
-            long[] crowded = measure(shares, 300);
-            assertTrue(crowded[CoreShares.WAITED] > alone[CoreShares.WAITED] + 100_000_000L,
-                    "step threads without a core waited " + crowded[CoreShares.WAITED] + " ns of 300 ms each");
+            Thread step = spin(busy, stop, "jecosys-world-t");
+            Thread.sleep(20);
+            shares.rescan();
+            long[] before = new long[CoreShares.SLOTS];
+            long[] after = new long[CoreShares.SLOTS];
+            long cpu0 = mx.getThreadCpuTime(step.getId());
+            long t0 = System.nanoTime();
+            shares.read(before);
+            Thread.sleep(300);
+            shares.read(after);
+            long elapsed = System.nanoTime() - t0;
+            long cpu = mx.getThreadCpuTime(step.getId()) - cpu0;
+            for (int k = 0; k < CoreShares.SLOTS; k++) {
+                assertTrue(after[k] >= before[k], "run and wait times only grow");
+            }
+            long tiles = after[CoreShares.TILES] - before[CoreShares.TILES];
+            long waited = after[CoreShares.WAITED] - before[CoreShares.WAITED];
+            assertTrue(tiles > 20_000_000L, "the spinning tile workers ran " + tiles + " ns in 300 ms");
+            assertEquals(elapsed, waited + cpu, 0.25 * elapsed, "the step thread waited " + waited + " ns and ran "
+                    + cpu + " ns in " + elapsed + " ns, always runnable");
         } finally {
             stop.set(true);
             for (Thread t : busy) {
@@ -77,7 +99,7 @@ class CoreSharesTest {
         }
     }
 
-    private static void spin(java.util.List<Thread> busy, AtomicBoolean stop, String name) {
+    private static Thread spin(java.util.List<Thread> busy, AtomicBoolean stop, String name) {
         Thread t = new Thread(() -> {
             double s = 0;
             while (!stop.get()) {
@@ -86,21 +108,7 @@ class CoreSharesTest {
         }, name);
         t.start();
         busy.add(t);
+        return t;
     }
 
-    /** Each slot's growth over {@code ms} of sleep, after listing the threads again. */
-    private static long[] measure(CoreShares shares, long ms) throws InterruptedException {
-        Thread.sleep(20);
-        shares.rescan();
-        long[] before = new long[CoreShares.SLOTS];
-        long[] after = new long[CoreShares.SLOTS];
-        shares.read(before);
-        Thread.sleep(ms);
-        shares.read(after);
-        for (int k = 0; k < CoreShares.SLOTS; k++) {
-            assertTrue(after[k] >= before[k], "run and wait times only grow");
-            after[k] -= before[k];
-        }
-        return after;
-    }
 }
