@@ -190,7 +190,7 @@ final class CoreShares implements AutoCloseable {
         long allNone = 0;
         long slowNoneWaited = 0;
         for (int i = 0; i < wallMs.length; i++) {
-            boolean isSlow = wallMs[i] > 1.5 * median;
+            boolean isSlow = wallMs[i] > SlowSteps.FACTOR * median;
             boolean any = inPause[i];
             for (int k = 0; k < KINDS; k++) {
                 if (ns[k][i] >= minNs) {

@@ -204,7 +204,8 @@ final class OpenWorldSection implements Section {
                     + " loading screen and a warm-up walk of 100 m. At most " + w.maxLiveTiles() + " tiles are live"
                     + " per view (those within the radius plus one tile). A wait is a step that found a tile due and"
                     + " not built yet.");
-            double[] slow = SlowSteps.count(java.util.Arrays.copyOf(stepMs, used), java.util.Arrays.copyOf(cpuMs, used));
+            double[] walkSteps = java.util.Arrays.copyOf(stepMs, used);
+            double[] slow = SlowSteps.count(walkSteps, java.util.Arrays.copyOf(cpuMs, used));
             t.note(String.format(java.util.Locale.ROOT, "Of the walk's %d steps, %.0f took longer than 1.5 times the"
                     + " median; in %.0f of them the CPU time (the threads' sum) was within 1.3 times its median: the"
                     + " usual work, run on fewer cores. CPU time over wall time: %.2f in those slow steps, %.2f in all"
@@ -213,7 +214,8 @@ final class OpenWorldSection implements Section {
             m.put("slowSteps", slow[0]);
             m.put("slowStepsWithUsualCpu", slow[1]);
             double[] gc = pauses.within(walkStart, System.nanoTime(), gcFrom, gcTo, next);
-            int slowInPause = SlowSteps.inPauses(java.util.Arrays.copyOf(stepMs, used), stepStart, stepEnd, pauses);
+            boolean[] inPause = SlowSteps.inPause(stepStart, stepEnd, used, pauses);
+            int slowInPause = SlowSteps.inPauses(walkSteps, inPause);
             t.note(String.format(java.util.Locale.ROOT, "The collector (%s) paused the walk %.0f times, %.1f ms in all,"
                     + " the longest %.1f ms (the full collections asked for at the rows left out); %d of the slow steps"
                     + " overlapped a pause.", CollectorPauses.names(), gc[0], gc[1], gc[2], slowInPause));
@@ -222,12 +224,7 @@ final class OpenWorldSection implements Section {
             m.put("collectorLongestPauseMs", gc[2]);
             m.put("slowStepsInAPause", slowInPause);
             if (CoreShares.available()) {
-                boolean[] inPause = new boolean[used];
-                for (int i = 0; i < used; i++) {
-                    inPause[i] = pauses.overlaps(stepStart[i], stepEnd[i]);
-                }
-                CoreShares.Attribution a = CoreShares.attribute(java.util.Arrays.copyOf(stepMs, used), others,
-                        inPause, 1_000_000);
+                CoreShares.Attribution a = CoreShares.attribute(walkSteps, others, inPause, 1_000_000);
                 t.note(CoreShares.note(a, used, 1));
                 m.put("slowStepsWithCompiler", a.slowWith()[CoreShares.COMPILER]);
                 m.put("slowStepsWithCollector", a.slowWith()[CoreShares.COLLECTOR]);

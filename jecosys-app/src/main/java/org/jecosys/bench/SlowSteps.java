@@ -6,6 +6,9 @@ package org.jecosys.bench;
  * their results.
  */
 final class SlowSteps {
+    /** A step is slow when its wall time is over this many times the median's. */
+    static final double FACTOR = 1.5;
+
     private SlowSteps() {
     }
 
@@ -24,7 +27,7 @@ final class SlowSteps {
         double[] ratio = new double[wallMs.length];
         for (int i = 0; i < wallMs.length; i++) {
             ratio[i] = cpuMs[i] / wallMs[i];
-            if (wallMs[i] > 1.5 * wallMedian) {
+            if (wallMs[i] > FACTOR * wallMedian) {
                 slowRatio[slow++] = ratio[i];
                 usual += cpuMs[i] <= 1.3 * cpuMedian ? 1 : 0;
             }
@@ -33,12 +36,21 @@ final class SlowSteps {
                 Stats.median(ratio)};
     }
 
-    /** {@return how many steps over 1.5 times the median overlapped one of {@code pauses}} */
-    static int inPauses(double[] wallMs, long[] start, long[] end, CollectorPauses pauses) {
+    /** {@return for each of the first {@code n} steps ({@code start} to {@code end}, ns) whether one of {@code pauses} overlapped it} */
+    static boolean[] inPause(long[] start, long[] end, int n, CollectorPauses pauses) {
+        boolean[] in = new boolean[n];
+        for (int i = 0; i < n; i++) {
+            in[i] = pauses.overlaps(start[i], end[i]);
+        }
+        return in;
+    }
+
+    /** {@return how many steps over {@link #FACTOR} times the median wall time fell in a pause ({@code inPause})} */
+    static int inPauses(double[] wallMs, boolean[] inPause) {
         double median = Stats.median(wallMs);
         int n = 0;
         for (int i = 0; i < wallMs.length; i++) {
-            n += wallMs[i] > 1.5 * median && pauses.overlaps(start[i], end[i]) ? 1 : 0;
+            n += wallMs[i] > FACTOR * median && inPause[i] ? 1 : 0;
         }
         return n;
     }

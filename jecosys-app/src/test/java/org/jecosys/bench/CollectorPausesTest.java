@@ -75,7 +75,7 @@ class CollectorPausesTest {
             end[1] = start[1] + 12 * MS;
             assertTrue(p.overlaps(start[1], end[1]));
             assertFalse(p.overlaps(start[3], end[3]));
-            assertEquals(1, SlowSteps.inPauses(wall, start, end, p));
+            assertEquals(1, SlowSteps.inPauses(wall, SlowSteps.inPause(start, end, wall.length, p)));
         }
     }
 
